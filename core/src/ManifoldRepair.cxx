@@ -1,0 +1,253 @@
+#include "latticekit/ManifoldRepair.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+namespace lk
+{
+
+namespace
+{
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Polygon = std::vector<std::size_t>;
+
+void toSoup(const TriangleMesh& mesh, std::vector<Point>& points, std::vector<Polygon>& polygons)
+{
+  points.reserve(mesh.points.size());
+  for (const Vec3& p : mesh.points)
+  {
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  polygons.reserve(mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+  {
+    polygons.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]),
+      static_cast<std::size_t>(t[2]) });
+  }
+}
+
+TriangleMesh fromSurfaceMesh(Mesh& sm)
+{
+  sm.collect_garbage();
+  TriangleMesh out;
+  out.points.reserve(sm.number_of_vertices());
+  for (auto v : sm.vertices())
+  {
+    const Point& p = sm.point(v);
+    out.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  out.triangles.reserve(sm.number_of_faces());
+  for (auto f : sm.faces())
+  {
+    Triangle t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+    {
+      if (k < 3)
+      {
+        t[k] = static_cast<std::int64_t>(static_cast<std::size_t>(v));
+      }
+      ++k;
+    }
+    if (k == 3)
+    {
+      out.triangles.push_back(t);
+    }
+  }
+  return out;
+}
+
+double componentSignedVolume(const Mesh& sm, const std::vector<Mesh::Face_index>& faces)
+{
+  double v = 0.0;
+  for (auto f : faces)
+  {
+    auto h = sm.halfedge(f);
+    const Point& a = sm.point(sm.source(h));
+    const Point& b = sm.point(sm.target(h));
+    const Point& c = sm.point(sm.target(sm.next(h)));
+    v += CGAL::to_double(a.x() * (b.y() * c.z() - b.z() * c.y()) -
+      a.y() * (b.x() * c.z() - b.z() * c.x()) + a.z() * (b.x() * c.y() - b.y() * c.x()));
+  }
+  return v / 6.0;
+}
+} // namespace
+
+RepairReport repairToManifold(TriangleMesh& mesh)
+{
+  const std::string problem = validateTriangleMesh(mesh);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument("repairToManifold: " + problem);
+  }
+  RepairReport report;
+  report.inputTriangles = mesh.triangles.size();
+
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  toSoup(mesh, points, polygons);
+  const std::size_t pointsBefore = points.size();
+  PMP::repair_polygon_soup(points, polygons);
+  report.mergedPoints = pointsBefore > points.size() ? pointsBefore - points.size() : 0;
+  report.removedSoupPolygons = report.inputTriangles - polygons.size();
+  if (polygons.empty())
+  {
+    throw std::runtime_error("repairToManifold: every triangle is degenerate");
+  }
+  const std::size_t pointsBeforeOrient = points.size();
+  PMP::orient_polygon_soup(points, polygons);
+  report.splitNonManifold = points.size() - pointsBeforeOrient;
+
+  Mesh sm;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
+  const std::size_t facesBefore = sm.number_of_faces();
+  PMP::remove_degenerate_faces(sm);
+  sm.collect_garbage();
+  report.removedDegenerateFaces = facesBefore - sm.number_of_faces();
+  report.splitNonManifold += PMP::duplicate_non_manifold_vertices(sm);
+  if (sm.number_of_faces() == 0)
+  {
+    throw std::runtime_error("repairToManifold: nothing is left after removing degenerate faces");
+  }
+
+  // Orientation, component by component.
+  auto fccmap = sm.add_property_map<Mesh::Face_index, std::size_t>("f:cc", 0).first;
+  report.components = PMP::connected_components(sm, fccmap);
+  std::vector<std::vector<Mesh::Face_index>> byComponent(report.components);
+  for (auto f : sm.faces())
+  {
+    byComponent[fccmap[f]].push_back(f);
+  }
+  bool anyFlip = false;
+  std::vector<Mesh::Face_index> toFlip;
+  for (const auto& faces : byComponent)
+  {
+    if (componentSignedVolume(sm, faces) < 0.0)
+    {
+      toFlip.insert(toFlip.end(), faces.begin(), faces.end());
+      anyFlip = true;
+    }
+  }
+  if (anyFlip)
+  {
+    PMP::reverse_face_orientations(toFlip, sm);
+  }
+  sm.remove_property_map(fccmap);
+  if (CGAL::is_closed(sm))
+  {
+    // Nested closed components (a cavity inside bone) must face the other way.
+    PMP::orient_to_bound_a_volume(sm);
+  }
+
+  mesh = fromSurfaceMesh(sm);
+  report.outputTriangles = mesh.triangles.size();
+  report.outputPoints = mesh.points.size();
+  report.boundaryEdges = countBoundaryEdges(mesh);
+  report.closed = report.boundaryEdges == 0;
+  return report;
+}
+
+std::string cgalSurfaceMeshProblem(const TriangleMesh& mesh)
+{
+  std::string problem = validateTriangleMesh(mesh);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  toSoup(mesh, points, polygons);
+  for (const Polygon& p : polygons)
+  {
+    if (p[0] == p[1] || p[1] == p[2] || p[0] == p[2])
+    {
+      return "a triangle repeats a vertex";
+    }
+  }
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    return "the triangles do not form a manifold, consistently oriented mesh "
+           "(non-manifold edge or vertex, or inconsistent orientation)";
+  }
+  Mesh sm;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
+  if (!CGAL::is_valid_polygon_mesh(sm))
+  {
+    return "CGAL::is_valid_polygon_mesh fails";
+  }
+  for (auto v : sm.vertices())
+  {
+    if (PMP::is_non_manifold_vertex(v, sm))
+    {
+      return "the mesh has a non-manifold vertex";
+    }
+  }
+  for (auto f : sm.faces())
+  {
+    if (PMP::is_degenerate_triangle_face(f, sm))
+    {
+      return "the mesh has a degenerate (zero-area) triangle";
+    }
+  }
+  return {};
+}
+
+std::size_t countBoundaryEdges(const TriangleMesh& mesh)
+{
+  std::vector<std::pair<std::int64_t, std::int64_t>> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::size_t boundary = 0;
+  for (std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i])
+    {
+      ++j;
+    }
+    boundary += (j - i == 1) ? 1 : 0;
+    i = j;
+  }
+  return boundary;
+}
+
+double signedVolume(const TriangleMesh& mesh)
+{
+  double v = 0.0;
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Vec3& a = mesh.points[static_cast<std::size_t>(t[0])];
+    const Vec3& b = mesh.points[static_cast<std::size_t>(t[1])];
+    const Vec3& c = mesh.points[static_cast<std::size_t>(t[2])];
+    v += a.dot(b.cross(c));
+  }
+  return v / 6.0;
+}
+
+} // namespace lk

@@ -1,0 +1,316 @@
+#include "vtkLKBoneSurfaceFilter.h"
+
+#include "vtkLKMeshRepairFilter.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkImageCast.h>
+#include <vtkImageData.h>
+#include <vtkImageGaussianSmooth.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkReverseSense.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkWindowedSincPolyDataFilter.h>
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkLKBoneSurfaceFilter);
+
+namespace
+{
+/// Forwards a sub-filter's progress into [lo, hi] of the owner's progress.
+class ProgressRelay
+{
+public:
+  ProgressRelay(vtkAlgorithm* owner, vtkAlgorithm* inner, double lo, double hi)
+    : Owner(owner), Lo(lo), Hi(hi)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject* caller, unsigned long, void* cd, void*) {
+      auto* self = static_cast<ProgressRelay*>(cd);
+      const double p = static_cast<vtkAlgorithm*>(caller)->GetProgress();
+      self->Owner->UpdateProgress(self->Lo + (self->Hi - self->Lo) * p);
+    });
+    inner->AddObserver(vtkCommand::ProgressEvent, this->Command);
+  }
+
+private:
+  vtkAlgorithm* Owner;
+  double Lo, Hi;
+  vtkNew<vtkCallbackCommand> Command;
+};
+
+bool isBinaryLabelMap(vtkImageData* image)
+{
+  vtkDataArray* s = image->GetPointData()->GetScalars();
+  if (!s || s->GetDataType() == VTK_FLOAT || s->GetDataType() == VTK_DOUBLE)
+  {
+    return false;
+  }
+  double range[2];
+  s->GetRange(range);
+  if (!(range[0] == 0.0 && range[1] == 1.0))
+  {
+    return false;
+  }
+  return true; // an integer array whose range is [0, 1] has only 0 and 1
+}
+} // namespace
+
+vtkLKBoneSurfaceFilter::vtkLKBoneSurfaceFilter() = default;
+
+vtkLKBoneSurfaceFilter::~vtkLKBoneSurfaceFilter()
+{
+  this->SetPatientMatrix(nullptr);
+}
+
+void vtkLKBoneSurfaceFilter::SetPatientMatrix(vtkMatrix4x4* m)
+{
+  if (m == this->PatientMatrix)
+  {
+    return;
+  }
+  if (this->PatientMatrix)
+  {
+    this->PatientMatrix->UnRegister(this);
+  }
+  this->PatientMatrix = m;
+  if (m)
+  {
+    m->Register(this);
+  }
+  this->Modified();
+}
+
+vtkMTimeType vtkLKBoneSurfaceFilter::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->PatientMatrix)
+  {
+    t = std::max(t, this->PatientMatrix->GetMTime());
+  }
+  return t;
+}
+
+int vtkLKBoneSurfaceFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "ImageSmoothing: " << this->ImageSmoothing << "\n";
+  os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "ExtractionMode: " << this->ExtractionMode << "\n";
+  os << indent << "SeedPoint: " << this->SeedPoint[0] << " " << this->SeedPoint[1] << " "
+     << this->SeedPoint[2] << "\n";
+  os << indent << "LabelMapMode: " << this->LabelMapMode << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
+}
+
+int vtkLKBoneSurfaceFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || input->GetNumberOfPoints() == 0 || !input->GetPointData()->GetScalars())
+  {
+    vtkErrorMacro("The input volume is empty.");
+    return 0;
+  }
+  int dims[3];
+  input->GetDimensions(dims);
+  if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
+  {
+    vtkErrorMacro("The input volume must have at least 2 voxels along each axis, not "
+      << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
+    return 0;
+  }
+  if (input->GetNumberOfScalarComponents() != 1)
+  {
+    vtkErrorMacro("The input volume must have one scalar component.");
+    return 0;
+  }
+  if (!std::isfinite(this->IsoValue))
+  {
+    vtkErrorMacro("IsoValue must be a finite number.");
+    return 0;
+  }
+
+  this->TreatedAsLabelMap = this->LabelMapMode == LABEL_MAP_ON ||
+    (this->LabelMapMode == LABEL_MAP_AUTO && isBinaryLabelMap(input));
+  this->EffectiveIsoValue = this->TreatedAsLabelMap ? 0.5 : this->IsoValue;
+  double sigma = this->ImageSmoothing;
+  if (sigma < 0.0)
+  {
+    sigma = this->TreatedAsLabelMap ? 1.0 : 0.0;
+  }
+
+  double range[2];
+  input->GetPointData()->GetScalars()->GetRange(range);
+  if (!(this->EffectiveIsoValue > range[0] && this->EffectiveIsoValue < range[1]))
+  {
+    vtkErrorMacro("Iso value " << this->EffectiveIsoValue << " is outside the volume's range ["
+                               << range[0] << ", " << range[1] << "]: no surface.");
+    return 0;
+  }
+
+  // Patient matrix: explicit, else the reader's field data, else identity.
+  vtkNew<vtkMatrix4x4> matrix;
+  if (this->PatientMatrix)
+  {
+    matrix->DeepCopy(this->PatientMatrix);
+  }
+  else if (vtkDataArray* m = input->GetFieldData()->GetArray("PatientMatrix"))
+  {
+    if (m->GetNumberOfTuples() * m->GetNumberOfComponents() == 16)
+    {
+      for (int i = 0; i < 16; ++i)
+      {
+        matrix->SetElement(i / 4, i % 4, m->GetComponent(i, 0));
+      }
+    }
+  }
+
+  vtkNew<vtkImageData> volume;
+  volume->ShallowCopy(input);
+  vtkSmartPointer<vtkImageData> smoothed = volume.GetPointer();
+  vtkNew<vtkImageGaussianSmooth> gauss;
+  ProgressRelay gaussProgress(this, gauss, 0.0, 0.15);
+  vtkNew<vtkImageCast> toFloat;
+  if (sigma > 0.0)
+  {
+    // Smooth in floating point: an integer label map would be truncated back to 0/1.
+    toFloat->SetInputData(volume);
+    toFloat->SetOutputScalarTypeToFloat();
+    gauss->SetInputConnection(toFloat->GetOutputPort());
+    gauss->SetStandardDeviations(sigma, sigma, sigma);
+    gauss->SetRadiusFactors(3.0, 3.0, 3.0);
+    gauss->Update();
+    smoothed = gauss->GetOutput();
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+
+  vtkNew<vtkFlyingEdges3D> contour;
+  ProgressRelay contourProgress(this, contour, 0.15, 0.4);
+  contour->SetInputData(smoothed);
+  contour->SetValue(0, this->EffectiveIsoValue);
+  contour->ComputeNormalsOff();
+  contour->ComputeGradientsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  if (contour->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("No surface at iso value " << this->EffectiveIsoValue << ".");
+    return 0;
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+
+  // Component selection in data coordinates.
+  vtkSmartPointer<vtkPolyData> surface = contour->GetOutput();
+  vtkNew<vtkPolyDataConnectivityFilter> connectivity;
+  ProgressRelay connectivityProgress(this, connectivity, 0.4, 0.5);
+  if (this->ExtractionMode != ALL_COMPONENTS)
+  {
+    connectivity->SetInputData(surface);
+    if (this->ExtractionMode == LARGEST_COMPONENT)
+    {
+      connectivity->SetExtractionModeToLargestRegion();
+    }
+    else
+    {
+      vtkNew<vtkMatrix4x4> inverse;
+      vtkMatrix4x4::Invert(matrix, inverse);
+      double seed[4] = { this->SeedPoint[0], this->SeedPoint[1], this->SeedPoint[2], 1.0 };
+      double local[4];
+      inverse->MultiplyPoint(seed, local);
+      connectivity->SetExtractionModeToClosestPointRegion();
+      connectivity->SetClosestPoint(local);
+    }
+    connectivity->ScalarConnectivityOff();
+    connectivity->Update();
+    surface = connectivity->GetOutput();
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+
+  // Into patient space.
+  vtkNew<vtkTransform> transform;
+  transform->SetMatrix(matrix);
+  vtkNew<vtkTransformPolyDataFilter> place;
+  place->SetInputData(surface);
+  place->SetTransform(transform);
+  place->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  place->Update();
+  surface = place->GetOutput();
+  if (matrix->Determinant() < 0.0)
+  {
+    vtkNew<vtkReverseSense> reverse;
+    reverse->SetInputData(surface);
+    reverse->ReverseCellsOn();
+    reverse->ReverseNormalsOff();
+    reverse->Update();
+    surface = reverse->GetOutput();
+  }
+  this->UpdateProgress(0.55);
+
+  vtkNew<vtkLKMeshRepairFilter> repair;
+  ProgressRelay repairProgress(this, repair, 0.55, 0.85);
+  if (this->Repair)
+  {
+    repair->SetInputData(surface);
+    repair->Update();
+    if (repair->GetOutput()->GetNumberOfPolys() == 0)
+    {
+      vtkErrorMacro("The repair left no triangles.");
+      return 0;
+    }
+    surface = repair->GetOutput();
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+
+  vtkNew<vtkWindowedSincPolyDataFilter> smoother;
+  ProgressRelay smoothProgress(this, smoother, 0.85, 1.0);
+  if (this->SmoothingIterations > 0)
+  {
+    smoother->SetInputData(surface);
+    smoother->SetNumberOfIterations(this->SmoothingIterations);
+    smoother->SetPassBand(0.1);
+    smoother->BoundarySmoothingOff();
+    smoother->FeatureEdgeSmoothingOff();
+    smoother->NonManifoldSmoothingOn();
+    smoother->NormalizeCoordinatesOn();
+    smoother->Update();
+    surface = smoother->GetOutput();
+  }
+  output->ShallowCopy(surface);
+  output->GetPointData()->Initialize();
+  this->UpdateProgress(1.0);
+  return 1;
+}

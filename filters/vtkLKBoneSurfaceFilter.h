@@ -1,0 +1,138 @@
+/**
+ * @class   vtkLKBoneSurfaceFilter
+ * @brief   CT volume (or 0/1 label map) to a clean, manifold bone surface in patient space.
+ *
+ * The steps, each a proven VTK or CGAL piece:
+ *  1. optional Gaussian smoothing of the volume (vtkImageGaussianSmooth,
+ *     ImageSmoothing = standard deviation in voxels);
+ *  2. iso-surface by flying edges (vtkFlyingEdges3D) at IsoValue; the default,
+ *     300 HU, keeps cortical and most trabecular bone;
+ *  3. component selection (vtkPolyDataConnectivityFilter): all, the largest,
+ *     or the one closest to SeedPoint (patient coordinates);
+ *  4. placement in patient coordinates with the input's "PatientMatrix" field
+ *     data (from vtkLKMedicalImageReader) or SetPatientMatrix; a mirroring
+ *     matrix reverses the triangles so that they stay outward;
+ *  5. repair into a manifold, consistently outward-oriented triangle mesh
+ *     that CGAL accepts (vtkLKMeshRepairFilter);
+ *  6. optional light smoothing (vtkWindowedSincPolyDataFilter,
+ *     SmoothingIterations, pass band 0.1), which moves points only.
+ *
+ * Label maps: when LabelMapMode is on, or when it is AUTO (the default) and
+ * the volume has integer voxels that are all 0 or 1, the iso value becomes
+ * 0.5 and, unless ImageSmoothing was set, the volume is smoothed with a
+ * Gaussian of one voxel so that the surface is not stair-stepped.
+ *
+ * An iso value outside the volume's scalar range is an error, as is an empty
+ * result.
+ */
+#ifndef vtkLKBoneSurfaceFilter_h
+#define vtkLKBoneSurfaceFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkMatrix4x4;
+
+class LATTICEKITFILTERS_EXPORT vtkLKBoneSurfaceFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKBoneSurfaceFilter* New();
+  vtkTypeMacro(vtkLKBoneSurfaceFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ExtractionModes
+  {
+    ALL_COMPONENTS = 0,
+    LARGEST_COMPONENT = 1,
+    SEEDED_COMPONENT = 2
+  };
+  enum LabelMapModes
+  {
+    LABEL_MAP_OFF = 0,
+    LABEL_MAP_ON = 1,
+    LABEL_MAP_AUTO = 2
+  };
+
+  ///@{
+  /// Iso value in the volume's units (HU for CT). Default 300.
+  vtkSetMacro(IsoValue, double);
+  vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /// Gaussian standard deviation in voxels applied to the volume; 0 = none,
+  /// negative (default) = automatic (1 for label maps, none otherwise).
+  vtkSetMacro(ImageSmoothing, double);
+  vtkGetMacro(ImageSmoothing, double);
+  ///@}
+
+  ///@{
+  /// Windowed-sinc smoothing iterations on the surface; 0 (default) = none.
+  vtkSetClampMacro(SmoothingIterations, int, 0, 1000);
+  vtkGetMacro(SmoothingIterations, int);
+  ///@}
+
+  ///@{
+  /// Which components to keep. Default: LARGEST_COMPONENT.
+  vtkSetClampMacro(ExtractionMode, int, ALL_COMPONENTS, SEEDED_COMPONENT);
+  vtkGetMacro(ExtractionMode, int);
+  void SetExtractionModeToAllComponents() { this->SetExtractionMode(ALL_COMPONENTS); }
+  void SetExtractionModeToLargestComponent() { this->SetExtractionMode(LARGEST_COMPONENT); }
+  void SetExtractionModeToSeededComponent() { this->SetExtractionMode(SEEDED_COMPONENT); }
+  ///@}
+
+  ///@{
+  /// Seed for SEEDED_COMPONENT, in patient coordinates (mm).
+  vtkSetVector3Macro(SeedPoint, double);
+  vtkGetVector3Macro(SeedPoint, double);
+  ///@}
+
+  ///@{
+  /// Treat the input as a 0/1 label map (see the class documentation).
+  vtkSetClampMacro(LabelMapMode, int, LABEL_MAP_OFF, LABEL_MAP_AUTO);
+  vtkGetMacro(LabelMapMode, int);
+  ///@}
+
+  ///@{
+  /// Repair into a CGAL-valid manifold mesh (default on).
+  vtkSetMacro(Repair, bool);
+  vtkGetMacro(Repair, bool);
+  vtkBooleanMacro(Repair, bool);
+  ///@}
+
+  ///@{
+  /// Data coordinates to patient coordinates. When not set, the input's
+  /// "PatientMatrix" field data is used, and failing that the identity.
+  void SetPatientMatrix(vtkMatrix4x4* m);
+  vtkMatrix4x4* GetPatientMatrix() { return this->PatientMatrix; }
+  ///@}
+
+  /// Whether the last input was treated as a label map.
+  bool GetTreatedAsLabelMap() const { return this->TreatedAsLabelMap; }
+  /// The iso value the last update used (0.5 for label maps).
+  double GetEffectiveIsoValue() const { return this->EffectiveIsoValue; }
+
+protected:
+  vtkLKBoneSurfaceFilter();
+  ~vtkLKBoneSurfaceFilter() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  vtkMTimeType GetMTime() override;
+
+  double IsoValue = 300.0;
+  double ImageSmoothing = -1.0;
+  int SmoothingIterations = 0;
+  int ExtractionMode = LARGEST_COMPONENT;
+  double SeedPoint[3] = { 0.0, 0.0, 0.0 };
+  int LabelMapMode = LABEL_MAP_AUTO;
+  bool Repair = true;
+  vtkMatrix4x4* PatientMatrix = nullptr;
+  bool TreatedAsLabelMap = false;
+  double EffectiveIsoValue = 300.0;
+
+private:
+  vtkLKBoneSurfaceFilter(const vtkLKBoneSurfaceFilter&) = delete;
+  void operator=(const vtkLKBoneSurfaceFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,335 @@
+#include "vtkLKDICOMSeries.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkDICOMDictionary.h>
+#include <vtkDICOMDirectory.h>
+#include <vtkDICOMMetaData.h>
+#include <vtkDICOMReader.h>
+#include <vtkDICOMValue.h>
+#include <vtkFloatArray.h>
+#include <vtkImageCast.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkSMPTools.h>
+#include <vtkStringArray.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace lkvtk
+{
+
+namespace
+{
+using V3 = std::array<double, 3>;
+
+double dot(const V3& a, const V3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+V3 cross(const V3& a, const V3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+V3 sub(const V3& a, const V3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+/// Collects the messages of VTK errors raised by an object.
+struct ErrorCatcher
+{
+  std::string messages;
+  vtkNew<vtkCallbackCommand> command;
+  explicit ErrorCatcher(vtkObject* object)
+  {
+    command->SetClientData(this);
+    command->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+      auto* self = static_cast<ErrorCatcher*>(clientData);
+      if (callData)
+      {
+        if (!self->messages.empty())
+        {
+          self->messages += "; ";
+        }
+        std::string m = static_cast<const char*>(callData);
+        while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+        {
+          m.pop_back();
+        }
+        self->messages += m;
+      }
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, command);
+  }
+};
+} // namespace
+
+bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error)
+{
+  series.clear();
+  vtkNew<vtkDICOMDirectory> dir;
+  ErrorCatcher catcher(dir);
+  dir->SetDirectoryName(folder.c_str());
+  dir->SetScanDepth(1);
+  dir->RequirePixelDataOn();
+  dir->Update();
+  for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
+  {
+    DICOMSeriesInfo info;
+    vtkStringArray* files = dir->GetFileNamesForSeries(i);
+    for (vtkIdType f = 0; f < files->GetNumberOfValues(); ++f)
+    {
+      info.files.push_back(files->GetValue(f));
+    }
+    vtkDICOMMetaData* meta = dir->GetMetaDataForSeries(i);
+    if (meta)
+    {
+      info.uid = meta->Get(DC::SeriesInstanceUID).AsString();
+      info.description = meta->Get(DC::SeriesDescription).AsString();
+      info.modality = meta->Get(DC::Modality).AsString();
+    }
+    series.push_back(info);
+  }
+  std::stable_sort(series.begin(), series.end(),
+    [](const DICOMSeriesInfo& a, const DICOMSeriesInfo& b) { return a.files.size() > b.files.size(); });
+  if (series.empty())
+  {
+    error = "no DICOM image series found in '" + folder + "'";
+    if (!catcher.messages.empty())
+    {
+      error += " (" + catcher.messages + ")";
+    }
+    return false;
+  }
+  return true;
+}
+
+bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,
+  vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error)
+{
+  vtkNew<vtkStringArray> names;
+  for (const std::string& f : series.files)
+  {
+    names->InsertNextValue(f);
+  }
+  vtkNew<vtkDICOMReader> reader;
+  ErrorCatcher catcher(reader);
+  reader->SetFileNames(names);
+  reader->SetMemoryRowOrderToFileNative(); // row 0 in memory is the first row in the file
+  reader->TimeAsVectorOff();
+  reader->Update();
+  if (reader->GetErrorCode() != 0 || !catcher.messages.empty())
+  {
+    error = "cannot read the DICOM series: " +
+      (catcher.messages.empty() ? std::string("the reader failed") : catcher.messages);
+    return false;
+  }
+  vtkImageData* raw = reader->GetOutput();
+  int dims[3];
+  raw->GetDimensions(dims);
+  if (raw->GetNumberOfPoints() == 0 || raw->GetNumberOfScalarComponents() != 1)
+  {
+    error = "the DICOM series holds no single-component volume (colour or empty images are not supported)";
+    return false;
+  }
+  vtkDICOMMetaData* meta = reader->GetMetaData();
+  vtkIntArray* fileIndex = reader->GetFileIndexArray();
+  const int nslices = dims[2];
+  if (fileIndex->GetNumberOfTuples() != nslices)
+  {
+    error = "the DICOM series has several frames or time points per position; only 3D volumes are supported";
+    return false;
+  }
+  report.inputSlices = nslices;
+
+  // Geometry of every slice.
+  const int first = fileIndex->GetComponent(0, 0);
+  double iop[6];
+  meta->Get(first, DC::ImageOrientationPatient).GetValues(iop, 6);
+  double ps[2];
+  meta->Get(first, DC::PixelSpacing).GetValues(ps, 2);
+  if (!meta->Get(first, DC::ImageOrientationPatient).IsValid() ||
+    !meta->Get(first, DC::PixelSpacing).IsValid())
+  {
+    error = "the DICOM series has no ImageOrientationPatient or PixelSpacing";
+    return false;
+  }
+  V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
+  V3 n = cross(r, c);
+  const double nn = std::sqrt(dot(n, n));
+  if (!(nn > 0.5))
+  {
+    error = "the DICOM ImageOrientationPatient is degenerate";
+    return false;
+  }
+  for (double& v : n)
+  {
+    v /= nn;
+  }
+  const double dx = ps[1], dy = ps[0]; // PixelSpacing is (row spacing, column spacing)
+  if (!(dx > 0.0) || !(dy > 0.0))
+  {
+    error = "the DICOM PixelSpacing is not positive";
+    return false;
+  }
+  struct Slice
+  {
+    int index; // slice in the reader's output
+    V3 ipp;
+    double z;
+  };
+  std::vector<Slice> slices(static_cast<std::size_t>(nslices));
+  for (int k = 0; k < nslices; ++k)
+  {
+    const int f = fileIndex->GetComponent(k, 0);
+    const vtkDICOMValue& v = meta->Get(f, DC::ImagePositionPatient);
+    if (!v.IsValid() || v.GetNumberOfValues() < 3)
+    {
+      error = "a DICOM slice has no ImagePositionPatient";
+      return false;
+    }
+    double p[3];
+    v.GetValues(p, 3);
+    double o[6];
+    meta->Get(f, DC::ImageOrientationPatient).GetValues(o, 6);
+    for (int i = 0; i < 6; ++i)
+    {
+      if (std::abs(o[i] - iop[i]) > 1e-4)
+      {
+        error = "the slices of the DICOM series do not share one ImageOrientationPatient";
+        return false;
+      }
+    }
+    slices[static_cast<std::size_t>(k)] = { k, { p[0], p[1], p[2] }, dot(n, V3{ p[0], p[1], p[2] }) };
+  }
+  std::sort(slices.begin(), slices.end(), [](const Slice& a, const Slice& b) { return a.z < b.z; });
+  report.minGap = std::numeric_limits<double>::max();
+  report.maxGap = 0.0;
+  for (std::size_t k = 1; k < slices.size(); ++k)
+  {
+    const double gap = slices[k].z - slices[k - 1].z;
+    if (gap < 1e-3)
+    {
+      std::ostringstream os;
+      os << "two slices of the DICOM series lie at the same position (" << slices[k].z
+         << " mm along the slice normal): the series mixes acquisitions";
+      error = os.str();
+      return false;
+    }
+    report.minGap = std::min(report.minGap, gap);
+    report.maxGap = std::max(report.maxGap, gap);
+  }
+  if (slices.size() < 2)
+  {
+    report.minGap = report.maxGap = sliceSpacing > 0.0 ? sliceSpacing : 1.0;
+  }
+  const V3 origin = slices.front().ipp;
+  if (slices.size() >= 2)
+  {
+    const V3 stack = sub(slices.back().ipp, origin);
+    const double along = dot(stack, n);
+    const double across = std::sqrt(std::max(0.0, dot(stack, stack) - along * along));
+    report.gantryTiltDegrees = std::atan2(across, along) * 180.0 / M_PI;
+  }
+
+  // The output grid.
+  const double h = sliceSpacing > 0.0 ? sliceSpacing : report.minGap;
+  const double zSpan = slices.back().z - slices.front().z;
+  const int nz = static_cast<int>(std::floor(zSpan / h + 1e-6)) + 1;
+  if (static_cast<double>(nz) * dims[0] * dims[1] > 2.0e9)
+  {
+    error = "the resampled volume would be too large; choose a larger slice spacing";
+    return false;
+  }
+
+  vtkNew<vtkImageCast> cast;
+  cast->SetInputData(raw);
+  cast->SetOutputScalarTypeToFloat();
+  cast->Update();
+  const float* in = static_cast<const float*>(cast->GetOutput()->GetScalarPointer());
+  const vtkIdType sliceSize = static_cast<vtkIdType>(dims[0]) * dims[1];
+  float background = std::numeric_limits<float>::max();
+  for (vtkIdType i = 0; i < sliceSize * nslices; ++i)
+  {
+    background = std::min(background, in[i]);
+  }
+
+  // In-plane offset of every slice, in pixels, relative to the first one.
+  std::vector<double> shiftX(slices.size()), shiftY(slices.size()), zs(slices.size());
+  for (std::size_t k = 0; k < slices.size(); ++k)
+  {
+    const V3 d = sub(slices[k].ipp, origin);
+    shiftX[k] = dot(r, d) / dx;
+    shiftY[k] = dot(c, d) / dy;
+    zs[k] = slices[k].z - slices.front().z;
+  }
+
+  output->Initialize();
+  output->SetDimensions(dims[0], dims[1], nz);
+  output->SetSpacing(dx, dy, h);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  output->AllocateScalars(VTK_FLOAT, 1);
+  float* out = static_cast<float*>(output->GetScalarPointer());
+  output->GetPointData()->GetScalars()->SetName("ImageScalars");
+
+  auto sample = [&](std::size_t k, double x, double y) -> double {
+    // Bilinear value of slice k at pixel coordinates (x, y); background outside.
+    if (x < 0.0 || y < 0.0 || x > dims[0] - 1 || y > dims[1] - 1)
+    {
+      return background;
+    }
+    const int i0 = std::min(static_cast<int>(x), dims[0] - 2 >= 0 ? dims[0] - 2 : 0);
+    const int j0 = std::min(static_cast<int>(y), dims[1] - 2 >= 0 ? dims[1] - 2 : 0);
+    const int i1 = std::min(i0 + 1, dims[0] - 1), j1 = std::min(j0 + 1, dims[1] - 1);
+    const double fx = x - i0, fy = y - j0;
+    const float* s = in + static_cast<vtkIdType>(slices[k].index) * sliceSize;
+    const double v00 = s[j0 * dims[0] + i0], v10 = s[j0 * dims[0] + i1];
+    const double v01 = s[j1 * dims[0] + i0], v11 = s[j1 * dims[0] + i1];
+    return (1 - fy) * ((1 - fx) * v00 + fx * v10) + fy * ((1 - fx) * v01 + fx * v11);
+  };
+
+  vtkSMPTools::For(0, nz, [&](vtkIdType m0, vtkIdType m1) {
+    for (vtkIdType m = m0; m < m1; ++m)
+    {
+      const double z = std::min(m * h, zSpan);
+      std::size_t k = static_cast<std::size_t>(
+        std::upper_bound(zs.begin(), zs.end(), z) - zs.begin());
+      k = k == 0 ? 0 : k - 1;
+      const std::size_t k1 = std::min(k + 1, zs.size() - 1);
+      const double w = k1 == k ? 0.0 : (z - zs[k]) / (zs[k1] - zs[k]);
+      float* o = out + m * sliceSize;
+      for (int j = 0; j < dims[1]; ++j)
+      {
+        for (int i = 0; i < dims[0]; ++i)
+        {
+          double v = sample(k, i - shiftX[k], j - shiftY[k]);
+          if (w > 0.0)
+          {
+            v = (1.0 - w) * v + w * sample(k1, i - shiftX[k1], j - shiftY[k1]);
+          }
+          o[j * dims[0] + i] = static_cast<float>(v);
+        }
+      }
+    }
+  });
+
+  patientMatrix->Identity();
+  for (int row = 0; row < 3; ++row)
+  {
+    patientMatrix->SetElement(row, 0, r[static_cast<std::size_t>(row)]);
+    patientMatrix->SetElement(row, 1, c[static_cast<std::size_t>(row)]);
+    patientMatrix->SetElement(row, 2, n[static_cast<std::size_t>(row)]);
+    patientMatrix->SetElement(row, 3, origin[static_cast<std::size_t>(row)]);
+  }
+  return true;
+}
+
+} // namespace lkvtk

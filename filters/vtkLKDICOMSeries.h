@@ -1,0 +1,47 @@
+#pragma once
+/// \file vtkLKDICOMSeries.h
+/// Private: find the DICOM series in a folder (vtkDICOMDirectory) and read one
+/// into a regular volume in patient coordinates. vtkDICOMReader sorts the
+/// slices and applies rescale slope and intercept; the geometry is then taken
+/// from every slice's own ImagePositionPatient, so that gantry tilt (a shear)
+/// and variable slice spacing are resolved by resampling rather than ignored.
+
+#include <string>
+#include <vector>
+
+class vtkImageData;
+class vtkMatrix4x4;
+
+namespace lkvtk
+{
+
+struct DICOMSeriesInfo
+{
+  std::string uid;
+  std::string description;
+  std::string modality;
+  std::vector<std::string> files;
+};
+
+struct DICOMGeometryReport
+{
+  double gantryTiltDegrees = 0.0; ///< angle between slice normal and slice stacking direction
+  double minGap = 0.0;            ///< smallest distance between consecutive slices (mm)
+  double maxGap = 0.0;            ///< largest distance between consecutive slices (mm)
+  int inputSlices = 0;
+};
+
+/// Lists the series found in the folder (scanning one level deep), largest first.
+/// Returns false with error set when the folder cannot be read or has no image series.
+bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error);
+
+/// Reads the series and resamples it onto a regular grid in the slice frame:
+/// x along the rows (ImageOrientationPatient[0..2]), y along the columns
+/// ([3..5]), z along their cross product, origin at the first pixel of the
+/// lowest slice. sliceSpacing <= 0 uses the smallest gap between slices.
+/// The output is float (rescaled values); patientMatrix maps its data
+/// coordinates to DICOM patient (LPS) coordinates in millimetres.
+bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,
+  vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error);
+
+} // namespace lkvtk

@@ -1,0 +1,469 @@
+#include "vtkLKMedicalImageReader.h"
+
+#include "vtkLKDICOMSeries.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMatrix4x4.h>
+#include <vtkMetaImageReader.h>
+#include <vtkNIFTIImageHeader.h>
+#include <vtkNIFTIImageReader.h>
+#include <vtkNew.h>
+#include <vtkNrrdReader.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkLKMedicalImageReader);
+
+namespace
+{
+
+std::string lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  return s;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix)
+{
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string trim(const std::string& s)
+{
+  const auto b = s.find_first_not_of(" \t\r");
+  const auto e = s.find_last_not_of(" \t\r");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+/// Text header fields "key: value" (NRRD) or "key = value" (MetaImage), up to
+/// the first empty line (NRRD) or the ElementDataFile line (MetaImage).
+std::map<std::string, std::string> readHeader(const std::string& path, char separator)
+{
+  std::map<std::string, std::string> fields;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::size_t bytes = 0;
+  while (std::getline(in, line) && bytes < (1u << 20))
+  {
+    bytes += line.size() + 1;
+    line = trim(line);
+    if (line.empty())
+    {
+      break;
+    }
+    const auto pos = line.find(separator);
+    if (pos == std::string::npos || line[0] == '#')
+    {
+      continue;
+    }
+    std::string key = lower(trim(line.substr(0, pos)));
+    std::string value = trim(line.substr(pos + 1));
+    if (separator == ':' && !value.empty() && value[0] == '=')
+    {
+      continue; // NRRD key/value pair "key:=value"
+    }
+    fields[key] = value;
+    if (key == "elementdatafile")
+    {
+      break;
+    }
+  }
+  return fields;
+}
+
+std::vector<double> numbers(const std::string& text)
+{
+  std::string cleaned = text;
+  for (char& ch : cleaned)
+  {
+    if (ch == '(' || ch == ')' || ch == ',')
+    {
+      ch = ' ';
+    }
+  }
+  std::istringstream is(cleaned);
+  std::vector<double> v;
+  std::string token;
+  while (is >> token)
+  {
+    if (token == "none")
+    {
+      continue;
+    }
+    char* end = nullptr;
+    const double d = std::strtod(token.c_str(), &end);
+    if (end && *end == '\0')
+    {
+      v.push_back(d);
+    }
+  }
+  return v;
+}
+
+/// Builds data->patient from unit axis directions, spacing and origin; returns
+/// the spacings (the lengths of the given axis vectors).
+void matrixFromAxes(const std::vector<double>& axes, const std::vector<double>& origin, bool ras,
+  vtkMatrix4x4* m, double spacing[3])
+{
+  m->Identity();
+  const double flip[3] = { ras ? -1.0 : 1.0, ras ? -1.0 : 1.0, 1.0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    const double len =
+      std::sqrt(axes[3 * a] * axes[3 * a] + axes[3 * a + 1] * axes[3 * a + 1] + axes[3 * a + 2] * axes[3 * a + 2]);
+    spacing[a] = len;
+    for (int row = 0; row < 3; ++row)
+    {
+      m->SetElement(row, a, flip[row] * axes[3 * a + row] / len);
+    }
+  }
+  for (int row = 0; row < 3; ++row)
+  {
+    m->SetElement(row, 3, flip[row] * (origin.size() == 3 ? origin[row] : 0.0));
+  }
+}
+
+struct ErrorFlag
+{
+  bool failed = false;
+  std::string message;
+  vtkNew<vtkCallbackCommand> command;
+  explicit ErrorFlag(vtkObject* o)
+  {
+    command->SetClientData(this);
+    command->SetCallback([](vtkObject*, unsigned long, void* cd, void* call) {
+      auto* self = static_cast<ErrorFlag*>(cd);
+      self->failed = true;
+      if (call)
+      {
+        self->message = trim(static_cast<const char*>(call));
+      }
+    });
+    o->AddObserver(vtkCommand::ErrorEvent, command);
+  }
+};
+
+} // namespace
+
+vtkLKMedicalImageReader::vtkLKMedicalImageReader()
+{
+  this->SetNumberOfInputPorts(0);
+  this->PatientMatrix = vtkMatrix4x4::New();
+  this->Volume = vtkImageData::New();
+}
+
+vtkLKMedicalImageReader::~vtkLKMedicalImageReader()
+{
+  this->SetFileName(nullptr);
+  this->PatientMatrix->Delete();
+  this->Volume->Delete();
+}
+
+void vtkLKMedicalImageReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "SeriesIndex: " << this->SeriesIndex << "\n";
+  os << indent << "SliceSpacing: " << this->SliceSpacing << "\n";
+  os << indent << "FileFormat: " << this->FileFormat << "\n";
+}
+
+bool vtkLKMedicalImageReader::ReadVolume()
+{
+  this->Volume->Initialize();
+  this->PatientMatrix->Identity();
+  this->FileFormat.clear();
+  this->NumberOfSeries = 0;
+  this->GantryTilt = this->MinimumSliceGap = this->MaximumSliceGap = 0.0;
+  this->NumberOfInputSlices = 0;
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName given.");
+    return false;
+  }
+  const std::string path = this->FileName;
+  if (!vtksys::SystemTools::FileExists(path))
+  {
+    vtkErrorMacro("Cannot open '" << path << "': no such file or folder.");
+    return false;
+  }
+  const std::string name = lower(path);
+  const bool isFolder = vtksys::SystemTools::FileIsDirectory(path);
+  double spacing[3] = { 1, 1, 1 };
+  vtkSmartPointer<vtkImageData> image;
+
+  if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr"))
+  {
+    this->FileFormat = "NRRD";
+    // Debian's VTK may route vtkNrrdReader to an MPI variant through the object
+    // factory (once vtkIOMPIImage is loaded) that reads nothing: use the serial one.
+    vtkObjectFactory::SetAllEnableFlags(false, "vtkNrrdReader");
+    vtkNew<vtkNrrdReader> reader;
+    vtkObjectFactory::SetAllEnableFlags(true, "vtkNrrdReader");
+    ErrorFlag flag(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    if (flag.failed || reader->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      vtkErrorMacro("Cannot read NRRD file '" << path << "'" << (flag.message.empty() ? "" : ": ")
+                                              << flag.message);
+      return false;
+    }
+    image = reader->GetOutput();
+    const auto header = readHeader(path, ':');
+    auto dirs = header.find("space directions");
+    if (dirs != header.end() && numbers(dirs->second).size() >= 9)
+    {
+      const auto space = header.count("space") ? lower(header.at("space")) : std::string("left-posterior-superior");
+      const bool ras = space.find("right") == 0 || space == "ras" || space == "ras-time";
+      std::vector<double> origin;
+      if (header.count("space origin"))
+      {
+        origin = numbers(header.at("space origin"));
+      }
+      std::vector<double> axes = numbers(dirs->second);
+      axes.resize(9);
+      matrixFromAxes(axes, origin, ras, this->PatientMatrix, spacing);
+    }
+    else
+    {
+      image->GetSpacing(spacing);
+      double o[3];
+      image->GetOrigin(o);
+      for (int row = 0; row < 3; ++row)
+      {
+        this->PatientMatrix->SetElement(row, 3, o[row]);
+      }
+    }
+  }
+  else if (endsWith(name, ".mha") || endsWith(name, ".mhd"))
+  {
+    this->FileFormat = "MetaImage";
+    vtkNew<vtkMetaImageReader> reader;
+    ErrorFlag flag(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    if (flag.failed || reader->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      vtkErrorMacro("Cannot read MetaImage file '" << path << "'" << (flag.message.empty() ? "" : ": ")
+                                                   << flag.message);
+      return false;
+    }
+    image = reader->GetOutput();
+    image->GetSpacing(spacing);
+    const auto header = readHeader(path, '=');
+    std::vector<double> axes = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+    for (const char* key : { "transformmatrix", "orientation", "rotation" })
+    {
+      if (header.count(key) && numbers(header.at(key)).size() == 9)
+      {
+        axes = numbers(header.at(key));
+        break;
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        axes[3 * a + k] *= spacing[a];
+      }
+    }
+    std::vector<double> origin(3, 0.0);
+    for (const char* key : { "offset", "position", "origin" })
+    {
+      if (header.count(key) && numbers(header.at(key)).size() == 3)
+      {
+        origin = numbers(header.at(key));
+        break;
+      }
+    }
+    matrixFromAxes(axes, origin, false, this->PatientMatrix, spacing);
+  }
+  else if (endsWith(name, ".nii") || endsWith(name, ".nii.gz") || endsWith(name, ".hdr") ||
+    endsWith(name, ".img") || endsWith(name, ".img.gz"))
+  {
+    this->FileFormat = "NIfTI";
+    vtkNew<vtkNIFTIImageReader> reader;
+    ErrorFlag flag(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    if (flag.failed || reader->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      vtkErrorMacro("Cannot read NIfTI file '" << path << "'" << (flag.message.empty() ? "" : ": ")
+                                               << flag.message);
+      return false;
+    }
+    image = reader->GetOutput();
+    image->GetSpacing(spacing);
+    double o[3];
+    image->GetOrigin(o);
+    vtkMatrix4x4* form = nullptr;
+    if (reader->GetNIFTIHeader()->GetQFormCode() > 0 && reader->GetQFormMatrix())
+    {
+      form = reader->GetQFormMatrix();
+    }
+    else if (reader->GetNIFTIHeader()->GetSFormCode() > 0 && reader->GetSFormMatrix())
+    {
+      form = reader->GetSFormMatrix();
+    }
+    vtkNew<vtkMatrix4x4> ras2lps;
+    ras2lps->SetElement(0, 0, -1.0);
+    ras2lps->SetElement(1, 1, -1.0);
+    vtkNew<vtkMatrix4x4> shift; // fold the reader's origin into the matrix
+    for (int row = 0; row < 3; ++row)
+    {
+      shift->SetElement(row, 3, o[row]);
+    }
+    vtkNew<vtkMatrix4x4> tmp;
+    if (form)
+    {
+      vtkMatrix4x4::Multiply4x4(form, shift, tmp);
+    }
+    else
+    {
+      tmp->DeepCopy(shift);
+    }
+    vtkMatrix4x4::Multiply4x4(ras2lps, tmp, this->PatientMatrix);
+  }
+  else
+  {
+    this->FileFormat = "DICOM";
+    const std::string folder = isFolder ? path : vtksys::SystemTools::GetFilenamePath(path);
+    std::vector<lkvtk::DICOMSeriesInfo> series;
+    std::string error;
+    if (!lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error))
+    {
+      vtkErrorMacro("Cannot read '" << path << "': " << error
+                                    << ". Supported inputs: a DICOM folder or file, .nrrd, .nhdr, .mha, .mhd, .nii, .nii.gz.");
+      return false;
+    }
+    this->NumberOfSeries = static_cast<int>(series.size());
+    int chosen = 0;
+    if (!isFolder)
+    {
+      const std::string wanted = vtksys::SystemTools::CollapseFullPath(path);
+      chosen = -1;
+      for (std::size_t s = 0; s < series.size() && chosen < 0; ++s)
+      {
+        for (const std::string& f : series[s].files)
+        {
+          if (vtksys::SystemTools::CollapseFullPath(f) == wanted)
+          {
+            chosen = static_cast<int>(s);
+            break;
+          }
+        }
+      }
+      if (chosen < 0)
+      {
+        vtkErrorMacro("Cannot read '" << path << "': it is not a DICOM image file.");
+        return false;
+      }
+    }
+    else if (this->SeriesIndex >= 0)
+    {
+      if (this->SeriesIndex >= this->NumberOfSeries)
+      {
+        vtkErrorMacro("SeriesIndex " << this->SeriesIndex << " is out of range: the folder has "
+                                     << this->NumberOfSeries << " series.");
+        return false;
+      }
+      chosen = this->SeriesIndex;
+    }
+    else if (series.size() > 1)
+    {
+      std::ostringstream os;
+      for (std::size_t s = 0; s < series.size(); ++s)
+      {
+        os << "\n  [" << s << "] " << series[s].files.size() << " images, " << series[s].modality
+           << " '" << series[s].description << "' " << series[s].uid;
+      }
+      vtkWarningMacro("The folder holds " << series.size()
+                                          << " series; reading the largest, [0] (SeriesIndex selects another):"
+                                          << os.str());
+    }
+    vtkNew<vtkImageData> volume;
+    lkvtk::DICOMGeometryReport report;
+    if (!lkvtk::readDICOMSeries(series[static_cast<std::size_t>(chosen)], this->SliceSpacing, volume,
+          this->PatientMatrix, report, error))
+    {
+      vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
+      return false;
+    }
+    this->GantryTilt = report.gantryTiltDegrees;
+    this->MinimumSliceGap = report.minGap;
+    this->MaximumSliceGap = report.maxGap;
+    this->NumberOfInputSlices = report.inputSlices;
+    image = volume;
+    image->GetSpacing(spacing);
+  }
+
+  if (image->GetNumberOfScalarComponents() != 1)
+  {
+    vtkErrorMacro("'" << path << "' has " << image->GetNumberOfScalarComponents()
+                      << " components per voxel; a single-component volume is needed.");
+    return false;
+  }
+  this->Volume->ShallowCopy(image);
+  this->Volume->SetOrigin(0.0, 0.0, 0.0);
+  this->Volume->SetSpacing(spacing);
+  vtkNew<vtkDoubleArray> matrix;
+  matrix->SetName("PatientMatrix");
+  matrix->SetNumberOfValues(16);
+  for (int i = 0; i < 16; ++i)
+  {
+    matrix->SetValue(i, this->PatientMatrix->GetElement(i / 4, i % 4));
+  }
+  this->Volume->GetFieldData()->AddArray(matrix);
+  this->VolumeTime = this->GetMTime();
+  return true;
+}
+
+int vtkLKMedicalImageReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  if (this->VolumeTime == 0 || this->VolumeTime != this->GetMTime() ||
+    this->Volume->GetNumberOfPoints() == 0)
+  {
+    if (!this->ReadVolume())
+    {
+      this->VolumeTime = 0;
+      return 0;
+    }
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Volume->GetExtent(), 6);
+  outInfo->Set(vtkDataObject::SPACING(), this->Volume->GetSpacing(), 3);
+  outInfo->Set(vtkDataObject::ORIGIN(), this->Volume->GetOrigin(), 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(
+    outInfo, this->Volume->GetScalarType(), this->Volume->GetNumberOfScalarComponents());
+  return 1;
+}
+
+int vtkLKMedicalImageReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  if (this->Volume->GetNumberOfPoints() == 0)
+  {
+    return 0;
+  }
+  output->ShallowCopy(this->Volume);
+  return 1;
+}

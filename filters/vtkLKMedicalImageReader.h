@@ -1,0 +1,116 @@
+/**
+ * @class   vtkLKMedicalImageReader
+ * @brief   One front end for CT volumes: DICOM series folders, NRRD, MetaImage, NIfTI.
+ *
+ * FileName may be a folder (DICOM series), a DICOM file (its folder is scanned
+ * and the series holding the file is read), or a .nrrd/.nhdr, .mha/.mhd,
+ * .nii/.nii.gz file.
+ *
+ * The output is a vtkImageData with origin (0,0,0) and the voxel spacing in
+ * millimetres; GetPatientMatrix() maps its data coordinates to patient
+ * coordinates in the DICOM convention (LPS: +x left, +y posterior, +z
+ * superior). The matrix is also stored in the output's field data as
+ * "PatientMatrix" (16 values, row-major), which vtkLKBoneSurfaceFilter uses to
+ * place the surface in patient space.
+ *
+ * DICOM (through vtkDICOM): the folder is scanned with vtkDICOMDirectory;
+ * vtkDICOMReader sorts the slices and applies rescale slope and intercept. If
+ * the folder holds several series, the one with the most images is read
+ * (SeriesIndex selects another: series are numbered largest first) and a
+ * warning names the others. The geometry comes from every slice's own
+ * ImagePositionPatient: a gantry-tilted series (slices sheared along the
+ * stacking direction) and variable slice spacing are resampled (bilinear in
+ * plane, linear between slices) onto a regular grid in the slice frame whose
+ * z spacing is SliceSpacing, or the smallest slice gap when SliceSpacing is 0.
+ * The DICOM output is float.
+ *
+ * NRRD: the "space directions", "space origin" and "space" fields of the
+ * header give the matrix (RAS spaces are converted to LPS). MetaImage:
+ * "TransformMatrix" (one axis direction after another) and "Offset" (LPS, as
+ * ITK writes them). NIfTI: the qform (or sform when qform_code is 0), from RAS
+ * to LPS.
+ */
+#ifndef vtkLKMedicalImageReader_h
+#define vtkLKMedicalImageReader_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkImageAlgorithm.h"
+
+#include <string>
+
+class vtkImageData;
+class vtkMatrix4x4;
+
+class LATTICEKITFILTERS_EXPORT vtkLKMedicalImageReader : public vtkImageAlgorithm
+{
+public:
+  static vtkLKMedicalImageReader* New();
+  vtkTypeMacro(vtkLKMedicalImageReader, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// A DICOM folder or file, or an NRRD, MetaImage or NIfTI file.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /// DICOM: which series to read when a folder holds several (numbered by
+  /// size, largest first); -1 (default) reads the largest.
+  vtkSetMacro(SeriesIndex, int);
+  vtkGetMacro(SeriesIndex, int);
+  ///@}
+
+  ///@{
+  /// DICOM: spacing of the resampled slices in mm; 0 (default) uses the
+  /// smallest gap between consecutive slices.
+  vtkSetClampMacro(SliceSpacing, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SliceSpacing, double);
+  ///@}
+
+  /// Data coordinates to patient (LPS, mm). Valid after an update.
+  vtkMatrix4x4* GetPatientMatrix() { return this->PatientMatrix; }
+
+  /// "DICOM", "NRRD", "MetaImage" or "NIfTI" after an update.
+  const char* GetFileFormat() { return this->FileFormat.c_str(); }
+
+  ///@{
+  /// DICOM only, after an update: the number of series in the folder, the
+  /// gantry tilt in degrees, the smallest and largest slice gaps in mm, and
+  /// the number of slices read.
+  int GetNumberOfSeries() const { return this->NumberOfSeries; }
+  double GetGantryTilt() const { return this->GantryTilt; }
+  double GetMinimumSliceGap() const { return this->MinimumSliceGap; }
+  double GetMaximumSliceGap() const { return this->MaximumSliceGap; }
+  int GetNumberOfInputSlices() const { return this->NumberOfInputSlices; }
+  ///@}
+
+protected:
+  vtkLKMedicalImageReader();
+  ~vtkLKMedicalImageReader() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// Reads the whole volume into Volume and PatientMatrix; false on error (reported).
+  bool ReadVolume();
+
+  char* FileName = nullptr;
+  int SeriesIndex = -1;
+  double SliceSpacing = 0.0;
+  vtkMatrix4x4* PatientMatrix;
+  vtkImageData* Volume;
+  vtkMTimeType VolumeTime = 0;
+  std::string FileFormat;
+  int NumberOfSeries = 0;
+  double GantryTilt = 0.0;
+  double MinimumSliceGap = 0.0;
+  double MaximumSliceGap = 0.0;
+  int NumberOfInputSlices = 0;
+
+private:
+  vtkLKMedicalImageReader(const vtkLKMedicalImageReader&) = delete;
+  void operator=(const vtkLKMedicalImageReader&) = delete;
+};
+
+#endif

@@ -1,0 +1,263 @@
+#include "vtkLKMetroFilter.h"
+
+#include "latticekit/ClosestPointTree.h"
+#include "latticekit/DistanceStatistics.h"
+#include "latticekit/SurfaceSampling.h"
+#include "vtkLKPolyDataConversion.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkLKMetroFilter);
+
+namespace
+{
+void addValue(vtkFieldData* fd, const std::string& name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name.c_str());
+  a->InsertNextValue(value);
+  fd->AddArray(a);
+}
+
+void addStatistics(
+  vtkFieldData* fd, const std::string& prefix, const lk::DistanceStatistics& s, double diagonal)
+{
+  const double pct = diagonal > 0.0 ? 100.0 / diagonal : 0.0;
+  addValue(fd, prefix + "_Max", s.max);
+  addValue(fd, prefix + "_Mean", s.mean);
+  addValue(fd, prefix + "_RMS", s.rms);
+  addValue(fd, prefix + "_MaxPercent", s.max * pct);
+  addValue(fd, prefix + "_MeanPercent", s.mean * pct);
+  addValue(fd, prefix + "_RMSPercent", s.rms * pct);
+  addValue(fd, prefix + "_Samples", static_cast<double>(s.samples()));
+}
+
+void addSampleCounts(vtkFieldData* fd, const std::string& prefix, const lk::DistanceStatistics& s)
+{
+  addValue(fd, prefix + "_VertexSamples", static_cast<double>(s.vertexSamples));
+  addValue(fd, prefix + "_EdgeSamples", static_cast<double>(s.edgeSamples));
+  addValue(fd, prefix + "_FaceSamples", static_cast<double>(s.faceSamples));
+}
+} // namespace
+
+vtkLKMetroFilter::vtkLKMetroFilter()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+void vtkLKMetroFilter::SetTargetConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkLKMetroFilter::SetTargetData(vtkPolyData* pd)
+{
+  this->SetInputData(1, pd);
+}
+
+int vtkLKMetroFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  (void)port;
+  return 1;
+}
+
+void vtkLKMetroFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "SampleDensity: " << this->SampleDensity << "\n";
+  os << indent << "VertexSampling: " << this->VertexSampling << "\n";
+  os << indent << "EdgeSampling: " << this->EdgeSampling << "\n";
+  os << indent << "FaceSampling: " << this->FaceSampling << "\n";
+  os << indent << "FaceSamplingMethod: "
+     << (this->FaceSamplingMethod == MONTE_CARLO ? "MonteCarlo" : "SimilarTriangles") << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "Symmetric: " << this->Symmetric << "\n";
+  os << indent << "ColorMaximum: " << this->ColorMaximum << "\n";
+}
+
+int vtkLKMetroFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* inputA = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* inputB = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  std::fill(std::begin(this->Results), std::end(this->Results), 0.0);
+  this->SampleCounts[0] = this->SampleCounts[1] = 0;
+  if (!inputB)
+  {
+    vtkErrorMacro("Mesh B (input 1) is missing: call SetTargetConnection or SetTargetData.");
+    return 0;
+  }
+  if (!this->VertexSampling && !this->EdgeSampling && !this->FaceSampling)
+  {
+    vtkErrorMacro("Every kind of sampling is off: turn on vertex, edge or face sampling.");
+    return 0;
+  }
+  if (!(this->SampleDensity >= 0.0) || !std::isfinite(this->SampleDensity))
+  {
+    vtkErrorMacro("SampleDensity must be a finite number >= 0, not " << this->SampleDensity << ".");
+    return 0;
+  }
+  lk::TriangleMesh meshA, meshB;
+  std::string problem = lkvtk::toTriangleMesh(inputA, meshA);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Mesh A (input 0): " << problem << ".");
+    return 0;
+  }
+  problem = lkvtk::toTriangleMesh(inputB, meshB);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Mesh B (input 1): " << problem << ".");
+    return 0;
+  }
+  const double areaA = lk::surfaceArea(meshA);
+  const double areaB = lk::surfaceArea(meshB);
+  if (!(areaA > 0.0) || !(areaB > 0.0))
+  {
+    vtkErrorMacro("Mesh " << (areaA > 0.0 ? "B" : "A")
+                          << " has zero area: every triangle is degenerate.");
+    return 0;
+  }
+  lk::Box3 box = lk::boundingBox(meshA);
+  box.extend(lk::boundingBox(meshB));
+  const double diagonal = box.diagonal();
+
+  lk::SamplingOptions options;
+  options.vertexSamples = this->VertexSampling;
+  options.edgeSamples = this->EdgeSampling;
+  options.faceSamples = this->FaceSampling;
+  options.method = this->FaceSamplingMethod == MONTE_CARLO ? lk::FaceSamplingMethod::MonteCarlo
+                                                           : lk::FaceSamplingMethod::SimilarTriangles;
+  options.seed = static_cast<std::uint64_t>(this->RandomSeed);
+  const std::size_t target = this->NumberOfSamples > 0
+    ? static_cast<std::size_t>(this->NumberOfSamples)
+    : lk::defaultSampleCount(meshA.triangles.size(), meshB.triangles.size());
+
+  const int directions = this->Symmetric ? 2 : 1;
+  // Progress: building the trees 10 %, then the sampled directions.
+  const double treeShare = 0.1;
+  lk::DistanceStatistics stats[2];
+  std::vector<double> pointDistance(meshA.points.size(), 0.0);
+  for (int dir = 0; dir < directions; ++dir)
+  {
+    const lk::TriangleMesh& sampled = dir == 0 ? meshA : meshB;
+    const lk::TriangleMesh& reference = dir == 0 ? meshB : meshA;
+    const double area = dir == 0 ? areaA : areaB;
+    options.density = this->SampleDensity > 0.0 ? this->SampleDensity
+                                                : static_cast<double>(target) / area;
+    const lk::ClosestPointTree tree(reference);
+    const double base = treeShare + (1.0 - treeShare) * dir / directions;
+    this->UpdateProgress(base);
+    const lk::SampleSet samples = lk::sampleSurface(sampled, options);
+    std::vector<double> distance(samples.size(), 0.0);
+
+    // Batches keep progress and abort responsive; within a batch the SMP
+    // grain keeps neighbouring samples together so hints stay coherent.
+    const std::size_t n = samples.size();
+    const std::size_t batches = 20;
+    const std::size_t batch = std::max<std::size_t>(1, (n + batches - 1) / batches);
+    for (std::size_t b0 = 0; b0 < n; b0 += batch)
+    {
+      const std::size_t b1 = std::min(n, b0 + batch);
+      vtkSMPTools::For(static_cast<vtkIdType>(b0), static_cast<vtkIdType>(b1), 2048,
+        [&](vtkIdType begin, vtkIdType end) {
+          tree.distances(samples, static_cast<std::size_t>(begin), static_cast<std::size_t>(end),
+            distance.data());
+        });
+      this->UpdateProgress(
+        base + (1.0 - treeShare) / directions * static_cast<double>(b1) / static_cast<double>(n));
+      if (this->GetAbortExecute())
+      {
+        vtkWarningMacro("Aborted.");
+        return 1;
+      }
+    }
+    stats[dir] = lk::summarizeDistances(samples, distance);
+    this->SampleCounts[dir] = static_cast<vtkIdType>(samples.size());
+
+    if (dir == 0)
+    {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(meshA.points.size()), 2048,
+        [&](vtkIdType begin, vtkIdType end) {
+          lk::ClosestPointTree::Hit hint;
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            hint = tree.closest(meshA.points[static_cast<std::size_t>(i)], hint);
+            pointDistance[static_cast<std::size_t>(i)] = hint.distance;
+          }
+        });
+    }
+  }
+  if (directions == 1)
+  {
+    stats[1] = stats[0];
+  }
+  const lk::DistanceStatistics sym =
+    this->Symmetric ? lk::symmetricStatistics(stats[0], stats[1]) : stats[0];
+
+  output->ShallowCopy(inputA);
+  vtkNew<vtkDoubleArray> dist;
+  dist->SetName("Distance");
+  dist->SetNumberOfValues(static_cast<vtkIdType>(pointDistance.size()));
+  double maxPoint = 0.0;
+  for (std::size_t i = 0; i < pointDistance.size(); ++i)
+  {
+    dist->SetValue(static_cast<vtkIdType>(i), pointDistance[i]);
+    maxPoint = std::max(maxPoint, pointDistance[i]);
+  }
+  output->GetPointData()->AddArray(dist);
+  output->GetPointData()->SetActiveScalars("Distance");
+
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0); // blue (small) to red (large)
+  const double colorMax = this->ColorMaximum > 0.0 ? this->ColorMaximum : maxPoint;
+  lut->SetTableRange(0.0, colorMax > 0.0 ? colorMax : 1.0);
+  lut->Build();
+  vtkSmartPointer<vtkUnsignedCharArray> colors;
+  colors.TakeReference(lut->MapScalars(dist, VTK_COLOR_MODE_MAP_SCALARS, 0, VTK_RGB));
+  colors->SetName("DistanceColors");
+  output->GetPointData()->AddArray(colors);
+
+  vtkFieldData* fd = output->GetFieldData();
+  addValue(fd, "BoundingBoxDiagonal", diagonal);
+  addStatistics(fd, "AtoB", stats[0], diagonal);
+  addSampleCounts(fd, "AtoB", stats[0]);
+  if (this->Symmetric)
+  {
+    addStatistics(fd, "BtoA", stats[1], diagonal);
+    addSampleCounts(fd, "BtoA", stats[1]);
+  }
+  addStatistics(fd, "Hausdorff", sym, diagonal);
+
+  this->Results[0] = diagonal;
+  this->Results[1] = stats[0].max;
+  this->Results[2] = stats[0].mean;
+  this->Results[3] = stats[0].rms;
+  this->Results[4] = stats[1].max;
+  this->Results[5] = stats[1].mean;
+  this->Results[6] = stats[1].rms;
+  this->Results[7] = sym.max;
+  this->Results[8] = sym.mean;
+  this->Results[9] = sym.rms;
+  this->UpdateProgress(1.0);
+  return 1;
+}

@@ -1,0 +1,25 @@
+#pragma once
+/// \file vtkLKPolyDataConversion.h
+/// Private: conversion between vtkPolyData and the cores' lk::TriangleMesh,
+/// with the input checks every latticekit filter shares.
+
+#include "latticekit/TriangleMesh.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+
+namespace lkvtk
+{
+
+/// Copies the triangles of pd into mesh. Returns an empty string on success,
+/// otherwise a sentence for vtkErrorMacro (empty input, vertex/line/strip
+/// cells, polygons that are not triangles, NaN or infinite coordinates).
+std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh);
+
+/// A vtkPolyData with the mesh's points (double precision) and triangles.
+vtkSmartPointer<vtkPolyData> fromTriangleMesh(const lk::TriangleMesh& mesh);
+
+} // namespace lkvtk

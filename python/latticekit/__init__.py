@@ -1,0 +1,21 @@
+"""latticekit: medical surface modelling filters for VTK.
+
+Every filter is a VTK algorithm and composes with ``vtk`` classes in one
+pipeline::
+
+    import latticekit
+    from vtkmodules.vtkFiltersCore import vtkQuadricDecimation
+
+    reader = latticekit.vtkLKMedicalImageReader(FileName="head.nii.gz")
+    bone = latticekit.vtkLKBoneSurfaceFilter(IsoValue=300)
+    bone.SetInputConnection(reader.GetOutputPort())
+"""
+
+# The VTK modules the wrapped classes derive from must be loaded first.
+import vtkmodules.vtkCommonCore  # noqa: F401
+import vtkmodules.vtkCommonDataModel  # noqa: F401
+import vtkmodules.vtkCommonExecutionModel  # noqa: F401
+
+from .LatticeKitFilters import *  # noqa: F401,F403
+
+__version__ = "0.1.0"
