@@ -339,7 +339,18 @@ bool vtkLKMedicalImageReader::ReadVolume()
     {
       tmp->DeepCopy(shift);
     }
-    vtkMatrix4x4::Multiply4x4(ras2lps, tmp, this->PatientMatrix);
+    if (form)
+    {
+      vtkMatrix4x4::Multiply4x4(ras2lps, tmp, this->PatientMatrix);
+    }
+    else
+    {
+      // NIfTI "method 1": without qform or sform the orientation is unknown,
+      // so no RAS->LPS flip is applied: data coordinates are kept.
+      this->PatientMatrix->DeepCopy(tmp);
+      vtkWarningMacro("'" << path << "' has neither a qform nor an sform: the patient "
+                          << "orientation is unknown, so data coordinates are used as they are.");
+    }
   }
   else
   {

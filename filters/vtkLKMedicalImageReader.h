@@ -28,7 +28,8 @@
  * header give the matrix (RAS spaces are converted to LPS). MetaImage:
  * "TransformMatrix" (one axis direction after another) and "Offset" (LPS, as
  * ITK writes them). NIfTI: the qform (or sform when qform_code is 0), from RAS
- * to LPS.
+ * to LPS; a file with neither has no defined orientation, so its data
+ * coordinates are kept (with a warning).
  */
 #ifndef vtkLKMedicalImageReader_h
 #define vtkLKMedicalImageReader_h

@@ -167,7 +167,21 @@ int vtkLKMetroFilter::RequestData(
     const lk::ClosestPointTree tree(reference);
     const double base = treeShare + (1.0 - treeShare) * dir / directions;
     this->UpdateProgress(base);
-    const lk::SampleSet samples = lk::sampleSurface(sampled, options);
+    const lk::SamplingPlan plan = lk::planSampling(sampled, options);
+    lk::SampleSet samples;
+    lk::allocateSamples(plan, samples);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(plan.vertices.size()), 4096,
+      [&](vtkIdType b, vtkIdType e) {
+        lk::fillVertexSamples(sampled, plan, static_cast<std::size_t>(b), static_cast<std::size_t>(e), samples);
+      });
+    vtkSMPTools::For(0, static_cast<vtkIdType>(plan.edges.size()), 4096, [&](vtkIdType b, vtkIdType e) {
+      lk::fillEdgeSamples(sampled, plan, static_cast<std::size_t>(b), static_cast<std::size_t>(e), samples);
+    });
+    vtkSMPTools::For(0, static_cast<vtkIdType>(sampled.triangles.size()), 4096,
+      [&](vtkIdType b, vtkIdType e) {
+        lk::fillFaceSamples(sampled, plan, options, static_cast<std::size_t>(b),
+          static_cast<std::size_t>(e), samples);
+      });
     std::vector<double> distance(samples.size(), 0.0);
 
     // Batches keep progress and abort responsive; within a batch the SMP
@@ -229,7 +243,16 @@ int vtkLKMetroFilter::RequestData(
 
   vtkNew<vtkLookupTable> lut;
   lut->SetHueRange(0.667, 0.0); // blue (small) to red (large)
-  const double colorMax = this->ColorMaximum > 0.0 ? this->ColorMaximum : maxPoint;
+  double colorMax = this->ColorMaximum;
+  if (!(colorMax > 0.0) && !pointDistance.empty())
+  {
+    // The 99th percentile: a few outliers must not turn the whole map blue.
+    std::vector<double> sorted(pointDistance);
+    const std::size_t k = std::min(sorted.size() - 1, (sorted.size() * 99) / 100);
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
+    colorMax = sorted[k] > 0.0 ? sorted[k] : maxPoint;
+  }
+  this->EffectiveColorMaximum = colorMax;
   lut->SetTableRange(0.0, colorMax > 0.0 ? colorMax : 1.0);
   lut->Build();
   vtkSmartPointer<vtkUnsignedCharArray> colors;

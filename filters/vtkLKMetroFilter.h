@@ -29,7 +29,8 @@
  *
  * Output: a shallow copy of input 0 with point data "Distance" (each point of
  * A to B) and "DistanceColors" (RGB, blue small to red large, from 0 to the
- * largest point distance or ColorMaximum), and field data arrays of one value
+ * 99th percentile of the point distances, or ColorMaximum; larger distances
+ * are red too), and field data arrays of one value
  * each: BoundingBoxDiagonal; for P in {AtoB, BtoA, Hausdorff}: P_Max, P_Mean,
  * P_RMS, P_MaxPercent, P_MeanPercent, P_RMSPercent, P_Samples; and
  * AtoB_VertexSamples, AtoB_EdgeSamples, AtoB_FaceSamples (BtoA likewise).
@@ -89,7 +90,8 @@ public:
   ///@}
 
   ///@{
-  /// Similar-triangle subdivision (default) or Monte Carlo face sampling.
+  /// Monte Carlo (default: unbiased, seeded) or similar-triangle subdivision
+  /// (deterministic, but its centroid rule reads a convex distance low).
   vtkSetClampMacro(FaceSamplingMethod, int, SIMILAR_TRIANGLES, MONTE_CARLO);
   vtkGetMacro(FaceSamplingMethod, int);
   void SetFaceSamplingMethodToSimilarTriangles() { this->SetFaceSamplingMethod(SIMILAR_TRIANGLES); }
@@ -110,7 +112,8 @@ public:
   ///@}
 
   ///@{
-  /// Distance mapped to red in DistanceColors; 0 (default) uses the largest point distance.
+  /// Distance mapped to red in DistanceColors; 0 (default) uses the 99th
+  /// percentile of the point distances.
   vtkSetClampMacro(ColorMaximum, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(ColorMaximum, double);
   ///@}
@@ -129,6 +132,8 @@ public:
   double GetSymmetricRMS() const { return this->Results[9]; }
   vtkIdType GetNumberOfForwardSamples() const { return this->SampleCounts[0]; }
   vtkIdType GetNumberOfBackwardSamples() const { return this->SampleCounts[1]; }
+  /// The distance that DistanceColors maps to red in the last update.
+  double GetEffectiveColorMaximum() const { return this->EffectiveColorMaximum; }
   ///@}
 
 protected:
@@ -142,10 +147,11 @@ protected:
   bool VertexSampling = true;
   bool EdgeSampling = true;
   bool FaceSampling = true;
-  int FaceSamplingMethod = SIMILAR_TRIANGLES;
+  int FaceSamplingMethod = MONTE_CARLO;
   int RandomSeed = 5489;
   bool Symmetric = true;
   double ColorMaximum = 0.0;
+  double EffectiveColorMaximum = 0.0;
   double Results[10] = {};
   vtkIdType SampleCounts[2] = {};
 

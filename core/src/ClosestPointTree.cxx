@@ -60,8 +60,10 @@ ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh)
   }
   impl_->tree.insert(impl_->triangles.begin(), impl_->triangles.end());
   impl_->tree.build();
-  impl_->tree.accelerate_distance_queries();
-  // Force the lazy construction now, so that later queries are read-only.
+  // Queries are chained through hints (see distances()), so CGAL's internal
+  // k-d tree of hints is not worth building. Forcing the lazy construction of
+  // the tree now keeps later queries read-only, hence thread-safe.
+  impl_->tree.do_not_accelerate_distance_queries();
   impl_->tree.closest_point(impl_->triangles.front().vertex(0));
 }
 
@@ -78,9 +80,12 @@ ClosestPointTree::Hit ClosestPointTree::closest(const Vec3& query, const Hit& hi
   {
     return closest(query);
   }
-  const Tree::Point_and_primitive_id h(
-    toPoint(hint.point), impl_->triangles.begin() + static_cast<std::ptrdiff_t>(hint.face));
-  return impl_->makeHit(query, impl_->tree.closest_point_and_primitive(toPoint(query), h));
+  // The closest point of the previous hit's triangle bounds the search far
+  // more tightly than the previous hit point itself.
+  const auto tri = impl_->triangles.begin() + static_cast<std::ptrdiff_t>(hint.face);
+  const Point q = toPoint(query);
+  const Tree::Point_and_primitive_id h(Kernel().construct_projected_point_3_object()(*tri, q), tri);
+  return impl_->makeHit(query, impl_->tree.closest_point_and_primitive(q, h));
 }
 
 void ClosestPointTree::distances(

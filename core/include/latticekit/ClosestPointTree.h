@@ -29,7 +29,7 @@ public:
   ClosestPointTree(const ClosestPointTree&) = delete;
   ClosestPointTree& operator=(const ClosestPointTree&) = delete;
 
-  /// Closest point, with no hint (the tree's internal k-d tree gives one).
+  /// Closest point, with no hint (slower: the search starts from an arbitrary triangle).
   Hit closest(const Vec3& query) const;
   /// Closest point, starting from a hint (any earlier hit on this mesh).
   Hit closest(const Vec3& query, const Hit& hint) const;

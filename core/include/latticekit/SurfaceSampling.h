@@ -12,6 +12,7 @@
 
 #include "latticekit/TriangleMesh.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -61,8 +62,34 @@ struct SampleSet
 /// Metro's default: ten face samples per triangle of the larger mesh.
 std::size_t defaultSampleCount(std::size_t facesA, std::size_t facesB);
 
-/// Samples the mesh. Vertex samples come first (one per used point, in point
-/// order), then edge samples (each undirected edge once, spacing
+/// Where every sample goes: the sampling is planned first (counts and
+/// offsets, serial and cheap), then filled, which may run in parallel on
+/// disjoint ranges of vertices, edges and faces.
+struct SamplingPlan
+{
+  double density = 0.0;
+  std::vector<std::int64_t> vertices;                ///< sampled vertex ids
+  std::vector<std::array<std::int64_t, 3>> edges;    ///< (a, b, triangle), each edge once
+  std::vector<std::size_t> edgeOffset;               ///< size edges+1
+  std::vector<std::size_t> faceOffset;               ///< size triangles+1
+  std::size_t vertexBegin = 0, edgeBegin = 0, faceBegin = 0, total = 0;
+};
+
+SamplingPlan planSampling(const TriangleMesh& mesh, const SamplingOptions& options);
+
+/// Allocates the sample set for a plan.
+void allocateSamples(const SamplingPlan& plan, SampleSet& set);
+
+/// Fills the samples of vertices [v0, v1), edges [e0, e1) and faces [f0, f1).
+/// Disjoint ranges may be filled concurrently. Monte Carlo samples of face f
+/// depend only on (seed, f), so the result does not depend on the ranges.
+void fillVertexSamples(const TriangleMesh& mesh, const SamplingPlan& plan, std::size_t v0, std::size_t v1, SampleSet& set);
+void fillEdgeSamples(const TriangleMesh& mesh, const SamplingPlan& plan, std::size_t e0, std::size_t e1, SampleSet& set);
+void fillFaceSamples(const TriangleMesh& mesh, const SamplingPlan& plan, const SamplingOptions& options,
+  std::size_t f0, std::size_t f1, SampleSet& set);
+
+/// Samples the mesh serially. Vertex samples come first (one per used point,
+/// in point order), then edge samples (each undirected edge once, spacing
 /// 1/sqrt(density), end points excluded), then face samples in triangle
 /// order, so consecutive samples are spatially coherent.
 SampleSet sampleSurface(const TriangleMesh& mesh, const SamplingOptions& options);

@@ -1,0 +1,377 @@
+#include "AppSupport.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkLogger.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkOBJWriter.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
+#include <vtkPLYReader.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSTLReader.h>
+#include <vtkSTLWriter.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace lkapp
+{
+
+namespace
+{
+int g_errors = 0;
+std::string g_messages;
+bool g_quiet = false;
+
+std::string lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+/// "ERROR: In file, line N\nvtkClass (0x..): message\n\n" -> "message".
+std::string cleanMessage(const std::string& text)
+{
+  std::string m = text;
+  const auto nl = m.find('\n');
+  if (m.rfind("ERROR: In", 0) == 0 || m.rfind("Warning: In", 0) == 0 ||
+    m.rfind("Generic Warning: In", 0) == 0)
+  {
+    m = nl == std::string::npos ? m : m.substr(nl + 1);
+  }
+  const auto paren = m.find("): ");
+  if (paren != std::string::npos && paren < 80)
+  {
+    m = m.substr(paren + 3);
+  }
+  while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+  {
+    m.pop_back();
+  }
+  return m;
+}
+
+class AppOutputWindow : public vtkOutputWindow
+{
+public:
+  static AppOutputWindow* New();
+  vtkTypeMacro(AppOutputWindow, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override
+  {
+    const std::string m = cleanMessage(text);
+    if (m.find("returned failure for request") != std::string::npos)
+    {
+      return; // the executive repeating the filter's own error
+    }
+    ++g_errors;
+    g_messages += (g_messages.empty() ? "" : "\n") + m;
+    std::cerr << "\nerror: " << m << std::endl;
+  }
+  void DisplayWarningText(const char* text) override
+  {
+    if (!g_quiet)
+    {
+      std::cerr << "\nwarning: " << cleanMessage(text) << std::endl;
+    }
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayDebugText(const char*) override {}
+  void DisplayText(const char* text) override
+  {
+    if (!g_quiet)
+    {
+      std::cerr << text;
+    }
+  }
+};
+vtkStandardNewMacro(AppOutputWindow);
+} // namespace
+
+void installMessageHandler(bool quiet)
+{
+  g_quiet = quiet;
+  // VTK's logger would print every message a second time, in its own format.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkNew<AppOutputWindow> window;
+  vtkOutputWindow::SetInstance(window);
+}
+
+int errorCount()
+{
+  return g_errors;
+}
+
+std::string errors()
+{
+  return g_messages;
+}
+
+void clearErrors()
+{
+  g_errors = 0;
+  g_messages.clear();
+}
+
+ProgressBar::ProgressBar(vtkAlgorithm* algorithm, const std::string& label, bool enabled)
+  : label_(label)
+  , enabled_(enabled)
+  , algorithm_(algorithm)
+{
+  if (!enabled_ || !algorithm_)
+  {
+    return;
+  }
+  vtkNew<vtkCallbackCommand> cb;
+  cb->SetClientData(this);
+  cb->SetCallback([](vtkObject*, unsigned long, void* cd, void* call) {
+    static_cast<ProgressBar*>(cd)->update(*static_cast<double*>(call));
+  });
+  tag_ = algorithm_->AddObserver(vtkCommand::ProgressEvent, cb);
+  update(0.0);
+}
+
+ProgressBar::~ProgressBar()
+{
+  finish();
+  if (algorithm_ && tag_)
+  {
+    algorithm_->RemoveObserver(tag_);
+  }
+}
+
+void ProgressBar::update(double fraction)
+{
+  if (!enabled_ || finished_)
+  {
+    return;
+  }
+  const int percent = static_cast<int>(std::lround(100.0 * std::clamp(fraction, 0.0, 1.0)));
+  if (!isatty(2))
+  {
+    // A log, not a terminal: one line, a mark every 10 %.
+    const int step = percent / 10 * 10;
+    if (step > lastDrawn_)
+    {
+      std::cerr << (lastDrawn_ < 0 ? label_ + " " : std::string(" ")) << step << "%" << std::flush;
+      lastDrawn_ = step;
+    }
+    return;
+  }
+  if (percent == lastDrawn_)
+  {
+    return;
+  }
+  lastDrawn_ = percent;
+  const int width = 30;
+  const int filled = percent * width / 100;
+  std::cerr << "\r" << label_ << " [" << std::string(static_cast<std::size_t>(filled), '#')
+            << std::string(static_cast<std::size_t>(width - filled), '.') << "] " << percent << "%"
+            << std::flush;
+}
+
+void ProgressBar::finish()
+{
+  if (enabled_ && !finished_)
+  {
+    update(1.0);
+    std::cerr << std::endl;
+  }
+  finished_ = true;
+}
+
+vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& error)
+{
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    error = "cannot open '" + path + "': no such file";
+    return nullptr;
+  }
+  const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".vtk")
+  {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    r->MergingOn();
+    reader = r;
+  }
+  else if (ext == ".ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    error = "cannot read '" + path + "': unknown extension (use " + meshExtensions() + ")";
+    return nullptr;
+  }
+  const int before = errorCount();
+  reader->Update();
+  auto* pd = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (errorCount() != before || !pd || pd->GetNumberOfPoints() == 0)
+  {
+    error = "cannot read '" + path + "': the file is empty or corrupt";
+    return nullptr;
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(pd);
+  return result;
+}
+
+bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
+{
+  const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
+  vtkSmartPointer<vtkAlgorithm> writer;
+  vtkNew<vtkTriangleFilter> triangles; // STL holds triangles only
+  triangles->SetInputData(mesh);
+  if (ext == ".vtp")
+  {
+    auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    w->SetFileName(path.c_str());
+    w->SetInputData(mesh);
+    w->SetDataModeToAppended();
+    w->SetCompressorTypeToZLib();
+    writer = w;
+  }
+  else if (ext == ".vtk")
+  {
+    auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
+    w->SetFileName(path.c_str());
+    w->SetInputData(mesh);
+    w->SetFileTypeToBinary();
+    writer = w;
+  }
+  else if (ext == ".stl")
+  {
+    auto w = vtkSmartPointer<vtkSTLWriter>::New();
+    w->SetFileName(path.c_str());
+    w->SetInputConnection(triangles->GetOutputPort());
+    w->SetFileTypeToBinary();
+    writer = w;
+  }
+  else if (ext == ".ply")
+  {
+    auto w = vtkSmartPointer<vtkPLYWriter>::New();
+    w->SetFileName(path.c_str());
+    w->SetInputData(mesh);
+    w->SetFileTypeToBinary();
+    if (mesh->GetPointData()->GetArray("DistanceColors"))
+    {
+      w->SetArrayName("DistanceColors");
+      w->SetColorModeToDefault();
+    }
+    writer = w;
+  }
+  else if (ext == ".obj")
+  {
+    auto w = vtkSmartPointer<vtkOBJWriter>::New();
+    w->SetFileName(path.c_str());
+    w->SetInputData(mesh);
+    writer = w;
+  }
+  else
+  {
+    error = "cannot write '" + path + "': unknown extension (use " + meshExtensions() + ")";
+    return false;
+  }
+  const int before = errorCount();
+  writer->Update();
+  if (errorCount() != before || !vtksys::SystemTools::FileExists(path, true))
+  {
+    error = "cannot write '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+const char* meshExtensions()
+{
+  return ".vtp, .vtk, .stl, .ply or .obj";
+}
+
+bool parseDouble(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end && *end == '\0' && std::isfinite(value);
+}
+
+bool parseInt(const std::string& text, long& value)
+{
+  char* end = nullptr;
+  value = std::strtol(text.c_str(), &end, 10);
+  return !text.empty() && end && *end == '\0';
+}
+
+bool parseTriple(const std::string& text, double v[3])
+{
+  std::string t = text;
+  std::replace(t.begin(), t.end(), ',', ' ');
+  std::istringstream is(t);
+  std::string a, b, c, extra;
+  if (!(is >> a >> b >> c) || (is >> extra))
+  {
+    return false;
+  }
+  return parseDouble(a, v[0]) && parseDouble(b, v[1]) && parseDouble(c, v[2]);
+}
+
+bool checkWritable(const std::string& path, std::string& error)
+{
+  const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
+  if (!dir.empty() && !vtksys::SystemTools::FileIsDirectory(dir))
+  {
+    error = "cannot write '" + path + "': folder '" + dir + "' does not exist";
+    return false;
+  }
+  const bool existed = vtksys::SystemTools::FileExists(path, true);
+  std::ofstream probe(path, std::ios::app);
+  if (!probe)
+  {
+    error = "cannot write '" + path + "': permission denied or not a file";
+    return false;
+  }
+  probe.close();
+  if (!existed)
+  {
+    std::remove(path.c_str());
+  }
+  return true;
+}
+
+} // namespace lkapp

@@ -1,0 +1,61 @@
+#pragma once
+/// \file AppSupport.h
+/// What the command-line tools share: clean error reporting (VTK errors become
+/// one-line messages and a non-zero exit), a text progress bar fed by VTK
+/// progress events, and mesh I/O chosen by file extension.
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkPolyData;
+
+namespace lkapp
+{
+
+/// Routes VTK's messages: errors are collected and printed as "error: ...",
+/// warnings as "warning: ...", pipeline noise is dropped. Call once in main.
+void installMessageHandler(bool quiet = false);
+/// Number of VTK errors since the last call to clearErrors().
+int errorCount();
+/// Messages of those errors, joined.
+std::string errors();
+void clearErrors();
+
+/// A progress bar on standard error, driven by an algorithm's ProgressEvent.
+class ProgressBar
+{
+public:
+  ProgressBar(vtkAlgorithm* algorithm, const std::string& label, bool enabled = true);
+  ~ProgressBar();
+  void update(double fraction);
+  void finish();
+
+private:
+  std::string label_;
+  bool enabled_;
+  bool finished_ = false;
+  int lastDrawn_ = -1;
+  vtkAlgorithm* algorithm_;
+  unsigned long tag_ = 0;
+};
+
+/// Reads .vtp, .vtk, .stl, .ply or .obj. Returns nullptr and sets error on failure.
+vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& error);
+/// Writes .vtp, .vtk, .stl, .ply or .obj (binary where the format allows).
+bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error);
+/// The extensions writeMesh accepts, for help texts.
+const char* meshExtensions();
+
+/// Command-line helpers.
+bool parseDouble(const std::string& text, double& value);
+bool parseInt(const std::string& text, long& value);
+bool parseTriple(const std::string& text, double v[3]);
+
+/// False (with error set) if the file cannot be created, checked before a long
+/// run so that the run does not end in a lost result.
+bool checkWritable(const std::string& path, std::string& error);
+
+} // namespace lkapp

@@ -1,0 +1,263 @@
+// latticekit-surface: CT volume or label map -> manifold bone surface.
+#include "common/AppSupport.h"
+
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
+
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkMassProperties.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <chrono>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+namespace
+{
+void usage(std::ostream& os)
+{
+  os << "usage: latticekit-surface INPUT -o OUTPUT [options]\n"
+        "\n"
+        "INPUT is a DICOM folder (or a file of the series), .nrrd/.nhdr, .mha/.mhd or .nii/.nii.gz.\n"
+        "OUTPUT is written by extension: .vtp, .vtk, .stl, .ply or .obj (patient LPS coordinates, mm).\n"
+        "\n"
+        "  --iso V            iso value (default 300, bone in HU; label maps use 0.5)\n"
+        "  --largest          keep the largest component (default)\n"
+        "  --all              keep every component\n"
+        "  --seed X,Y,Z       keep the component closest to this patient-space point\n"
+        "  --smooth N         windowed-sinc smoothing iterations on the surface (default 0)\n"
+        "  --image-smooth S   Gaussian smoothing of the volume, std. dev. in voxels\n"
+        "                     (default: 1 for label maps, none for CT)\n"
+        "  --label-map        treat the input as a 0/1 label map (auto-detected otherwise)\n"
+        "  --no-label-map     never treat the input as a label map\n"
+        "  --series I         DICOM: read series I of the folder (0 = largest, the default)\n"
+        "  --slice-spacing H  DICOM: resampled slice spacing in mm (default: smallest gap)\n"
+        "  --no-repair        skip the manifold repair\n"
+        "  -q, --quiet        no progress bar\n"
+        "  -h, --help         this help\n";
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::string input, output;
+  double iso = 300.0, imageSmooth = -1.0, seed[3] = { 0, 0, 0 };
+  long smooth = 0, series = -1;
+  double sliceSpacing = 0.0;
+  int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
+  int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
+  bool repair = true, quiet = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&](std::string& v) {
+      if (i + 1 >= argc)
+      {
+        std::cerr << "error: " << a << " needs a value\n";
+        std::exit(2);
+      }
+      v = argv[++i];
+    };
+    std::string v;
+    if (a == "-h" || a == "--help")
+    {
+      usage(std::cout);
+      return 0;
+    }
+    else if (a == "-o" || a == "--output")
+    {
+      value(output);
+    }
+    else if (a == "--iso")
+    {
+      value(v);
+      if (!lkapp::parseDouble(v, iso))
+      {
+        std::cerr << "error: --iso needs a number, not '" << v << "'\n";
+        return 2;
+      }
+    }
+    else if (a == "--largest")
+    {
+      mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
+    }
+    else if (a == "--all")
+    {
+      mode = vtkLKBoneSurfaceFilter::ALL_COMPONENTS;
+    }
+    else if (a == "--seed")
+    {
+      value(v);
+      if (!lkapp::parseTriple(v, seed))
+      {
+        std::cerr << "error: --seed needs three numbers X,Y,Z, not '" << v << "'\n";
+        return 2;
+      }
+      mode = vtkLKBoneSurfaceFilter::SEEDED_COMPONENT;
+    }
+    else if (a == "--smooth")
+    {
+      value(v);
+      if (!lkapp::parseInt(v, smooth) || smooth < 0 || smooth > 1000)
+      {
+        std::cerr << "error: --smooth needs an integer from 0 to 1000, not '" << v << "'\n";
+        return 2;
+      }
+    }
+    else if (a == "--image-smooth")
+    {
+      value(v);
+      if (!lkapp::parseDouble(v, imageSmooth) || imageSmooth < 0.0 || imageSmooth > 20.0)
+      {
+        std::cerr << "error: --image-smooth needs a number from 0 to 20, not '" << v << "'\n";
+        return 2;
+      }
+    }
+    else if (a == "--label-map")
+    {
+      labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_ON;
+    }
+    else if (a == "--no-label-map")
+    {
+      labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_OFF;
+    }
+    else if (a == "--series")
+    {
+      value(v);
+      if (!lkapp::parseInt(v, series) || series < 0)
+      {
+        std::cerr << "error: --series needs an integer >= 0, not '" << v << "'\n";
+        return 2;
+      }
+    }
+    else if (a == "--slice-spacing")
+    {
+      value(v);
+      if (!lkapp::parseDouble(v, sliceSpacing) || sliceSpacing <= 0.0)
+      {
+        std::cerr << "error: --slice-spacing needs a positive number, not '" << v << "'\n";
+        return 2;
+      }
+    }
+    else if (a == "--no-repair")
+    {
+      repair = false;
+    }
+    else if (a == "-q" || a == "--quiet")
+    {
+      quiet = true;
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      std::cerr << "error: unknown option " << a << "\n";
+      usage(std::cerr);
+      return 2;
+    }
+    else if (input.empty())
+    {
+      input = a;
+    }
+    else
+    {
+      std::cerr << "error: more than one input given ('" << input << "', '" << a << "')\n";
+      return 2;
+    }
+  }
+  if (input.empty() || output.empty())
+  {
+    std::cerr << "error: an INPUT and -o OUTPUT are required\n";
+    usage(std::cerr);
+    return 2;
+  }
+  lkapp::installMessageHandler(quiet);
+  std::string error;
+  if (!lkapp::checkWritable(output, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(input.c_str());
+  reader->SetSeriesIndex(static_cast<int>(series));
+  reader->SetSliceSpacing(sliceSpacing);
+  reader->Update();
+  if (lkapp::errorCount() > 0)
+  {
+    return 1;
+  }
+  vtkNew<vtkLKBoneSurfaceFilter> surface;
+  surface->SetInputConnection(reader->GetOutputPort());
+  surface->SetIsoValue(iso);
+  surface->SetImageSmoothing(imageSmooth);
+  surface->SetSmoothingIterations(static_cast<int>(smooth));
+  surface->SetExtractionMode(mode);
+  surface->SetSeedPoint(seed);
+  surface->SetLabelMapMode(labelMode);
+  surface->SetRepair(repair);
+  {
+    lkapp::ProgressBar bar(surface, "surface", !quiet);
+    surface->Update();
+  }
+  if (lkapp::errorCount() > 0)
+  {
+    return 1;
+  }
+  vtkPolyData* mesh = surface->GetOutput();
+  if (!lkapp::writeMesh(mesh, output, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  std::cout << "input      " << input << " (" << reader->GetFileFormat() << ", " << dims[0] << " x "
+            << dims[1] << " x " << dims[2] << ")\n";
+  if (std::strcmp(reader->GetFileFormat(), "DICOM") == 0)
+  {
+    std::cout << "dicom      " << reader->GetNumberOfInputSlices() << " slices, gaps "
+              << reader->GetMinimumSliceGap() << " to " << reader->GetMaximumSliceGap()
+              << " mm, gantry tilt " << reader->GetGantryTilt() << " deg, series "
+              << (series < 0 ? 0 : series) << " of " << reader->GetNumberOfSeries() << "\n";
+  }
+  std::cout << "iso value  " << surface->GetEffectiveIsoValue()
+            << (surface->GetTreatedAsLabelMap() ? " (label map)" : "") << "\n";
+  std::cout << "surface    " << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfPolys()
+            << " triangles\n";
+  auto field = [&](const char* name) -> long {
+    vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+    return a ? static_cast<long>(a->GetTuple1(0)) : -1;
+  };
+  if (repair)
+  {
+    const long boundary = field("BoundaryEdges");
+    std::cout << "topology   manifold (CGAL Surface_mesh), " << field("Components")
+              << " component(s), " << (boundary == 0 ? "closed" : "open with ") ;
+    if (boundary != 0)
+    {
+      std::cout << boundary << " boundary edges";
+    }
+    std::cout << "; repair merged " << field("MergedPoints") << " points, removed "
+              << field("RemovedDegenerateFaces") << " degenerate faces, split "
+              << field("SplitNonManifoldVertices") << " non-manifold vertices\n";
+  }
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(mesh);
+  mass->Update();
+  std::cout << "area       " << mass->GetSurfaceArea() << " mm^2";
+  if (repair && field("BoundaryEdges") == 0)
+  {
+    std::cout << ", volume " << mass->GetVolume() / 1000.0 << " ml";
+  }
+  std::cout << "\n";
+  std::cout << "written    " << output << " in " << seconds << " s\n";
+  return 0;
+}
