@@ -162,18 +162,35 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     error = "the DICOM series has no ImageOrientationPatient or PixelSpacing";
     return false;
   }
+  // Direction cosines are stored rounded (often to 6 decimals): make them
+  // orthonormal (Gram-Schmidt) so that the patient matrix is a rotation.
   V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
-  V3 n = cross(r, c);
-  const double nn = std::sqrt(dot(n, n));
-  if (!(nn > 0.5))
+  const double rn = std::sqrt(dot(r, r));
+  if (!(rn > 0.5))
   {
     error = "the DICOM ImageOrientationPatient is degenerate";
     return false;
   }
-  for (double& v : n)
+  for (double& v : r)
   {
-    v /= nn;
+    v /= rn;
   }
+  const double rc = dot(r, c);
+  for (int a = 0; a < 3; ++a)
+  {
+    c[static_cast<std::size_t>(a)] -= rc * r[static_cast<std::size_t>(a)];
+  }
+  const double cn = std::sqrt(dot(c, c));
+  if (!(cn > 0.5))
+  {
+    error = "the DICOM ImageOrientationPatient is degenerate";
+    return false;
+  }
+  for (double& v : c)
+  {
+    v /= cn;
+  }
+  const V3 n = cross(r, c);
   const double dx = ps[1], dy = ps[0]; // PixelSpacing is (row spacing, column spacing)
   if (!(dx > 0.0) || !(dy > 0.0))
   {
@@ -241,15 +258,15 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   }
 
   // The output grid.
-  const double h = sliceSpacing > 0.0 ? sliceSpacing : report.minGap;
+  // Automatic spacing: the largest spacing not above the smallest gap that
+  // puts output slices exactly on the first and last input slices. A given
+  // spacing is kept; the last output slice then lies at or beyond the last
+  // input slice, and repeats it there.
   const double zSpan = slices.back().z - slices.front().z;
-  const int nz = static_cast<int>(std::floor(zSpan / h + 1e-6)) + 1;
-  if (static_cast<double>(nz) * dims[0] * dims[1] > 2.0e9)
-  {
-    error = "the resampled volume would be too large; choose a larger slice spacing";
-    return false;
-  }
-
+  const double wanted = sliceSpacing > 0.0 ? sliceSpacing : report.minGap;
+  const int steps = zSpan > 0.0 ? static_cast<int>(std::ceil(zSpan / wanted - 1e-9)) : 0;
+  const int nz = steps + 1;
+  const double h = sliceSpacing > 0.0 || steps == 0 ? wanted : zSpan / steps;
   vtkNew<vtkImageCast> cast;
   cast->SetInputData(raw);
   cast->SetOutputScalarTypeToFloat();
@@ -272,8 +289,21 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     zs[k] = slices[k].z - slices.front().z;
   }
 
+  // The grid covers every slice's footprint: with tilt, later slices are
+  // shifted in plane, and none of their pixels may fall off the grid.
+  const int ox = static_cast<int>(std::floor(std::min(0.0, *std::min_element(shiftX.begin(), shiftX.end())) + 1e-6));
+  const int oy = static_cast<int>(std::floor(std::min(0.0, *std::min_element(shiftY.begin(), shiftY.end())) + 1e-6));
+  const int ex = static_cast<int>(std::ceil(std::max(0.0, *std::max_element(shiftX.begin(), shiftX.end())) - 1e-6));
+  const int ey = static_cast<int>(std::ceil(std::max(0.0, *std::max_element(shiftY.begin(), shiftY.end())) - 1e-6));
+  const int nx = dims[0] - ox + ex, ny = dims[1] - oy + ey;
+  if (static_cast<double>(nz) * nx * ny > 2.0e9)
+  {
+    error = "the resampled volume would be too large; choose a larger slice spacing";
+    return false;
+  }
+
   output->Initialize();
-  output->SetDimensions(dims[0], dims[1], nz);
+  output->SetDimensions(nx, ny, nz);
   output->SetSpacing(dx, dy, h);
   output->SetOrigin(0.0, 0.0, 0.0);
   output->AllocateScalars(VTK_FLOAT, 1);
@@ -305,17 +335,19 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
       k = k == 0 ? 0 : k - 1;
       const std::size_t k1 = std::min(k + 1, zs.size() - 1);
       const double w = k1 == k ? 0.0 : (z - zs[k]) / (zs[k1] - zs[k]);
-      float* o = out + m * sliceSize;
-      for (int j = 0; j < dims[1]; ++j)
+      float* o = out + m * static_cast<vtkIdType>(nx) * ny;
+      for (int j = 0; j < ny; ++j)
       {
-        for (int i = 0; i < dims[0]; ++i)
+        for (int i = 0; i < nx; ++i)
         {
-          double v = sample(k, i - shiftX[k], j - shiftY[k]);
+          // (x, y): pixel coordinates in the frame of the lowest slice.
+          const double x = i + ox, y = j + oy;
+          double v = sample(k, x - shiftX[k], y - shiftY[k]);
           if (w > 0.0)
           {
-            v = (1.0 - w) * v + w * sample(k1, i - shiftX[k1], j - shiftY[k1]);
+            v = (1.0 - w) * v + w * sample(k1, x - shiftX[k1], y - shiftY[k1]);
           }
-          o[j * dims[0] + i] = static_cast<float>(v);
+          o[static_cast<vtkIdType>(j) * nx + i] = static_cast<float>(v);
         }
       }
     }
@@ -327,7 +359,9 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     patientMatrix->SetElement(row, 0, r[static_cast<std::size_t>(row)]);
     patientMatrix->SetElement(row, 1, c[static_cast<std::size_t>(row)]);
     patientMatrix->SetElement(row, 2, n[static_cast<std::size_t>(row)]);
-    patientMatrix->SetElement(row, 3, origin[static_cast<std::size_t>(row)]);
+    patientMatrix->SetElement(row, 3,
+      origin[static_cast<std::size_t>(row)] + ox * dx * r[static_cast<std::size_t>(row)] +
+        oy * dy * c[static_cast<std::size_t>(row)]);
   }
   return true;
 }

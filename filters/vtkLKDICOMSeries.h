@@ -37,8 +37,10 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
 
 /// Reads the series and resamples it onto a regular grid in the slice frame:
 /// x along the rows (ImageOrientationPatient[0..2]), y along the columns
-/// ([3..5]), z along their cross product, origin at the first pixel of the
-/// lowest slice. sliceSpacing <= 0 uses the smallest gap between slices.
+/// ([3..5]), z along their cross product; the grid covers every slice's
+/// footprint (tilted slices are shifted in plane). sliceSpacing <= 0 uses the
+/// largest spacing not above the smallest gap that puts grid slices exactly on
+/// the first and last input slices.
 /// The output is float (rescaled values); patientMatrix maps its data
 /// coordinates to DICOM patient (LPS) coordinates in millimetres.
 bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,

@@ -20,8 +20,10 @@
  * warning names the others. The geometry comes from every slice's own
  * ImagePositionPatient: a gantry-tilted series (slices sheared along the
  * stacking direction) and variable slice spacing are resampled (bilinear in
- * plane, linear between slices) onto a regular grid in the slice frame whose
- * z spacing is SliceSpacing, or the smallest slice gap when SliceSpacing is 0.
+ * plane, linear between slices) onto a regular grid in the slice frame that
+ * covers every slice's footprint, whose z spacing is SliceSpacing, or, when
+ * SliceSpacing is 0, the largest spacing not above the smallest slice gap that
+ * puts grid slices exactly on the first and last slices.
  * The DICOM output is float.
  *
  * NRRD: the "space directions", "space origin" and "space" fields of the
@@ -63,8 +65,8 @@ public:
   ///@}
 
   ///@{
-  /// DICOM: spacing of the resampled slices in mm; 0 (default) uses the
-  /// smallest gap between consecutive slices.
+  /// DICOM: spacing of the resampled slices in mm; 0 (default) chooses it
+  /// from the smallest gap between consecutive slices (see above).
   vtkSetClampMacro(SliceSpacing, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SliceSpacing, double);
   ///@}

@@ -1,0 +1,85 @@
+#pragma once
+/// \file TestSupport.h
+/// Shared helpers of the filter tests: the sample data folder, conversion to
+/// the core mesh type, and a recorder of VTK errors.
+
+#include "latticekit/TriangleMesh.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkNew.h>
+#include <vtkObject.h>
+#include <vtkPolyData.h>
+
+#include <string>
+
+#ifndef LATTICEKIT_SAMPLE_DATA
+#error "LATTICEKIT_SAMPLE_DATA must be defined"
+#endif
+
+namespace lktest
+{
+
+inline std::string sampleData(const std::string& relative)
+{
+  return std::string(LATTICEKIT_SAMPLE_DATA) + "/" + relative;
+}
+
+inline lk::TriangleMesh toCore(vtkPolyData* pd)
+{
+  lk::TriangleMesh m;
+  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    pd->GetPoint(i, p);
+    m.points.emplace_back(p[0], p[1], p[2]);
+  }
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    if (n == 3)
+    {
+      m.triangles.push_back({ ids[0], ids[1], ids[2] });
+    }
+  }
+  return m;
+}
+
+/// Records the ErrorEvents (and their messages) of one VTK object; while it
+/// observes, VTK does not print them.
+class ErrorRecorder
+{
+public:
+  explicit ErrorRecorder(vtkObject* object)
+  {
+    command_->SetClientData(this);
+    command_->SetCallback([](vtkObject*, unsigned long event, void* cd, void* call) {
+      auto* self = static_cast<ErrorRecorder*>(cd);
+      const std::string text = call ? static_cast<const char*>(call) : "";
+      if (event == vtkCommand::ErrorEvent)
+      {
+        ++self->errors;
+        self->messages += text;
+      }
+      else
+      {
+        ++self->warnings;
+        self->warningMessages += text;
+      }
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, command_);
+    object->AddObserver(vtkCommand::WarningEvent, command_);
+  }
+  int errors = 0;
+  int warnings = 0;
+  std::string messages;
+  std::string warningMessages;
+
+private:
+  vtkNew<vtkCallbackCommand> command_;
+};
+
+} // namespace lktest

@@ -1,0 +1,172 @@
+#include "TestMeshes.h"
+#include "latticekit/ManifoldRepair.h"
+
+#include <gtest/gtest.h>
+
+namespace
+{
+lk::TriangleMesh translated(lk::TriangleMesh m, const lk::Vec3& d)
+{
+  for (auto& p : m.points)
+  {
+    p += d;
+  }
+  return m;
+}
+
+lk::TriangleMesh merged(const lk::TriangleMesh& a, const lk::TriangleMesh& b)
+{
+  lk::TriangleMesh m = a;
+  const auto offset = static_cast<std::int64_t>(a.points.size());
+  m.points.insert(m.points.end(), b.points.begin(), b.points.end());
+  for (auto t : b.triangles)
+  {
+    m.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  return m;
+}
+} // namespace
+
+TEST(ManifoldRepair, CleanMeshIsUnchangedAndValid)
+{
+  lk::TriangleMesh m = lktest::icosphere(2, 1.0);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  const double volume = lk::signedVolume(m);
+  const lk::RepairReport r = lk::repairToManifold(m);
+  EXPECT_EQ(r.outputTriangles, r.inputTriangles);
+  EXPECT_EQ(r.mergedPoints, 0u);
+  EXPECT_EQ(r.splitNonManifold, 0u);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_TRUE(r.closed);
+  EXPECT_NEAR(lk::signedVolume(m), volume, 1e-12);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+}
+
+TEST(ManifoldRepair, TrianglesWithoutSharedPointsAreWelded)
+{
+  // Marching-cubes-like soup: every triangle has its own three points.
+  const lk::TriangleMesh cube = lktest::cube();
+  lk::TriangleMesh soup;
+  for (const auto& t : cube.triangles)
+  {
+    const auto base = static_cast<std::int64_t>(soup.points.size());
+    for (auto id : t)
+    {
+      soup.points.push_back(cube.points[static_cast<std::size_t>(id)]);
+    }
+    soup.triangles.push_back({ base, base + 1, base + 2 });
+  }
+  EXPECT_EQ(lk::countBoundaryEdges(soup), 36u); // twelve loose triangles
+  const lk::RepairReport r = lk::repairToManifold(soup);
+  EXPECT_EQ(r.mergedPoints, 36u - 8u);
+  EXPECT_EQ(soup.points.size(), 8u);
+  EXPECT_TRUE(r.closed);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(soup), "");
+  EXPECT_NEAR(lk::signedVolume(soup), 1.0, 1e-12);
+}
+
+TEST(ManifoldRepair, InsideOutMeshIsTurnedOutward)
+{
+  lk::TriangleMesh m = lktest::cube();
+  for (auto& t : m.triangles)
+  {
+    std::swap(t[1], t[2]);
+  }
+  ASSERT_NEAR(lk::signedVolume(m), -1.0, 1e-12);
+  lk::repairToManifold(m);
+  EXPECT_NEAR(lk::signedVolume(m), 1.0, 1e-12);
+}
+
+TEST(ManifoldRepair, InconsistentOrientationIsMadeConsistent)
+{
+  lk::TriangleMesh m = lktest::icosphere(1, 1.0);
+  std::swap(m.triangles[5][1], m.triangles[5][2]);
+  std::swap(m.triangles[17][1], m.triangles[17][2]);
+  EXPECT_NE(lk::cgalSurfaceMeshProblem(m), "");
+  lk::repairToManifold(m);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_GT(lk::signedVolume(m), 0.0);
+  EXPECT_EQ(lk::countBoundaryEdges(m), 0u);
+}
+
+TEST(ManifoldRepair, PinchedVertexIsSplit)
+{
+  // Two cubes touching at one corner: the shared vertex is non-manifold.
+  lk::TriangleMesh a = lktest::cube();
+  lk::TriangleMesh b = translated(lktest::cube(), lk::Vec3(1, 1, 1));
+  lk::TriangleMesh m = merged(a, b);
+  // Weld the touching corner (a's vertex 7 at (1,1,1) and b's vertex 0).
+  for (auto& t : m.triangles)
+  {
+    for (auto& id : t)
+    {
+      if (id == 8)
+      {
+        id = 7;
+      }
+    }
+  }
+  EXPECT_NE(lk::cgalSurfaceMeshProblem(m), "");
+  const lk::RepairReport r = lk::repairToManifold(m);
+  EXPECT_GE(r.splitNonManifold, 1u);
+  EXPECT_EQ(r.components, 2u);
+  EXPECT_TRUE(r.closed);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_NEAR(lk::signedVolume(m), 2.0, 1e-12);
+}
+
+TEST(ManifoldRepair, NonManifoldEdgeIsSeparated)
+{
+  // Three triangles on one edge (a book with three pages).
+  lk::TriangleMesh m;
+  m.points = { lk::Vec3(0, 0, 0), lk::Vec3(0, 0, 1), lk::Vec3(1, 0, 0), lk::Vec3(0, 1, 0),
+    lk::Vec3(-1, -1, 0) };
+  m.triangles = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } };
+  EXPECT_NE(lk::cgalSurfaceMeshProblem(m), "");
+  lk::repairToManifold(m);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_EQ(m.triangles.size(), 3u);
+}
+
+TEST(ManifoldRepair, DegenerateTrianglesAreRemoved)
+{
+  lk::TriangleMesh m = lktest::icosphere(1, 1.0);
+  // A triangle repeating a vertex, and a duplicate of an existing triangle.
+  m.triangles.push_back({ 0, 0, 1 });
+  m.triangles.push_back(m.triangles[3]);
+  lk::repairToManifold(m);
+  EXPECT_EQ(m.triangles.size(), 80u);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+}
+
+TEST(ManifoldRepair, ZeroAreaTriangleIsCollapsed)
+{
+  // A flat fan whose centre vertex sits on an edge: the sliver has zero area.
+  lk::TriangleMesh m;
+  m.points = { lk::Vec3(0, 0, 0), lk::Vec3(2, 0, 0), lk::Vec3(1, 0, 0), lk::Vec3(1, 1, 0),
+    lk::Vec3(1, -1, 0) };
+  m.triangles = { { 0, 2, 3 }, { 2, 1, 3 }, { 0, 4, 1 }, { 0, 1, 2 } };
+  ASSERT_EQ(lk::triangleArea(m, 3), 0.0);
+  lk::repairToManifold(m);
+  // CGAL removes the cap by flipping the edge under it (or collapsing it):
+  // no zero-area triangle is left and the surface is unchanged.
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+  {
+    EXPECT_GT(lk::triangleArea(m, t), 0.0) << "triangle " << t;
+  }
+  EXPECT_NEAR(lk::surfaceArea(m), 2.0, 1e-12);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+}
+
+TEST(ManifoldRepair, BadInputThrows)
+{
+  lk::TriangleMesh empty;
+  EXPECT_THROW(lk::repairToManifold(empty), std::invalid_argument);
+  lk::TriangleMesh nan = lktest::cube();
+  nan.points[0].y() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(lk::repairToManifold(nan), std::invalid_argument);
+  lk::TriangleMesh allDegenerate;
+  allDegenerate.points = { lk::Vec3(0, 0, 0), lk::Vec3(1, 0, 0) };
+  allDegenerate.triangles = { { 0, 0, 1 } };
+  EXPECT_THROW(lk::repairToManifold(allDegenerate), std::runtime_error);
+}

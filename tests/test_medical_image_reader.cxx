@@ -1,0 +1,343 @@
+#include "TestSupport.h"
+#include "vtkLKMedicalImageReader.h"
+
+#include <vtkDICOMCTGenerator.h>
+#include <vtkDICOMImageReader.h>
+#include <vtkDICOMMetaData.h>
+#include <vtkDICOMReader.h>
+#include <vtkDICOMValue.h>
+#include <vtkDICOMWriter.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkImageInterpolator.h>
+#include <vtkIntArray.h>
+#include <vtkMatrix4x4.h>
+#include <vtkMetaImageWriter.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkStringArray.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+
+namespace
+{
+const std::string geFolder = lktest::sampleData("dicom-ct-ge-tilt");
+
+std::string tempFolder(const std::string& name)
+{
+  const std::string dir = std::string(LATTICEKIT_TEST_TMP) + "/" + name;
+  vtksys::SystemTools::RemoveADirectory(dir);
+  vtksys::SystemTools::MakeDirectory(dir);
+  return dir;
+}
+
+void copyGESeries(const std::string& dir)
+{
+  for (int i = 1; i <= 28; ++i)
+  {
+    char name[16];
+    std::snprintf(name, sizeof(name), "/%02d.dcm", i);
+    vtksys::SystemTools::CopyAFile(geFolder + name, dir + name);
+  }
+}
+
+/// Median of |a - b| over the pairs.
+double medianAbs(std::vector<double> d)
+{
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+} // namespace
+
+TEST(MedicalImageReader, GantryTiltedSeriesMatchesEverySlicePosition)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(geFolder.c_str());
+  reader->Update();
+  ASSERT_STREQ(reader->GetFileFormat(), "DICOM");
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 28);
+  EXPECT_NEAR(reader->GetGantryTilt(), 18.5, 0.05);
+  EXPECT_LT(reader->GetMinimumSliceGap(), 1.2);
+  EXPECT_GT(reader->GetMaximumSliceGap(), 6.5);
+  vtkImageData* volume = reader->GetOutput();
+  vtkMatrix4x4* matrix = reader->GetPatientMatrix();
+  vtkNew<vtkMatrix4x4> toData;
+  vtkMatrix4x4::Invert(matrix, toData);
+
+  // The raw slices and their own ImagePositionPatient, through vtkDICOMReader.
+  vtkNew<vtkDICOMReader> raw;
+  vtkNew<vtkStringArray> files;
+  for (int i = 1; i <= 28; ++i)
+  {
+    char name[16];
+    std::snprintf(name, sizeof(name), "/%02d.dcm", i);
+    files->InsertNextValue(geFolder + name);
+  }
+  raw->SetFileNames(files);
+  raw->SetMemoryRowOrderToFileNative();
+  raw->Update();
+  vtkImageData* rawImage = raw->GetOutput();
+  int dims[3];
+  rawImage->GetDimensions(dims);
+  ASSERT_EQ(dims[2], 28);
+
+  vtkNew<vtkImageInterpolator> interpolator;
+  interpolator->SetInterpolationModeToLinear();
+  interpolator->SetOutValue(-5000.0);
+  interpolator->Initialize(volume);
+
+  // Naive geometry for comparison: slices stacked along the normal at one
+  // average spacing, tilt ignored (what a reader that trusts a single
+  // spacing does).
+  double zFirst = 0, zLast = 0;
+  std::vector<std::array<double, 3>> ipp(28);
+  std::vector<double> iop(6);
+  for (int k = 0; k < 28; ++k)
+  {
+    const int f = raw->GetFileIndexArray()->GetComponent(k, 0);
+    raw->GetMetaData()->Get(f, DC::ImagePositionPatient).GetValues(ipp[static_cast<std::size_t>(k)].data(), 3);
+  }
+  raw->GetMetaData()->Get(0, DC::ImageOrientationPatient).GetValues(iop.data(), 6);
+  double ps[2];
+  raw->GetMetaData()->Get(0, DC::PixelSpacing).GetValues(ps, 2);
+  const double r[3] = { iop[0], iop[1], iop[2] }, c[3] = { iop[3], iop[4], iop[5] };
+  const double n[3] = { r[1] * c[2] - r[2] * c[1], r[2] * c[0] - r[0] * c[2], r[0] * c[1] - r[1] * c[0] };
+  std::vector<double> zs(28);
+  for (int k = 0; k < 28; ++k)
+  {
+    zs[static_cast<std::size_t>(k)] = n[0] * ipp[k][0] + n[1] * ipp[k][1] + n[2] * ipp[k][2];
+  }
+  zFirst = *std::min_element(zs.begin(), zs.end());
+  zLast = *std::max_element(zs.begin(), zs.end());
+  const double naiveSpacing = (zLast - zFirst) / 27.0;
+
+  std::vector<double> errCorrect, errNaive;
+  for (int k = 0; k < 28; ++k)
+  {
+    const double order = static_cast<double>(std::count_if(
+      zs.begin(), zs.end(), [&](double z) { return z < zs[static_cast<std::size_t>(k)]; }));
+    for (int j = 96; j < dims[1] - 96; j += 16)
+    {
+      for (int i = 96; i < dims[0] - 96; i += 16)
+      {
+        const double value = rawImage->GetScalarComponentAsDouble(i, j, k, 0);
+        double p[4] = { 0, 0, 0, 1 };
+        for (int a = 0; a < 3; ++a)
+        {
+          p[a] = ipp[k][a] + i * ps[1] * r[a] + j * ps[0] * c[a];
+        }
+        double d[4];
+        toData->MultiplyPoint(p, d);
+        double sampled;
+        interpolator->Interpolate(d, &sampled);
+        ASSERT_GT(sampled, -5000.0) << "slice " << k << " pixel " << i << "," << j
+                                    << " falls outside the volume";
+        errCorrect.push_back(std::abs(sampled - value));
+        const double naive[3] = { i * ps[1], j * ps[0], order * naiveSpacing };
+        double naiveSample;
+        interpolator->Interpolate(naive, &naiveSample);
+        errNaive.push_back(std::abs(naiveSample - value));
+      }
+    }
+  }
+  const double correct = medianAbs(errCorrect), naive = medianAbs(errNaive);
+  std::printf("median |difference| at the slices' own positions: %.2f HU (naive geometry: %.2f HU)\n",
+    correct, naive);
+  EXPECT_LT(correct, 3.0); // bilinear and between-slice interpolation only
+  EXPECT_GT(naive, 10.0 * std::max(correct, 0.5));
+
+  // VTK's plain reader reports one spacing, which the gaps contradict.
+  vtkNew<vtkDICOMImageReader> plain;
+  plain->SetDirectoryName(geFolder.c_str());
+  plain->Update();
+  const double plainSpacing = plain->GetOutput()->GetSpacing()[2];
+  EXPECT_TRUE(std::abs(plainSpacing - reader->GetMinimumSliceGap()) > 0.5 ||
+    std::abs(plainSpacing - reader->GetMaximumSliceGap()) > 0.5);
+  // The matrix is a rotation (the volume was rectified, not sheared).
+  EXPECT_NEAR(matrix->Determinant(), 1.0, 1e-9);
+  // And it travels with the image.
+  vtkDataArray* stored = volume->GetFieldData()->GetArray("PatientMatrix");
+  ASSERT_NE(stored, nullptr);
+  EXPECT_EQ(stored->GetTuple1(3), matrix->GetElement(0, 3));
+}
+
+TEST(MedicalImageReader, SliceSpacingIsHonoured)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(geFolder.c_str());
+  reader->SetSliceSpacing(2.0);
+  reader->Update();
+  EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[2], 2.0);
+}
+
+TEST(MedicalImageReader, NrrdGeometryComesFromTheHeader)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  reader->Update();
+  EXPECT_STREQ(reader->GetFileFormat(), "NRRD");
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 512);
+  EXPECT_EQ(dims[2], 156);
+  EXPECT_NEAR(reader->GetOutput()->GetSpacing()[0], 0.98, 1e-9);
+  EXPECT_NEAR(reader->GetOutput()->GetSpacing()[2], 2.5, 1e-9);
+  vtkMatrix4x4* m = reader->GetPatientMatrix();
+  EXPECT_NEAR(m->GetElement(0, 3), -250.38999938964844, 1e-9);
+  EXPECT_NEAR(m->GetElement(1, 3), 155.61000061035156, 1e-9);
+  EXPECT_NEAR(m->GetElement(2, 3), -1178.0, 1e-9);
+  EXPECT_NEAR(m->Determinant(), 1.0, 1e-12);
+}
+
+TEST(MedicalImageReader, MetaImageRoundTrip)
+{
+  vtkNew<vtkLKMedicalImageReader> nrrd;
+  nrrd->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_TCGA-CV-7236_Mandible.nrrd").c_str());
+  nrrd->Update();
+  vtkNew<vtkImageData> shifted;
+  shifted->ShallowCopy(nrrd->GetOutput());
+  shifted->SetOrigin(10.0, -20.0, 30.0);
+  const std::string path = tempFolder("mha") + "/mandible.mha";
+  vtkNew<vtkMetaImageWriter> writer;
+  writer->SetInputData(shifted);
+  writer->SetFileName(path.c_str());
+  writer->SetCompression(true);
+  writer->Write();
+  vtkNew<vtkLKMedicalImageReader> mha;
+  mha->SetFileName(path.c_str());
+  mha->Update();
+  EXPECT_STREQ(mha->GetFileFormat(), "MetaImage");
+  EXPECT_EQ(mha->GetOutput()->GetNumberOfPoints(), nrrd->GetOutput()->GetNumberOfPoints());
+  EXPECT_NEAR(mha->GetPatientMatrix()->GetElement(0, 3), 10.0, 1e-9);
+  EXPECT_NEAR(mha->GetPatientMatrix()->GetElement(1, 3), -20.0, 1e-9);
+  EXPECT_NEAR(mha->GetPatientMatrix()->GetElement(2, 3), 30.0, 1e-9);
+  EXPECT_NEAR(mha->GetOutput()->GetSpacing()[2], nrrd->GetOutput()->GetSpacing()[2], 1e-6);
+}
+
+TEST(MedicalImageReader, NiftiWithoutOrientationKeepsDataCoordinatesAndWarns)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(lktest::sampleData("cthead/cthead_hu_approx.nii.gz").c_str());
+  reader->Update();
+  EXPECT_STREQ(reader->GetFileFormat(), "NIfTI");
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 256);
+  EXPECT_EQ(dims[2], 113);
+  EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[2], 2.0);
+  EXPECT_EQ(rec.warnings, 1);
+  EXPECT_NE(rec.warningMessages.find("orientation is unknown"), std::string::npos);
+  vtkNew<vtkMatrix4x4> identity;
+  for (int i = 0; i < 16; ++i)
+  {
+    EXPECT_EQ(reader->GetPatientMatrix()->GetElement(i / 4, i % 4), identity->GetElement(i / 4, i % 4));
+  }
+}
+
+TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
+{
+  const std::string dir = tempFolder("two-series");
+  copyGESeries(dir);
+  // A second, synthetic CT series of 5 slices written by vtkDICOM.
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(64, 64, 5);
+  img->SetSpacing(1.0, 1.0, 3.0);
+  img->AllocateScalars(VTK_SHORT, 1);
+  std::fill_n(static_cast<short*>(img->GetScalarPointer()), 64 * 64 * 5, short(100));
+  vtkNew<vtkDICOMCTGenerator> generator;
+  vtkNew<vtkDICOMMetaData> meta;
+  meta->Set(DC::SeriesDescription, "synthetic second series");
+  vtkNew<vtkDICOMWriter> writer;
+  writer->SetInputData(img);
+  writer->SetGenerator(generator);
+  writer->SetMetaData(meta);
+  writer->SetFilePrefix(dir.c_str());
+  writer->SetFilePattern("%s/synthetic_%03d.dcm");
+  writer->Write();
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(dir.c_str());
+  reader->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetNumberOfSeries(), 2);
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 28);
+  EXPECT_EQ(rec.warnings, 1);
+  EXPECT_NE(rec.warningMessages.find("2 series"), std::string::npos);
+
+  reader->SetSeriesIndex(1);
+  reader->Update();
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 5);
+  EXPECT_EQ(reader->GetOutput()->GetDimensions()[0], 64);
+
+  reader->SetSeriesIndex(2);
+  reader->Update();
+  EXPECT_GE(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("out of range"), std::string::npos);
+
+  // A file of the small series selects that series.
+  reader->SetSeriesIndex(-1);
+  reader->SetFileName((dir + "/synthetic_002.dcm").c_str());
+  rec.errors = 0;
+  reader->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 5);
+}
+
+TEST(MedicalImageReader, FolderWithoutDicomIsAClearError)
+{
+  const std::string dir = tempFolder("no-dicom");
+  std::ofstream(dir + "/notes.txt") << "not an image\n";
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(dir.c_str());
+  reader->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("no DICOM image series"), std::string::npos) << rec.messages;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(MedicalImageReader, MissingAndCorruptFilesAreClearErrors)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName("/nonexistent/ct.nrrd");
+  reader->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("no such file"), std::string::npos);
+
+  // An NRRD whose data is cut short.
+  const std::string dir = tempFolder("corrupt");
+  {
+    std::ifstream in(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(dir + "/cut.nrrd", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  }
+  rec.errors = 0;
+  reader->SetFileName((dir + "/cut.nrrd").c_str());
+  reader->Update();
+  EXPECT_GE(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("Cannot read NRRD"), std::string::npos) << rec.messages;
+
+  // A DICOM series with one file truncated inside its pixel data.
+  const std::string series = tempFolder("corrupt-dicom");
+  copyGESeries(series);
+  {
+    std::ifstream in(series + "/10.dcm", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(series + "/10.dcm", std::ios::binary | std::ios::trunc) << bytes.substr(0, 200000);
+  }
+  rec.errors = 0;
+  reader->SetFileName(series.c_str());
+  reader->Update();
+  EXPECT_GE(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("DICOM"), std::string::npos) << rec.messages;
+}
