@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -194,12 +195,12 @@ std::string cgalSurfaceMeshProblem(const TriangleMesh& mesh)
   {
     return "CGAL::is_valid_polygon_mesh fails";
   }
-  for (auto v : sm.vertices())
+  // One pass over the mesh (is_non_manifold_vertex scans it once per vertex).
+  std::vector<Mesh::Halfedge_index> pinched;
+  PMP::non_manifold_vertices(sm, std::back_inserter(pinched));
+  if (!pinched.empty())
   {
-    if (PMP::is_non_manifold_vertex(v, sm))
-    {
-      return "the mesh has a non-manifold vertex";
-    }
+    return "the mesh has a non-manifold vertex";
   }
   for (auto f : sm.faces())
   {

@@ -1,0 +1,241 @@
+#include "TestSupport.h"
+#include "latticekit/ManifoldRepair.h"
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
+#include "vtkLKMeshRepairFilter.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkSphereSource.h>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+struct Surface
+{
+  vtkSmartPointer<vtkPolyData> mesh;
+  int errors = 0;
+  std::string messages;
+};
+
+Surface extract(const std::string& file, double iso, int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT,
+  const double* seed = nullptr, int smoothing = 0, vtkMatrix4x4* matrix = nullptr)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(file.c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  lktest::ErrorRecorder rec(bone);
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->SetIsoValue(iso);
+  bone->SetExtractionMode(mode);
+  bone->SetSmoothingIterations(smoothing);
+  if (seed)
+  {
+    bone->SetSeedPoint(seed[0], seed[1], seed[2]);
+  }
+  if (matrix)
+  {
+    bone->SetPatientMatrix(matrix);
+  }
+  bone->Update();
+  Surface s;
+  s.mesh = vtkSmartPointer<vtkPolyData>::New();
+  s.mesh->DeepCopy(bone->GetOutput());
+  s.errors = rec.errors;
+  s.messages = rec.messages;
+  return s;
+}
+
+std::size_t components(vtkPolyData* pd)
+{
+  vtkNew<vtkPolyDataConnectivityFilter> c;
+  c->SetInputData(pd);
+  c->SetExtractionModeToAllRegions();
+  c->Update();
+  return static_cast<std::size_t>(c->GetNumberOfExtractedRegions());
+}
+
+const std::string cthead = lktest::sampleData("cthead/cthead_hu_approx.nii.gz");
+const std::string mandibles[2] = { lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd"),
+  lktest::sampleData("mandible-tcia/test_oncologist_TCGA-CV-7236_Mandible.nrrd") };
+} // namespace
+
+TEST(BoneSurface, CtHeadAt300HUIsAManifoldMeshThatCgalAccepts)
+{
+  const Surface s = extract(cthead, 300.0);
+  ASSERT_EQ(s.errors, 0) << s.messages;
+  const lk::TriangleMesh m = lktest::toCore(s.mesh);
+  EXPECT_EQ(static_cast<vtkIdType>(m.triangles.size()), s.mesh->GetNumberOfCells()); // triangles only
+  EXPECT_GT(m.triangles.size(), 500000u);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_EQ(components(s.mesh), 1u);
+  // The skull reaches the volume's edge (cervical spine), so the surface is open there.
+  const vtkDataArray* boundary = s.mesh->GetFieldData()->GetArray("BoundaryEdges");
+  ASSERT_NE(boundary, nullptr);
+  EXPECT_EQ(static_cast<std::size_t>(const_cast<vtkDataArray*>(boundary)->GetTuple1(0)),
+    lk::countBoundaryEdges(m));
+  // Outward: the enclosed volume (nearly closed) is positive.
+  EXPECT_GT(lk::signedVolume(m), 0.0);
+}
+
+TEST(BoneSurface, TciaLabelMapsGiveClosedSinglePieceMandibles)
+{
+  for (const std::string& file : mandibles)
+  {
+    const Surface s = extract(file, 300.0); // label map detected: iso 0.5
+    ASSERT_EQ(s.errors, 0) << s.messages;
+    const lk::TriangleMesh m = lktest::toCore(s.mesh);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "") << file;
+    EXPECT_EQ(lk::countBoundaryEdges(m), 0u) << file;
+    EXPECT_EQ(components(s.mesh), 1u) << file;
+    EXPECT_GT(m.points.size(), 9000u) << file;
+    EXPECT_LT(m.points.size(), 16000u) << file;
+    // A mandible holds some tens of millilitres of bone.
+    const double ml = lk::signedVolume(m) / 1000.0;
+    EXPECT_GT(ml, 20.0) << file;
+    EXPECT_LT(ml, 150.0) << file;
+  }
+}
+
+TEST(BoneSurface, MirroringPatientMatrixKeepsTheSurfaceOutward)
+{
+  vtkNew<vtkMatrix4x4> mirror;
+  mirror->SetElement(0, 0, -1.0);
+  vtkNew<vtkMatrix4x4> identity;
+  const Surface plain = extract(mandibles[1], 0.5, vtkLKBoneSurfaceFilter::LARGEST_COMPONENT, nullptr, 0, identity);
+  const Surface s = extract(mandibles[1], 0.5, vtkLKBoneSurfaceFilter::LARGEST_COMPONENT, nullptr, 0, mirror);
+  ASSERT_EQ(s.errors + plain.errors, 0) << s.messages;
+  const lk::TriangleMesh m = lktest::toCore(s.mesh);
+  EXPECT_NEAR(s.mesh->GetBounds()[0], -plain.mesh->GetBounds()[1], 1e-9); // really mirrored
+  EXPECT_NEAR(lk::signedVolume(m), lk::signedVolume(lktest::toCore(plain.mesh)), 1e-6);
+  EXPECT_GT(lk::signedVolume(m), 0.0);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+}
+
+TEST(BoneSurface, SeedSelectsTheComponentUnderIt)
+{
+  // At 800 HU the CT head falls apart into many pieces.
+  const Surface all = extract(cthead, 800.0, vtkLKBoneSurfaceFilter::ALL_COMPONENTS);
+  const Surface largest = extract(cthead, 800.0, vtkLKBoneSurfaceFilter::LARGEST_COMPONENT);
+  ASSERT_EQ(all.errors + largest.errors, 0);
+  EXPECT_GT(components(all.mesh), 1u);
+  EXPECT_LT(largest.mesh->GetNumberOfCells(), all.mesh->GetNumberOfCells());
+  // A point of the largest piece picks the largest piece.
+  double seed[3];
+  largest.mesh->GetPoint(largest.mesh->GetNumberOfPoints() / 2, seed);
+  const Surface picked = extract(cthead, 800.0, vtkLKBoneSurfaceFilter::SEEDED_COMPONENT, seed);
+  EXPECT_EQ(picked.mesh->GetNumberOfCells(), largest.mesh->GetNumberOfCells());
+  // A point of another piece picks that piece, which contains the seed.
+  vtkNew<vtkPolyDataConnectivityFilter> regions;
+  regions->SetInputData(all.mesh);
+  regions->SetExtractionModeToSpecifiedRegions();
+  regions->ColorRegionsOn();
+  regions->InitializeSpecifiedRegionList();
+  regions->AddSpecifiedRegion(1);
+  regions->Update();
+  vtkNew<vtkPolyData> other;
+  other->DeepCopy(regions->GetOutput());
+  double otherSeed[3] = { 0, 0, 0 };
+  for (vtkIdType c = 0; c < other->GetNumberOfCells(); ++c)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    other->GetCellPoints(c, n, ids);
+    other->GetPoint(ids[0], otherSeed);
+    break;
+  }
+  const Surface second = extract(cthead, 800.0, vtkLKBoneSurfaceFilter::SEEDED_COMPONENT, otherSeed);
+  ASSERT_EQ(second.errors, 0);
+  EXPECT_LT(second.mesh->GetNumberOfCells(), largest.mesh->GetNumberOfCells());
+  double closest = 1e300;
+  for (vtkIdType i = 0; i < second.mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    second.mesh->GetPoint(i, p);
+    closest = std::min(closest, std::hypot(p[0] - otherSeed[0], p[1] - otherSeed[1], p[2] - otherSeed[2]));
+  }
+  EXPECT_LT(closest, 1e-6);
+}
+
+TEST(BoneSurface, SmoothingMovesPointsButKeepsTopology)
+{
+  const Surface raw = extract(mandibles[0], 0.5);
+  const Surface smooth = extract(mandibles[0], 0.5, vtkLKBoneSurfaceFilter::LARGEST_COMPONENT, nullptr, 20);
+  ASSERT_EQ(raw.mesh->GetNumberOfPoints(), smooth.mesh->GetNumberOfPoints());
+  ASSERT_EQ(raw.mesh->GetNumberOfCells(), smooth.mesh->GetNumberOfCells());
+  double moved = 0.0;
+  for (vtkIdType i = 0; i < raw.mesh->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    raw.mesh->GetPoint(i, a);
+    smooth.mesh->GetPoint(i, b);
+    moved = std::max(moved, std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]));
+  }
+  EXPECT_GT(moved, 1e-3);
+  EXPECT_LT(moved, 2.0); // light: well under a voxel-diagonal or two
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(lktest::toCore(smooth.mesh)), "");
+}
+
+TEST(BoneSurface, IsoValueOutsideTheDataRangeIsAClearError)
+{
+  const Surface s = extract(cthead, 5000.0);
+  EXPECT_EQ(s.errors, 1);
+  EXPECT_NE(s.messages.find("outside the volume's range"), std::string::npos) << s.messages;
+  EXPECT_EQ(s.mesh->GetNumberOfCells(), 0);
+}
+
+TEST(BoneSurface, EmptyAndFlatVolumesAreClearErrors)
+{
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  lktest::ErrorRecorder rec(bone);
+  vtkNew<vtkImageData> empty;
+  bone->SetInputData(empty);
+  bone->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("empty"), std::string::npos);
+
+  vtkNew<vtkImageData> flat;
+  flat->SetDimensions(8, 8, 1);
+  flat->AllocateScalars(VTK_SHORT, 1);
+  bone->SetInputData(flat);
+  bone->Update();
+  EXPECT_EQ(rec.errors, 2);
+  EXPECT_NE(rec.messages.find("at least 2 voxels"), std::string::npos);
+
+  vtkNew<vtkImageData> nanVolume;
+  nanVolume->SetDimensions(4, 4, 4);
+  nanVolume->AllocateScalars(VTK_FLOAT, 1);
+  bone->SetInputData(nanVolume);
+  bone->SetIsoValue(std::nan(""));
+  bone->Update();
+  EXPECT_EQ(rec.errors, 3);
+  EXPECT_NE(rec.messages.find("finite"), std::string::npos);
+}
+
+TEST(MeshRepairFilter, TriangulatesAndRepairsASoup)
+{
+  vtkNew<vtkSphereSource> sphere; // triangles with a seam of duplicate points
+  sphere->SetThetaResolution(24);
+  sphere->SetPhiResolution(12);
+  vtkNew<vtkLKMeshRepairFilter> repair;
+  repair->SetInputConnection(sphere->GetOutputPort());
+  repair->Update();
+  const lk::TriangleMesh m = lktest::toCore(repair->GetOutput());
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_EQ(lk::countBoundaryEdges(m), 0u);
+  EXPECT_GT(lk::signedVolume(m), 0.0);
+
+  vtkNew<vtkPolyData> nothing;
+  lktest::ErrorRecorder rec(repair);
+  repair->SetInputData(nothing);
+  repair->Update();
+  EXPECT_EQ(rec.errors, 1);
+}
