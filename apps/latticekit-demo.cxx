@@ -362,7 +362,7 @@ int main(int argc, char* argv[])
       field(colored, (p + "_MeanPercent").c_str()), field(colored, (p + "_RMSPercent").c_str()));
     report << line;
   }
-  report << "\nFiles: `bone.vtp`, `bone.stl` (surface, patient LPS mm), `simplified.vtp`, "
+  report << "\nFiles: `bone.vtp`, `bone.stl` (surface in patient coordinates, mm), `simplified.vtp`, "
             "`bone_error.vtp` (surface with point data Distance and DistanceColors)";
 
   if (render)

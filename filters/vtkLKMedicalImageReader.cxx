@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 #include <vtkNrrdReader.h>
 #include <vtkObjectFactory.h>
+#include <vtkObjectFactoryCollection.h>
 #include <vtkPointData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtksys/SystemTools.hxx>
@@ -213,9 +214,17 @@ bool vtkLKMedicalImageReader::ReadVolume()
     this->FileFormat = "NRRD";
     // Debian's VTK may route vtkNrrdReader to an MPI variant through the object
     // factory (once vtkIOMPIImage is loaded) that reads nothing: use the serial one.
-    vtkObjectFactory::SetAllEnableFlags(false, "vtkNrrdReader");
+    vtkObjectFactory::GetRegisteredFactories(); // initialises the factory list
+    const bool overridden = vtkObjectFactory::HasOverrideAny("vtkNrrdReader") != 0;
+    if (overridden)
+    {
+      vtkObjectFactory::SetAllEnableFlags(false, "vtkNrrdReader");
+    }
     vtkNew<vtkNrrdReader> reader;
-    vtkObjectFactory::SetAllEnableFlags(true, "vtkNrrdReader");
+    if (overridden)
+    {
+      vtkObjectFactory::SetAllEnableFlags(true, "vtkNrrdReader");
+    }
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
     reader->Update();

@@ -353,6 +353,12 @@ bool parseTriple(const std::string& text, double v[3])
 
 bool checkWritable(const std::string& path, std::string& error)
 {
+  const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
+  if (ext != ".vtp" && ext != ".vtk" && ext != ".stl" && ext != ".ply" && ext != ".obj")
+  {
+    error = "cannot write '" + path + "': unknown extension (use " + meshExtensions() + ")";
+    return false;
+  }
   const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
   if (!dir.empty() && !vtksys::SystemTools::FileIsDirectory(dir))
   {

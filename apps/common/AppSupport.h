@@ -54,8 +54,9 @@ bool parseDouble(const std::string& text, double& value);
 bool parseInt(const std::string& text, long& value);
 bool parseTriple(const std::string& text, double v[3]);
 
-/// False (with error set) if the file cannot be created, checked before a long
-/// run so that the run does not end in a lost result.
+/// False (with error set) if the mesh file cannot be created or has an
+/// unknown extension: checked before a long run, so that the run does not
+/// end in a lost result.
 bool checkWritable(const std::string& path, std::string& error);
 
 } // namespace lkapp

@@ -1,0 +1,58 @@
+"""The main job end to end under Xvfb: files, report and a PNG that shows the error map."""
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+DEMO = os.environ["LATTICEKIT_DEMO"]
+SAMPLE_DATA = os.environ["LATTICEKIT_SAMPLE_DATA"]
+
+
+class DemoTest(unittest.TestCase):
+    @unittest.skipIf(shutil.which("xvfb-run") is None, "xvfb-run is not installed")
+    def test_demo_on_a_mandible(self):
+        from vtkmodules.vtkIOImage import vtkPNGReader
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+        mandible = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_TCGA-CV-7236_Mandible.nrrd")
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "out")
+            result = subprocess.run(
+                ["xvfb-run", "-a", DEMO, mandible, "-o", out, "--vertices", "2000", "-q",
+                 "--view-from", "0,-1,0.3"],
+                capture_output=True, text=True, check=False, timeout=300)
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            for name in ("bone.vtp", "bone.stl", "simplified.vtp", "bone_error.vtp", "report.md", "error.png"):
+                self.assertTrue(os.path.getsize(os.path.join(out, name)) > 0, name)
+            report = open(os.path.join(out, "report.md")).read()
+            self.assertIn("symmetric", report)
+
+            mesh = vtkXMLPolyDataReader()
+            mesh.SetFileName(os.path.join(out, "bone_error.vtp"))
+            mesh.Update()
+            self.assertIsNotNone(mesh.GetOutput().GetPointData().GetArray("Distance"))
+
+            png = vtkPNGReader()
+            png.SetFileName(os.path.join(out, "error.png"))
+            png.Update()
+            image = png.GetOutput()
+            width, height, _ = image.GetDimensions()
+            scalars = image.GetPointData().GetScalars()
+            coloured = blue = red = 0
+            for i in range(0, width * height, 7):
+                r, g, b = (scalars.GetComponent(i, c) for c in range(3))
+                if not (r > 240 and g > 240 and b > 240):
+                    coloured += 1
+                if b > 150 and r < 100:
+                    blue += 1
+                if r > 150 and b < 100 and g < 120:
+                    red += 1
+            total = width * height / 7
+            self.assertGreater(coloured / total, 0.05, "the picture is almost blank")
+            self.assertGreater(blue, 100, "no small-error (blue) surface is visible")
+            self.assertGreater(red, 5, "no large-error (red) surface is visible")
+
+
+if __name__ == "__main__":
+    unittest.main()

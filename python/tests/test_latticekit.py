@@ -1,0 +1,150 @@
+"""Python tests: latticekit through VTK's own wrappers, in pipelines with vtk classes."""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SAMPLE_DATA = os.environ.get("LATTICEKIT_SAMPLE_DATA",
+                             os.path.join(os.path.dirname(__file__), "..", "..", "sample_data"))
+MANDIBLE = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_0522c0017_Mandible.nrrd")
+GE = os.path.join(SAMPLE_DATA, "dicom-ct-ge-tilt")
+
+
+class ImportTest(unittest.TestCase):
+    def test_every_filter_is_exported(self):
+        import latticekit
+        for name in ("vtkLKMedicalImageReader", "vtkLKBoneSurfaceFilter",
+                     "vtkLKMeshRepairFilter", "vtkLKMetroFilter"):
+            cls = getattr(latticekit, name)
+            obj = cls()
+            self.assertTrue(obj.IsA("vtkAlgorithm"), name)
+            self.assertIn(name, obj.GetClassName())
+
+
+class PipelineTest(unittest.TestCase):
+    def test_vtk_sources_and_latticekit_filters_in_one_pipeline(self):
+        import latticekit
+        from vtkmodules.vtkFiltersCore import vtkQuadricDecimation, vtkTriangleFilter
+        from vtkmodules.vtkFiltersSources import vtkSphereSource
+
+        sphere = vtkSphereSource()
+        sphere.SetRadius(10.0)
+        sphere.SetThetaResolution(64)
+        sphere.SetPhiResolution(64)
+        repair = latticekit.vtkLKMeshRepairFilter()  # welds the sphere's seam
+        repair.SetInputConnection(sphere.GetOutputPort())
+        coarse = vtkQuadricDecimation()
+        coarse.SetInputConnection(repair.GetOutputPort())
+        coarse.SetTargetReduction(0.8)
+        triangles = vtkTriangleFilter()
+        triangles.SetInputConnection(coarse.GetOutputPort())
+        metro = latticekit.vtkLKMetroFilter()
+        metro.SetInputConnection(repair.GetOutputPort())
+        metro.SetTargetConnection(triangles.GetOutputPort())
+
+        progress = []
+        metro.AddObserver("ProgressEvent", lambda caller, event: progress.append(caller.GetProgress()))
+        metro.Update()
+
+        out = metro.GetOutput()
+        self.assertEqual(out.GetNumberOfPoints(), repair.GetOutput().GetNumberOfPoints())
+        hausdorff = out.GetFieldData().GetArray("Hausdorff_Max").GetValue(0)
+        self.assertGreater(hausdorff, 0.0)
+        self.assertLess(hausdorff, 1.0)  # a coarse copy of a radius-10 sphere
+        self.assertAlmostEqual(hausdorff, metro.GetHausdorffDistance(), places=12)
+        diag = out.GetFieldData().GetArray("BoundingBoxDiagonal").GetValue(0)
+        pct = out.GetFieldData().GetArray("Hausdorff_MaxPercent").GetValue(0)
+        self.assertAlmostEqual(pct, 100.0 * hausdorff / diag, places=9)
+        self.assertIsNotNone(out.GetPointData().GetArray("Distance"))
+        self.assertEqual(progress[-1], 1.0)
+        self.assertTrue(all(b >= a for a, b in zip(progress, progress[1:])))
+
+        # Changing a parameter upstream re-executes the pipeline.
+        coarse.SetTargetReduction(0.95)
+        metro.Update()
+        self.assertGreater(metro.GetHausdorffDistance(), hausdorff)
+
+    def test_label_map_to_surface_to_metro(self):
+        import latticekit
+        from vtkmodules.vtkFiltersCore import vtkQuadricDecimation
+
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(MANDIBLE)
+        bone = latticekit.vtkLKBoneSurfaceFilter()
+        bone.SetInputConnection(reader.GetOutputPort())
+        decimate = vtkQuadricDecimation()
+        decimate.SetInputConnection(bone.GetOutputPort())
+        decimate.SetTargetReduction(0.9)
+        metro = latticekit.vtkLKMetroFilter()
+        metro.SetInputConnection(bone.GetOutputPort())
+        metro.SetTargetConnection(decimate.GetOutputPort())
+        metro.Update()
+        self.assertTrue(bone.GetTreatedAsLabelMap())
+        self.assertEqual(bone.GetEffectiveIsoValue(), 0.5)
+        surface = bone.GetOutput()
+        self.assertGreater(surface.GetNumberOfPoints(), 9000)
+        self.assertEqual(surface.GetFieldData().GetArray("BoundaryEdges").GetValue(0), 0)
+        self.assertEqual(surface.GetFieldData().GetArray("Components").GetValue(0), 1)
+        mean_pct = metro.GetOutput().GetFieldData().GetArray("Hausdorff_MeanPercent").GetValue(0)
+        self.assertGreater(mean_pct, 0.0)
+        self.assertLess(mean_pct, 0.1)
+
+    def test_nrrd_reads_after_import_vtk(self):
+        # Importing all of vtk loads vtkIOMPIImage, whose factory override of
+        # vtkNrrdReader reads nothing; latticekit's reader must not be fooled.
+        import vtk  # noqa: F401
+        import latticekit
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(MANDIBLE)
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetDimensions(), (512, 512, 156))
+
+    def test_dicom_geometry_from_python(self):
+        import latticekit
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(GE)
+        reader.Update()
+        self.assertEqual(reader.GetFileFormat(), "DICOM")
+        self.assertAlmostEqual(reader.GetGantryTilt(), 18.5, delta=0.05)
+        matrix = reader.GetPatientMatrix()
+        self.assertAlmostEqual(matrix.Determinant(), 1.0, places=9)
+
+
+class ErrorTest(unittest.TestCase):
+    def test_errors_reach_python_observers(self):
+        import latticekit
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+        metro = latticekit.vtkLKMetroFilter()
+        messages = []
+        metro.AddObserver("ErrorEvent", lambda caller, event: messages.append(event))
+        metro.SetInputData(vtkPolyData())
+        metro.SetTargetData(vtkPolyData())
+        metro.Update()
+        self.assertEqual(len(messages), 1)
+        self.assertEqual(metro.GetOutput().GetNumberOfPoints(), 0)
+
+    def test_missing_file(self):
+        import latticekit
+        reader = latticekit.vtkLKMedicalImageReader()
+        errors = []
+        reader.AddObserver("ErrorEvent", lambda caller, event: errors.append(event))
+        reader.SetFileName("/nonexistent/volume.nii.gz")
+        reader.Update()
+        self.assertEqual(len(errors), 1)
+
+
+class ExampleTest(unittest.TestCase):
+    def test_example_script_runs(self):
+        example = os.path.join(os.path.dirname(__file__), "..", "examples", "ct_to_metro.py")
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "mandible_error.vtp")
+            result = subprocess.run([sys.executable, example, MANDIBLE, out],
+                                    capture_output=True, text=True, check=False)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("symmetric", result.stdout)
+            self.assertTrue(os.path.getsize(out) > 1000)
+
+
+if __name__ == "__main__":
+    unittest.main()
