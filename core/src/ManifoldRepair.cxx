@@ -1,4 +1,5 @@
 #include "latticekit/ManifoldRepair.h"
+#include "latticekit/PolygonMesh.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <iterator>
 #include <stdexcept>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -249,6 +251,80 @@ double signedVolume(const TriangleMesh& mesh)
     v += a.dot(b.cross(c));
   }
   return v / 6.0;
+}
+
+std::string latticeProblem(const PolygonMesh& mesh)
+{
+  if (mesh.faces.empty())
+  {
+    return "the lattice has no faces";
+  }
+  const auto n = static_cast<std::int64_t>(mesh.points.size());
+  std::vector<char> used(mesh.points.size(), 0);
+  std::ostringstream os;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+  {
+    const auto& face = mesh.faces[f];
+    if (face.size() < 3)
+    {
+      os << "face " << f << " has " << face.size() << " vertices (at least 3 are needed)";
+      return os.str();
+    }
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto id = face[i];
+      if (id < 0 || id >= n)
+      {
+        os << "face " << f << " refers to point " << id << ", but the lattice has " << n << " points";
+        return os.str();
+      }
+      if (!mesh.points[static_cast<std::size_t>(id)].allFinite())
+      {
+        os << "point " << id << " has a NaN or infinite coordinate";
+        return os.str();
+      }
+      for (std::size_t j = i + 1; j < face.size(); ++j)
+      {
+        if (face[j] == id)
+        {
+          os << "face " << f << " repeats vertex " << id;
+          return os.str();
+        }
+      }
+      used[static_cast<std::size_t>(id)] = 1;
+    }
+    Vec3 newell = Vec3::Zero();
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      newell += mesh.points[static_cast<std::size_t>(face[i])].cross(
+        mesh.points[static_cast<std::size_t>(face[(i + 1) % face.size()])]);
+    }
+    if (!(newell.norm() > 0.0))
+    {
+      os << "face " << f << " has zero area";
+      return os.str();
+    }
+  }
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    if (!used[i])
+    {
+      os << "point " << i << " is isolated (no face uses it)";
+      return os.str();
+    }
+  }
+  std::vector<Polygon> polygons;
+  polygons.reserve(mesh.faces.size());
+  for (const auto& face : mesh.faces)
+  {
+    polygons.emplace_back(face.begin(), face.end());
+  }
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    return "the lattice is not a manifold, consistently oriented surface "
+           "(an edge with more than two faces, a pinched vertex, or faces oriented against each other)";
+  }
+  return {};
 }
 
 } // namespace lk

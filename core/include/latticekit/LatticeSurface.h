@@ -1,0 +1,79 @@
+#pragma once
+/// \file LatticeSurface.h
+/// The lattice surface (seed 004, section 2.1; the XVL lattice of Wakita,
+/// Chiyokura et al.): a polygonal control mesh becomes a network of cubic
+/// Bezier curves, one per lattice edge, filled with bicubic Gregory patches
+/// that join with tangent-plane (G1) continuity.
+///
+/// Construction, with the choices made where the paper is silent or its
+/// printed formulas lost their fractions:
+/// 1. One Doo-Sabin step: in face F (n vertices) the point of vertex i is
+///    sum_j a_{j-i} P_j with a_0 = (n + 5) / 4n, a_k = (3 + 2 cos(2 pi k / n)) / 4n.
+/// 2. Eq. 2.1, the rounded vertex point: V' = sum_F k_F DS(F, V), k_F = area of
+///    the lattice face F over the total area of the faces around V.
+/// 3. Eq. 2.2, the inner control points of the edge curve V0' -> V3': with Q the
+///    midpoint of the Doo-Sabin points of V0 in the two faces beside the edge
+///    (the one face on a boundary edge), P1' = (4 Q - P0') / 3, and likewise
+///    P2' = (4 R - P3') / 3. The printed "4/3 Q - P0'" is not affine (its
+///    weights sum to 1/3); (4Q - P0')/3 is, and it makes the curve leave P0'
+///    towards Q.
+/// 4. Tangent planes: at a lattice vertex the plane through V' normal to the
+///    area-weighted face normal; every P1' is projected into it, so all curve
+///    tangents at the vertex are coplanar, as G1 needs at extraordinary
+///    vertices.
+/// 5. Quads take one Gregory patch. Other faces (triangles, pentagons, ...)
+///    take n quad patches meeting at the face centre (the mean of the face's
+///    Doo-Sabin points): each edge curve is split at t = 1/2 (de Casteljau) and
+///    an inner curve runs from that midpoint to the centre, its end tangents
+///    projected into the tangent planes there (at the centre: the face's
+///    plane; at the midpoint: the plane of the edge's b(1/2) and C'(1/2)).
+/// 6. Interior Gregory points, Chiyokura and Kimura's basis-patch method:
+///    every curve C carries a vector function b(t) = (1-t) b0 + t b1, with b0,
+///    b1 in the end tangent planes and perpendicular to the curve. The
+///    cross-boundary derivative of each patch along C is
+///    D(t) = k(t) b(t) + h(t) C'(t) with k, h linear, fitted to the patch's
+///    corner tangents. D (cubic) gives the side's two interior points. Both
+///    patches beside C use the same b, so their tangent planes along C are
+///    both spanned by b(t) and C'(t): G1 holds for every t, not only at
+///    samples.
+/// Open lattices: a boundary edge's curve is the uniform cubic B-spline of the
+/// boundary polygon (a boundary vertex's point is (p + 4 V + q) / 6 with p, q
+/// its boundary neighbours), so the surface ends on a C2 curve that depends
+/// on the boundary alone; the vertex's tangent plane contains that curve's
+/// tangent, and the interior curves there are projected into it as above.
+///
+/// Not yet: per-edge and per-vertex rounding weights (sharp features),
+/// closest-point queries, chordal-tolerance tessellation.
+
+#include "latticekit/GregoryPatch.h"
+#include "latticekit/PolygonMesh.h"
+
+#include <array>
+#include <vector>
+
+namespace lk
+{
+
+struct LatticeSurface
+{
+  std::vector<GregoryPatch> patches;
+  std::vector<std::int64_t> patchFace;   ///< lattice face of each patch
+  std::vector<int> patchCorner;          ///< corner of the face for split faces, -1 for a quad's patch
+  std::vector<Vec3> roundedPoints;       ///< V' of every lattice vertex (eq. 2.1)
+  std::vector<std::array<Vec3, 4>> edgeCurves;           ///< one per lattice edge (eq. 2.2)
+  std::vector<std::array<std::int64_t, 2>> edgeVertices; ///< its end vertices
+};
+
+/// Builds the surface. Throws std::invalid_argument with the reason (see
+/// latticeProblem) for a lattice that cannot carry one.
+LatticeSurface buildLatticeSurface(const PolygonMesh& lattice);
+
+/// True when the patch came from a split (non-quad) face: its sides are
+/// halves of edge curves or inner curves, so tessellations use half the
+/// resolution on it to keep shared sides sampled alike.
+inline bool isSplitPatch(const LatticeSurface& s, std::size_t patch)
+{
+  return s.patchCorner[patch] >= 0;
+}
+
+} // namespace lk

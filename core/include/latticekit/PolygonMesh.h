@@ -1,0 +1,26 @@
+#pragma once
+/// \file PolygonMesh.h
+/// A polygonal mesh (triangles, quads and n-gons mixed): the lattice, the
+/// control mesh of a lattice surface.
+
+#include "latticekit/TriangleMesh.h"
+
+#include <string>
+#include <vector>
+
+namespace lk
+{
+
+struct PolygonMesh
+{
+  std::vector<Vec3> points;
+  std::vector<std::vector<std::int64_t>> faces;
+};
+
+/// Empty when the mesh is a usable lattice: at least one face, every face with
+/// at least three distinct in-range vertices, finite coordinates, no isolated
+/// points, non-zero face areas, and a manifold, consistently oriented surface
+/// (CGAL's polygon-soup test). Otherwise the reason, as a sentence.
+std::string latticeProblem(const PolygonMesh& mesh);
+
+} // namespace lk

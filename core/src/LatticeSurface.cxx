@@ -1,0 +1,317 @@
+#include "latticekit/LatticeSurface.h"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace lk
+{
+
+namespace
+{
+
+/// A cubic curve with its Chiyokura-Kimura basis vectors at both ends, in
+/// the curve's own direction.
+struct Curve
+{
+  std::array<Vec3, 4> X;
+  Vec3 b0, b1;
+
+  Curve reversed() const { return { { X[3], X[2], X[1], X[0] }, b1, b0 }; }
+  /// The halves at t = 1/2 (de Casteljau); b is restricted with the curve.
+  std::pair<Curve, Curve> split() const
+  {
+    const Vec3 a = 0.5 * (X[0] + X[1]), b = 0.5 * (X[1] + X[2]), c = 0.5 * (X[2] + X[3]);
+    const Vec3 d = 0.5 * (a + b), e = 0.5 * (b + c), m = 0.5 * (d + e);
+    const Vec3 bm = 0.5 * (b0 + b1);
+    return { Curve{ { X[0], a, d, m }, b0, bm }, Curve{ { m, e, c, X[3] }, bm, b1 } };
+  }
+};
+
+Vec3 projectOnPlane(const Vec3& v, const Vec3& n)
+{
+  return v - v.dot(n) * n;
+}
+
+Vec3 unit(const Vec3& v, const char* what)
+{
+  const double len = v.norm();
+  if (!(len > 0.0) || !std::isfinite(len))
+  {
+    throw std::invalid_argument(std::string("the lattice surface degenerates: ") + what);
+  }
+  return v / len;
+}
+
+/// Best k, h with a ~ k b + h c (exact when a lies in the plane of b and c).
+void fit(const Vec3& a, const Vec3& b, const Vec3& c, double& k, double& h)
+{
+  const double bb = b.dot(b), bc = b.dot(c), cc = c.dot(c);
+  const double det = bb * cc - bc * bc;
+  if (!(std::abs(det) > 1e-300))
+  {
+    throw std::invalid_argument("the lattice surface degenerates: a curve is tangent to its basis vector");
+  }
+  k = (a.dot(b) * cc - a.dot(c) * bc) / det;
+  h = (a.dot(c) * bb - a.dot(b) * bc) / det;
+}
+
+/// Interior control vectors e1, e2 of the cross-boundary derivative
+/// D(t) = k(t) b(t) + h(t) C'(t) that starts at a0 and ends at a1.
+std::pair<Vec3, Vec3> crossDerivative(const Curve& side, const Vec3& a0, const Vec3& a1)
+{
+  const Vec3 c0 = 3.0 * (side.X[1] - side.X[0]);
+  const Vec3 c1 = 3.0 * (side.X[2] - side.X[1]);
+  const Vec3 c2 = 3.0 * (side.X[3] - side.X[2]);
+  double k0, h0, k1, h1;
+  fit(a0, side.b0, c0, k0, h0);
+  fit(a1, side.b1, c2, k1, h1);
+  // k(t) b(t): quadratic, raised to cubic.
+  const Vec3 q0 = k0 * side.b0, q1 = 0.5 * (k0 * side.b1 + k1 * side.b0), q2 = k1 * side.b1;
+  const Vec3 kb1 = (q0 + 2.0 * q1) / 3.0, kb2 = (2.0 * q1 + q2) / 3.0;
+  // h(t) C'(t): linear times quadratic.
+  const Vec3 hc1 = (h1 * c0 + 2.0 * h0 * c1) / 3.0, hc2 = (2.0 * h1 * c1 + h0 * c2) / 3.0;
+  return { kb1 + hc1, kb2 + hc2 };
+}
+
+/// Fills a Gregory patch from its four sides, given in the patch's
+/// directions: s0 (v = 0, c0 -> c1), s1 (u = 1, c1 -> c2), s2 (v = 1,
+/// c3 -> c2), s3 (u = 0, c0 -> c3).
+GregoryPatch makePatch(const Curve& s0, const Curve& s1, const Curve& s2, const Curve& s3)
+{
+  GregoryPatch p;
+  for (int i = 0; i < 4; ++i)
+  {
+    p.P(i, 0) = s0.X[static_cast<std::size_t>(i)];
+    p.P(3, i) = s1.X[static_cast<std::size_t>(i)];
+    p.P(i, 3) = s2.X[static_cast<std::size_t>(i)];
+    p.P(0, i) = s3.X[static_cast<std::size_t>(i)];
+  }
+  // Each side's cross-boundary derivative, pointing into the patch, starts
+  // and ends with the tangents of the neighbouring sides at its corners.
+  auto e = crossDerivative(s0, 3.0 * (p.P(0, 1) - p.P(0, 0)), 3.0 * (p.P(3, 1) - p.P(3, 0)));
+  p.inner(1, 1, 0) = p.P(1, 0) + e.first / 3.0;
+  p.inner(2, 1, 0) = p.P(2, 0) + e.second / 3.0;
+  e = crossDerivative(s2, 3.0 * (p.P(0, 2) - p.P(0, 3)), 3.0 * (p.P(3, 2) - p.P(3, 3)));
+  p.inner(1, 2, 0) = p.P(1, 3) + e.first / 3.0;
+  p.inner(2, 2, 0) = p.P(2, 3) + e.second / 3.0;
+  e = crossDerivative(s3, 3.0 * (p.P(1, 0) - p.P(0, 0)), 3.0 * (p.P(1, 3) - p.P(0, 3)));
+  p.inner(1, 1, 1) = p.P(0, 1) + e.first / 3.0;
+  p.inner(1, 2, 1) = p.P(0, 2) + e.second / 3.0;
+  e = crossDerivative(s1, 3.0 * (p.P(2, 0) - p.P(3, 0)), 3.0 * (p.P(2, 3) - p.P(3, 3)));
+  p.inner(2, 1, 1) = p.P(3, 1) + e.first / 3.0;
+  p.inner(2, 2, 1) = p.P(3, 2) + e.second / 3.0;
+  return p;
+}
+
+struct FaceGeometry
+{
+  Vec3 normal;       ///< unit (Newell)
+  double area = 0.0;
+  std::vector<Vec3> ds; ///< Doo-Sabin point of each corner
+};
+
+} // namespace
+
+LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
+{
+  const std::string problem = latticeProblem(lattice);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  const std::size_t nv = lattice.points.size();
+  const auto& P = lattice.points;
+
+  // Faces: Newell normal and area, Doo-Sabin points.
+  std::vector<FaceGeometry> faces(lattice.faces.size());
+  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+  {
+    const auto& face = lattice.faces[f];
+    const std::size_t n = face.size();
+    Vec3 newell = Vec3::Zero();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      newell += P[static_cast<std::size_t>(face[i])].cross(P[static_cast<std::size_t>(face[(i + 1) % n])]);
+    }
+    faces[f].area = 0.5 * newell.norm();
+    faces[f].normal = newell.normalized();
+    faces[f].ds.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      Vec3 d = Vec3::Zero();
+      for (std::size_t j = 0; j < n; ++j)
+      {
+        const std::size_t k = (j + n - i) % n;
+        const double a = k == 0 ? (n + 5.0) / (4.0 * n)
+                                : (3.0 + 2.0 * std::cos(2.0 * M_PI * static_cast<double>(k) / n)) / (4.0 * n);
+        d += a * P[static_cast<std::size_t>(face[j])];
+      }
+      faces[f].ds[i] = d;
+    }
+  }
+
+  // Edges: the faces beside each (face, corner index of the edge's first vertex).
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::pair<std::size_t, std::size_t>>> edgeFaces;
+  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+  {
+    const auto& face = lattice.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto a = face[i], b = face[(i + 1) % face.size()];
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back({ f, i });
+    }
+  }
+  // Boundary vertices and their two boundary neighbours.
+  std::vector<std::vector<std::int64_t>> boundaryNeighbours(nv);
+  for (const auto& [key, besides] : edgeFaces)
+  {
+    if (besides.size() == 1)
+    {
+      boundaryNeighbours[static_cast<std::size_t>(key.first)].push_back(key.second);
+      boundaryNeighbours[static_cast<std::size_t>(key.second)].push_back(key.first);
+    }
+  }
+
+  // Vertices: rounded point (eq. 2.1) and tangent plane normal.
+  LatticeSurface s;
+  s.roundedPoints.assign(nv, Vec3::Zero());
+  std::vector<Vec3> vertexNormal(nv, Vec3::Zero());
+  std::vector<double> areaSum(nv, 0.0);
+  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+  {
+    for (std::size_t i = 0; i < lattice.faces[f].size(); ++i)
+    {
+      const auto v = static_cast<std::size_t>(lattice.faces[f][i]);
+      s.roundedPoints[v] += faces[f].area * faces[f].ds[i];
+      vertexNormal[v] += faces[f].area * faces[f].normal;
+      areaSum[v] += faces[f].area;
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    s.roundedPoints[v] /= areaSum[v];
+    vertexNormal[v] = unit(vertexNormal[v], "opposite faces cancel at a vertex");
+    const auto& bn = boundaryNeighbours[v];
+    if (bn.size() == 2)
+    {
+      // Boundary: the boundary curve is the uniform cubic B-spline of the
+      // boundary polygon, so V' = (p + 4 V + q) / 6, and the tangent plane
+      // contains the boundary tangent q - p.
+      const Vec3& p = P[static_cast<std::size_t>(bn[0])];
+      const Vec3& q = P[static_cast<std::size_t>(bn[1])];
+      s.roundedPoints[v] = (p + 4.0 * P[v] + q) / 6.0;
+      const Vec3 t = unit(q - p, "a boundary vertex has coincident neighbours");
+      vertexNormal[v] = unit(vertexNormal[v] - vertexNormal[v].dot(t) * t, "a boundary runs along the surface normal");
+    }
+  }
+
+  std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> edgeIndex;
+  std::vector<Curve> curves;
+  for (const auto& [key, besides] : edgeFaces)
+  {
+    const auto a = key.first, b = key.second;
+    // Q: mean of the Doo-Sabin points of a in the faces beside the edge; R likewise for b.
+    Vec3 Q = Vec3::Zero(), R = Vec3::Zero();
+    for (const auto& [f, i] : besides)
+    {
+      const auto& face = lattice.faces[f];
+      const std::size_t j = (i + 1) % face.size();
+      const bool aFirst = face[i] == a;
+      Q += faces[f].ds[aFirst ? i : j];
+      R += faces[f].ds[aFirst ? j : i];
+    }
+    Q /= static_cast<double>(besides.size());
+    R /= static_cast<double>(besides.size());
+    const Vec3& A = s.roundedPoints[static_cast<std::size_t>(a)];
+    const Vec3& B = s.roundedPoints[static_cast<std::size_t>(b)];
+    const Vec3& na = vertexNormal[static_cast<std::size_t>(a)];
+    const Vec3& nb = vertexNormal[static_cast<std::size_t>(b)];
+    Curve c;
+    if (besides.size() == 1)
+    {
+      // Boundary edge: the cubic B-spline of the boundary polygon.
+      const Vec3& pa = P[static_cast<std::size_t>(a)];
+      const Vec3& pb = P[static_cast<std::size_t>(b)];
+      c.X = { A, (2.0 * pa + pb) / 3.0, (pa + 2.0 * pb) / 3.0, B };
+    }
+    else
+    {
+      c.X = { A, A + projectOnPlane((4.0 * Q - A) / 3.0 - A, na), B + projectOnPlane((4.0 * R - B) / 3.0 - B, nb), B };
+    }
+    c.b0 = na.cross(unit(c.X[1] - c.X[0], "an edge curve has no tangent at its start"));
+    c.b1 = nb.cross(unit(c.X[3] - c.X[2], "an edge curve has no tangent at its end"));
+    edgeIndex[key] = curves.size();
+    curves.push_back(c);
+    s.edgeCurves.push_back(c.X);
+    s.edgeVertices.push_back({ a, b });
+  }
+  auto edgeFrom = [&](std::int64_t from, std::int64_t to) -> const Curve& {
+    return curves[edgeIndex.at({ std::min(from, to), std::max(from, to) })];
+  };
+  auto orientedEdge = [&](std::int64_t from, std::int64_t to) {
+    const Curve& c = edgeFrom(from, to);
+    return from < to ? c : c.reversed();
+  };
+  // Midpoint data of a split edge, shared by both faces beside it.
+  auto halfFrom = [&](std::int64_t from, std::int64_t to) {
+    const auto halves = orientedEdge(from, to).split();
+    return halves; // first: from -> midpoint, second: midpoint -> to
+  };
+
+  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+  {
+    const auto& face = lattice.faces[f];
+    const std::size_t n = face.size();
+    if (n == 4)
+    {
+      s.patches.push_back(makePatch(orientedEdge(face[0], face[1]), orientedEdge(face[1], face[2]),
+        orientedEdge(face[3], face[2]), orientedEdge(face[0], face[3])));
+      s.patchFace.push_back(static_cast<std::int64_t>(f));
+      s.patchCorner.push_back(-1);
+      continue;
+    }
+    // Centre and the inner curves from each edge midpoint to it.
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& d : faces[f].ds)
+    {
+      centre += d / static_cast<double>(n);
+    }
+    const Vec3& nc = faces[f].normal;
+    std::vector<Curve> inner(n), firstHalf(n), secondHalf(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      // The edge's own direction decides the midpoint data, so both faces agree.
+      const auto halves = halfFrom(face[i], face[(i + 1) % n]);
+      firstHalf[i] = halves.first;   // V_i -> M_i
+      secondHalf[i] = halves.second; // M_i -> V_{i+1}
+      const Vec3& M = halves.first.X[3];
+      const Vec3 tangentM = halves.first.X[3] - halves.first.X[2];
+      // The midpoint's plane normal, turned outward like the centre's: b0 and
+      // b1 of the inner curve must lie on the same side, or k(t) passes
+      // through zero and the patches fold along the curve.
+      Vec3 nm = unit(halves.first.b1.cross(tangentM), "an edge midpoint has no tangent plane");
+      if (nm.dot(nc) < 0.0)
+      {
+        nm = -nm;
+      }
+      Curve c;
+      c.X = { M, M + projectOnPlane((centre - M) / 3.0, nm), centre + projectOnPlane((M - centre) / 3.0, nc), centre };
+      c.b0 = nm.cross(unit(c.X[1] - c.X[0], "an inner curve has no tangent at its midpoint end"));
+      c.b1 = nc.cross(unit(c.X[3] - c.X[2], "an inner curve has no tangent at the face centre"));
+      inner[i] = c;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t prev = (i + n - 1) % n;
+      // Corners: V_i, M_i, centre, M_{i-1}.
+      s.patches.push_back(makePatch(firstHalf[i], inner[i], inner[prev], secondHalf[prev].reversed()));
+      s.patchFace.push_back(static_cast<std::int64_t>(f));
+      s.patchCorner.push_back(static_cast<int>(i));
+    }
+  }
+  return s;
+}
+
+} // namespace lk
