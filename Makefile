@@ -15,6 +15,7 @@ test: setup
 
 bench: setup
 	build/bin/bench_metro sample_data
+	build/bin/bench_lattice sample_data
 
 setup build:
 	bash scripts/setup.sh

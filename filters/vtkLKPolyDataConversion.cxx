@@ -61,6 +61,38 @@ std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh)
   return problem;
 }
 
+std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh)
+{
+  mesh = lk::PolygonMesh();
+  if (!pd || pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() == 0)
+  {
+    return "the lattice is empty (no points or no polygons)";
+  }
+  if (pd->GetNumberOfVerts() > 0 || pd->GetNumberOfLines() > 0 || pd->GetNumberOfStrips() > 0)
+  {
+    std::ostringstream os;
+    os << "a lattice is made of polygons, but this one has " << pd->GetNumberOfVerts() << " vertex, "
+       << pd->GetNumberOfLines() << " line and " << pd->GetNumberOfStrips() << " strip cells";
+    return os.str();
+  }
+  mesh.points.resize(static_cast<std::size_t>(pd->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    pd->GetPoint(i, p);
+    mesh.points[static_cast<std::size_t>(i)] = lk::Vec3(p[0], p[1], p[2]);
+  }
+  auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    mesh.faces.emplace_back(ids, ids + n);
+  }
+  return {};
+}
+
 vtkSmartPointer<vtkPolyData> fromTriangleMesh(const lk::TriangleMesh& mesh)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();

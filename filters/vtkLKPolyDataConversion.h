@@ -3,6 +3,7 @@
 /// Private: conversion between vtkPolyData and the cores' lk::TriangleMesh,
 /// with the input checks every latticekit filter shares.
 
+#include "latticekit/PolygonMesh.h"
 #include "latticekit/TriangleMesh.h"
 
 #include <vtkSmartPointer.h>
@@ -18,6 +19,10 @@ namespace lkvtk
 /// otherwise a sentence for vtkErrorMacro (empty input, vertex/line/strip
 /// cells, polygons that are not triangles, NaN or infinite coordinates).
 std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh);
+
+/// Copies the polygons of pd (any number of vertices each) into mesh, with
+/// the same input checks as toTriangleMesh but for polygons.
+std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh);
 
 /// A vtkPolyData with the mesh's points (double precision) and triangles.
 vtkSmartPointer<vtkPolyData> fromTriangleMesh(const lk::TriangleMesh& mesh);

@@ -2,6 +2,7 @@
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -52,6 +53,30 @@ class DemoTest(unittest.TestCase):
             self.assertGreater(coloured / total, 0.05, "the picture is almost blank")
             self.assertGreater(blue, 100, "no small-error (blue) surface is visible")
             self.assertGreater(red, 5, "no large-error (red) surface is visible")
+
+
+class LatticeExampleTest(unittest.TestCase):
+    @unittest.skipIf(shutil.which("xvfb-run") is None, "xvfb-run is not installed")
+    def test_lattice_example_renders(self):
+        from vtkmodules.vtkIOImage import vtkPNGReader
+
+        example = os.path.join(os.path.dirname(__file__), "..", "examples", "lattice_surface.py")
+        mandible = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_TCGA-CV-7236_Mandible.nrrd")
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "lattice.png")
+            result = subprocess.run(["xvfb-run", "-a", sys.executable, example, mandible, png, "300"],
+                                    capture_output=True, text=True, check=False, timeout=300)
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            self.assertIn("display polygons", result.stdout)
+            reader = vtkPNGReader()
+            reader.SetFileName(png)
+            reader.Update()
+            image = reader.GetOutput()
+            width, height, _ = image.GetDimensions()
+            scalars = image.GetPointData().GetScalars()
+            shaded = sum(1 for i in range(0, width * height, 11)
+                         if scalars.GetComponent(i, 0) < 240 or scalars.GetComponent(i, 2) < 200)
+            self.assertGreater(shaded / (width * height / 11), 0.05, "the picture is almost blank")
 
 
 if __name__ == "__main__":

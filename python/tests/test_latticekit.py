@@ -15,7 +15,7 @@ class ImportTest(unittest.TestCase):
     def test_every_filter_is_exported(self):
         import latticekit
         for name in ("vtkLKMedicalImageReader", "vtkLKBoneSurfaceFilter",
-                     "vtkLKMeshRepairFilter", "vtkLKMetroFilter"):
+                     "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -109,6 +109,47 @@ class PipelineTest(unittest.TestCase):
         self.assertAlmostEqual(reader.GetGantryTilt(), 18.5, delta=0.05)
         matrix = reader.GetPatientMatrix()
         self.assertAlmostEqual(matrix.Determinant(), 1.0, places=9)
+
+
+class LatticeSurfaceTest(unittest.TestCase):
+    def test_octahedron_lattice_from_python(self):
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+        from vtkmodules.vtkFiltersCore import vtkFeatureEdges
+
+        points = vtkPoints()
+        for p in ((1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)):
+            points.InsertNextPoint(p)
+        faces = vtkCellArray()
+        for f in ((0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)):
+            faces.InsertNextCell(3, f)
+        lattice = vtkPolyData()
+        lattice.SetPoints(points)
+        lattice.SetPolys(faces)
+
+        surface = latticekit.vtkLKLatticeSurfaceFilter()
+        surface.SetInputData(lattice)
+        surface.SetResolution(6)
+        surface.Update()
+        self.assertEqual(surface.GetNumberOfPatches(), 24)
+        out = surface.GetOutput()
+        self.assertEqual(out.GetFieldData().GetArray("DisplayPolygons").GetValue(0), out.GetNumberOfPolys())
+        edges = vtkFeatureEdges()
+        edges.SetInputData(out)
+        edges.BoundaryEdgesOn()
+        edges.NonManifoldEdgesOn()
+        edges.FeatureEdgesOff()
+        edges.ManifoldEdgesOff()
+        edges.Update()
+        self.assertEqual(edges.GetOutput().GetNumberOfLines(), 0)
+
+        position, normal = [0.0] * 3, [0.0] * 3
+        self.assertTrue(surface.EvaluatePatch(0, 0.5, 0.5, position, normal))
+        radius = sum(x * x for x in position) ** 0.5
+        self.assertGreater(radius, 0.5)
+        self.assertLess(radius, 0.7)
+        self.assertGreater(sum(p * n for p, n in zip(position, normal)), 0.0)  # outward
 
 
 class ErrorTest(unittest.TestCase):

@@ -1,0 +1,218 @@
+#include "LatticeMeshes.h"
+#include "TestSupport.h"
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKLatticeSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
+#include "vtkLKMeshRepairFilter.h"
+#include "vtkLKMetroFilter.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFeatureEdges.h>
+#include <vtkFieldData.h>
+#include <vtkMassProperties.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkQuadricDecimation.h>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> toVtk(const lk::PolygonMesh& m)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& p : m.points)
+  {
+    pts->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& f : m.faces)
+  {
+    std::vector<vtkIdType> ids(f.begin(), f.end());
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  pd->SetPoints(pts);
+  pd->SetPolys(polys);
+  return pd;
+}
+
+vtkIdType openOrNonManifoldEdges(vtkPolyData* pd)
+{
+  vtkNew<vtkFeatureEdges> edges;
+  edges->SetInputData(pd);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfLines();
+}
+
+/// Fraction of triangles whose winding agrees with the derivative normals at their corners.
+double orientationAgreement(vtkPolyData* pd)
+{
+  vtkDataArray* normals = pd->GetPointData()->GetArray("Normals");
+  vtkIdType agree = 0;
+  for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    pd->GetCellPoints(c, n, ids);
+    double a[3], b[3], d[3];
+    pd->GetPoint(ids[0], a);
+    pd->GetPoint(ids[1], b);
+    pd->GetPoint(ids[2], d);
+    const lk::Vec3 A(a[0], a[1], a[2]), B(b[0], b[1], b[2]), D(d[0], d[1], d[2]);
+    const lk::Vec3 face = (B - A).cross(D - A);
+    lk::Vec3 vn = lk::Vec3::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+      double t[3];
+      normals->GetTuple(ids[k], t);
+      vn += lk::Vec3(t[0], t[1], t[2]);
+    }
+    agree += face.dot(vn) > 0.0 ? 1 : 0;
+  }
+  return static_cast<double>(agree) / static_cast<double>(pd->GetNumberOfCells());
+}
+} // namespace
+
+TEST(LatticeSurfaceFilter, CubeLatticeIsAClosedOutwardSurface)
+{
+  vtkNew<vtkLKLatticeSurfaceFilter> filter;
+  filter->SetInputData(toVtk(lktest::cubeLattice()));
+  filter->SetResolution(8);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  EXPECT_EQ(filter->GetNumberOfPatches(), 6);
+  EXPECT_EQ(out->GetNumberOfPolys(), 6 * 2 * 8 * 8);
+  EXPECT_EQ(out->GetFieldData()->GetArray("DisplayPolygons")->GetTuple1(0), 768.0);
+  EXPECT_EQ(out->GetNumberOfPoints(), 6 * 7 * 7 + 12 * 7 + 8); // shared points merged
+  EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(orientationAgreement(out), 1.0);
+  vtkDataArray* normals = out->GetPointData()->GetArray("Normals");
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3], n[3];
+    out->GetPoint(i, p);
+    normals->GetTuple(i, n);
+    ASSERT_GT(p[0] * n[0] + p[1] * n[1] + p[2] * n[2], 0.0) << "inward normal at point " << i;
+  }
+  ASSERT_NE(out->GetCellData()->GetArray("LatticeFaceId"), nullptr);
+  ASSERT_NE(out->GetCellData()->GetArray("PatchId"), nullptr);
+  // The control net: 12 edge curves, 8 interior points per patch.
+  vtkPolyData* net = filter->GetControlNetOutput();
+  EXPECT_EQ(net->GetNumberOfLines(), 12);
+  EXPECT_EQ(net->GetNumberOfVerts(), 6 * 8);
+  // Evaluation API.
+  double x[3], n[3], du[3], dv[3];
+  EXPECT_TRUE(filter->EvaluatePatch(2, 0.5, 0.5, x, n, du, dv));
+  EXPECT_NEAR(n[0] * du[0] + n[1] * du[1] + n[2] * du[2], 0.0, 1e-12);
+  lktest::ErrorRecorder rec(filter);
+  EXPECT_FALSE(filter->EvaluatePatch(6, 0.5, 0.5, x, n));
+  EXPECT_EQ(rec.errors, 1);
+}
+
+TEST(LatticeSurfaceFilter, MixedFacesGiveAWatertightSurface)
+{
+  for (const auto& m : { lktest::truncatedCornerCubeLattice(), lktest::bipyramidLattice(7),
+         lktest::pentagonalPrismLattice() })
+  {
+    vtkNew<vtkLKLatticeSurfaceFilter> filter;
+    filter->SetInputData(toVtk(m));
+    filter->SetResolution(5); // rounded up to 6, split patches get 3
+    filter->Update();
+    EXPECT_EQ(openOrNonManifoldEdges(filter->GetOutput()), 0);
+    EXPECT_EQ(orientationAgreement(filter->GetOutput()), 1.0);
+  }
+}
+
+TEST(LatticeSurfaceFilter, DecimatedMandibleLattice)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->Update();
+  vtkNew<vtkQuadricDecimation> decimate;
+  decimate->SetInputConnection(bone->GetOutputPort());
+  decimate->SetTargetReduction(1.0 - 2000.0 / static_cast<double>(bone->GetOutput()->GetNumberOfPoints()));
+  vtkNew<vtkLKMeshRepairFilter> lattice;
+  lattice->SetInputConnection(decimate->GetOutputPort());
+  vtkNew<vtkLKLatticeSurfaceFilter> surface;
+  surface->SetInputConnection(lattice->GetOutputPort());
+  surface->SetResolution(4);
+  surface->Update();
+  vtkPolyData* out = surface->GetOutput();
+  EXPECT_NEAR(static_cast<double>(lattice->GetOutput()->GetNumberOfPoints()), 2000.0, 20.0);
+  EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+  // Known limitation (NOTES.md): near a few skinny, strongly curved lattice
+  // triangles the surface folds locally, so a handful of the ~96,000 display
+  // triangles disagree with their derivative normals. Everything else agrees.
+  const double agreement = orientationAgreement(out);
+  std::printf("display triangles agreeing with the derivative normals: %.5f %%\n", 100.0 * agreement);
+  EXPECT_GT(agreement, 0.9999);
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(out);
+  mass->Update();
+  EXPECT_GT(mass->GetVolume(), 0.0);
+  // Close to the bone it rounds (before any fitting).
+  vtkNew<vtkLKMetroFilter> metro;
+  metro->SetInputConnection(bone->GetOutputPort());
+  metro->SetTargetData(out);
+  metro->SetNumberOfSamples(200000);
+  metro->Update();
+  const double meanPct = metro->GetOutput()->GetFieldData()->GetArray("Hausdorff_MeanPercent")->GetTuple1(0);
+  const double maxPct = metro->GetOutput()->GetFieldData()->GetArray("Hausdorff_MaxPercent")->GetTuple1(0);
+  std::printf("mandible lattice surface (unfitted) against the bone: max %.3f %%, mean %.4f %% of the diagonal\n",
+    maxPct, meanPct);
+  EXPECT_LT(meanPct, 0.05);
+  EXPECT_LT(maxPct, 1.0);
+}
+
+TEST(LatticeSurfaceFilter, BadLatticesAreClearErrors)
+{
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyData> lattice;
+    std::string expected;
+  };
+  std::vector<Case> cases;
+  cases.push_back({ vtkSmartPointer<vtkPolyData>::New(), "empty" });
+  lk::PolygonMesh m = lktest::cubeLattice();
+  m.faces.push_back({ 0, 2, 3, 1 });
+  cases.push_back({ toVtk(m), "manifold" });
+  m = lktest::cubeLattice();
+  m.faces[0] = { 0, 2, 2, 1 };
+  cases.push_back({ toVtk(m), "repeats vertex" });
+  m = lktest::cubeLattice();
+  m.points.emplace_back(3, 3, 3);
+  cases.push_back({ toVtk(m), "isolated" });
+  m = lktest::cubeLattice();
+  m.points[0].x() = std::nan("");
+  cases.push_back({ toVtk(m), "NaN" });
+  {
+    auto lines = toVtk(lktest::cubeLattice());
+    vtkNew<vtkCellArray> l;
+    const vtkIdType ids[2] = { 0, 1 };
+    l->InsertNextCell(2, ids);
+    lines->SetLines(l);
+    cases.push_back({ lines, "line" });
+  }
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkLKLatticeSurfaceFilter> filter;
+    lktest::ErrorRecorder rec(filter);
+    filter->SetInputData(c.lattice);
+    filter->Update();
+    EXPECT_EQ(rec.errors, 1) << c.expected;
+    EXPECT_NE(rec.messages.find(c.expected), std::string::npos) << rec.messages;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  }
+}
