@@ -9,6 +9,7 @@
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKMetroFilter.h"
+#include "vtkLKPolyDataConversion.h"
 
 #include <vtkCellArray.h>
 #include <vtkHausdorffDistancePointSetFilter.h>
@@ -34,19 +35,7 @@ double since(Clock::time_point t)
 lk::TriangleMesh toMesh(vtkPolyData* pd)
 {
   lk::TriangleMesh m;
-  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    m.points.emplace_back(p[0], p[1], p[2]);
-  }
-  vtkIdType n;
-  const vtkIdType* ids;
-  auto polys = pd->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    m.triangles.push_back({ ids[0], ids[1], ids[2] });
-  }
+  lkvtk::toTriangleMesh(pd, m);
   return m;
 }
 } // namespace

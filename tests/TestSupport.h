@@ -4,6 +4,9 @@
 /// the core mesh type, and a recorder of VTK errors.
 
 #include "latticekit/TriangleMesh.h"
+#include "vtkLKPolyDataConversion.h"
+
+#include <gtest/gtest.h>
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -26,25 +29,12 @@ inline std::string sampleData(const std::string& relative)
   return std::string(LATTICEKIT_SAMPLE_DATA) + "/" + relative;
 }
 
+/// The filters' own conversion; a mesh it refuses is a test failure.
 inline lk::TriangleMesh toCore(vtkPolyData* pd)
 {
   lk::TriangleMesh m;
-  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    m.points.emplace_back(p[0], p[1], p[2]);
-  }
-  vtkIdType n;
-  const vtkIdType* ids;
-  vtkCellArray* polys = pd->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    if (n == 3)
-    {
-      m.triangles.push_back({ ids[0], ids[1], ids[2] });
-    }
-  }
+  const std::string problem = lkvtk::toTriangleMesh(pd, m);
+  EXPECT_EQ(problem, "");
   return m;
 }
 
