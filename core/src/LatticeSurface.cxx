@@ -278,7 +278,6 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
     {
       centre += d / static_cast<double>(n);
     }
-    const Vec3& nc = faces[f].normal;
     std::vector<Curve> inner(n), firstHalf(n), secondHalf(n);
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -286,12 +285,31 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
       const auto halves = halfFrom(face[i], face[(i + 1) % n]);
       firstHalf[i] = halves.first;   // V_i -> M_i
       secondHalf[i] = halves.second; // M_i -> V_{i+1}
-      const Vec3& M = halves.first.X[3];
-      const Vec3 tangentM = halves.first.X[3] - halves.first.X[2];
+    }
+    // The centre's tangent plane is the plane the edge-curve midpoints span
+    // (Newell normal of their polygon), not the flat face's: on a strongly
+    // curved face the midpoints lie far off the face plane, and projecting
+    // them onto it can leave short tangents in the wrong angular order (a
+    // fold at the centre). On a planar lattice the two planes coincide.
+    Vec3 newell = Vec3::Zero();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      newell += firstHalf[i].X[3].cross(firstHalf[(i + 1) % n].X[3]);
+    }
+    Vec3 nc = newell.norm() > 0.0 ? Vec3(newell.normalized()) : faces[f].normal;
+    if (nc.dot(faces[f].normal) < 0.0)
+    {
+      nc = -nc;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const Vec3& M = firstHalf[i].X[3];
+      const Curve& halvesFirst = firstHalf[i];
+      const Vec3 tangentM = halvesFirst.X[3] - halvesFirst.X[2];
       // The midpoint's plane normal, turned outward like the centre's: b0 and
       // b1 of the inner curve must lie on the same side, or k(t) passes
       // through zero and the patches fold along the curve.
-      Vec3 nm = unit(halves.first.b1.cross(tangentM), "an edge midpoint has no tangent plane");
+      Vec3 nm = unit(halvesFirst.b1.cross(tangentM), "an edge midpoint has no tangent plane");
       if (nm.dot(nc) < 0.0)
       {
         nm = -nm;
