@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -296,4 +297,156 @@ TEST(LatticeSurface, BadLatticesAreRefusedWithTheReason)
   m.points[5] = m.points[6];
   m.points[4] = m.points[6];
   expectProblem(m, "zero area");
+}
+
+TEST(LatticeWeights, CubeWithEverySharpEdgeIsTheCube)
+{
+  const lk::PolygonMesh cube = lktest::cubeLattice();
+  lk::LatticeWeights w;
+  for (const auto& f : cube.faces)
+  {
+    for (std::size_t i = 0; i < f.size(); ++i)
+    {
+      w.edge[{ f[i], f[(i + 1) % f.size()] }] = 0.0;
+    }
+  }
+  const lk::LatticeSurface s = lk::buildLatticeSurface(cube, w);
+  double offFace = 0.0;
+  for (std::size_t p = 0; p < s.patches.size(); ++p)
+  {
+    // Each patch covers its face: the face's corners and centre are on it.
+    const auto& face = cube.faces[static_cast<std::size_t>(s.patchFace[p])];
+    lk::Vec3 centre = lk::Vec3::Zero();
+    for (auto id : face)
+    {
+      centre += cube.points[static_cast<std::size_t>(id)] / 4.0;
+    }
+    EXPECT_LT((s.patches[p].evaluate(0.5, 0.5) - centre).norm(), 1e-12);
+    EXPECT_LT((s.patches[p].evaluate(0, 0) - cube.points[static_cast<std::size_t>(face[0])]).norm(), 1e-15);
+    EXPECT_LT((s.patches[p].evaluate(1, 1) - cube.points[static_cast<std::size_t>(face[2])]).norm(), 1e-15);
+    for (int i = 0; i <= 10; ++i)
+    {
+      for (int j = 0; j <= 10; ++j)
+      {
+        const lk::Vec3 x = s.patches[p].evaluate(i / 10.0, j / 10.0);
+        offFace = std::max(offFace, std::abs(x.cwiseAbs().maxCoeff() - 0.5));
+        EXPECT_LE(x.cwiseAbs().maxCoeff(), 0.5 + 1e-12);
+      }
+    }
+  }
+  EXPECT_LT(offFace, 1e-12);
+}
+
+TEST(LatticeWeights, CreaseAroundTheTopOfARefinedCube)
+{
+  const lk::PolygonMesh m = lktest::refinedCubeLattice(2);
+  auto onTop = [&](std::int64_t id) { return std::abs(m.points[static_cast<std::size_t>(id)].z() - 0.5) < 1e-12; };
+  auto onRim = [&](std::int64_t id) {
+    const auto& p = m.points[static_cast<std::size_t>(id)];
+    return onTop(id) && (std::abs(std::abs(p.x()) - 0.5) < 1e-12 || std::abs(std::abs(p.y()) - 0.5) < 1e-12);
+  };
+  lk::LatticeWeights w;
+  std::vector<char> topFace(m.faces.size(), 0);
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+  {
+    const auto& face = m.faces[f];
+    topFace[f] = std::all_of(face.begin(), face.end(), onTop);
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto a = face[i], b = face[(i + 1) % face.size()];
+      if (onRim(a) && onRim(b))
+      {
+        w.edge[{ a, b }] = 0.0;
+      }
+    }
+  }
+  ASSERT_EQ(w.edge.size(), 16u); // 8 rim edges, each seen from both of its faces
+  const lk::LatticeSurface s = lk::buildLatticeSurface(m, w);
+  // The top stays exactly flat.
+  double offTop = 0.0;
+  for (std::size_t p = 0; p < s.patches.size(); ++p)
+  {
+    if (!topFace[static_cast<std::size_t>(s.patchFace[p])])
+    {
+      continue;
+    }
+    for (int i = 0; i <= 8; ++i)
+    {
+      for (int j = 0; j <= 8; ++j)
+      {
+        offTop = std::max(offTop, std::abs(s.patches[p].evaluate(i / 8.0, j / 8.0).z() - 0.5));
+      }
+    }
+  }
+  EXPECT_LT(offTop, 1e-12);
+  // G1 everywhere but across the crease, where the surface is sharp.
+  const std::vector<Sample> samples = sideSamples(s);
+  std::map<std::array<long long, 3>, std::vector<std::size_t>> buckets;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const auto& p = samples[i].p;
+    buckets[{ std::llround(p.x() * 1e7), std::llround(p.y() * 1e7), std::llround(p.z() * 1e7) }].push_back(i);
+  }
+  double smooth = 0.0, sharp = 0.0, gap = 0.0;
+  for (const auto& [key, ids] : buckets)
+  {
+    for (std::size_t a = 0; a < ids.size(); ++a)
+    {
+      for (std::size_t b = a + 1; b < ids.size(); ++b)
+      {
+        const Sample& x = samples[ids[a]];
+        const Sample& y = samples[ids[b]];
+        if (x.patch == y.patch)
+        {
+          continue;
+        }
+        gap = std::max(gap, (x.p - y.p).norm());
+        const double angle = std::atan2(x.n.cross(y.n).norm(), x.n.dot(y.n));
+        const bool across = topFace[static_cast<std::size_t>(s.patchFace[x.patch])] !=
+          topFace[static_cast<std::size_t>(s.patchFace[y.patch])];
+        (across ? sharp : smooth) = std::max(across ? sharp : smooth, angle);
+      }
+    }
+  }
+  std::printf("crease: largest angle across %.3f rad, elsewhere %.2e rad, gap %.2e\n", sharp, smooth, gap);
+  EXPECT_LT(gap, 1e-12);
+  EXPECT_LT(smooth, 1e-6);
+  EXPECT_GT(sharp, 0.5);
+}
+
+TEST(LatticeWeights, VertexWeightZeroInterpolatesTheVertex)
+{
+  const lk::PolygonMesh m = lktest::octahedronLattice();
+  lk::LatticeWeights w;
+  w.vertex.assign(m.points.size(), 1.0);
+  w.vertex[4] = 0.0;
+  const lk::LatticeSurface s = lk::buildLatticeSurface(m, w);
+  EXPECT_LT((s.roundedPoints[4] - m.points[4]).norm(), 1e-15);
+  w.vertex[4] = 0.5;
+  const lk::LatticeSurface half = lk::buildLatticeSurface(m, w);
+  const lk::LatticeSurface smooth = lk::buildLatticeSurface(m);
+  EXPECT_LT((half.roundedPoints[4] - 0.5 * (m.points[4] + smooth.roundedPoints[4])).norm(), 1e-15);
+  // Still G1 and watertight.
+  const Continuity k = measure(s, 1.0);
+  EXPECT_LT(k.gap, 1e-12);
+  EXPECT_LT(k.angle, 1e-6);
+}
+
+TEST(LatticeWeights, BadWeightsAreRefused)
+{
+  const lk::PolygonMesh m = lktest::cubeLattice();
+  lk::LatticeWeights w;
+  w.vertex = { 1.0, 1.0 };
+  EXPECT_THROW(lk::buildLatticeSurface(m, w), std::invalid_argument);
+  w.vertex.assign(8, 1.0);
+  w.vertex[2] = -0.5;
+  EXPECT_THROW(lk::buildLatticeSurface(m, w), std::invalid_argument);
+  w.vertex[2] = std::nan("");
+  EXPECT_THROW(lk::buildLatticeSurface(m, w), std::invalid_argument);
+  w.vertex.clear();
+  w.edge[{ 0, 7 }] = 0.0; // a diagonal, not an edge
+  EXPECT_THROW(lk::buildLatticeSurface(m, w), std::invalid_argument);
+  w.edge.clear();
+  w.edge[{ 0, 1 }] = 2.0;
+  EXPECT_THROW(lk::buildLatticeSurface(m, w), std::invalid_argument);
 }

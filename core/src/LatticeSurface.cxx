@@ -1,6 +1,9 @@
 #include "latticekit/LatticeSurface.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -114,7 +117,7 @@ struct FaceGeometry
 
 } // namespace
 
-LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
+LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeights& weights)
 {
   const std::string problem = latticeProblem(lattice);
   if (!problem.empty())
@@ -123,6 +126,24 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
   }
   const std::size_t nv = lattice.points.size();
   const auto& P = lattice.points;
+  if (!weights.vertex.empty() && weights.vertex.size() != nv)
+  {
+    throw std::invalid_argument("the vertex weights must be one per lattice point");
+  }
+  for (double w : weights.vertex)
+  {
+    if (!(w >= 0.0 && w <= 1.0))
+    {
+      throw std::invalid_argument("a vertex weight is outside [0, 1] (or NaN)");
+    }
+  }
+  for (const auto& [key, w] : weights.edge)
+  {
+    if (!(w >= 0.0 && w <= 1.0))
+    {
+      throw std::invalid_argument("an edge weight is outside [0, 1] (or NaN)");
+    }
+  }
 
   // Faces: Newell normal and area, Doo-Sabin points.
   std::vector<FaceGeometry> faces(lattice.faces.size());
@@ -152,8 +173,10 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
     }
   }
 
-  // Edges: the faces beside each (face, corner index of the edge's first vertex).
-  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::pair<std::size_t, std::size_t>>> edgeFaces;
+  // Edges: the faces beside each (face, corner index of the edge's first vertex),
+  // and whether the edge is a crease (weight below 1/2, or a boundary).
+  using Key = std::pair<std::int64_t, std::int64_t>;
+  std::map<Key, std::vector<std::pair<std::size_t, std::size_t>>> edgeFaces;
   for (std::size_t f = 0; f < lattice.faces.size(); ++f)
   {
     const auto& face = lattice.faces[f];
@@ -163,21 +186,94 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
       edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back({ f, i });
     }
   }
-  // Boundary vertices and their two boundary neighbours.
-  std::vector<std::vector<std::int64_t>> boundaryNeighbours(nv);
+  for (const auto& [key, w] : weights.edge)
+  {
+    if (!edgeFaces.count({ std::min(key.first, key.second), std::max(key.first, key.second) }))
+    {
+      std::ostringstream os;
+      os << "a weight is given to (" << key.first << ", " << key.second << "), which is not a lattice edge";
+      throw std::invalid_argument(os.str());
+    }
+  }
+  auto isCrease = [&](const Key& key, std::size_t besides) {
+    if (besides == 1)
+    {
+      return true;
+    }
+    auto it = weights.edge.find(key);
+    if (it == weights.edge.end())
+    {
+      it = weights.edge.find({ key.second, key.first });
+    }
+    return it != weights.edge.end() && it->second < 0.5;
+  };
+  std::map<Key, bool> crease;
+  std::vector<std::vector<std::int64_t>> creaseNeighbours(nv);
   for (const auto& [key, besides] : edgeFaces)
   {
-    if (besides.size() == 1)
+    crease[key] = isCrease(key, besides.size());
+    if (crease[key])
     {
-      boundaryNeighbours[static_cast<std::size_t>(key.first)].push_back(key.second);
-      boundaryNeighbours[static_cast<std::size_t>(key.second)].push_back(key.first);
+      creaseNeighbours[static_cast<std::size_t>(key.first)].push_back(key.second);
+      creaseNeighbours[static_cast<std::size_t>(key.second)].push_back(key.first);
     }
   }
 
-  // Vertices: rounded point (eq. 2.1) and tangent plane normal.
+  // Sectors: the faces around a vertex, split by its creases. A union-find
+  // per vertex over the faces, joined across the vertex's smooth edges.
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> sectorOf; // (vertex, face) -> sector
+  std::vector<std::vector<std::vector<std::size_t>>> sectors(nv);      // vertex -> sector -> faces
+  {
+    std::vector<std::vector<std::size_t>> vertexFaces(nv);
+    for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+    {
+      for (const auto id : lattice.faces[f])
+      {
+        vertexFaces[static_cast<std::size_t>(id)].push_back(f);
+      }
+    }
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      const auto& fs = vertexFaces[v];
+      std::vector<std::size_t> parent(fs.size());
+      for (std::size_t i = 0; i < fs.size(); ++i)
+      {
+        parent[i] = i;
+      }
+      std::function<std::size_t(std::size_t)> root = [&](std::size_t i) {
+        return parent[i] == i ? i : parent[i] = root(parent[i]);
+      };
+      auto local = [&](std::size_t f) {
+        return static_cast<std::size_t>(std::find(fs.begin(), fs.end(), f) - fs.begin());
+      };
+      for (const auto& [key, besides] : edgeFaces)
+      {
+        if (besides.size() == 2 && !crease[key] &&
+          (key.first == static_cast<std::int64_t>(v) || key.second == static_cast<std::int64_t>(v)))
+        {
+          parent[root(local(besides[0].first))] = root(local(besides[1].first));
+        }
+      }
+      std::map<std::size_t, std::size_t> index;
+      for (std::size_t i = 0; i < fs.size(); ++i)
+      {
+        const std::size_t r = root(i);
+        if (!index.count(r))
+        {
+          index[r] = sectors[v].size();
+          sectors[v].emplace_back();
+        }
+        sectors[v][index[r]].push_back(fs[i]);
+        sectorOf[{ v, fs[i] }] = index[r];
+      }
+    }
+  }
+
+  // Vertices: rounded point (eq. 2.1, or the crease rules) and a tangent
+  // plane per sector.
   LatticeSurface s;
   s.roundedPoints.assign(nv, Vec3::Zero());
-  std::vector<Vec3> vertexNormal(nv, Vec3::Zero());
+  std::vector<int> kind(nv, 0); // 0 smooth (or dart), 2 crease, 3 corner
   std::vector<double> areaSum(nv, 0.0);
   for (std::size_t f = 0; f < lattice.faces.size(); ++f)
   {
@@ -185,59 +281,139 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
     {
       const auto v = static_cast<std::size_t>(lattice.faces[f][i]);
       s.roundedPoints[v] += faces[f].area * faces[f].ds[i];
-      vertexNormal[v] += faces[f].area * faces[f].normal;
       areaSum[v] += faces[f].area;
     }
   }
   for (std::size_t v = 0; v < nv; ++v)
   {
-    s.roundedPoints[v] /= areaSum[v];
-    vertexNormal[v] = unit(vertexNormal[v], "opposite faces cancel at a vertex");
-    const auto& bn = boundaryNeighbours[v];
-    if (bn.size() == 2)
+    const double w = weights.vertex.empty() ? 1.0 : weights.vertex[v];
+    const auto& cn = creaseNeighbours[v];
+    if (cn.size() >= 3)
     {
-      // Boundary: the boundary curve is the uniform cubic B-spline of the
-      // boundary polygon, so V' = (p + 4 V + q) / 6, and the tangent plane
-      // contains the boundary tangent q - p.
-      const Vec3& p = P[static_cast<std::size_t>(bn[0])];
-      const Vec3& q = P[static_cast<std::size_t>(bn[1])];
-      s.roundedPoints[v] = (p + 4.0 * P[v] + q) / 6.0;
-      const Vec3 t = unit(q - p, "a boundary vertex has coincident neighbours");
-      vertexNormal[v] = unit(vertexNormal[v] - vertexNormal[v].dot(t) * t, "a boundary runs along the surface normal");
+      kind[v] = 3;
+      s.roundedPoints[v] = P[v];
+    }
+    else if (cn.size() == 2)
+    {
+      // On a crease (or a boundary) the curve is the uniform cubic B-spline
+      // of the crease polygon: V' = (p + 4 V + q) / 6.
+      kind[v] = 2;
+      s.roundedPoints[v] = P[v] + w * ((P[static_cast<std::size_t>(cn[0])] + P[static_cast<std::size_t>(cn[1])]) / 6.0 - P[v] / 3.0);
+    }
+    else
+    {
+      s.roundedPoints[v] = P[v] + w * (s.roundedPoints[v] / areaSum[v] - P[v]);
     }
   }
 
-  std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> edgeIndex;
+  // Crease curves do not depend on tangent planes: build them first.
+  auto creaseTangent = [&](std::int64_t a, std::int64_t b) -> Vec3 {
+    const auto ia = static_cast<std::size_t>(a);
+    if (kind[ia] == 2)
+    {
+      const auto& cn = creaseNeighbours[ia];
+      const std::int64_t other = cn[0] == b ? cn[1] : cn[0];
+      return (P[static_cast<std::size_t>(b)] - P[static_cast<std::size_t>(other)]) / 6.0;
+    }
+    return (P[static_cast<std::size_t>(b)] - P[ia]) / 3.0; // corner, or a dart end (projected below)
+  };
+
+  std::vector<std::vector<Vec3>> sectorNormal(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    for (const auto& fs : sectors[v])
+    {
+      Vec3 n = Vec3::Zero();
+      for (const std::size_t f : fs)
+      {
+        n += faces[f].area * faces[f].normal;
+      }
+      n = unit(n, "opposite faces cancel at a vertex");
+      const auto& cn = creaseNeighbours[v];
+      if (kind[v] == 2)
+      {
+        // Both sectors contain the crease tangent.
+        const Vec3 t = unit(creaseTangent(static_cast<std::int64_t>(v), cn[0]), "a crease has coincident points");
+        n = unit(n - n.dot(t) * t, "a crease runs along the surface normal");
+      }
+      else if (kind[v] == 3)
+      {
+        // A corner's sector is spanned by its two bounding crease tangents.
+        std::vector<Vec3> bounding;
+        for (const auto x : cn)
+        {
+          const Key key{ std::min<std::int64_t>(static_cast<std::int64_t>(v), x), std::max<std::int64_t>(static_cast<std::int64_t>(v), x) };
+          for (const auto& [f, i] : edgeFaces[key])
+          {
+            if (std::find(fs.begin(), fs.end(), f) != fs.end())
+            {
+              bounding.push_back(creaseTangent(static_cast<std::int64_t>(v), x));
+              break;
+            }
+          }
+        }
+        if (bounding.size() == 2)
+        {
+          Vec3 m = bounding[0].cross(bounding[1]);
+          if (m.norm() > 1e-12 * bounding[0].norm() * bounding[1].norm())
+          {
+            n = m.dot(n) < 0.0 ? Vec3(-m.normalized()) : Vec3(m.normalized());
+          }
+          else
+          {
+            n = unit(n - n.dot(bounding[0].normalized()) * bounding[0].normalized(), "a corner's creases are collinear");
+          }
+        }
+      }
+      sectorNormal[v].push_back(n);
+    }
+  }
+  auto normalAt = [&](std::int64_t v, std::size_t f) -> const Vec3& {
+    const auto iv = static_cast<std::size_t>(v);
+    return sectorNormal[iv][sectorOf.at({ iv, f })];
+  };
+
+  // Edge curves; a smooth edge's b is shared by its two faces, a crease's b is
+  // made per face (see sideCurve).
+  std::map<Key, std::size_t> edgeIndex;
   std::vector<Curve> curves;
   for (const auto& [key, besides] : edgeFaces)
   {
     const auto a = key.first, b = key.second;
-    // Q: mean of the Doo-Sabin points of a in the faces beside the edge; R likewise for b.
-    Vec3 Q = Vec3::Zero(), R = Vec3::Zero();
-    for (const auto& [f, i] : besides)
-    {
-      const auto& face = lattice.faces[f];
-      const std::size_t j = (i + 1) % face.size();
-      const bool aFirst = face[i] == a;
-      Q += faces[f].ds[aFirst ? i : j];
-      R += faces[f].ds[aFirst ? j : i];
-    }
-    Q /= static_cast<double>(besides.size());
-    R /= static_cast<double>(besides.size());
-    const Vec3& A = s.roundedPoints[static_cast<std::size_t>(a)];
-    const Vec3& B = s.roundedPoints[static_cast<std::size_t>(b)];
-    const Vec3& na = vertexNormal[static_cast<std::size_t>(a)];
-    const Vec3& nb = vertexNormal[static_cast<std::size_t>(b)];
+    const auto ia = static_cast<std::size_t>(a), ib = static_cast<std::size_t>(b);
+    const Vec3& A = s.roundedPoints[ia];
+    const Vec3& B = s.roundedPoints[ib];
+    const std::size_t f0 = besides[0].first;
+    const Vec3& na = normalAt(a, f0);
+    const Vec3& nb = normalAt(b, f0);
     Curve c;
-    if (besides.size() == 1)
+    if (crease[key])
     {
-      // Boundary edge: the cubic B-spline of the boundary polygon.
-      const Vec3& pa = P[static_cast<std::size_t>(a)];
-      const Vec3& pb = P[static_cast<std::size_t>(b)];
-      c.X = { A, (2.0 * pa + pb) / 3.0, (pa + 2.0 * pb) / 3.0, B };
+      Vec3 ta = creaseTangent(a, b), tb = creaseTangent(b, a);
+      if (kind[ia] == 0)
+      {
+        ta = projectOnPlane(ta, na); // a dart: the crease fades into a smooth vertex
+      }
+      if (kind[ib] == 0)
+      {
+        tb = projectOnPlane(tb, nb);
+      }
+      c.X = { A, A + ta, B + tb, B };
     }
     else
     {
+      // Eq. 2.2, affine: P1' = (4Q - P0') / 3, projected into the sector's plane.
+      Vec3 Q = Vec3::Zero(), R = Vec3::Zero();
+      for (const auto& [f, i] : besides)
+      {
+        const auto& face = lattice.faces[f];
+        const std::size_t j = (i + 1) % face.size();
+        const bool aFirst = face[i] == a;
+        Q += faces[f].ds[aFirst ? i : j];
+        R += faces[f].ds[aFirst ? j : i];
+      }
+      Q /= static_cast<double>(besides.size());
+      R /= static_cast<double>(besides.size());
       c.X = { A, A + projectOnPlane((4.0 * Q - A) / 3.0 - A, na), B + projectOnPlane((4.0 * R - B) / 3.0 - B, nb), B };
     }
     c.b0 = na.cross(unit(c.X[1] - c.X[0], "an edge curve has no tangent at its start"));
@@ -247,17 +423,16 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
     s.edgeCurves.push_back(c.X);
     s.edgeVertices.push_back({ a, b });
   }
-  auto edgeFrom = [&](std::int64_t from, std::int64_t to) -> const Curve& {
-    return curves[edgeIndex.at({ std::min(from, to), std::max(from, to) })];
-  };
-  auto orientedEdge = [&](std::int64_t from, std::int64_t to) {
-    const Curve& c = edgeFrom(from, to);
+  // The curve of edge (from, to) as face f sees it, oriented from `from`.
+  auto sideCurve = [&](std::int64_t from, std::int64_t to, std::size_t f) {
+    const Key key{ std::min(from, to), std::max(from, to) };
+    Curve c = curves[edgeIndex.at(key)];
+    if (crease.at(key))
+    {
+      c.b0 = normalAt(key.first, f).cross(unit(c.X[1] - c.X[0], "a crease curve has no tangent"));
+      c.b1 = normalAt(key.second, f).cross(unit(c.X[3] - c.X[2], "a crease curve has no tangent"));
+    }
     return from < to ? c : c.reversed();
-  };
-  // Midpoint data of a split edge, shared by both faces beside it.
-  auto halfFrom = [&](std::int64_t from, std::int64_t to) {
-    const auto halves = orientedEdge(from, to).split();
-    return halves; // first: from -> midpoint, second: midpoint -> to
   };
 
   for (std::size_t f = 0; f < lattice.faces.size(); ++f)
@@ -266,8 +441,8 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
     const std::size_t n = face.size();
     if (n == 4)
     {
-      s.patches.push_back(makePatch(orientedEdge(face[0], face[1]), orientedEdge(face[1], face[2]),
-        orientedEdge(face[3], face[2]), orientedEdge(face[0], face[3])));
+      s.patches.push_back(makePatch(sideCurve(face[0], face[1], f), sideCurve(face[1], face[2], f),
+        sideCurve(face[3], face[2], f), sideCurve(face[0], face[3], f)));
       s.patchFace.push_back(static_cast<std::int64_t>(f));
       s.patchCorner.push_back(-1);
       continue;
@@ -282,7 +457,7 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
     for (std::size_t i = 0; i < n; ++i)
     {
       // The edge's own direction decides the midpoint data, so both faces agree.
-      const auto halves = halfFrom(face[i], face[(i + 1) % n]);
+      const auto halves = sideCurve(face[i], face[(i + 1) % n], f).split();
       firstHalf[i] = halves.first;   // V_i -> M_i
       secondHalf[i] = halves.second; // M_i -> V_{i+1}
     }
@@ -304,12 +479,11 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice)
     for (std::size_t i = 0; i < n; ++i)
     {
       const Vec3& M = firstHalf[i].X[3];
-      const Curve& halvesFirst = firstHalf[i];
-      const Vec3 tangentM = halvesFirst.X[3] - halvesFirst.X[2];
+      const Vec3 tangentM = firstHalf[i].X[3] - firstHalf[i].X[2];
       // The midpoint's plane normal, turned outward like the centre's: b0 and
       // b1 of the inner curve must lie on the same side, or k(t) passes
       // through zero and the patches fold along the curve.
-      Vec3 nm = unit(halvesFirst.b1.cross(tangentM), "an edge midpoint has no tangent plane");
+      Vec3 nm = unit(firstHalf[i].b1.cross(tangentM), "an edge midpoint has no tangent plane");
       if (nm.dot(nc) < 0.0)
       {
         nm = -nm;

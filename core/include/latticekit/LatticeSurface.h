@@ -42,13 +42,32 @@
 /// on the boundary alone; the vertex's tangent plane contains that curve's
 /// tangent, and the interior curves there are projected into it as above.
 ///
-/// Not yet: per-edge and per-vertex rounding weights (sharp features),
-/// closest-point queries, chordal-tolerance tessellation.
+/// Rounding weights (XVL's lattice weights), LatticeWeights:
+/// - an edge of weight 0 (below 1/2; edge weights act as 0 or 1) is a crease,
+///   as is every boundary edge: no G1 is asked across it. Around each vertex
+///   the faces fall into sectors between creases, each with its own tangent
+///   plane;
+/// - a vertex on two creases lies on the uniform cubic B-spline of the crease
+///   polygon, V' = (p + 4 V + q) / 6, and both sectors' planes contain that
+///   curve's tangent (q - p) / 6 (so a boundary is the B-spline of the
+///   boundary polygon, and the surface ends on it);
+/// - a vertex on three or more creases is a corner: V' = V, crease curves
+///   leave it along the lattice edges ((b - V) / 3), and each sector's plane
+///   is spanned by its two bounding crease tangents. A cube with every edge
+///   at weight 0 is therefore the cube itself;
+/// - a crease ending at a smooth vertex (a dart) fades into that vertex's plane;
+/// - a vertex weight w in [0, 1] moves the rounded point: V' = V + w (V'_1 - V),
+///   0 making the surface pass through the lattice vertex.
+///
+/// Not yet: edge weights between 0 and 1 (they act as 0 or 1),
+/// chordal-tolerance tessellation.
 
 #include "latticekit/GregoryPatch.h"
 #include "latticekit/PolygonMesh.h"
 
 #include <array>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace lk
@@ -64,9 +83,18 @@ struct LatticeSurface
   std::vector<std::array<std::int64_t, 2>> edgeVertices; ///< its end vertices
 };
 
+/// Rounding weights: vertex weights one per lattice point (empty: all 1), edge
+/// weights by vertex pair in either order (missing: 1). See above.
+struct LatticeWeights
+{
+  std::vector<double> vertex;
+  std::map<std::pair<std::int64_t, std::int64_t>, double> edge;
+};
+
 /// Builds the surface. Throws std::invalid_argument with the reason (see
-/// latticeProblem) for a lattice that cannot carry one.
-LatticeSurface buildLatticeSurface(const PolygonMesh& lattice);
+/// latticeProblem) for a lattice that cannot carry one, or for weights
+/// outside [0, 1], of the wrong count, or on pairs that are not edges.
+LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeights& weights = {});
 
 /// True when the patch came from a split (non-quad) face: its sides are
 /// halves of edge curves or inner curves, so tessellations use half the
