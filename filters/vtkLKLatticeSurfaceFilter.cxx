@@ -4,6 +4,8 @@
 #include "vtkLKPolyDataConversion.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkDataArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -15,9 +17,10 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkStaticCleanPolyData.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkLKLatticeSurfaceFilter);
@@ -95,16 +98,52 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   vtkPolyData* net = vtkPolyData::GetData(outputVector, 1);
   this->Internal->surface = lk::LatticeSurface();
 
+  // Line cells over lattice edges carry edge weights; the rest is the lattice.
+  lk::LatticeWeights weights;
+  vtkNew<vtkPolyData> polygons;
+  if (input)
+  {
+    polygons->ShallowCopy(input);
+    vtkNew<vtkCellArray> noLines;
+    polygons->SetLines(noLines);
+  }
   lk::PolygonMesh lattice;
-  std::string problem = lkvtk::toPolygonMesh(input, lattice);
+  std::string problem = lkvtk::toPolygonMesh(polygons, lattice);
   if (!problem.empty())
   {
     vtkErrorMacro("Cannot build the lattice surface: " << problem << ".");
     return 0;
   }
+  if (vtkDataArray* vw = input->GetPointData()->GetArray("RoundingWeight"))
+  {
+    weights.vertex.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      weights.vertex[static_cast<std::size_t>(i)] = vw->GetComponent(i, 0);
+    }
+  }
+  if (input->GetNumberOfLines() > 0)
+  {
+    vtkDataArray* ew = input->GetCellData()->GetArray("RoundingWeight");
+    // Lines come after vertex cells in VTK's cell numbering.
+    const vtkIdType firstLine = input->GetNumberOfVerts();
+    auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+    vtkIdType cell = firstLine;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      const double w = ew ? ew->GetComponent(cell, 0) : 0.0;
+      for (vtkIdType k = 0; k + 1 < n; ++k)
+      {
+        weights.edge[{ ids[k], ids[k + 1] }] = w;
+      }
+    }
+  }
   try
   {
-    this->Internal->surface = lk::buildLatticeSurface(lattice);
+    this->Internal->surface = lk::buildLatticeSurface(lattice, weights);
   }
   catch (const std::exception& e)
   {
@@ -115,6 +154,44 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   const lk::LatticeSurface& s = this->Internal->surface;
 
   const int full = this->Resolution + (this->Resolution % 2);
+  const int half = full / 2;
+
+  // Watertight by construction: every sample on a patch side is named by the
+  // curve it lies on and its step along it (lattice vertex; step K of a
+  // lattice edge counted from its lower-numbered end; step k of a face's
+  // inner curve; face centre), and samples with one name become one point.
+  // Quad patches take `full` steps a side, split patches `half`, which is
+  // half a lattice edge, so names agree across neighbours.
+  using Name = std::array<std::int64_t, 4>; // kind, a, b, step
+  std::map<Name, vtkIdType> named;
+  const auto& faces = lattice.faces;
+  auto vertexName = [](std::int64_t v) { return Name{ 0, v, 0, 0 }; };
+  auto edgeName = [&](std::int64_t from, std::int64_t to, int k) {
+    const std::int64_t a = std::min(from, to), b = std::max(from, to);
+    const int K = from == a ? k : full - k;
+    if (K == 0)
+    {
+      return vertexName(a);
+    }
+    if (K == full)
+    {
+      return vertexName(b);
+    }
+    return Name{ 1, a, b, K };
+  };
+  auto innerName = [&](std::size_t f, std::size_t c, int k) {
+    const auto& face = faces[f];
+    if (k == 0)
+    {
+      return edgeName(face[c], face[(c + 1) % face.size()], half);
+    }
+    if (k == half)
+    {
+      return Name{ 3, static_cast<std::int64_t>(f), 0, 0 };
+    }
+    return Name{ 2, static_cast<std::int64_t>(f), static_cast<std::int64_t>(c), k };
+  };
+
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkDoubleArray> normals;
@@ -124,30 +201,82 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   vtkNew<vtkIdTypeArray> faceIds, patchIds;
   faceIds->SetName("LatticeFaceId");
   patchIds->SetName("PatchId");
+  std::vector<vtkIdType> grid;
   for (std::size_t p = 0; p < s.patches.size(); ++p)
   {
-    const int m = lk::isSplitPatch(s, p) ? full / 2 : full;
-    const vtkIdType base = points->GetNumberOfPoints();
+    const auto f = static_cast<std::size_t>(s.patchFace[p]);
+    const auto& face = faces[f];
+    const std::size_t n = face.size();
+    const bool split = lk::isSplitPatch(s, p);
+    const int m = split ? half : full;
+    const auto c = static_cast<std::size_t>(split ? s.patchCorner[p] : 0);
+    // The name of grid point (i, j) if it lies on a side.
+    auto sideName = [&](int i, int j, Name& name) {
+      if (!split)
+      {
+        if (j == 0)
+          name = edgeName(face[0], face[1], i);
+        else if (i == m)
+          name = edgeName(face[1], face[2], j);
+        else if (j == m)
+          name = edgeName(face[3], face[2], i);
+        else if (i == 0)
+          name = edgeName(face[0], face[3], j);
+        else
+          return false;
+        return true;
+      }
+      const std::int64_t v = face[c], next = face[(c + 1) % n], prev = face[(c + n - 1) % n];
+      if (j == 0)
+        name = edgeName(v, next, i);
+      else if (i == m)
+        name = innerName(f, c, j);
+      else if (j == m)
+        name = innerName(f, (c + n - 1) % n, i);
+      else if (i == 0)
+        name = edgeName(v, prev, j);
+      else
+        return false;
+      return true;
+    };
+    grid.assign(static_cast<std::size_t>((m + 1) * (m + 1)), -1);
     for (int j = 0; j <= m; ++j)
     {
       for (int i = 0; i <= m; ++i)
       {
+        Name name;
+        const bool onSide = sideName(i, j, name);
+        if (onSide)
+        {
+          auto it = named.find(name);
+          if (it != named.end())
+          {
+            grid[static_cast<std::size_t>(j * (m + 1) + i)] = it->second;
+            continue;
+          }
+        }
         const double u = static_cast<double>(i) / m, v = static_cast<double>(j) / m;
         lk::Vec3 du, dv;
         const lk::Vec3 x = s.patches[p].evaluate(u, v, &du, &dv);
-        lk::Vec3 n = du.cross(dv);
-        const double len = n.norm();
-        n = len > 1e-14 * du.norm() * dv.norm() && len > 0.0 ? lk::Vec3(n / len) : s.patches[p].normal(u, v);
-        points->InsertNextPoint(x.data());
-        normals->InsertNextTuple(n.data());
+        lk::Vec3 nrm = du.cross(dv);
+        const double len = nrm.norm();
+        nrm = len > 1e-14 * du.norm() * dv.norm() && len > 0.0 ? lk::Vec3(nrm / len) : s.patches[p].normal(u, v);
+        const vtkIdType id = points->InsertNextPoint(x.data());
+        normals->InsertNextTuple(nrm.data());
+        grid[static_cast<std::size_t>(j * (m + 1) + i)] = id;
+        if (onSide)
+        {
+          named.emplace(name, id);
+        }
       }
     }
     for (int j = 0; j < m; ++j)
     {
       for (int i = 0; i < m; ++i)
       {
-        const vtkIdType a = base + j * (m + 1) + i, b = a + 1, c = a + m + 2, d = a + m + 1;
-        const vtkIdType t0[3] = { a, b, c }, t1[3] = { a, c, d };
+        auto at = [&](int a, int b) { return grid[static_cast<std::size_t>(b * (m + 1) + a)]; };
+        const vtkIdType t0[3] = { at(i, j), at(i + 1, j), at(i + 1, j + 1) };
+        const vtkIdType t1[3] = { at(i, j), at(i + 1, j + 1), at(i, j + 1) };
         triangles->InsertNextCell(3, t0);
         triangles->InsertNextCell(3, t1);
         for (int k = 0; k < 2; ++k)
@@ -159,36 +288,18 @@ int vtkLKLatticeSurfaceFilter::RequestData(
     }
     if (p % 64 == 0)
     {
-      this->UpdateProgress(0.2 + 0.6 * static_cast<double>(p) / static_cast<double>(s.patches.size()));
+      this->UpdateProgress(0.2 + 0.7 * static_cast<double>(p) / static_cast<double>(s.patches.size()));
       if (this->GetAbortExecute())
       {
         return 1;
       }
     }
   }
-  vtkNew<vtkPolyData> raw;
-  raw->SetPoints(points);
-  raw->SetPolys(triangles);
-  raw->GetPointData()->SetNormals(normals);
-  raw->GetCellData()->AddArray(faceIds);
-  raw->GetCellData()->AddArray(patchIds);
-
-  // Shared curves are sampled at the same parameters on both sides; merge
-  // their points (they agree to rounding) so that the mesh is watertight.
-  double bounds[6];
-  raw->GetBounds(bounds);
-  const double diagonal =
-    std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) + (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  vtkNew<vtkStaticCleanPolyData> merge;
-  merge->SetInputData(raw);
-  merge->ToleranceIsAbsoluteOn();
-  merge->SetAbsoluteTolerance(1e-10 * diagonal);
-  merge->ConvertPolysToLinesOff();
-  merge->ConvertLinesToPointsOff();
-  merge->ConvertStripsToPolysOff();
-  merge->Update();
-  output->ShallowCopy(merge->GetOutput());
+  output->SetPoints(points);
+  output->SetPolys(triangles);
+  output->GetPointData()->SetNormals(normals);
+  output->GetCellData()->AddArray(faceIds);
+  output->GetCellData()->AddArray(patchIds);
   vtkNew<vtkIdTypeArray> displayPolygons;
   displayPolygons->SetName("DisplayPolygons");
   displayPolygons->InsertNextValue(output->GetNumberOfPolys());

@@ -13,8 +13,10 @@
  * Tessellation: each quad's patch becomes a Resolution x Resolution grid
  * (Resolution is rounded up to even), each patch of a split face a
  * Resolution/2 grid, so neighbouring patches sample their shared curves at
- * the same points and the output is a watertight triangle mesh (shared
- * points merged). Point data "Normals" come from the patch derivatives, not
+ * the same parameters; each such sample is named by its curve and step and
+ * becomes one point, so the output is a watertight triangle mesh, built
+ * deterministically. (At a sharp crease the shared points keep the normal
+ * of one side; run vtkPolyDataNormals with splitting for crisp shading.) Point data "Normals" come from the patch derivatives, not
  * from the triangles; cell data "LatticeFaceId" and "PatchId" name the
  * lattice face and the patch of each triangle. Field data "DisplayPolygons"
  * counts the triangles (the paper's display polygons), "Patches" the patches.
@@ -23,11 +25,18 @@
  * lattice edge curve as a polyline, and the eight interior Gregory points of
  * every patch as vertices.
  *
+ * Rounding weights (XVL's lattice weights; see LatticeSurface.h for what
+ * they do): point data "RoundingWeight" in [0, 1] gives vertex weights (0
+ * makes the surface pass through the lattice vertex); line cells of the
+ * input lying on lattice edges mark those edges, with cell data
+ * "RoundingWeight" as their weight (0 when the array is missing): weight 0
+ * makes the edge a sharp crease, and a vertex on three or more creases a
+ * sharp corner. Edge weights act as 0 or 1 for now.
+ *
  * After an update, EvaluatePatch gives position, unit normal and first
  * derivatives at (patch, u, v).
  *
- * Not yet: rounding weights (sharp edges and corners), a chordal-tolerance
- * tessellation, closest-point queries.
+ * Not yet: a chordal-tolerance tessellation, closest-point queries.
  */
 #ifndef vtkLKLatticeSurfaceFilter_h
 #define vtkLKLatticeSurfaceFilter_h

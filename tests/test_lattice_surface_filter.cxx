@@ -9,7 +9,9 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFeatureEdges.h>
+#include <vtkCell.h>
 #include <vtkFieldData.h>
 #include <vtkMassProperties.h>
 #include <vtkNew.h>
@@ -19,6 +21,8 @@
 #include <vtkQuadricDecimation.h>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace
 {
@@ -176,6 +180,73 @@ TEST(LatticeSurfaceFilter, DecimatedMandibleLattice)
   EXPECT_LT(maxPct, 1.0);
 }
 
+TEST(LatticeSurfaceFilter, LineCellsMakeSharpEdges)
+{
+  // The cube lattice with a line cell on each of its 12 edges (weight 0 by
+  // default) is the cube itself.
+  const lk::PolygonMesh m = lktest::cubeLattice();
+  auto lattice = toVtk(m);
+  vtkNew<vtkCellArray> lines;
+  for (const auto& f : m.faces)
+  {
+    for (std::size_t i = 0; i < f.size(); ++i)
+    {
+      if (f[i] < f[(i + 1) % f.size()])
+      {
+        const vtkIdType ids[2] = { f[i], f[(i + 1) % f.size()] };
+        lines->InsertNextCell(2, ids);
+      }
+    }
+  }
+  ASSERT_EQ(lines->GetNumberOfCells(), 12);
+  lattice->SetLines(lines);
+  vtkNew<vtkLKLatticeSurfaceFilter> filter;
+  filter->SetInputData(lattice);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  ASSERT_GT(out->GetNumberOfPoints(), 0);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    ASSERT_NEAR(std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) }), 0.5, 1e-12);
+  }
+  EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(out->GetNumberOfPoints(), 6 * 7 * 7 + 12 * 7 + 8);
+  {
+    vtkNew<vtkFeatureEdges> edges;
+    edges->SetInputData(out);
+    edges->BoundaryEdgesOn();
+    edges->NonManifoldEdgesOn();
+    edges->FeatureEdgesOff();
+    edges->ManifoldEdgesOff();
+    edges->Update();
+    for (vtkIdType c = 0; c < edges->GetOutput()->GetNumberOfCells(); ++c)
+    {
+      double a[3], b[3];
+      edges->GetOutput()->GetPoint(edges->GetOutput()->GetCell(c)->GetPointId(0), a);
+      edges->GetOutput()->GetPoint(edges->GetOutput()->GetCell(c)->GetPointId(1), b);
+      std::printf("open edge (%g %g %g) - (%g %g %g)\n", a[0], a[1], a[2], b[0], b[1], b[2]);
+    }
+  }
+  // With weight 1 on the lines the cube is round again.
+  vtkNew<vtkDoubleArray> w;
+  w->SetName("RoundingWeight");
+  w->SetNumberOfValues(lattice->GetNumberOfCells());
+  w->Fill(1.0);
+  lattice->GetCellData()->AddArray(w);
+  filter->Modified();
+  filter->Update();
+  double inside = 0.5;
+  for (vtkIdType i = 0; i < filter->GetOutput()->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    filter->GetOutput()->GetPoint(i, p);
+    inside = std::min(inside, std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) }));
+  }
+  EXPECT_LT(inside, 0.45);
+}
+
 TEST(LatticeSurfaceFilter, BadLatticesAreClearErrors)
 {
   struct Case
@@ -200,10 +271,19 @@ TEST(LatticeSurfaceFilter, BadLatticesAreClearErrors)
   {
     auto lines = toVtk(lktest::cubeLattice());
     vtkNew<vtkCellArray> l;
-    const vtkIdType ids[2] = { 0, 1 };
+    const vtkIdType ids[2] = { 0, 7 }; // a diagonal: no lattice edge to weight
     l->InsertNextCell(2, ids);
     lines->SetLines(l);
-    cases.push_back({ lines, "line" });
+    cases.push_back({ lines, "not a lattice edge" });
+  }
+  {
+    auto weighted = toVtk(lktest::cubeLattice());
+    vtkNew<vtkDoubleArray> w;
+    w->SetName("RoundingWeight");
+    w->SetNumberOfValues(weighted->GetNumberOfPoints());
+    w->Fill(1.5);
+    weighted->GetPointData()->AddArray(w);
+    cases.push_back({ weighted, "outside [0, 1]" });
   }
   for (const Case& c : cases)
   {

@@ -209,8 +209,11 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
   };
   std::map<Key, bool> crease;
   std::vector<std::vector<std::int64_t>> creaseNeighbours(nv);
+  std::vector<std::vector<Key>> vertexEdges(nv);
   for (const auto& [key, besides] : edgeFaces)
   {
+    vertexEdges[static_cast<std::size_t>(key.first)].push_back(key);
+    vertexEdges[static_cast<std::size_t>(key.second)].push_back(key);
     crease[key] = isCrease(key, besides.size());
     if (crease[key])
     {
@@ -246,10 +249,10 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       auto local = [&](std::size_t f) {
         return static_cast<std::size_t>(std::find(fs.begin(), fs.end(), f) - fs.begin());
       };
-      for (const auto& [key, besides] : edgeFaces)
+      for (const Key& key : vertexEdges[v])
       {
-        if (besides.size() == 2 && !crease[key] &&
-          (key.first == static_cast<std::int64_t>(v) || key.second == static_cast<std::int64_t>(v)))
+        const auto& besides = edgeFaces[key];
+        if (besides.size() == 2 && !crease[key])
         {
           parent[root(local(besides[0].first))] = root(local(besides[1].first));
         }
