@@ -1,5 +1,6 @@
 #include "LatticeMeshes.h"
 #include "latticekit/LatticeSurface.h"
+#include "latticekit/LatticeSurfaceLocator.h"
 
 #include <gtest/gtest.h>
 
@@ -449,4 +450,68 @@ TEST(LatticeWeights, BadWeightsAreRefused)
   w.edge.clear();
   w.edge[{ 0, 1 }] = 2.0;
   EXPECT_THROW(lk::buildLatticeSurface(m, w), std::invalid_argument);
+}
+
+TEST(LatticeSurfaceLocator, FindsTheClosestPointOnTheSurface)
+{
+  const lk::LatticeSurface s = build(lktest::truncatedCornerCubeLattice());
+  const lk::LatticeSurfaceLocator locator(s, 8);
+  std::uint64_t state = 12345;
+  auto uniform = [&]() {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0);
+  };
+  double worstPoint = 0.0, worstDistance = 0.0;
+  for (int k = 0; k < 300; ++k)
+  {
+    const std::size_t p = static_cast<std::size_t>(uniform() * s.patches.size()) % s.patches.size();
+    const double u = 0.05 + 0.9 * uniform(), v = 0.05 + 0.9 * uniform();
+    const lk::Vec3 x = s.patches[p].evaluate(u, v);
+    const lk::Vec3 n = s.patches[p].normal(u, v);
+    // Slightly off the surface along its normal: the closest point is x.
+    const double d = 1e-3 * (uniform() - 0.5);
+    const lk::LatticeSurfaceLocator::Result r = locator.closest(x + d * n);
+    if ((r.point - x).norm() > 1e-6)
+    {
+      std::printf("  case patch %zu (%.3f, %.3f) d %.2e -> patch %zu (%.4f, %.4f) dist %.3e, point error %.2e\n", p, u, v, d,
+        r.patch, r.u, r.v, r.distance, (r.point - x).norm());
+    }
+    worstPoint = std::max(worstPoint, (r.point - x).norm());
+    worstDistance = std::max(worstDistance, std::abs(r.distance - std::abs(d)));
+  }
+  std::printf("closest point: worst position error %.2e, worst distance error %.2e\n", worstPoint, worstDistance);
+  EXPECT_LT(worstPoint, 1e-9);
+  EXPECT_LT(worstDistance, 1e-9);
+}
+
+TEST(LatticeSurface, NoPatchFoldsInside)
+{
+  // G1 along the curves says nothing about a patch's interior: check that
+  // every patch's normal field stays on one side (no fold) on a 21 x 21 grid.
+  std::vector<std::pair<std::string, lk::PolygonMesh>> cases = { { "cube", lktest::cubeLattice() },
+    { "octahedron", lktest::octahedronLattice() }, { "refined cube", lktest::refinedCubeLattice(3) },
+    { "pentagonal prism", lktest::pentagonalPrismLattice() },
+    { "truncated-corner cube", lktest::truncatedCornerCubeLattice() } };
+  for (int n = 3; n <= 8; ++n)
+  {
+    cases.push_back({ "bipyramid " + std::to_string(n), lktest::bipyramidLattice(n) });
+  }
+  for (const auto& [name, mesh] : cases)
+  {
+    const lk::LatticeSurface s = build(mesh);
+    double worst = 1.0;
+    for (const auto& patch : s.patches)
+    {
+      const lk::Vec3 centre = patch.normal(0.5, 0.5);
+      for (int i = 0; i <= 20; ++i)
+      {
+        for (int j = 0; j <= 20; ++j)
+        {
+          worst = std::min(worst, patch.normal(i / 20.0, j / 20.0).dot(centre));
+        }
+      }
+    }
+    std::printf("%-22s smallest cos(normal, patch centre normal) %.3f\n", name.c_str(), worst);
+    EXPECT_GT(worst, 0.0) << name << ": a patch folds";
+  }
 }

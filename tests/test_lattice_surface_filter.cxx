@@ -156,11 +156,35 @@ TEST(LatticeSurfaceFilter, DecimatedMandibleLattice)
   vtkPolyData* out = surface->GetOutput();
   EXPECT_NEAR(static_cast<double>(lattice->GetOutput()->GetNumberOfPoints()), 2000.0, 20.0);
   EXPECT_EQ(openOrNonManifoldEdges(out), 0);
-  // Known limitation (NOTES.md): near a few skinny, strongly curved lattice
-  // triangles the surface folds locally, so a handful of the ~96,000 display
-  // triangles disagree with their derivative normals. Everything else agrees.
+  // No patch folds: each patch's normals stay on the side of its centre normal.
+  double worst = 1.0;
+  vtkIdType folded = 0;
+  for (vtkIdType p = 0; p < surface->GetNumberOfPatches(); ++p)
+  {
+    double x[3], centre[3], n[3];
+    surface->EvaluatePatch(p, 0.5, 0.5, x, centre);
+    double patchWorst = 1.0;
+    for (int i = 0; i <= 10; ++i)
+    {
+      for (int j = 0; j <= 10; ++j)
+      {
+        surface->EvaluatePatch(p, i / 10.0, j / 10.0, x, n);
+        patchWorst = std::min(patchWorst, n[0] * centre[0] + n[1] * centre[1] + n[2] * centre[2]);
+      }
+    }
+    folded += patchWorst <= 0.0 ? 1 : 0;
+    worst = std::min(worst, patchWorst);
+  }
+  // A display triangle through three samples of a strongly curved patch may
+  // still tilt away from the sampled normals; report how many do.
   const double agreement = orientationAgreement(out);
-  std::printf("display triangles agreeing with the derivative normals: %.5f %%\n", 100.0 * agreement);
+  std::printf("patches folded: %lld of %lld (smallest cos to the centre normal %.3f); display triangles "
+              "agreeing with the derivative normals: %.5f %%\n",
+    static_cast<long long>(folded), static_cast<long long>(surface->GetNumberOfPatches()), worst, 100.0 * agreement);
+  // Known defect (NOTES.md, issue 3): this decimated lattice has a folded-back
+  // fan (from vtkQuadricDecimation) where eq. 2.2's tangents swap order; the
+  // two patches at it fold. Every other patch is fold-free.
+  EXPECT_LE(folded, 2);
   EXPECT_GT(agreement, 0.9999);
   vtkNew<vtkMassProperties> mass;
   mass->SetInputData(out);

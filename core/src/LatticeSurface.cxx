@@ -37,6 +37,29 @@ Vec3 projectOnPlane(const Vec3& v, const Vec3& n)
   return v - v.dot(n) * n;
 }
 
+/// The direction of t projected into the plane, with t's own length but at
+/// least minLength (direction of the projected chord when t vanishes). A
+/// plain projection can leave a tangent that points mostly along the normal
+/// nearly zero long, and eq. 2.2 itself gives an almost zero tangent where two
+/// large faces dominate a vertex (Q is then nearly V'). Such tangents distort
+/// the patches beside them until they fold. On a regular grid eq. 2.2 gives a
+/// third of the chord, so the floor (a sixth) leaves it alone.
+Vec3 tangentInPlane(const Vec3& t, const Vec3& n, const Vec3& chord, double minLength)
+{
+  Vec3 p = projectOnPlane(t, n);
+  double len = p.norm();
+  if (!(len > 1e-12 * (t.norm() + chord.norm())))
+  {
+    p = projectOnPlane(chord, n);
+    len = p.norm();
+  }
+  if (!(len > 0.0))
+  {
+    return p;
+  }
+  return p * (std::max(t.norm(), minLength) / len);
+}
+
 Vec3 unit(const Vec3& v, const char* what)
 {
   const double len = v.norm();
@@ -417,7 +440,9 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       }
       Q /= static_cast<double>(besides.size());
       R /= static_cast<double>(besides.size());
-      c.X = { A, A + projectOnPlane((4.0 * Q - A) / 3.0 - A, na), B + projectOnPlane((4.0 * R - B) / 3.0 - B, nb), B };
+      const double floorLength = (B - A).norm() / 6.0;
+      c.X = { A, A + tangentInPlane((4.0 * Q - A) / 3.0 - A, na, B - A, floorLength),
+        B + tangentInPlane((4.0 * R - B) / 3.0 - B, nb, A - B, floorLength), B };
     }
     c.b0 = na.cross(unit(c.X[1] - c.X[0], "an edge curve has no tangent at its start"));
     c.b1 = nb.cross(unit(c.X[3] - c.X[2], "an edge curve has no tangent at its end"));

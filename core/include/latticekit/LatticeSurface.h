@@ -20,7 +20,10 @@
 /// 4. Tangent planes: at a lattice vertex the plane through V' normal to the
 ///    area-weighted face normal; every P1' is projected into it, so all curve
 ///    tangents at the vertex are coplanar, as G1 needs at extraordinary
-///    vertices.
+///    vertices. The projection keeps the tangent's length, and no tangent is
+///    shorter than a sixth of its edge's chord (on a regular grid eq. 2.2
+///    gives a third): at a vertex where two large faces dominate, eq. 2.2
+///    gives an almost zero tangent, and the patches beside it fold.
 /// 5. Quads take one Gregory patch. Other faces (triangles, pentagons, ...)
 ///    take n quad patches meeting at the face centre (the mean of the face's
 ///    Doo-Sabin points): each edge curve is split at t = 1/2 (de Casteljau) and
