@@ -3,7 +3,10 @@
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkGLTFWriter.h>
 #include <vtkLogger.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkOBJWriter.h>
@@ -304,6 +307,31 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
     w->SetInputData(mesh);
     writer = w;
   }
+  else if (ext == ".gltf")
+  {
+    // glTF for the web: one self-contained file; normals go in as NORMAL.
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(mesh);
+    if (vtkDataArray* normals = copy->GetPointData()->GetNormals())
+    {
+      auto named = vtkSmartPointer<vtkDataArray>::Take(normals->NewInstance());
+      named->DeepCopy(normals);
+      named->SetName("NORMAL");
+      copy->GetPointData()->AddArray(named);
+    }
+    // VTK 9.1's writer (made for 3D Tiles) wants buildings: a multiblock of
+    // multiblocks of polydata; a flat multiblock crashes it.
+    auto building = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+    building->SetBlock(0, copy);
+    auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+    blocks->SetBlock(0, building);
+    auto w = vtkSmartPointer<vtkGLTFWriter>::New();
+    w->SetFileName(path.c_str());
+    w->SetInputData(blocks);
+    w->InlineDataOn();
+    w->SaveNormalOn();
+    writer = w;
+  }
   else
   {
     error = "cannot write '" + path + "': unknown extension (use " + meshExtensions() + ")";
@@ -321,7 +349,7 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
 
 const char* meshExtensions()
 {
-  return ".vtp, .vtk, .stl, .ply or .obj";
+  return ".vtp, .vtk, .stl, .ply, .obj or .gltf (written only)";
 }
 
 bool parseDouble(const std::string& text, double& value)
@@ -354,7 +382,7 @@ bool parseTriple(const std::string& text, double v[3])
 bool checkWritable(const std::string& path, std::string& error)
 {
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
-  if (ext != ".vtp" && ext != ".vtk" && ext != ".stl" && ext != ".ply" && ext != ".obj")
+  if (ext != ".vtp" && ext != ".vtk" && ext != ".stl" && ext != ".ply" && ext != ".obj" && ext != ".gltf")
   {
     error = "cannot write '" + path + "': unknown extension (use " + meshExtensions() + ")";
     return false;

@@ -1,0 +1,172 @@
+// latticekit-lattice: a lattice (polygonal control mesh) -> its smooth surface.
+#include "common/AppSupport.h"
+
+#include "vtkLKLatticeSurfaceFilter.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+namespace
+{
+void usage(std::ostream& os)
+{
+  os << "usage: latticekit-lattice LATTICE -o SURFACE [options]\n"
+        "\n"
+        "Builds the smooth lattice surface (Doo-Sabin rounding, cubic Bezier edge curves,\n"
+        "G1 Gregory patches) of a polygonal lattice: triangles, quads and n-gons, closed or open.\n"
+        "LATTICE: .vtp, .vtk, .ply or .obj (line cells on lattice edges mark sharp edges, with\n"
+        "cell data RoundingWeight; point data RoundingWeight gives vertex weights).\n"
+        "SURFACE: .vtp, .vtk, .stl, .ply, .obj or .gltf.\n"
+        "\n"
+        "  --resolution N     segments per quad patch side (default 8)\n"
+        "  --control-net OUT  write the edge curves' control polygons and the Gregory interior points\n"
+        "  --lattice OUT      write the lattice itself (for example to convert it to .obj)\n"
+        "  -q, --quiet        no progress bar\n"
+        "  -h, --help         this help\n";
+}
+
+long long fileBytes(const std::string& path)
+{
+  return static_cast<long long>(vtksys::SystemTools::FileLength(path));
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::string input, output, netOut, latticeOut;
+  long resolution = 8;
+  bool quiet = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    std::string v;
+    auto value = [&]() {
+      if (i + 1 >= argc)
+      {
+        std::cerr << "error: " << a << " needs a value\n";
+        std::exit(2);
+      }
+      v = argv[++i];
+    };
+    if (a == "-h" || a == "--help")
+    {
+      usage(std::cout);
+      return 0;
+    }
+    else if (a == "-o" || a == "--output")
+    {
+      value();
+      output = v;
+    }
+    else if (a == "--resolution")
+    {
+      value();
+      if (!lkapp::parseInt(v, resolution) || resolution < 2 || resolution > 256)
+      {
+        std::cerr << "error: --resolution needs an integer from 2 to 256, not '" << v << "'\n";
+        return 2;
+      }
+    }
+    else if (a == "--control-net")
+    {
+      value();
+      netOut = v;
+    }
+    else if (a == "--lattice")
+    {
+      value();
+      latticeOut = v;
+    }
+    else if (a == "-q" || a == "--quiet")
+    {
+      quiet = true;
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      std::cerr << "error: unknown option " << a << "\n";
+      usage(std::cerr);
+      return 2;
+    }
+    else if (input.empty())
+    {
+      input = a;
+    }
+    else
+    {
+      std::cerr << "error: more than one lattice given\n";
+      return 2;
+    }
+  }
+  if (input.empty() || output.empty())
+  {
+    std::cerr << "error: a LATTICE and -o SURFACE are required\n";
+    usage(std::cerr);
+    return 2;
+  }
+  lkapp::installMessageHandler(quiet);
+  std::string error;
+  for (const std::string& path : { output, netOut, latticeOut })
+  {
+    if (!path.empty() && !lkapp::checkWritable(path, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+  }
+  vtkSmartPointer<vtkPolyData> lattice = lkapp::readMesh(input, error);
+  if (!lattice)
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkLKLatticeSurfaceFilter> surface;
+  surface->SetInputData(lattice);
+  surface->SetResolution(static_cast<int>(resolution));
+  {
+    lkapp::ProgressBar bar(surface, "lattice surface", !quiet);
+    surface->Update();
+  }
+  if (lkapp::errorCount() > 0)
+  {
+    return 1;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!lkapp::writeMesh(surface->GetOutput(), output, error) ||
+    (!netOut.empty() && !lkapp::writeMesh(surface->GetControlNetOutput(), netOut, error)) ||
+    (!latticeOut.empty() && !lkapp::writeMesh(lattice, latticeOut, error)))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+
+  long long kinds[3] = { 0, 0, 0 };
+  auto it = vtk::TakeSmartPointer(lattice->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    ++kinds[n == 3 ? 0 : (n == 4 ? 1 : 2)];
+  }
+  std::printf("lattice          %lld vertices; faces: %lld triangles, %lld quads, %lld other; %lld sharp-edge lines\n",
+    static_cast<long long>(lattice->GetNumberOfPoints()), kinds[0], kinds[1], kinds[2],
+    static_cast<long long>(lattice->GetNumberOfLines()));
+  std::printf("surface          %lld Gregory patches, %lld display polygons (resolution %ld), %.3f s\n",
+    static_cast<long long>(surface->GetNumberOfPatches()),
+    static_cast<long long>(surface->GetOutput()->GetFieldData()->GetArray("DisplayPolygons")->GetTuple1(0)),
+    resolution, seconds);
+  std::printf("bytes on disk    lattice %lld (%s), surface %lld (%s)\n", fileBytes(input), input.c_str(),
+    fileBytes(output), output.c_str());
+  return 0;
+}
