@@ -1,6 +1,7 @@
 #include "vtkLKLatticeSurfaceFilter.h"
 
 #include "latticekit/LatticeSurface.h"
+#include "latticekit/LatticeSurfaceLocator.h"
 #include "vtkLKPolyDataConversion.h"
 
 #include <vtkCellArray.h>
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <map>
 #include <stdexcept>
 
@@ -28,6 +30,7 @@ vtkStandardNewMacro(vtkLKLatticeSurfaceFilter);
 struct vtkLKLatticeSurfaceFilter::Internals
 {
   lk::LatticeSurface surface;
+  std::unique_ptr<lk::LatticeSurfaceLocator> locator; // built on the first query
 };
 
 vtkLKLatticeSurfaceFilter::vtkLKLatticeSurfaceFilter()
@@ -90,6 +93,28 @@ bool vtkLKLatticeSurfaceFilter::EvaluatePatch(vtkIdType patch, double u, double 
   return this->EvaluatePatch(patch, u, v, position, normal, nullptr, nullptr);
 }
 
+double vtkLKLatticeSurfaceFilter::FindClosestPoint(const double query[3], double closest[3])
+{
+  if (this->Internal->surface.patches.empty())
+  {
+    vtkErrorMacro("FindClosestPoint needs an updated surface.");
+    return -1.0;
+  }
+  if (!this->Internal->locator)
+  {
+    this->Internal->locator = std::make_unique<lk::LatticeSurfaceLocator>(this->Internal->surface, 8);
+  }
+  const auto r = this->Internal->locator->closest(lk::Vec3(query[0], query[1], query[2]));
+  for (int k = 0; k < 3; ++k)
+  {
+    closest[k] = r.point[k];
+  }
+  this->LastClosestPatch = static_cast<vtkIdType>(r.patch);
+  this->LastClosestUV[0] = r.u;
+  this->LastClosestUV[1] = r.v;
+  return r.distance;
+}
+
 int vtkLKLatticeSurfaceFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -97,6 +122,8 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* net = vtkPolyData::GetData(outputVector, 1);
   this->Internal->surface = lk::LatticeSurface();
+  this->Internal->locator.reset();
+  this->EffectiveResolution = 0;
 
   // Line cells over lattice edges carry edge weights; the rest is the lattice.
   lk::LatticeWeights weights;
@@ -153,7 +180,36 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   this->UpdateProgress(0.2);
   const lk::LatticeSurface& s = this->Internal->surface;
 
-  const int full = this->Resolution + (this->Resolution % 2);
+  int full = this->Resolution + (this->Resolution % 2);
+  if (this->ChordalTolerance > 0.0)
+  {
+    // The smallest even resolution whose grid cells' centres all lie within
+    // the tolerance of the mean of their corners (split patches at half).
+    for (full = 2; full < 256; full *= 2)
+    {
+      double worst = 0.0;
+      for (std::size_t p = 0; p < s.patches.size() && worst <= this->ChordalTolerance; ++p)
+      {
+        const int m = lk::isSplitPatch(s, p) ? std::max(1, full / 2) : full;
+        for (int j = 0; j < m && worst <= this->ChordalTolerance; ++j)
+        {
+          for (int i = 0; i < m; ++i)
+          {
+            const double u0 = static_cast<double>(i) / m, u1 = static_cast<double>(i + 1) / m;
+            const double v0 = static_cast<double>(j) / m, v1 = static_cast<double>(j + 1) / m;
+            const lk::GregoryPatch& g = s.patches[p];
+            const lk::Vec3 mean = 0.25 * (g.evaluate(u0, v0) + g.evaluate(u1, v0) + g.evaluate(u1, v1) + g.evaluate(u0, v1));
+            worst = std::max(worst, (g.evaluate(0.5 * (u0 + u1), 0.5 * (v0 + v1)) - mean).norm());
+          }
+        }
+      }
+      if (worst <= this->ChordalTolerance)
+      {
+        break;
+      }
+    }
+  }
+  this->EffectiveResolution = full;
   const int half = full / 2;
 
   // Watertight by construction: every sample on a patch side is named by the

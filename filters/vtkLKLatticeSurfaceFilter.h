@@ -36,7 +36,8 @@
  * After an update, EvaluatePatch gives position, unit normal and first
  * derivatives at (patch, u, v).
  *
- * Not yet: a chordal-tolerance tessellation, closest-point queries.
+ * Closest points: FindClosestPoint (an AABB tree over a fine tessellation,
+ * then Gauss-Newton and a pattern search on the exact patch).
  */
 #ifndef vtkLKLatticeSurfaceFilter_h
 #define vtkLKLatticeSurfaceFilter_h
@@ -59,6 +60,19 @@ public:
   vtkGetMacro(Resolution, int);
   ///@}
 
+  ///@{
+  /// When positive, the tessellation resolution is chosen instead of taken
+  /// from Resolution: the smallest even one (up to 256) at which every grid
+  /// cell's centre lies within this distance of the mean of its four corners
+  /// (a chordal deviation estimate), one resolution for the whole surface so
+  /// that it stays watertight. Default 0 (use Resolution).
+  vtkSetClampMacro(ChordalTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ChordalTolerance, double);
+  ///@}
+
+  /// The resolution the last update used.
+  int GetEffectiveResolution() const { return this->EffectiveResolution; }
+
   /// The control net output (port 1).
   vtkPolyData* GetControlNetOutput();
 
@@ -72,12 +86,27 @@ public:
   /// Position and unit normal only.
   bool EvaluatePatch(vtkIdType patch, double u, double v, double position[3], double normal[3]);
 
+  /// Closest point of the surface to `query` (after an update): writes the
+  /// point and returns the distance, or -1 without a surface. The patch and
+  /// its (u, v) are given by GetLastClosestPatch / GetLastClosestUV.
+  double FindClosestPoint(const double query[3], double closest[3]);
+  vtkIdType GetLastClosestPatch() const { return this->LastClosestPatch; }
+  void GetLastClosestUV(double uv[2]) const
+  {
+    uv[0] = this->LastClosestUV[0];
+    uv[1] = this->LastClosestUV[1];
+  }
+
 protected:
   vtkLKLatticeSurfaceFilter();
   ~vtkLKLatticeSurfaceFilter() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Resolution = 8;
+  double ChordalTolerance = 0.0;
+  int EffectiveResolution = 0;
+  vtkIdType LastClosestPatch = -1;
+  double LastClosestUV[2] = { 0.0, 0.0 };
 
 private:
   vtkLKLatticeSurfaceFilter(const vtkLKLatticeSurfaceFilter&) = delete;

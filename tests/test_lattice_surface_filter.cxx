@@ -271,6 +271,52 @@ TEST(LatticeSurfaceFilter, LineCellsMakeSharpEdges)
   EXPECT_LT(inside, 0.45);
 }
 
+TEST(LatticeSurfaceFilter, ChordalToleranceAndClosestPoint)
+{
+  vtkNew<vtkLKLatticeSurfaceFilter> filter;
+  filter->SetInputData(toVtk(lktest::truncatedCornerCubeLattice()));
+  int previous = 0;
+  for (double tol : { 1e-2, 1e-3, 1e-4 })
+  {
+    filter->SetChordalTolerance(tol);
+    filter->Update();
+    const int r = filter->GetEffectiveResolution();
+    EXPECT_GE(r, previous) << "a finer tolerance never needs fewer segments";
+    previous = r;
+    // The centres of the display triangles' patches' cells are within the tolerance:
+    // check through the closest point of each output point's neighbourhood centroid.
+    vtkPolyData* out = filter->GetOutput();
+    double worst = 0.0;
+    for (vtkIdType c = 0; c < out->GetNumberOfCells(); c += 37)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      out->GetCellPoints(c, n, ids);
+      double centroid[3] = { 0, 0, 0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        double p[3];
+        out->GetPoint(ids[k], p);
+        for (int d = 0; d < 3; ++d)
+        {
+          centroid[d] += p[d] / 3.0;
+        }
+      }
+      double closest[3];
+      worst = std::max(worst, filter->FindClosestPoint(centroid, closest));
+    }
+    std::printf("chordal tolerance %g: resolution %d, %lld display polygons, farthest triangle centroid %.2e\n", tol, r,
+      static_cast<long long>(out->GetNumberOfPolys()), worst);
+    EXPECT_LT(worst, 2.0 * tol);
+    EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+  }
+  // A point on the surface is its own closest point.
+  double x[3], n[3], closest[3];
+  filter->EvaluatePatch(3, 0.3, 0.6, x, n);
+  EXPECT_LT(filter->FindClosestPoint(x, closest), 1e-9);
+  EXPECT_EQ(filter->GetLastClosestPatch(), 3);
+}
+
 TEST(LatticeSurfaceFilter, BadLatticesAreClearErrors)
 {
   struct Case

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace lk
@@ -27,42 +28,24 @@ LatticeSurfaceLocator::LatticeSurfaceLocator(const LatticeSurface& surface, int 
       for (int i = 0; i < m; ++i)
       {
         const std::int64_t a = base + j * (m + 1) + i, b = a + 1, c = a + m + 2, d = a + m + 1;
-        const double u0 = static_cast<double>(i) / m, u1 = static_cast<double>(i + 1) / m;
-        const double v0 = static_cast<double>(j) / m, v1 = static_cast<double>(j + 1) / m;
         mesh_.triangles.push_back({ a, b, c });
-        uv_.push_back({ u0, v0, u1, v0, u1, v1 });
-        patchOf_.push_back(p);
         mesh_.triangles.push_back({ a, c, d });
-        uv_.push_back({ u0, v0, u1, v1, u0, v1 });
-        patchOf_.push_back(p);
       }
     }
   }
   tree_ = std::make_unique<ClosestPointTree>(mesh_);
-}
-
-LatticeSurfaceLocator::Result LatticeSurfaceLocator::start(const Vec3& probe) const
-{
-  const ClosestPointTree::Hit hit = tree_->closest(probe);
-  const auto t = static_cast<std::size_t>(hit.face);
-  // Barycentric coordinates of the hit in its triangle give the starting (u, v).
-  const auto& tri = mesh_.triangles[t];
-  const Vec3& a = mesh_.points[static_cast<std::size_t>(tri[0])];
-  const Vec3& b = mesh_.points[static_cast<std::size_t>(tri[1])];
-  const Vec3& c = mesh_.points[static_cast<std::size_t>(tri[2])];
-  const Vec3 n = (b - a).cross(c - a);
-  const double n2 = n.squaredNorm();
-  double wb = n2 > 0.0 ? (hit.point - a).cross(c - a).dot(n) / n2 : 0.0;
-  double wc = n2 > 0.0 ? (b - a).cross(hit.point - a).dot(n) / n2 : 0.0;
-  wb = std::clamp(wb, 0.0, 1.0);
-  wc = std::clamp(wc, 0.0, 1.0 - wb);
-  const double wa = 1.0 - wb - wc;
-  const auto& uv = uv_[t];
-  Result r;
-  r.patch = patchOf_[t];
-  r.u = wa * uv[0] + wb * uv[2] + wc * uv[4];
-  r.v = wa * uv[1] + wb * uv[3] + wc * uv[5];
-  return r;
+  boxes_.resize(surface.patches.size());
+  for (std::size_t p = 0; p < surface.patches.size(); ++p)
+  {
+    for (const Vec3& c : surface.patches[p].grid)
+    {
+      boxes_[p].extend(c);
+    }
+    for (const Vec3& c : surface.patches[p].interior)
+    {
+      boxes_[p].extend(c);
+    }
+  }
 }
 
 void LatticeSurfaceLocator::refine(const Vec3& query, Result& r) const
@@ -134,41 +117,49 @@ void LatticeSurfaceLocator::refine(const Vec3& query, Result& r) const
 
 LatticeSurfaceLocator::Result LatticeSurfaceLocator::closest(const Vec3& query) const
 {
-  Result best = start(query);
-  refine(query, best);
-  // A solution on a patch border may be a false minimum: the true one can lie
-  // on the neighbouring patch. Probe a quarter of a tessellation step beyond
-  // the border, find the patch there, and continue on it.
-  Result current = best;
-  for (int hop = 0; hop < 4; ++hop)
+  // The nearest tessellation vertex is a point of the surface: its distance
+  // bounds the answer. A Gregory patch lies in the convex hull of its control
+  // points, so only patches whose control-point box is within that bound can
+  // hold the closest point. Each is refined from its nearest grid sample.
+  const ClosestPointTree::Hit hit = tree_->closest(query);
+  const auto& tri = mesh_.triangles[static_cast<std::size_t>(hit.face)];
+  double bound = std::numeric_limits<double>::max();
+  for (const auto id : tri)
   {
-    const bool onBorder = current.u <= 0.0 || current.u >= 1.0 || current.v <= 0.0 || current.v >= 1.0;
-    if (!onBorder)
+    bound = std::min(bound, (mesh_.points[static_cast<std::size_t>(id)] - query).norm());
+  }
+  const int m = resolution_;
+  const auto perPatch = static_cast<std::size_t>((m + 1) * (m + 1));
+  Result best;
+  best.distance = std::numeric_limits<double>::max();
+  for (std::size_t p = 0; p < surface_.patches.size(); ++p)
+  {
+    const Box3& box = boxes_[p];
+    const Vec3 outside = (box.min - query).cwiseMax(query - box.max).cwiseMax(0.0);
+    if (outside.norm() > bound)
     {
-      break;
+      continue;
     }
-    Vec3 su, sv;
-    surface_.patches[current.patch].evaluate(current.u, current.v, &su, &sv);
-    Vec3 out = Vec3::Zero();
-    out += current.u <= 0.0 ? Vec3(-su) : (current.u >= 1.0 ? su : Vec3::Zero());
-    out += current.v <= 0.0 ? Vec3(-sv) : (current.v >= 1.0 ? sv : Vec3::Zero());
-    if (!(out.norm() > 0.0))
+    Result r;
+    r.patch = p;
+    double nearest = std::numeric_limits<double>::max();
+    for (std::size_t k = 0; k < perPatch; ++k)
     {
-      break;
+      const double d = (mesh_.points[p * perPatch + k] - query).squaredNorm();
+      if (d < nearest)
+      {
+        nearest = d;
+        r.u = static_cast<double>(k % static_cast<std::size_t>(m + 1)) / m;
+        r.v = static_cast<double>(k / static_cast<std::size_t>(m + 1)) / m;
+      }
     }
-    const double h = 0.25 * std::max(su.norm(), sv.norm()) / resolution_;
-    Result next = start(current.point + h * out.normalized());
-    if (next.patch == current.patch)
+    refine(query, r);
+    if (r.distance < best.distance)
     {
-      break; // the surface ends here
+      best = r;
     }
-    refine(query, next);
-    if (next.distance < best.distance)
-    {
-      best = next;
-    }
-    current = next;
   }
   return best;
 }
+
 } // namespace lk

@@ -1,9 +1,10 @@
 #pragma once
 /// \file LatticeSurfaceLocator.h
-/// Closest point on a lattice surface: a CGAL AABB tree over a fine
-/// tessellation gives the starting patch and (u, v); Gauss-Newton steps on
-/// that patch (clamped to its parameter square) refine the point onto the
-/// exact Gregory surface.
+/// Closest point on a lattice surface. A CGAL AABB tree over a tessellation
+/// gives a surface point whose distance bounds the answer; every patch whose
+/// control-point box (which contains the patch) lies within that bound is
+/// searched: from its nearest grid sample, Gauss-Newton steps clamped to the
+/// parameter square, then a pattern search, on the exact Gregory surface.
 
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/LatticeSurface.h"
@@ -32,14 +33,12 @@ public:
   Result closest(const Vec3& query) const;
 
 private:
-  Result start(const Vec3& probe) const;
   void refine(const Vec3& query, Result& r) const;
 
   const LatticeSurface& surface_;
   int resolution_;
   TriangleMesh mesh_;
-  std::vector<std::array<double, 6>> uv_; ///< (u, v) of each triangle's three corners
-  std::vector<std::size_t> patchOf_;
+  std::vector<Box3> boxes_; ///< control-point box of each patch (it contains the patch)
   std::unique_ptr<ClosestPointTree> tree_;
 };
 
