@@ -399,6 +399,102 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
     return sectorNormal[iv][sectorOf.at({ iv, f })];
   };
 
+  // Eq. 2.2's tangent of every smooth edge at each end, in the end's plane.
+  std::map<std::pair<std::int64_t, std::int64_t>, Vec3> tangentAt; // (vertex, other end) -> tangent
+  for (const auto& [key, besides] : edgeFaces)
+  {
+    if (crease[key])
+    {
+      continue;
+    }
+    for (const bool first : { true, false })
+    {
+      const auto v = first ? key.first : key.second;
+      const auto x = first ? key.second : key.first;
+      const Vec3& V = s.roundedPoints[static_cast<std::size_t>(v)];
+      Vec3 Q = Vec3::Zero();
+      for (const auto& [f, i] : besides)
+      {
+        const auto& face = lattice.faces[f];
+        Q += faces[f].ds[face[i] == v ? i : (i + 1) % face.size()];
+      }
+      Q /= static_cast<double>(besides.size());
+      const Vec3 chord = s.roundedPoints[static_cast<std::size_t>(x)] - V;
+      tangentAt[{ v, x }] = tangentInPlane((4.0 * Q - V) / 3.0 - V, normalAt(v, besides[0].first), chord, chord.norm() / 6.0);
+    }
+  }
+  // At a smooth interior vertex of a folded-back fan (decimated lattices have
+  // them), projected tangents can swap order in the plane; a face corner is
+  // then inverted and its patch folds. There, keep every tangent's length but
+  // spread the directions in the fan's cyclic order: at the projected lattice
+  // edges' angles when those are in order, else at equal angles.
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (kind[v] != 0 || !creaseNeighbours[v].empty() || sectors[v].size() != 1)
+    {
+      continue;
+    }
+    const auto vi = static_cast<std::int64_t>(v);
+    const Vec3& n = sectorNormal[v][0];
+    // Cyclic order: each face turns from its next edge to its previous one.
+    std::map<std::int64_t, std::int64_t> turn; // next -> prev, per face at v
+    for (const std::size_t f : sectors[v][0])
+    {
+      const auto& face = lattice.faces[f];
+      const auto i = static_cast<std::size_t>(std::find(face.begin(), face.end(), vi) - face.begin());
+      turn[face[(i + 1) % face.size()]] = face[(i + face.size() - 1) % face.size()];
+    }
+    bool inverted = false;
+    for (const auto& [next, prev] : turn)
+    {
+      inverted = inverted || tangentAt.at({ vi, next }).cross(tangentAt.at({ vi, prev })).dot(n) <= 0.0;
+    }
+    if (!inverted)
+    {
+      continue;
+    }
+    std::vector<std::int64_t> ring = { turn.begin()->first };
+    while (ring.size() < turn.size() && turn.count(ring.back()))
+    {
+      ring.push_back(turn.at(ring.back()));
+    }
+    if (ring.size() != turn.size() || turn.at(ring.back()) != ring.front())
+    {
+      continue; // not a single closed fan; leave it
+    }
+    const Vec3 e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    auto angle = [&](const Vec3& t) { return std::atan2(t.dot(e2), t.dot(e1)); };
+    std::vector<double> theta(ring.size());
+    bool ordered = true;
+    double total = 0.0;
+    for (std::size_t k = 0; k < ring.size(); ++k)
+    {
+      theta[k] = angle(P[static_cast<std::size_t>(ring[k])] - P[v]);
+      if (k > 0)
+      {
+        double step = theta[k] - theta[k - 1];
+        while (step <= 0.0)
+        {
+          step += 2.0 * M_PI;
+        }
+        ordered = ordered && step < M_PI;
+        total += step;
+      }
+    }
+    double closing = theta[0] - theta.back();
+    while (closing <= 0.0)
+    {
+      closing += 2.0 * M_PI;
+    }
+    ordered = ordered && closing < M_PI && std::abs(total + closing - 2.0 * M_PI) < 1e-9;
+    for (std::size_t k = 0; k < ring.size(); ++k)
+    {
+      const double a = ordered ? theta[k] : theta[0] + 2.0 * M_PI * static_cast<double>(k) / ring.size();
+      Vec3& t = tangentAt.at({ vi, ring[k] });
+      t = t.norm() * (std::cos(a) * e1 + std::sin(a) * e2);
+    }
+  }
+
   // Edge curves; a smooth edge's b is shared by its two faces, a crease's b is
   // made per face (see sideCurve).
   std::map<Key, std::size_t> edgeIndex;
@@ -428,21 +524,8 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
     }
     else
     {
-      // Eq. 2.2, affine: P1' = (4Q - P0') / 3, projected into the sector's plane.
-      Vec3 Q = Vec3::Zero(), R = Vec3::Zero();
-      for (const auto& [f, i] : besides)
-      {
-        const auto& face = lattice.faces[f];
-        const std::size_t j = (i + 1) % face.size();
-        const bool aFirst = face[i] == a;
-        Q += faces[f].ds[aFirst ? i : j];
-        R += faces[f].ds[aFirst ? j : i];
-      }
-      Q /= static_cast<double>(besides.size());
-      R /= static_cast<double>(besides.size());
-      const double floorLength = (B - A).norm() / 6.0;
-      c.X = { A, A + tangentInPlane((4.0 * Q - A) / 3.0 - A, na, B - A, floorLength),
-        B + tangentInPlane((4.0 * R - B) / 3.0 - B, nb, A - B, floorLength), B };
+      // Eq. 2.2, affine: P1' = (4Q - P0') / 3, in the sector's plane (above).
+      c.X = { A, A + tangentAt.at({ a, b }), B + tangentAt.at({ b, a }), B };
     }
     c.b0 = na.cross(unit(c.X[1] - c.X[0], "an edge curve has no tangent at its start"));
     c.b1 = nb.cross(unit(c.X[3] - c.X[2], "an edge curve has no tangent at its end"));
