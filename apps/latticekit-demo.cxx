@@ -35,6 +35,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -154,87 +155,30 @@ int main(int argc, char* argv[])
   long vertices = 20000, samples = 0, smooth = 10;
   double viewFrom[3] = { 0, -1, 0 }, viewUp[3] = { 0, 0, 1 };
   bool render = true, quiet = false, inputGiven = false;
-  for (int i = 1; i < argc; ++i)
+  lkapp::Arguments args(argc, argv, usage);
+  std::string a;
+  while (args.next(a))
   {
-    const std::string a = argv[i];
-    std::string v;
-    auto value = [&]() {
-      if (i + 1 >= argc)
-      {
-        std::cerr << "error: " << a << " needs a value\n";
-        std::exit(2);
-      }
-      v = argv[++i];
-    };
-    if (a == "-h" || a == "--help")
-    {
-      usage(std::cout);
-      return 0;
-    }
-    else if (a == "-o" || a == "--output")
-    {
-      value();
-      folder = v;
-    }
+    if (a == "-o" || a == "--output")
+      folder = args.value(a);
     else if (a == "--iso")
-    {
-      value();
-      if (!lkapp::parseDouble(v, iso))
-      {
-        std::cerr << "error: --iso needs a number, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      iso = args.number(a, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), "a number");
     else if (a == "--vertices")
-    {
-      value();
-      if (!lkapp::parseInt(v, vertices) || vertices < 4)
-      {
-        std::cerr << "error: --vertices needs an integer >= 4, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      vertices = args.integer(a, 4, std::numeric_limits<long>::max(), "an integer >= 4");
     else if (a == "--samples")
-    {
-      value();
-      if (!lkapp::parseInt(v, samples) || samples <= 0)
-      {
-        std::cerr << "error: --samples needs a positive integer, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      samples = args.integer(a, 1, std::numeric_limits<long>::max(), "a positive integer");
     else if (a == "--smooth")
-    {
-      value();
-      if (!lkapp::parseInt(v, smooth) || smooth < 0 || smooth > 1000)
-      {
-        std::cerr << "error: --smooth needs an integer from 0 to 1000, not '" << v << "'\n";
-        return 2;
-      }
-    }
-    else if (a == "--view-from" || a == "--view-up")
-    {
-      value();
-      if (!lkapp::parseTriple(v, a == "--view-from" ? viewFrom : viewUp))
-      {
-        std::cerr << "error: " << a << " needs three numbers X,Y,Z, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      smooth = args.integer(a, 0, 1000, "an integer from 0 to 1000");
+    else if (a == "--view-from")
+      args.triple(a, viewFrom);
+    else if (a == "--view-up")
+      args.triple(a, viewUp);
     else if (a == "--no-render")
-    {
       render = false;
-    }
     else if (a == "-q" || a == "--quiet")
-    {
       quiet = true;
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      std::cerr << "error: unknown option " << a << "\n";
-      usage(std::cerr);
-      return 2;
-    }
+    else if (lkapp::Arguments::isOption(a))
+      args.unknown(a);
     else if (!inputGiven)
     {
       input = a;

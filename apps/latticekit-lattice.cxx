@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <string>
 
 namespace
@@ -46,61 +47,24 @@ int main(int argc, char* argv[])
   std::string input, output, netOut, latticeOut;
   long resolution = 8;
   bool quiet = false;
-  for (int i = 1; i < argc; ++i)
+  lkapp::Arguments args(argc, argv, usage);
+  std::string a;
+  while (args.next(a))
   {
-    const std::string a = argv[i];
-    std::string v;
-    auto value = [&]() {
-      if (i + 1 >= argc)
-      {
-        std::cerr << "error: " << a << " needs a value\n";
-        std::exit(2);
-      }
-      v = argv[++i];
-    };
-    if (a == "-h" || a == "--help")
-    {
-      usage(std::cout);
-      return 0;
-    }
-    else if (a == "-o" || a == "--output")
-    {
-      value();
-      output = v;
-    }
+    if (a == "-o" || a == "--output")
+      output = args.value(a);
     else if (a == "--resolution")
-    {
-      value();
-      if (!lkapp::parseInt(v, resolution) || resolution < 2 || resolution > 256)
-      {
-        std::cerr << "error: --resolution needs an integer from 2 to 256, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      resolution = args.integer(a, 2, 256, "an integer from 2 to 256");
     else if (a == "--control-net")
-    {
-      value();
-      netOut = v;
-    }
+      netOut = args.value(a);
     else if (a == "--lattice")
-    {
-      value();
-      latticeOut = v;
-    }
+      latticeOut = args.value(a);
     else if (a == "-q" || a == "--quiet")
-    {
       quiet = true;
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      std::cerr << "error: unknown option " << a << "\n";
-      usage(std::cerr);
-      return 2;
-    }
+    else if (lkapp::Arguments::isOption(a))
+      args.unknown(a);
     else if (input.empty())
-    {
       input = a;
-    }
     else
     {
       std::cerr << "error: more than one lattice given\n";

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <string>
 
 namespace
@@ -79,93 +80,36 @@ int main(int argc, char* argv[])
   double density = 0.0;
   bool vertex = true, edge = true, face = true, symmetric = true, quiet = false;
   int method = vtkLKMetroFilter::MONTE_CARLO;
-  for (int i = 1; i < argc; ++i)
+  lkapp::Arguments args(argc, argv, usage);
+  std::string a;
+  while (args.next(a))
   {
-    const std::string a = argv[i];
-    std::string v;
-    auto value = [&]() {
-      if (i + 1 >= argc)
-      {
-        std::cerr << "error: " << a << " needs a value\n";
-        std::exit(2);
-      }
-      v = argv[++i];
-    };
-    if (a == "-h" || a == "--help")
-    {
-      usage(std::cout);
-      return 0;
-    }
-    else if (a == "--samples")
-    {
-      value();
-      if (!lkapp::parseInt(v, samples) || samples <= 0)
-      {
-        std::cerr << "error: --samples needs a positive integer, not '" << v << "'\n";
-        return 2;
-      }
-    }
+    if (a == "--samples")
+      samples = args.integer(a, 1, std::numeric_limits<long>::max(), "a positive integer");
     else if (a == "--density")
-    {
-      value();
-      if (!lkapp::parseDouble(v, density) || density <= 0.0)
-      {
-        std::cerr << "error: --density needs a positive number, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      density = args.number(a, std::numeric_limits<double>::min(), std::numeric_limits<double>::max(), "a positive number");
     else if (a == "--seed")
-    {
-      value();
-      if (!lkapp::parseInt(v, seed))
-      {
-        std::cerr << "error: --seed needs an integer, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      seed = args.integer(a, std::numeric_limits<long>::min(), std::numeric_limits<long>::max(), "an integer");
     else if (a == "--similar")
-    {
       method = vtkLKMetroFilter::SIMILAR_TRIANGLES;
-    }
     else if (a == "--montecarlo")
-    {
       method = vtkLKMetroFilter::MONTE_CARLO;
-    }
     else if (a == "--no-vertex")
-    {
       vertex = false;
-    }
     else if (a == "--no-edge")
-    {
       edge = false;
-    }
     else if (a == "--no-face")
-    {
       face = false;
-    }
     else if (a == "--one-sided")
-    {
       symmetric = false;
-    }
     else if (a == "--colored")
-    {
-      value();
-      colored = v;
-    }
+      colored = args.value(a);
     else if (a == "-q" || a == "--quiet")
-    {
       quiet = true;
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      std::cerr << "error: unknown option " << a << "\n";
-      usage(std::cerr);
-      return 2;
-    }
+    else if (lkapp::Arguments::isOption(a))
+      args.unknown(a);
     else
-    {
       inputs.push_back(a);
-    }
   }
   if (inputs.size() != 2)
   {

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <string>
 
 namespace
@@ -51,116 +52,44 @@ int main(int argc, char* argv[])
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
   int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
   bool repair = true, quiet = false;
-  for (int i = 1; i < argc; ++i)
+  lkapp::Arguments args(argc, argv, usage);
+  const double inf = std::numeric_limits<double>::max();
+  std::string a;
+  while (args.next(a))
   {
-    const std::string a = argv[i];
-    auto value = [&](std::string& v) {
-      if (i + 1 >= argc)
-      {
-        std::cerr << "error: " << a << " needs a value\n";
-        std::exit(2);
-      }
-      v = argv[++i];
-    };
-    std::string v;
-    if (a == "-h" || a == "--help")
-    {
-      usage(std::cout);
-      return 0;
-    }
-    else if (a == "-o" || a == "--output")
-    {
-      value(output);
-    }
+    if (a == "-o" || a == "--output")
+      output = args.value(a);
     else if (a == "--iso")
-    {
-      value(v);
-      if (!lkapp::parseDouble(v, iso))
-      {
-        std::cerr << "error: --iso needs a number, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      iso = args.number(a, -inf, inf, "a number");
     else if (a == "--largest")
-    {
       mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
-    }
     else if (a == "--all")
-    {
       mode = vtkLKBoneSurfaceFilter::ALL_COMPONENTS;
-    }
     else if (a == "--seed")
     {
-      value(v);
-      if (!lkapp::parseTriple(v, seed))
-      {
-        std::cerr << "error: --seed needs three numbers X,Y,Z, not '" << v << "'\n";
-        return 2;
-      }
+      args.triple(a, seed);
       mode = vtkLKBoneSurfaceFilter::SEEDED_COMPONENT;
     }
     else if (a == "--smooth")
-    {
-      value(v);
-      if (!lkapp::parseInt(v, smooth) || smooth < 0 || smooth > 1000)
-      {
-        std::cerr << "error: --smooth needs an integer from 0 to 1000, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      smooth = args.integer(a, 0, 1000, "an integer from 0 to 1000");
     else if (a == "--image-smooth")
-    {
-      value(v);
-      if (!lkapp::parseDouble(v, imageSmooth) || imageSmooth < 0.0 || imageSmooth > 20.0)
-      {
-        std::cerr << "error: --image-smooth needs a number from 0 to 20, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      imageSmooth = args.number(a, 0.0, 20.0, "a number from 0 to 20");
     else if (a == "--label-map")
-    {
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_ON;
-    }
     else if (a == "--no-label-map")
-    {
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_OFF;
-    }
     else if (a == "--series")
-    {
-      value(v);
-      if (!lkapp::parseInt(v, series) || series < 0)
-      {
-        std::cerr << "error: --series needs an integer >= 0, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      series = args.integer(a, 0, std::numeric_limits<long>::max(), "an integer >= 0");
     else if (a == "--slice-spacing")
-    {
-      value(v);
-      if (!lkapp::parseDouble(v, sliceSpacing) || sliceSpacing <= 0.0)
-      {
-        std::cerr << "error: --slice-spacing needs a positive number, not '" << v << "'\n";
-        return 2;
-      }
-    }
+      sliceSpacing = args.number(a, std::numeric_limits<double>::min(), inf, "a positive number");
     else if (a == "--no-repair")
-    {
       repair = false;
-    }
     else if (a == "-q" || a == "--quiet")
-    {
       quiet = true;
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      std::cerr << "error: unknown option " << a << "\n";
-      usage(std::cerr);
-      return 2;
-    }
+    else if (lkapp::Arguments::isOption(a))
+      args.unknown(a);
     else if (input.empty())
-    {
       input = a;
-    }
     else
     {
       std::cerr << "error: more than one input given ('" << input << "', '" << a << "')\n";

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -377,6 +378,79 @@ bool parseTriple(const std::string& text, double v[3])
     return false;
   }
   return parseDouble(a, v[0]) && parseDouble(b, v[1]) && parseDouble(c, v[2]);
+}
+
+Arguments::Arguments(int argc, char* argv[], Usage usage)
+  : argc_(argc)
+  , argv_(argv)
+  , usage_(usage)
+{
+}
+
+bool Arguments::next(std::string& arg)
+{
+  if (++i_ >= argc_)
+  {
+    return false;
+  }
+  arg = argv_[i_];
+  if (arg == "-h" || arg == "--help")
+  {
+    usage_(std::cout);
+    std::exit(0);
+  }
+  return true;
+}
+
+std::string Arguments::value(const std::string& arg)
+{
+  if (i_ + 1 >= argc_)
+  {
+    std::cerr << "error: " << arg << " needs a value\n";
+    std::exit(2);
+  }
+  return argv_[++i_];
+}
+
+long Arguments::integer(const std::string& arg, long lo, long hi, const char* what)
+{
+  const std::string v = value(arg);
+  long x = 0;
+  if (!parseInt(v, x) || x < lo || x > hi)
+  {
+    std::cerr << "error: " << arg << " needs " << what << ", not '" << v << "'\n";
+    std::exit(2);
+  }
+  return x;
+}
+
+double Arguments::number(const std::string& arg, double lo, double hi, const char* what)
+{
+  const std::string v = value(arg);
+  double x = 0.0;
+  if (!parseDouble(v, x) || x < lo || x > hi)
+  {
+    std::cerr << "error: " << arg << " needs " << what << ", not '" << v << "'\n";
+    std::exit(2);
+  }
+  return x;
+}
+
+void Arguments::triple(const std::string& arg, double v[3])
+{
+  const std::string text = value(arg);
+  if (!parseTriple(text, v))
+  {
+    std::cerr << "error: " << arg << " needs three numbers X,Y,Z, not '" << text << "'\n";
+    std::exit(2);
+  }
+}
+
+void Arguments::unknown(const std::string& arg)
+{
+  std::cerr << "error: unknown option " << arg << "\n";
+  usage_(std::cerr);
+  std::exit(2);
 }
 
 bool checkWritable(const std::string& path, std::string& error)

@@ -6,6 +6,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,36 @@ const char* meshExtensions();
 bool parseDouble(const std::string& text, double& value);
 bool parseInt(const std::string& text, long& value);
 bool parseTriple(const std::string& text, double v[3]);
+
+/// Walks a command line. Every method that reads an option's value exits
+/// with status 2 and a one-line message when the value is missing or wrong,
+/// so each tool states only its options and their ranges.
+class Arguments
+{
+public:
+  using Usage = void (*)(std::ostream&);
+  Arguments(int argc, char* argv[], Usage usage);
+  /// The next argument, or false at the end. -h / --help prints the usage and exits 0.
+  bool next(std::string& arg);
+  /// The value after option `arg`.
+  std::string value(const std::string& arg);
+  /// An integer value in [lo, hi].
+  long integer(const std::string& arg, long lo, long hi, const char* what);
+  /// A finite number in [lo, hi].
+  double number(const std::string& arg, double lo, double hi, const char* what);
+  /// Three numbers X,Y,Z.
+  void triple(const std::string& arg, double v[3]);
+  /// Exits 2 for an option the tool does not know.
+  [[noreturn]] void unknown(const std::string& arg);
+  /// True for an argument that looks like an option.
+  static bool isOption(const std::string& arg) { return !arg.empty() && arg[0] == '-'; }
+
+private:
+  int argc_;
+  char** argv_;
+  int i_ = 0;
+  Usage usage_;
+};
 
 /// False (with error set) if the mesh file cannot be created or has an
 /// unknown extension: checked before a long run, so that the run does not
