@@ -46,9 +46,11 @@ struct Continuity
   std::size_t pairs = 0;
 };
 
-Continuity measure(const lk::LatticeSurface& s, double size)
+/// Calls fn(x, y) for every two samples of different patches at one point;
+/// returns how many points have no such partner.
+template <typename Fn>
+std::size_t forEachCoincidentPair(const std::vector<Sample>& samples, double size, Fn fn)
 {
-  const std::vector<Sample> samples = sideSamples(s);
   std::map<std::array<long long, 3>, std::vector<std::size_t>> buckets;
   const double q = 1e-7 * size;
   for (std::size_t i = 0; i < samples.size(); ++i)
@@ -56,7 +58,7 @@ Continuity measure(const lk::LatticeSurface& s, double size)
     const auto& p = samples[i].p;
     buckets[{ std::llround(p.x() / q), std::llround(p.y() / q), std::llround(p.z() / q) }].push_back(i);
   }
-  Continuity c;
+  std::size_t unmatched = 0;
   for (const auto& [key, ids] : buckets)
   {
     bool partner = false;
@@ -64,20 +66,31 @@ Continuity measure(const lk::LatticeSurface& s, double size)
     {
       for (std::size_t b = a + 1; b < ids.size(); ++b)
       {
-        const Sample& x = samples[ids[a]];
-        const Sample& y = samples[ids[b]];
-        if (x.patch == y.patch)
+        if (samples[ids[a]].patch != samples[ids[b]].patch)
         {
-          continue;
+          partner = true;
+          fn(samples[ids[a]], samples[ids[b]]);
         }
-        partner = true;
-        ++c.pairs;
-        c.gap = std::max(c.gap, (x.p - y.p).norm());
-        c.angle = std::max(c.angle, std::atan2(x.n.cross(y.n).norm(), x.n.dot(y.n)));
       }
     }
-    c.unmatched += partner ? 0 : 1;
+    unmatched += partner ? 0 : 1;
   }
+  return unmatched;
+}
+
+double normalAngle(const Sample& x, const Sample& y)
+{
+  return std::atan2(x.n.cross(y.n).norm(), x.n.dot(y.n));
+}
+
+Continuity measure(const lk::LatticeSurface& s, double size)
+{
+  Continuity c;
+  c.unmatched = forEachCoincidentPair(sideSamples(s), size, [&](const Sample& x, const Sample& y) {
+    ++c.pairs;
+    c.gap = std::max(c.gap, (x.p - y.p).norm());
+    c.angle = std::max(c.angle, normalAngle(x, y));
+  });
   return c;
 }
 
@@ -381,34 +394,14 @@ TEST(LatticeWeights, CreaseAroundTheTopOfARefinedCube)
   }
   EXPECT_LT(offTop, 1e-12);
   // G1 everywhere but across the crease, where the surface is sharp.
-  const std::vector<Sample> samples = sideSamples(s);
-  std::map<std::array<long long, 3>, std::vector<std::size_t>> buckets;
-  for (std::size_t i = 0; i < samples.size(); ++i)
-  {
-    const auto& p = samples[i].p;
-    buckets[{ std::llround(p.x() * 1e7), std::llround(p.y() * 1e7), std::llround(p.z() * 1e7) }].push_back(i);
-  }
   double smooth = 0.0, sharp = 0.0, gap = 0.0;
-  for (const auto& [key, ids] : buckets)
-  {
-    for (std::size_t a = 0; a < ids.size(); ++a)
-    {
-      for (std::size_t b = a + 1; b < ids.size(); ++b)
-      {
-        const Sample& x = samples[ids[a]];
-        const Sample& y = samples[ids[b]];
-        if (x.patch == y.patch)
-        {
-          continue;
-        }
-        gap = std::max(gap, (x.p - y.p).norm());
-        const double angle = std::atan2(x.n.cross(y.n).norm(), x.n.dot(y.n));
-        const bool across = topFace[static_cast<std::size_t>(s.patchFace[x.patch])] !=
-          topFace[static_cast<std::size_t>(s.patchFace[y.patch])];
-        (across ? sharp : smooth) = std::max(across ? sharp : smooth, angle);
-      }
-    }
-  }
+  forEachCoincidentPair(sideSamples(s), 1.0, [&](const Sample& x, const Sample& y) {
+    gap = std::max(gap, (x.p - y.p).norm());
+    const bool across = topFace[static_cast<std::size_t>(s.patchFace[x.patch])] !=
+      topFace[static_cast<std::size_t>(s.patchFace[y.patch])];
+    double& worst = across ? sharp : smooth;
+    worst = std::max(worst, normalAngle(x, y));
+  });
   std::printf("crease: largest angle across %.3f rad, elsewhere %.2e rad, gap %.2e\n", sharp, smooth, gap);
   EXPECT_LT(gap, 1e-12);
   EXPECT_LT(smooth, 1e-6);
