@@ -31,7 +31,8 @@
  * input lying on lattice edges mark those edges, with cell data
  * "RoundingWeight" as their weight (0 when the array is missing): weight 0
  * makes the edge a sharp crease, and a vertex on three or more creases a
- * sharp corner. Edge weights act as 0 or 1 for now.
+ * sharp corner; weights in (0, 1) keep the surface G1 but round the edge
+ * more tightly as they fall.
  *
  * After an update, EvaluatePatch gives position, unit normal and first
  * derivatives at (patch, u, v).

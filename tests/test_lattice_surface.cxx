@@ -508,3 +508,31 @@ TEST(LatticeSurface, NoPatchFoldsInside)
     EXPECT_GT(worst, 0.0) << name << ": a patch folds";
   }
 }
+
+TEST(LatticeWeights, EdgeWeightsTightenTheRoundingContinuouslyAndStayG1)
+{
+  // Octahedron: edge (0, 2) with falling weights. Its curve's midpoint moves
+  // towards the lattice edge, monotonically; the surface stays G1 for w > 0.
+  const lk::PolygonMesh m = lktest::octahedronLattice();
+  const lk::Vec3 latticeMid = 0.5 * (m.points[0] + m.points[2]);
+  double previous = 1e300;
+  for (double w : { 1.0, 0.75, 0.5, 0.25, 0.05 })
+  {
+    lk::LatticeWeights weights;
+    weights.edge[{ 0, 2 }] = w;
+    const lk::LatticeSurface s = lk::buildLatticeSurface(m, weights);
+    std::size_t e = 0;
+    while (!(s.edgeVertices[e][0] == 0 && s.edgeVertices[e][1] == 2))
+    {
+      ++e;
+    }
+    const double gap = (lk::bezier(s.edgeCurves[e], 0.5) - latticeMid).norm();
+    const Continuity k = measure(s, 1.0);
+    std::printf("edge weight %.2f: curve midpoint %.4f from the lattice edge, worst normal angle %.1e rad\n", w, gap,
+      k.angle);
+    EXPECT_LT(gap, previous);
+    EXPECT_LT(k.angle, 1e-6);
+    EXPECT_LT(k.gap, 1e-12);
+    previous = gap;
+  }
+}

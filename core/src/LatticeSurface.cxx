@@ -218,18 +218,15 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       throw std::invalid_argument(os.str());
     }
   }
-  auto isCrease = [&](const Key& key, std::size_t besides) {
-    if (besides == 1)
-    {
-      return true;
-    }
+  auto edgeWeight = [&](const Key& key) {
     auto it = weights.edge.find(key);
     if (it == weights.edge.end())
     {
       it = weights.edge.find({ key.second, key.first });
     }
-    return it != weights.edge.end() && it->second < 0.5;
+    return it == weights.edge.end() ? 1.0 : it->second;
   };
+  auto isCrease = [&](const Key& key, std::size_t besides) { return besides == 1 || edgeWeight(key) == 0.0; };
   std::map<Key, bool> crease;
   std::vector<std::vector<std::int64_t>> creaseNeighbours(nv);
   std::vector<std::vector<Key>> vertexEdges(nv);
@@ -419,6 +416,12 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
         Q += faces[f].ds[face[i] == v ? i : (i + 1) % face.size()];
       }
       Q /= static_cast<double>(besides.size());
+      // An edge weight w in (0, 1) tightens the rounding along the edge: Q
+      // moves towards the lattice edge's third point, (2 V + X) / 3, so the
+      // curve leans towards the lattice edge; the tangent plane is unchanged,
+      // so G1 holds for every w > 0 (w = 0 is the crease).
+      const double w = edgeWeight(key);
+      Q = w * Q + (1.0 - w) * (2.0 * P[static_cast<std::size_t>(v)] + P[static_cast<std::size_t>(x)]) / 3.0;
       const Vec3 chord = s.roundedPoints[static_cast<std::size_t>(x)] - V;
       tangentAt[{ v, x }] = tangentInPlane((4.0 * Q - V) / 3.0 - V, normalAt(v, besides[0].first), chord, chord.norm() / 6.0);
     }

@@ -46,10 +46,14 @@
 /// tangent, and the interior curves there are projected into it as above.
 ///
 /// Rounding weights (XVL's lattice weights), LatticeWeights:
-/// - an edge of weight 0 (below 1/2; edge weights act as 0 or 1) is a crease,
-///   as is every boundary edge: no G1 is asked across it. Around each vertex
-///   the faces fall into sectors between creases, each with its own tangent
-///   plane;
+/// - an edge of weight 0 is a crease, as is every boundary edge: no G1 is
+///   asked across it. Around each vertex the faces fall into sectors between
+///   creases, each with its own tangent plane;
+/// - an edge of weight w in (0, 1) stays G1 but is rounded more tightly: its
+///   eq. 2.2 point Q moves towards the lattice edge's third point,
+///   Q_w = w Q + (1 - w) (2 V + X) / 3, before the projection into the
+///   (unchanged) tangent plane, so the curve leans towards the lattice edge
+///   as w falls;
 /// - a vertex on two creases lies on the uniform cubic B-spline of the crease
 ///   polygon, V' = (p + 4 V + q) / 6, and both sectors' planes contain that
 ///   curve's tangent (q - p) / 6 (so a boundary is the B-spline of the
@@ -62,8 +66,8 @@
 /// - a vertex weight w in [0, 1] moves the rounded point: V' = V + w (V'_1 - V),
 ///   0 making the surface pass through the lattice vertex.
 ///
-/// Not yet: edge weights between 0 and 1 (they act as 0 or 1),
-/// chordal-tolerance tessellation.
+/// Tessellation by resolution or chordal tolerance is the filter's business
+/// (vtkLKLatticeSurfaceFilter).
 
 #include "latticekit/GregoryPatch.h"
 #include "latticekit/PolygonMesh.h"
