@@ -71,7 +71,7 @@ bool vtkLKLatticeSurfaceFilter::EvaluatePatch(
   const lk::GregoryPatch& p = patches[static_cast<std::size_t>(patch)];
   lk::Vec3 a, b;
   const lk::Vec3 x = p.evaluate(u, v, &a, &b);
-  const lk::Vec3 n = p.normal(u, v);
+  const lk::Vec3 n = p.normalFrom(a, b, u, v);
   for (int k = 0; k < 3; ++k)
   {
     position[k] = x[k];
@@ -314,9 +314,7 @@ int vtkLKLatticeSurfaceFilter::RequestData(
         const double u = static_cast<double>(i) / m, v = static_cast<double>(j) / m;
         lk::Vec3 du, dv;
         const lk::Vec3 x = s.patches[p].evaluate(u, v, &du, &dv);
-        lk::Vec3 nrm = du.cross(dv);
-        const double len = nrm.norm();
-        nrm = len > 1e-14 * du.norm() * dv.norm() && len > 0.0 ? lk::Vec3(nrm / len) : s.patches[p].normal(u, v);
+        const lk::Vec3 nrm = s.patches[p].normalFrom(du, dv, u, v);
         const vtkIdType id = points->InsertNextPoint(x.data());
         normals->InsertNextTuple(nrm.data());
         grid[static_cast<std::size_t>(j * (m + 1) + i)] = id;

@@ -93,15 +93,21 @@ Vec3 GregoryPatch::normal(double u, double v) const
 {
   Vec3 du, dv;
   evaluate(u, v, &du, &dv);
-  Vec3 n = du.cross(dv);
+  return normalFrom(du, dv, u, v);
+}
+
+Vec3 GregoryPatch::normalFrom(const Vec3& du, const Vec3& dv, double u, double v) const
+{
+  const Vec3 n = du.cross(dv);
   if (n.norm() > 1e-14 * (du.norm() * dv.norm() + 1e-300))
   {
     return n.normalized();
   }
   // Degenerate (for example a collapsed side): step inside the patch.
   const double e = 1e-7;
-  evaluate(std::min(std::max(u, e), 1.0 - e), std::min(std::max(v, e), 1.0 - e), &du, &dv);
-  return du.cross(dv).normalized();
+  Vec3 iu, iv;
+  evaluate(std::min(std::max(u, e), 1.0 - e), std::min(std::max(v, e), 1.0 - e), &iu, &iv);
+  return iu.cross(iv).normalized();
 }
 
 Vec3 bezier(const std::array<Vec3, 4>& c, double t)

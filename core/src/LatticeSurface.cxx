@@ -174,11 +174,7 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
   {
     const auto& face = lattice.faces[f];
     const std::size_t n = face.size();
-    Vec3 newell = Vec3::Zero();
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      newell += P[static_cast<std::size_t>(face[i])].cross(P[static_cast<std::size_t>(face[(i + 1) % n])]);
-    }
+    const Vec3 newell = newellVector(lattice, f);
     faces[f].area = 0.5 * newell.norm();
     faces[f].normal = newell.normalized();
     faces[f].ds.resize(n);

@@ -293,13 +293,7 @@ std::string latticeProblem(const PolygonMesh& mesh)
       }
       used[static_cast<std::size_t>(id)] = 1;
     }
-    Vec3 newell = Vec3::Zero();
-    for (std::size_t i = 0; i < face.size(); ++i)
-    {
-      newell += mesh.points[static_cast<std::size_t>(face[i])].cross(
-        mesh.points[static_cast<std::size_t>(face[(i + 1) % face.size()])]);
-    }
-    if (!(newell.norm() > 0.0))
+    if (!(newellVector(mesh, f).norm() > 0.0))
     {
       os << "face " << f << " has zero area";
       return os.str();

@@ -37,6 +37,8 @@ struct GregoryPatch
   Vec3 evaluate(double u, double v, Vec3* du = nullptr, Vec3* dv = nullptr) const;
   /// Unit normal du x dv; at a degenerate point, the limit from inside the patch.
   Vec3 normal(double u, double v) const;
+  /// The same from derivatives already evaluated at (u, v).
+  Vec3 normalFrom(const Vec3& du, const Vec3& dv, double u, double v) const;
 };
 
 /// Cubic Bezier helpers.

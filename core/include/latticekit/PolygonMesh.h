@@ -17,6 +17,19 @@ struct PolygonMesh
   std::vector<std::vector<std::int64_t>> faces;
 };
 
+/// Newell's vector of face f: its unit normal times twice its area.
+inline Vec3 newellVector(const PolygonMesh& mesh, std::size_t f)
+{
+  const auto& face = mesh.faces[f];
+  Vec3 v = Vec3::Zero();
+  for (std::size_t i = 0; i < face.size(); ++i)
+  {
+    v += mesh.points[static_cast<std::size_t>(face[i])].cross(
+      mesh.points[static_cast<std::size_t>(face[(i + 1) % face.size()])]);
+  }
+  return v;
+}
+
 /// Empty when the mesh is a usable lattice: at least one face, every face with
 /// at least three distinct in-range vertices, finite coordinates, no isolated
 /// points, non-zero face areas, and a manifold, consistently oriented surface
