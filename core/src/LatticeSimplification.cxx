@@ -1,0 +1,597 @@
+#include "latticekit/LatticeSimplification.h"
+
+#include "latticekit/ManifoldRepair.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lk
+{
+namespace
+{
+namespace SMS = CGAL::Surface_mesh_simplification;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using VD = Mesh::Vertex_index;
+using HD = Mesh::Halfedge_index;
+using ED = Mesh::Edge_index;
+
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 toVec(const Point& p)
+{
+  return { p.x(), p.y(), p.z() };
+}
+
+/// (n.x + d)^2 summed with weights: x^T A x + 2 b.x + c.
+struct Quadric
+{
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Vec3 b = Vec3::Zero();
+  double c = 0.0;
+
+  static Quadric plane(const Vec3& n, double d, double w)
+  {
+    Quadric q;
+    q.A = w * n * n.transpose();
+    q.b = w * d * n;
+    q.c = w * d * d;
+    return q;
+  }
+  Quadric& operator+=(const Quadric& o)
+  {
+    A += o.A;
+    b += o.b;
+    c += o.c;
+    return *this;
+  }
+  Quadric& operator*=(double s)
+  {
+    A *= s;
+    b *= s;
+    c *= s;
+    return *this;
+  }
+  double operator()(const Vec3& x) const { return x.dot(A * x) + 2.0 * b.dot(x) + c; }
+  /// This quadric evaluated at alpha V + k, as a quadric in V.
+  Quadric composed(double alpha, const Vec3& k) const
+  {
+    Quadric q;
+    q.A = alpha * alpha * A;
+    q.b = alpha * (A * k + b);
+    q.c = k.dot(A * k) + 2.0 * b.dot(k) + c;
+    return q;
+  }
+};
+
+/// The lattice around the vertex V that a collapse of (v0, v1) would create.
+struct Star
+{
+  struct Face
+  {
+    VD a, b;      ///< the face is (V, a, b), counter-clockwise
+    VD from;      ///< v0 or v1: the vertex V replaces in it
+  };
+  struct Link
+  {
+    VD x;
+    Quadric q; ///< sum of the quadrics of (v0, x) and (v1, x)
+  };
+  std::vector<Face> faces;
+  std::vector<Link> links;
+  Quadric vertex;
+  bool border = false;
+  VD p, q; ///< boundary neighbours of V when on the border
+};
+
+struct State
+{
+  Mesh& mesh;
+  const SimplificationOptions& options;
+  Mesh::Property_map<VD, Quadric> vq;
+  Mesh::Property_map<ED, Quadric> eq;
+  Mesh::Property_map<ED, bool> feature;
+  Mesh::Property_map<VD, bool> featureVertex;
+  std::vector<std::int64_t> parent;
+  std::size_t vertices = 0;
+  std::size_t collapses = 0;
+  std::size_t toRemove = 0;
+  std::size_t reportEvery = 1;
+  bool aborted = false;
+
+  // Merged quadrics between OnCollapsing and OnCollapsed.
+  Quadric pendingVertex, pendingLeft, pendingRight;
+  bool pendingFeatureLeft = false, pendingFeatureRight = false, pendingFeatureVertex = false;
+
+  // The total quadric of the last placement, reused by the cost.
+  VD cacheV0, cacheV1;
+  Quadric cacheTotal;
+  bool cacheValid = false;
+
+  Vec3 pos(VD v) const { return toVec(mesh.point(v)); }
+
+  Star star(VD v0, VD v1) const
+  {
+    Star s;
+    for (VD v : { v0, v1 })
+    {
+      const VD other = v == v0 ? v1 : v0;
+      for (HD h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh))
+      {
+        const VD x = mesh.source(h);
+        if (!mesh.is_border(h))
+        {
+          const VD w = mesh.target(mesh.next(h));
+          if (x != other && w != other)
+            s.faces.push_back({ w, x, v });
+        }
+        if (x == other)
+          continue;
+        auto it = std::find_if(s.links.begin(), s.links.end(), [x](const Star::Link& l) { return l.x == x; });
+        if (it == s.links.end())
+          s.links.push_back({ x, eq[mesh.edge(h)] });
+        else
+          it->q += eq[mesh.edge(h)];
+      }
+    }
+    s.vertex = vq[v0];
+    s.vertex += vq[v1];
+    s.vertex += eq[mesh.edge(CGAL::halfedge(v0, v1, mesh).first)];
+    if (mesh.is_border(v0) || mesh.is_border(v1))
+    {
+      // Ends of the face fan: an 'a' that is no face's 'b', and the reverse.
+      int found = 0;
+      for (const Star::Face& f : s.faces)
+      {
+        if (std::none_of(s.faces.begin(), s.faces.end(), [&](const Star::Face& g) { return g.b == f.a; }))
+        {
+          s.q = f.a;
+          ++found;
+        }
+        if (std::none_of(s.faces.begin(), s.faces.end(), [&](const Star::Face& g) { return g.a == f.b; }))
+        {
+          s.p = f.b;
+          ++found;
+        }
+      }
+      s.border = found == 2;
+    }
+    return s;
+  }
+
+  /// F of eq. 2.7 as one quadric in V.
+  Quadric total(const Star& s, const Vec3& mid) const
+  {
+    if (!options.roundedSurfaceQuadrics)
+    {
+      Quadric t = s.vertex;
+      for (const Star::Link& l : s.links)
+        t += l.q;
+      return t;
+    }
+    Vec3 k = Vec3::Zero();
+    if (s.border)
+      k = (pos(s.p) + pos(s.q)) / 6.0;
+    else
+    {
+      double areaSum = 0.0;
+      for (const Star::Face& f : s.faces)
+      {
+        const Vec3 a = pos(f.a), b = pos(f.b);
+        const double area = (a - mid).cross(b - mid).norm();
+        k += area * (a + b) / 6.0;
+        areaSum += area;
+      }
+      k = areaSum > 0.0 ? Vec3(k / areaSum) : Vec3(mid / 3.0);
+    }
+    Quadric t = s.vertex.composed(2.0 / 3.0, k);
+    for (const Star::Link& l : s.links)
+    {
+      const Vec3 x = pos(l.x);
+      Vec3 others = Vec3::Zero();
+      int n = 0;
+      for (const Star::Face& f : s.faces)
+      {
+        if (f.a == l.x)
+        {
+          others += pos(f.b);
+          ++n;
+        }
+        else if (f.b == l.x)
+        {
+          others += pos(f.a);
+          ++n;
+        }
+      }
+      if (n == 0)
+        continue;
+      t += l.q.composed(5.0 / 12.0, 5.0 / 12.0 * x + others / (6.0 * n));
+    }
+    return t;
+  }
+};
+
+/// Minimum of the quadric, solved about `mid` with small eigenvalues dropped.
+Vec3 minimum(const Quadric& q, const Vec3& mid)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(q.A);
+  const Eigen::Vector3d lambda = es.eigenvalues();
+  const double lmax = lambda.maxCoeff();
+  Vec3 x = mid;
+  if (!(lmax > 0.0))
+    return x;
+  const Vec3 g = q.A * mid + q.b;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (lambda[i] > 1e-3 * lmax)
+    {
+      const Vec3 u = es.eigenvectors().col(i);
+      x -= u * (u.dot(g) / lambda[i]);
+    }
+  }
+  return x;
+}
+
+struct Placement
+{
+  State* state;
+  boost::optional<Point> operator()(const SMS::Edge_profile<Mesh>& profile) const
+  {
+    State& s = *state;
+    const VD v0 = profile.v0(), v1 = profile.v1();
+    const Vec3 p0 = s.pos(v0), p1 = s.pos(v1);
+    const Vec3 mid = 0.5 * (p0 + p1);
+    const Star star = s.star(v0, v1);
+    s.cacheTotal = s.total(star, mid);
+    s.cacheV0 = v0;
+    s.cacheV1 = v1;
+    s.cacheValid = true;
+    Vec3 x;
+    if (s.options.lockFeatures && s.featureVertex[v0])
+      x = p0;
+    else if (s.options.lockFeatures && s.featureVertex[v1])
+      x = p1;
+    else
+      x = minimum(s.cacheTotal, mid);
+    if (!x.allFinite())
+      return boost::none;
+    return Point(x.x(), x.y(), x.z());
+  }
+};
+
+struct Cost
+{
+  State* state;
+  boost::optional<double> operator()(
+    const SMS::Edge_profile<Mesh>& profile, const boost::optional<Point>& placement) const
+  {
+    if (!placement)
+      return boost::none;
+    State& s = *state;
+    if (!s.cacheValid || s.cacheV0 != profile.v0() || s.cacheV1 != profile.v1())
+      Placement{ state }(profile);
+    return std::max(0.0, s.cacheTotal(toVec(*placement)));
+  }
+};
+
+double minAngle(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
+    const Vec3 u = q - p, v = r - p;
+    return std::atan2(u.cross(v).norm(), u.dot(v));
+  };
+  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
+}
+
+/// Refuses collapses that turn a triangle too far or create a sliver.
+struct Filter
+{
+  State* state;
+  boost::optional<Point> operator()(const SMS::Edge_profile<Mesh>& profile, boost::optional<Point> op) const
+  {
+    if (!op)
+      return op;
+    const State& s = *state;
+    const Vec3 x = toVec(*op);
+    const double cosMax = std::cos(s.options.maxNormalChangeDegrees * kPi / 180.0);
+    const double angleMin = s.options.minAngleDegrees * kPi / 180.0;
+    double oldMin = kPi, newMin = kPi;
+    for (VD v : { profile.v0(), profile.v1() })
+    {
+      const VD other = v == profile.v0() ? profile.v1() : profile.v0();
+      for (HD h : CGAL::halfedges_around_target(s.mesh.halfedge(v), s.mesh))
+      {
+        if (s.mesh.is_border(h))
+          continue;
+        const VD b = s.mesh.source(h), a = s.mesh.target(s.mesh.next(h));
+        const Vec3 pv = s.pos(v), pa = s.pos(a), pb = s.pos(b);
+        oldMin = std::min(oldMin, minAngle(pv, pa, pb));
+        if (a == other || b == other)
+          continue;
+        const Vec3 nOld = (pa - pv).cross(pb - pv);
+        const Vec3 nNew = (pa - x).cross(pb - x);
+        const double len = nOld.norm() * nNew.norm();
+        if (!(len > 0.0) || nOld.dot(nNew) < cosMax * len)
+          return boost::none;
+        newMin = std::min(newMin, minAngle(x, pa, pb));
+      }
+    }
+    if (newMin < angleMin && newMin < oldMin)
+      return boost::none;
+    return op;
+  }
+};
+
+struct Stop
+{
+  State* state;
+  template <typename Profile>
+  bool operator()(const double&, const Profile&, std::size_t, std::size_t) const
+  {
+    return state->aborted || state->vertices <= state->options.targetVertices;
+  }
+};
+
+struct Visitor : SMS::Edge_collapse_visitor_base<Mesh>
+{
+  State* state;
+  explicit Visitor(State* s) : state(s) {}
+
+  void OnCollapsing(const SMS::Edge_profile<Mesh>& profile, const boost::optional<Point>&)
+  {
+    State& s = *state;
+    const Mesh& m = s.mesh;
+    s.pendingVertex = s.vq[profile.v0()];
+    s.pendingVertex += s.vq[profile.v1()];
+    s.pendingVertex += s.eq[m.edge(profile.v0_v1())];
+    s.pendingFeatureVertex = s.featureVertex[profile.v0()] || s.featureVertex[profile.v1()];
+    if (profile.left_face_exists())
+    {
+      const ED a = m.edge(profile.vL_v0()), b = m.edge(profile.v1_vL());
+      s.pendingLeft = s.eq[a];
+      s.pendingLeft += s.eq[b];
+      s.pendingFeatureLeft = s.feature[a] || s.feature[b];
+    }
+    if (profile.right_face_exists())
+    {
+      const ED a = m.edge(profile.v0_vR()), b = m.edge(profile.vR_v1());
+      s.pendingRight = s.eq[a];
+      s.pendingRight += s.eq[b];
+      s.pendingFeatureRight = s.feature[a] || s.feature[b];
+    }
+  }
+
+  void OnCollapsed(const SMS::Edge_profile<Mesh>& profile, const VD& kept)
+  {
+    State& s = *state;
+    s.cacheValid = false;
+    s.vq[kept] = s.pendingVertex;
+    s.featureVertex[kept] = s.pendingFeatureVertex;
+    if (profile.left_face_exists())
+    {
+      const auto h = CGAL::halfedge(kept, profile.vL(), s.mesh);
+      if (h.second)
+      {
+        s.eq[s.mesh.edge(h.first)] = s.pendingLeft;
+        s.feature[s.mesh.edge(h.first)] = s.pendingFeatureLeft;
+      }
+    }
+    if (profile.right_face_exists())
+    {
+      const auto h = CGAL::halfedge(kept, profile.vR(), s.mesh);
+      if (h.second)
+      {
+        s.eq[s.mesh.edge(h.first)] = s.pendingRight;
+        s.feature[s.mesh.edge(h.first)] = s.pendingFeatureRight;
+      }
+    }
+    const VD removed = kept == profile.v0() ? profile.v1() : profile.v0();
+    s.parent[static_cast<std::size_t>(removed)] = static_cast<std::int64_t>(kept);
+    --s.vertices;
+    ++s.collapses;
+    if (s.options.progress && s.collapses % s.reportEvery == 0)
+    {
+      if (!s.options.progress(std::min(1.0, double(s.collapses) / double(s.toRemove))))
+        s.aborted = true;
+    }
+  }
+};
+
+void checkOptions(const TriangleMesh& mesh, const SimplificationOptions& o)
+{
+  auto positive = [](double w) { return std::isfinite(w) && w > 0.0; };
+  if (!positive(o.featureWeight))
+    throw std::invalid_argument("the feature weight k must be a finite number above 0");
+  if (!positive(o.featureNeighbourWeight))
+    throw std::invalid_argument("the weight of edges next to a feature must be a finite number above 0");
+  if (!(std::isfinite(o.boundaryWeight) && o.boundaryWeight >= 0.0))
+    throw std::invalid_argument("the boundary weight must be a finite number >= 0");
+  if (o.targetVertices < 4)
+    throw std::invalid_argument("the target vertex count must be at least 4");
+  if (o.targetVertices >= mesh.points.size())
+    throw std::invalid_argument("the target of " + std::to_string(o.targetVertices) +
+      " vertices is not below the input's " + std::to_string(mesh.points.size()) + " vertices");
+}
+
+} // namespace
+
+SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vector<EdgeKey>& featureEdges,
+  const SimplificationOptions& options)
+{
+  const std::string problem = cgalSurfaceMeshProblem(input);
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
+  checkOptions(input, options);
+
+  Mesh mesh;
+  for (const Vec3& p : input.points)
+    mesh.add_vertex(Point(p.x(), p.y(), p.z()));
+  for (const Triangle& t : input.triangles)
+  {
+    if (mesh.add_face(VD(static_cast<Mesh::size_type>(t[0])), VD(static_cast<Mesh::size_type>(t[1])),
+          VD(static_cast<Mesh::size_type>(t[2]))) == Mesh::null_face())
+      throw std::invalid_argument("the mesh is not a manifold, consistently oriented triangle mesh");
+  }
+
+  State state{ mesh, options, mesh.add_property_map<VD, Quadric>("v:q").first,
+    mesh.add_property_map<ED, Quadric>("e:q").first, mesh.add_property_map<ED, bool>("e:feature", false).first,
+    mesh.add_property_map<VD, bool>("v:feature", false).first, {} };
+
+  for (const EdgeKey& e : featureEdges)
+  {
+    const auto n = static_cast<std::int64_t>(input.points.size());
+    if (e.first < 0 || e.second < 0 || e.first >= n || e.second >= n)
+      throw std::invalid_argument("feature edge (" + std::to_string(e.first) + ", " + std::to_string(e.second) +
+        ") has a vertex id outside 0.." + std::to_string(n - 1));
+    const auto h = CGAL::halfedge(VD(static_cast<Mesh::size_type>(e.first)),
+      VD(static_cast<Mesh::size_type>(e.second)), mesh);
+    if (!h.second)
+      throw std::invalid_argument("feature edge (" + std::to_string(e.first) + ", " + std::to_string(e.second) +
+        ") is not an edge of the mesh");
+    state.feature[mesh.edge(h.first)] = true;
+    state.featureVertex[mesh.source(h.first)] = true;
+    state.featureVertex[mesh.target(h.first)] = true;
+  }
+
+  // Face quadrics, a third of the area to each vertex and edge (Kanai).
+  for (auto f : mesh.faces())
+  {
+    const HD h = mesh.halfedge(f);
+    const VD a = mesh.source(h), b = mesh.target(h), c = mesh.target(mesh.next(h));
+    const Vec3 pa = state.pos(a), pb = state.pos(b), pc = state.pos(c);
+    Vec3 n = (pb - pa).cross(pc - pa);
+    const double twiceArea = n.norm();
+    if (!(twiceArea > 0.0))
+      continue;
+    n /= twiceArea;
+    const Quadric q = Quadric::plane(n, -n.dot(pa), twiceArea / 6.0);
+    for (VD v : { a, b, c })
+      state.vq[v] += q;
+    for (HD e : CGAL::halfedges_around_face(h, mesh))
+      state.eq[mesh.edge(e)] += q;
+  }
+  // Boundary quadrics: the plane through a border edge, perpendicular to its face.
+  if (options.boundaryWeight > 0.0)
+  {
+    for (HD h : mesh.halfedges())
+    {
+      if (!mesh.is_border(h))
+        continue;
+      const HD o = mesh.opposite(h);
+      const VD u = mesh.source(o), x = mesh.target(o);
+      const Vec3 pu = state.pos(u), px = state.pos(x), pw = state.pos(mesh.target(mesh.next(o)));
+      const Vec3 nf = (px - pu).cross(pw - pu);
+      Vec3 nb = (px - pu).cross(nf);
+      if (!(nb.norm() > 0.0))
+        continue;
+      nb.normalize();
+      const Quadric q = Quadric::plane(nb, -nb.dot(pu), options.boundaryWeight * (px - pu).squaredNorm());
+      state.vq[u] += q;
+      state.vq[x] += q;
+      state.eq[mesh.edge(h)] += q;
+    }
+  }
+  // Eq. 3.14 and the neighbour weight.
+  for (ED e : mesh.edges())
+  {
+    const HD h = mesh.halfedge(e);
+    if (state.feature[e])
+      state.eq[e] *= options.featureWeight;
+    else if (state.featureVertex[mesh.source(h)] || state.featureVertex[mesh.target(h)])
+      state.eq[e] *= options.featureNeighbourWeight;
+  }
+  for (VD v : mesh.vertices())
+  {
+    if (state.featureVertex[v])
+      state.vq[v] *= options.featureWeight;
+  }
+
+  state.parent.assign(input.points.size(), -1);
+  state.vertices = input.points.size();
+  state.toRemove = state.vertices - options.targetVertices;
+  state.reportEvery = std::max<std::size_t>(1, state.toRemove / 200);
+
+  Placement placement{ &state };
+  Cost cost{ &state };
+  Filter filter{ &state };
+  Visitor visitor(&state);
+  if (options.lockFeatures)
+  {
+    SMS::edge_collapse(mesh, Stop{ &state },
+      CGAL::parameters::get_cost(cost).get_placement(placement).filter(filter).visitor(visitor).edge_is_constrained_map(
+        state.feature));
+  }
+  else
+  {
+    SMS::edge_collapse(
+      mesh, Stop{ &state }, CGAL::parameters::get_cost(cost).get_placement(placement).filter(filter).visitor(visitor));
+  }
+
+  if (!state.aborted && options.progress)
+    options.progress(1.0);
+
+  SimplificationResult result;
+  result.collapses = state.collapses;
+  result.aborted = state.aborted;
+  std::vector<std::int64_t> newId(input.points.size(), -1);
+  for (VD v : mesh.vertices())
+  {
+    newId[static_cast<std::size_t>(v)] = static_cast<std::int64_t>(result.mesh.points.size());
+    result.mesh.points.push_back(state.pos(v));
+    result.inputVertex.push_back(static_cast<std::int64_t>(static_cast<std::size_t>(v)));
+  }
+  for (auto f : mesh.faces())
+  {
+    Triangle t{};
+    int i = 0;
+    for (VD v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t[static_cast<std::size_t>(i++)] = newId[static_cast<std::size_t>(v)];
+    result.mesh.triangles.push_back(t);
+  }
+  result.collapsedInto.resize(input.points.size());
+  for (std::size_t v = 0; v < input.points.size(); ++v)
+  {
+    std::size_t r = v;
+    while (state.parent[r] >= 0)
+      r = static_cast<std::size_t>(state.parent[r]);
+    result.collapsedInto[v] = newId[r];
+  }
+  for (ED e : mesh.edges())
+  {
+    const HD h = mesh.halfedge(e);
+    const VD u = mesh.source(h), x = mesh.target(h);
+    const EdgeKey key = edgeKey(newId[static_cast<std::size_t>(u)], newId[static_cast<std::size_t>(x)]);
+    if (state.feature[e])
+      result.featureEdges.push_back(key);
+    Vec3 q = 0.5 * (state.pos(u) + state.pos(x));
+    if (options.roundedSurfaceQuadrics)
+    {
+      Vec3 others = Vec3::Zero();
+      int n = 0;
+      for (HD side : { h, mesh.opposite(h) })
+      {
+        if (!mesh.is_border(side))
+        {
+          others += state.pos(mesh.target(mesh.next(side)));
+          ++n;
+        }
+      }
+      q = 5.0 / 6.0 * q + others / (6.0 * n);
+    }
+    result.edgeCost[key] = std::max(0.0, state.eq[e](q));
+  }
+  std::sort(result.featureEdges.begin(), result.featureEdges.end());
+  return result;
+}
+
+} // namespace lk
