@@ -9,7 +9,7 @@ packages=(
   cmake make g++ pkg-config
   libvtk9-dev python3-vtk9
   libvtk-dicom-dev python3-vtk-dicom
-  libcgal-dev libeigen3-dev
+  libcgal-dev libeigen3-dev libceres-dev
   libgtest-dev
   xvfb xauth
 )

@@ -230,3 +230,64 @@ TEST(LatticeSimplification, BadInputIsRefusedWithTheReason)
   o.targetVertices = 5;
   EXPECT_NE(message({}, bow), "");
 }
+
+#include "latticekit/LatticeRefinement.h"
+#include "latticekit/QuadPairing.h"
+
+TEST(LatticeRefinement, MovesTheSurfaceOntoTheSamples)
+{
+  const double radius = 10.0;
+  const lk::TriangleMesh sphere = lktest::icosphere(4, radius);
+  lk::SimplificationOptions o;
+  o.targetVertices = 200;
+  o.roundedSurfaceQuadrics = false; // vertices on the sphere: the surface sinks inside
+  lk::PolygonMesh lattice = asLattice(lk::simplifyLattice(sphere, {}, o).mesh);
+  const auto before = sphereError(lk::buildLatticeSurface(lattice), radius);
+  lk::RefinementOptions ro;
+  ro.fixed.assign(lattice.points.size(), 0);
+  ro.fixed[7] = 1;
+  const lk::Vec3 p7 = lattice.points[7];
+  const auto report = lk::refineLatticeFit(lattice, sphere.points, ro);
+  const auto after = sphereError(lk::buildLatticeSurface(lattice), radius);
+  std::printf("refinement: rms %.5f -> %.5f in %d iterations; mean |r - 10| %.5f -> %.5f, max %.5f -> %.5f\n",
+    report.initialRms, report.finalRms, report.iterations, before.first, after.first, before.second, after.second);
+  EXPECT_GE(report.iterations, 1);
+  EXPECT_LT(report.finalRms, 0.5 * report.initialRms);
+  EXPECT_LT(after.first, 0.5 * before.first);
+  EXPECT_EQ(lattice.points[7], p7);
+}
+
+TEST(LatticeRefinement, WinsBackTheAccuracyQuadPairingLoses)
+{
+  const double radius = 10.0;
+  const lk::TriangleMesh sphere = lktest::icosphere(4, radius);
+  lk::SimplificationOptions o;
+  o.targetVertices = 300;
+  const auto simplified = lk::simplifyLattice(sphere, {}, o);
+  lk::PolygonMesh tri = asLattice(simplified.mesh);
+  lk::QuadPairingOptions qo;
+  qo.maxDihedralDegrees = 40.0;
+  auto paired = lk::pairTrianglesIntoQuads(simplified.mesh, {}, qo, &simplified.edgeCost);
+  ASSERT_GT(paired.quads, 50u);
+  lk::RefinementOptions ro;
+  lk::refineLatticeFit(tri, sphere.points, ro);
+  const auto eTri = sphereError(lk::buildLatticeSurface(tri), radius);
+  const auto eQuadBefore = sphereError(lk::buildLatticeSurface(paired.lattice), radius);
+  lk::refineLatticeFit(paired.lattice, sphere.points, ro);
+  const auto eQuad = sphereError(lk::buildLatticeSurface(paired.lattice), radius);
+  std::printf("%zu quads: mean |r - 10| refined triangles %.5f, quads %.5f before and %.5f after refinement\n",
+    paired.quads, eTri.first, eQuadBefore.first, eQuad.first);
+  EXPECT_LT(eQuad.first, eQuadBefore.first);
+  EXPECT_LT(eQuad.first, 1.5 * eTri.first);
+}
+
+TEST(LatticeRefinement, BadInputIsRefused)
+{
+  lk::PolygonMesh lattice = asLattice(lktest::icosphere(1, 1.0));
+  lk::RefinementOptions ro;
+  EXPECT_THROW(lk::refineLatticeFit(lattice, {}, ro), std::invalid_argument);
+  ro.fixed.assign(3, 0);
+  EXPECT_THROW(lk::refineLatticeFit(lattice, { lk::Vec3(1, 0, 0) }, ro), std::invalid_argument);
+  ro.fixed.clear();
+  EXPECT_THROW(lk::refineLatticeFit(lattice, { lk::Vec3(std::nan(""), 0, 0) }, ro), std::invalid_argument);
+}

@@ -1,0 +1,437 @@
+#include "latticekit/LatticeRefinement.h"
+
+#include "latticekit/LatticeSurface.h"
+#include "latticekit/LatticeSurfaceLocator.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <thread>
+
+namespace lk
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+/// An affine combination of lattice vertices.
+using Combo = std::vector<std::pair<std::int64_t, double>>;
+
+Vec3 evaluate(const Combo& c, const std::vector<Vec3>& x)
+{
+  Vec3 p = Vec3::Zero();
+  for (const auto& [v, w] : c)
+    p += w * x[static_cast<std::size_t>(v)];
+  return p;
+}
+
+/// The points of the lattice surface that are (nearly) affine in the control
+/// points: V' per vertex, the edge-curve midpoint per edge, the centre per face.
+struct Anchors
+{
+  std::vector<Combo> vertex;
+  std::map<std::pair<std::int64_t, std::int64_t>, Combo> edge; ///< by ordered pair
+  std::vector<Combo> face;
+};
+
+/// Doo-Sabin point of corner i of face f.
+Combo dooSabin(const std::vector<std::int64_t>& face, std::size_t i)
+{
+  const std::size_t n = face.size();
+  Combo c;
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const std::size_t k = (j + n - i) % n;
+    const double a = k == 0 ? (n + 5.0) / (4.0 * n) : (3.0 + 2.0 * std::cos(2.0 * kPi * k / n)) / (4.0 * n);
+    c.emplace_back(face[j], a);
+  }
+  return c;
+}
+
+void add(Combo& to, const Combo& c, double s)
+{
+  for (const auto& [v, w] : c)
+    to.emplace_back(v, s * w);
+}
+
+Anchors buildAnchors(const PolygonMesh& m)
+{
+  const std::size_t nv = m.points.size();
+  Anchors a;
+  a.vertex.assign(nv, {});
+  std::vector<double> areaSum(nv, 0.0);
+  std::vector<Combo> weighted(nv);
+  // Directed edge -> (face, corner index of its start).
+  std::map<std::pair<std::int64_t, std::int64_t>, std::pair<std::size_t, std::size_t>> half;
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+  {
+    const auto& face = m.faces[f];
+    const double area = 0.5 * newellVector(m, f).norm();
+    Combo centre;
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto v = static_cast<std::size_t>(face[i]);
+      add(weighted[v], dooSabin(face, i), area);
+      areaSum[v] += area;
+      half[{ face[i], face[(i + 1) % face.size()] }] = { f, i };
+      centre.emplace_back(face[i], 1.0 / static_cast<double>(face.size()));
+    }
+    a.face.push_back(centre);
+  }
+  // Boundary neighbours.
+  std::vector<std::vector<std::int64_t>> boundaryNext(nv), boundaryPrev(nv);
+  for (const auto& [e, fi] : half)
+  {
+    if (!half.count({ e.second, e.first }))
+    {
+      boundaryNext[static_cast<std::size_t>(e.first)].push_back(e.second);
+      boundaryPrev[static_cast<std::size_t>(e.second)].push_back(e.first);
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (boundaryNext[v].size() == 1 && boundaryPrev[v].size() == 1)
+    {
+      a.vertex[v] = { { boundaryPrev[v][0], 1.0 / 6.0 }, { static_cast<std::int64_t>(v), 4.0 / 6.0 },
+        { boundaryNext[v][0], 1.0 / 6.0 } };
+    }
+    else if (areaSum[v] > 0.0)
+    {
+      for (auto& [u, w] : weighted[v])
+        a.vertex[v].emplace_back(u, w / areaSum[v]);
+    }
+  }
+  for (const auto& [e, fi] : half)
+  {
+    const auto back = half.find({ e.second, e.first });
+    Combo c;
+    if (back == half.end())
+    {
+      // Boundary: the B-spline midpoint (p + 23 w + 23 z + r) / 48.
+      const auto w = static_cast<std::size_t>(e.first), z = static_cast<std::size_t>(e.second);
+      if (boundaryPrev[w].size() != 1 || boundaryNext[z].size() != 1)
+        continue;
+      c = { { boundaryPrev[w][0], 1.0 / 48 }, { e.first, 23.0 / 48 }, { e.second, 23.0 / 48 },
+        { boundaryNext[z][0], 1.0 / 48 } };
+    }
+    else
+    {
+      // (Q + R) / 2: the mean of the four Doo-Sabin points beside the edge.
+      for (const auto& side : { fi, back->second })
+      {
+        const auto& face = m.faces[side.first];
+        const std::size_t n = face.size();
+        add(c, dooSabin(face, side.second), 0.25);
+        add(c, dooSabin(face, (side.second + 1) % n), 0.25);
+      }
+    }
+    a.edge[e] = c;
+  }
+  return a;
+}
+
+/// Quadratic Lagrange basis on nodes 0, 1/2, 1.
+double lagrange(int node, double t)
+{
+  switch (node)
+  {
+    case 0:
+      return 2.0 * (t - 0.5) * (t - 1.0);
+    case 1:
+      return 4.0 * t * (1.0 - t);
+    default:
+      return 2.0 * t * (t - 0.5);
+  }
+}
+
+/// Every patch's nodes and the anchor combination each node follows.
+struct PatchModel
+{
+  bool quad = false;
+  std::array<const Combo*, 9> node{}; ///< quad: 3x3 at (a/2, b/2), index 3a+b; split: corners 0..3
+};
+
+std::vector<PatchModel> buildPatchModels(
+  const PolygonMesh& m, const LatticeSurface& s, const Anchors& anchors)
+{
+  std::vector<PatchModel> out(s.patches.size());
+  for (std::size_t p = 0; p < s.patches.size(); ++p)
+  {
+    const auto f = static_cast<std::size_t>(s.patchFace[p]);
+    const auto& face = m.faces[f];
+    std::vector<const Combo*> candidates;
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      candidates.push_back(&anchors.vertex[static_cast<std::size_t>(face[i])]);
+      const auto it = anchors.edge.find({ face[i], face[(i + 1) % face.size()] });
+      if (it != anchors.edge.end())
+        candidates.push_back(&it->second);
+    }
+    candidates.push_back(&anchors.face[f]);
+    auto nearest = [&](const Vec3& x) {
+      const Combo* best = nullptr;
+      double bd = 0.0;
+      for (const Combo* c : candidates)
+      {
+        if (c->empty())
+          continue;
+        const double d = (evaluate(*c, m.points) - x).squaredNorm();
+        if (!best || d < bd)
+        {
+          best = c;
+          bd = d;
+        }
+      }
+      return best;
+    };
+    PatchModel& pm = out[p];
+    pm.quad = !isSplitPatch(s, p);
+    if (pm.quad)
+    {
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          pm.node[static_cast<std::size_t>(3 * a + b)] = nearest(s.patches[p].evaluate(a / 2.0, b / 2.0));
+    }
+    else
+    {
+      const double corner[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+      for (int k = 0; k < 4; ++k)
+        pm.node[static_cast<std::size_t>(k)] = nearest(s.patches[p].evaluate(corner[k][0], corner[k][1]));
+    }
+  }
+  return out;
+}
+
+/// The sample's point as a combination of lattice vertices (merged by vertex).
+Combo sampleCombo(const PatchModel& pm, double u, double v)
+{
+  std::map<std::int64_t, double> acc;
+  auto take = [&](const Combo* c, double w) {
+    if (!c || w == 0.0)
+      return;
+    for (const auto& [vi, cw] : *c)
+      acc[vi] += w * cw;
+  };
+  if (pm.quad)
+  {
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        take(pm.node[static_cast<std::size_t>(3 * a + b)], lagrange(a, u) * lagrange(b, v));
+  }
+  else
+  {
+    take(pm.node[0], (1 - u) * (1 - v));
+    take(pm.node[1], u * (1 - v));
+    take(pm.node[2], u * v);
+    take(pm.node[3], (1 - u) * v);
+  }
+  return { acc.begin(), acc.end() };
+}
+
+struct Foot
+{
+  std::size_t patch;
+  double u, v;
+  Vec3 point, normal;
+  double distance;
+};
+
+std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& samples, int resolution)
+{
+  const LatticeSurfaceLocator locator(s, resolution);
+  std::vector<Foot> out(samples.size());
+  auto work = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      const auto r = locator.closest(samples[i]);
+      out[i] = { r.patch, r.u, r.v, r.point, s.patches[r.patch].normal(r.u, r.v), r.distance };
+    }
+  };
+  const std::size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  const std::size_t chunk = (samples.size() + threads - 1) / threads;
+  for (std::size_t t = 0; t < threads; ++t)
+    pool.emplace_back(work, std::min(samples.size(), t * chunk), std::min(samples.size(), (t + 1) * chunk));
+  for (auto& th : pool)
+    th.join();
+  return out;
+}
+
+double energy(const std::vector<Foot>& feet)
+{
+  double e = 0.0;
+  for (const Foot& f : feet)
+    e += f.distance * f.distance;
+  return e;
+}
+
+/// n . (S0 + sum_j c_j dX_j - p): one residual, one 3-vector block per vertex.
+class PlaneResidual : public ceres::CostFunction
+{
+public:
+  PlaneResidual(double r0, const Vec3& n, std::vector<double> c) : r0_(r0), n_(n), c_(std::move(c))
+  {
+    set_num_residuals(1);
+    for (std::size_t j = 0; j < c_.size(); ++j)
+      mutable_parameter_block_sizes()->push_back(3);
+  }
+  bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override
+  {
+    double r = r0_;
+    for (std::size_t j = 0; j < c_.size(); ++j)
+      r += c_[j] * (n_[0] * params[j][0] + n_[1] * params[j][1] + n_[2] * params[j][2]);
+    residuals[0] = r;
+    if (jacobians)
+    {
+      for (std::size_t j = 0; j < c_.size(); ++j)
+      {
+        if (jacobians[j])
+        {
+          for (int k = 0; k < 3; ++k)
+            jacobians[j][k] = c_[j] * n_[k];
+        }
+      }
+    }
+    return true;
+  }
+
+private:
+  double r0_;
+  Vec3 n_;
+  std::vector<double> c_;
+};
+
+/// sqrt(lambda) dX.
+class Damping : public ceres::SizedCostFunction<3, 3>
+{
+public:
+  explicit Damping(double w) : w_(w) {}
+  bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override
+  {
+    for (int k = 0; k < 3; ++k)
+      residuals[k] = w_ * params[0][k];
+    if (jacobians && jacobians[0])
+    {
+      for (int i = 0; i < 9; ++i)
+        jacobians[0][i] = (i % 4 == 0) ? w_ : 0.0;
+    }
+    return true;
+  }
+
+private:
+  double w_;
+};
+
+} // namespace
+
+RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>& samples,
+  const RefinementOptions& options)
+{
+  if (samples.empty())
+    throw std::invalid_argument("the refinement needs samples of the original surface");
+  if (!options.fixed.empty() && options.fixed.size() != lattice.points.size())
+    throw std::invalid_argument("the fixed-vertex flags must be one per lattice vertex");
+  if (options.iterations < 1)
+    throw std::invalid_argument("the refinement needs at least one iteration");
+  for (const Vec3& p : samples)
+    if (!p.allFinite())
+      throw std::invalid_argument("a sample of the original surface is not finite");
+
+  LatticeSurface surface = buildLatticeSurface(lattice); // throws for a bad lattice
+  std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution);
+  double e0 = energy(feet);
+  RefinementReport report;
+  report.initialRms = std::sqrt(e0 / static_cast<double>(samples.size()));
+  const std::size_t nv = lattice.points.size();
+
+  for (int it = 0; it < options.iterations; ++it)
+  {
+    const Anchors anchors = buildAnchors(lattice);
+    const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
+
+    std::vector<std::array<double, 3>> delta(nv, { 0.0, 0.0, 0.0 });
+    ceres::Problem::Options po;
+    po.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+    ceres::Problem problem(po);
+    double weight = 0.0;
+    for (std::size_t s = 0; s < samples.size(); ++s)
+    {
+      const Foot& f = feet[s];
+      const Combo c = sampleCombo(models[f.patch], f.u, f.v);
+      if (c.empty())
+        continue;
+      std::vector<double> coeffs;
+      std::vector<double*> blocks;
+      for (const auto& [v, w] : c)
+      {
+        coeffs.push_back(w);
+        blocks.push_back(delta[static_cast<std::size_t>(v)].data());
+        weight += w * w;
+      }
+      problem.AddResidualBlock(
+        new PlaneResidual(f.normal.dot(f.point - samples[s]), f.normal, std::move(coeffs)), nullptr, blocks);
+    }
+    const double lambda = options.damping * weight / static_cast<double>(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      if (!problem.HasParameterBlock(delta[v].data()))
+        continue;
+      problem.AddResidualBlock(new Damping(std::sqrt(lambda)), nullptr, delta[v].data());
+      if (!options.fixed.empty() && options.fixed[v])
+        problem.SetParameterBlockConstant(delta[v].data());
+    }
+    ceres::Solver::Options so;
+    so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    so.max_num_iterations = 3;
+    so.initial_trust_region_radius = 1e8;
+    so.logging_type = ceres::SILENT;
+    so.minimizer_progress_to_stdout = false;
+    so.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &problem, &summary);
+    if (!summary.IsSolutionUsable())
+      break;
+
+    // Exact energy with step halving.
+    const std::vector<Vec3> x0 = lattice.points;
+    bool accepted = false;
+    double t = 1.0;
+    for (int h = 0; h < 5 && !accepted; ++h, t *= 0.5)
+    {
+      for (std::size_t v = 0; v < nv; ++v)
+        lattice.points[v] = x0[v] + t * Vec3(delta[v][0], delta[v][1], delta[v][2]);
+      try
+      {
+        LatticeSurface trial = buildLatticeSurface(lattice);
+        std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution);
+        const double e = energy(trialFeet);
+        if (e < e0)
+        {
+          surface = std::move(trial);
+          feet = std::move(trialFeet);
+          e0 = e;
+          accepted = true;
+        }
+      }
+      catch (const std::invalid_argument&)
+      {
+        // A degenerate trial lattice: try a shorter step.
+      }
+    }
+    if (!accepted)
+    {
+      lattice.points = x0;
+      break;
+    }
+    ++report.iterations;
+    if (options.progress && !options.progress(double(it + 1) / double(options.iterations)))
+      break;
+  }
+  report.finalRms = std::sqrt(e0 / static_cast<double>(samples.size()));
+  return report;
+}
+
+} // namespace lk

@@ -1,0 +1,180 @@
+/**
+ * @class   vtkLKLatticeFitFilter
+ * @brief   Fits a lattice (coarse control mesh) to a dense triangle mesh,
+ *          keeping feature lines; optional quad pairing and global refinement.
+ *
+ * Input 0: a manifold triangle mesh (open or closed), e.g. a bone surface
+ * from vtkLKBoneSurfaceFilter. Input 1 (optional, SetFeatureLinesConnection /
+ * SetFeatureLinesData): feature lines as polylines running along edges of
+ * the mesh. Their points name mesh points either through a point data array
+ * "MeshPointId" (any integer type) or, without it, by coordinates equal to a
+ * mesh point's (within 1e-9 of the bounding-box diagonal). Consecutive points
+ * of a polyline must be joined by a mesh edge.
+ *
+ * Steps (see core/include/latticekit/LatticeSimplification.h, QuadPairing.h
+ * and LatticeRefinement.h for the algorithms and the choices made):
+ * 1. quadric edge collapse to TargetNumberOfVertices (or to the count that
+ *    TargetReduction leaves, or, with MaximumError > 0, to the fewest
+ *    vertices whose lattice surface stays within that Hausdorff error, found
+ *    by bisection), with the error of each candidate evaluated on the rounded
+ *    lattice surface (Hayashi et al., eqs. 2.6 to 2.11), feature edges weighted
+ *    by FeatureWeight (k of eq. 3.14) and their neighbouring edges by
+ *    FeatureNeighbourWeight, or kept exactly with LockFeatures;
+ * 2. with QuadPairing, triangles paired into quads across non-feature edges
+ *    in order of their QEM cost (eqs. 3.15, 3.16);
+ * 3. with Refinement, lattice vertices moved by Ceres to minimise the squared
+ *    distances from the input's vertices to the lattice surface, feature
+ *    vertices held fixed (after the pairing when both are on).
+ *
+ * Output 0: the lattice: triangles and quads, plus one line cell per
+ * surviving feature edge; cell data "FeatureEdge" (1 on those lines, 0 on
+ * faces) and "RoundingWeight" (1: smooth; set 0 on a line to make that edge a
+ * crease in vtkLKLatticeSurfaceFilter, which reads the lattice as it is).
+ * Field data: the achieved error of the lattice surface against the input
+ * (vtkLKMetroFilter, both directions: Hausdorff_Max, Hausdorff_Mean,
+ * Hausdorff_RMS, each also as ..._Percent of the bounding-box diagonal,
+ * BoundingBoxDiagonal), DisplayPolygons (triangles of the tessellation at
+ * ErrorResolution), ControlVertices, Triangles, Quads, FeatureEdges.
+ *
+ * Output 1: the input mesh with point data "LatticeFaceId" (the lattice face
+ * each input vertex projects onto: the face of its closest point on the
+ * lattice surface), "LatticeVertexId" (the lattice vertex it was collapsed
+ * into) and "Distance" (to the lattice surface).
+ *
+ * Bad input (not a manifold triangle mesh, a target not below the input's
+ * vertex count, weights <= 0, feature points that are not mesh points or not
+ * joined by edges) gives a VTK error and empty outputs.
+ */
+#ifndef vtkLKLatticeFitFilter_h
+#define vtkLKLatticeFitFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class LATTICEKITFILTERS_EXPORT vtkLKLatticeFitFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKLatticeFitFilter* New();
+  vtkTypeMacro(vtkLKLatticeFitFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Feature lines (input 1, optional).
+  void SetFeatureLinesConnection(vtkAlgorithmOutput* output);
+  void SetFeatureLinesData(vtkPolyData* lines);
+
+  ///@{
+  /// Lattice vertices to keep. 0 (default) uses TargetReduction.
+  vtkSetClampMacro(TargetNumberOfVertices, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetNumberOfVertices, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Fraction of the input's vertices to remove when TargetNumberOfVertices
+  /// is 0 (as vtkQuadricDecimation's TargetReduction). Default 0.9.
+  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
+  vtkGetMacro(TargetReduction, double);
+  ///@}
+
+  ///@{
+  /// When above 0: the Hausdorff error bound, in percent of the bounding-box
+  /// diagonal; the filter keeps the fewest vertices (bisection over the
+  /// count, each candidate fitted and measured) whose lattice surface stays
+  /// within it, and ignores the two targets above.
+  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumError, double);
+  ///@}
+
+  ///@{
+  /// k of eq. 3.14 on feature edges (and their vertices), > 0. Default 1000.
+  vtkSetMacro(FeatureWeight, double);
+  vtkGetMacro(FeatureWeight, double);
+  ///@}
+
+  ///@{
+  /// Weight of the edges that share a vertex with a feature edge, > 0
+  /// (fig. 3.7: without it the feature's neighbours drag it). Default 100.
+  vtkSetMacro(FeatureNeighbourWeight, double);
+  vtkGetMacro(FeatureNeighbourWeight, double);
+  ///@}
+
+  ///@{
+  /// Feature edges leave the collapse queue: each survives exactly, at its
+  /// input position. Default off.
+  vtkSetMacro(LockFeatures, bool);
+  vtkGetMacro(LockFeatures, bool);
+  vtkBooleanMacro(LockFeatures, bool);
+  ///@}
+
+  ///@{
+  /// Evaluate the collapse error on the rounded lattice surface (Hayashi et
+  /// al.; default on) or at the vertex itself (plain Garland-Heckbert).
+  vtkSetMacro(RoundedSurfaceQuadrics, bool);
+  vtkGetMacro(RoundedSurfaceQuadrics, bool);
+  vtkBooleanMacro(RoundedSurfaceQuadrics, bool);
+  ///@}
+
+  ///@{
+  /// Pair triangles into quads (default off), with S1 (eq. 3.15), S2 (eq.
+  /// 3.16, radians) and the largest dihedral angle (degrees).
+  vtkSetMacro(QuadPairing, bool);
+  vtkGetMacro(QuadPairing, bool);
+  vtkBooleanMacro(QuadPairing, bool);
+  vtkSetMacro(RightAngleTolerance, double);
+  vtkGetMacro(RightAngleTolerance, double);
+  vtkSetMacro(AngleSumTolerance, double);
+  vtkGetMacro(AngleSumTolerance, double);
+  vtkSetMacro(MaximumDihedralAngle, double);
+  vtkGetMacro(MaximumDihedralAngle, double);
+  ///@}
+
+  ///@{
+  /// Global refinement with Ceres (default off) and its outer iterations
+  /// (closest points re-found between them). Default 4.
+  vtkSetMacro(Refinement, bool);
+  vtkGetMacro(Refinement, bool);
+  vtkBooleanMacro(Refinement, bool);
+  vtkSetClampMacro(RefinementIterations, int, 1, 100);
+  vtkGetMacro(RefinementIterations, int);
+  ///@}
+
+  ///@{
+  /// Measure the achieved error (default on) on a tessellation of this
+  /// resolution (segments per patch side, default 8).
+  vtkSetMacro(ComputeError, bool);
+  vtkGetMacro(ComputeError, bool);
+  vtkBooleanMacro(ComputeError, bool);
+  vtkSetClampMacro(ErrorResolution, int, 2, 64);
+  vtkGetMacro(ErrorResolution, int);
+  ///@}
+
+  /// Output 1: the input with LatticeFaceId, LatticeVertexId and Distance.
+  vtkPolyData* GetVertexMapOutput();
+
+protected:
+  vtkLKLatticeFitFilter();
+  ~vtkLKLatticeFitFilter() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkIdType TargetNumberOfVertices = 0;
+  double TargetReduction = 0.9;
+  double MaximumError = 0.0;
+  double FeatureWeight = 1000.0;
+  double FeatureNeighbourWeight = 100.0;
+  bool LockFeatures = false;
+  bool RoundedSurfaceQuadrics = true;
+  bool QuadPairing = false;
+  double RightAngleTolerance = 0.5;
+  double AngleSumTolerance = 0.5;
+  double MaximumDihedralAngle = 30.0;
+  bool Refinement = false;
+  int RefinementIterations = 4;
+  bool ComputeError = true;
+  int ErrorResolution = 8;
+
+private:
+  vtkLKLatticeFitFilter(const vtkLKLatticeFitFilter&) = delete;
+  void operator=(const vtkLKLatticeFitFilter&) = delete;
+};
+
+#endif
