@@ -34,7 +34,8 @@
  * (vtkLKMetroFilter, both directions: Hausdorff_Max, Hausdorff_Mean,
  * Hausdorff_RMS, each also as ..._Percent of the bounding-box diagonal,
  * BoundingBoxDiagonal), DisplayPolygons (triangles of the tessellation at
- * ErrorResolution), ControlVertices, Triangles, Quads, FeatureEdges.
+ * ErrorResolution), ControlVertices, Triangles, Quads, FeatureEdges, and with
+ * Refinement RefinementInitialRMS, RefinementFinalRMS, RefinementIterations.
  *
  * Output 1: the input mesh with point data "LatticeFaceId" (the lattice face
  * each input vertex projects onto: the face of its closest point on the
@@ -147,6 +148,13 @@ public:
   vtkGetMacro(ErrorResolution, int);
   ///@}
 
+  ///@{
+  /// Metro samples per direction for the error; 0 (default): 20 per input
+  /// triangle, at least 200,000.
+  vtkSetClampMacro(ErrorSamples, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(ErrorSamples, vtkIdType);
+  ///@}
+
   /// Output 1: the input with LatticeFaceId, LatticeVertexId and Distance.
   vtkPolyData* GetVertexMapOutput();
 
@@ -171,6 +179,7 @@ protected:
   int RefinementIterations = 4;
   bool ComputeError = true;
   int ErrorResolution = 8;
+  vtkIdType ErrorSamples = 0;
 
 private:
   vtkLKLatticeFitFilter(const vtkLKLatticeFitFilter&) = delete;

@@ -1,7 +1,7 @@
 #include "latticekit/LatticeRefinement.h"
 
 #include "latticekit/LatticeSurface.h"
-#include "latticekit/LatticeSurfaceLocator.h"
+#include "latticekit/ClosestPointTree.h"
 
 #include <ceres/ceres.h>
 
@@ -239,15 +239,87 @@ struct Foot
   double distance;
 };
 
+/// Foot points: the closest point on a tessellation (CGAL AABB tree), its
+/// (u, v) by barycentric interpolation, then Gauss-Newton steps on that patch
+/// (clamped to the parameter square). Cheaper than LatticeSurfaceLocator's
+/// exhaustive search, and enough for samples that lie close to the surface.
 std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& samples, int resolution)
 {
-  const LatticeSurfaceLocator locator(s, resolution);
+  const int r = std::max(2, resolution);
+  TriangleMesh tess;
+  std::vector<std::array<double, 2>> uv;
+  std::vector<std::size_t> patchOf;
+  for (std::size_t p = 0; p < s.patches.size(); ++p)
+  {
+    const auto base = static_cast<std::int64_t>(tess.points.size());
+    for (int i = 0; i <= r; ++i)
+      for (int j = 0; j <= r; ++j)
+      {
+        tess.points.push_back(s.patches[p].evaluate(double(i) / r, double(j) / r));
+        uv.push_back({ double(i) / r, double(j) / r });
+      }
+    auto id = [&](int i, int j) { return base + i * (r + 1) + j; };
+    for (int i = 0; i < r; ++i)
+      for (int j = 0; j < r; ++j)
+      {
+        tess.triangles.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+        tess.triangles.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+        patchOf.push_back(p);
+        patchOf.push_back(p);
+      }
+  }
+  const ClosestPointTree tree(tess);
   std::vector<Foot> out(samples.size());
   auto work = [&](std::size_t begin, std::size_t end) {
+    ClosestPointTree::Hit hint;
+    bool haveHint = false;
     for (std::size_t i = begin; i < end; ++i)
     {
-      const auto r = locator.closest(samples[i]);
-      out[i] = { r.patch, r.u, r.v, r.point, s.patches[r.patch].normal(r.u, r.v), r.distance };
+      const Vec3& q = samples[i];
+      hint = haveHint ? tree.closest(q, hint) : tree.closest(q);
+      haveHint = true;
+      const Triangle& t = tess.triangles[static_cast<std::size_t>(hint.face)];
+      const Vec3 a = tess.points[static_cast<std::size_t>(t[0])], b = tess.points[static_cast<std::size_t>(t[1])],
+                 c = tess.points[static_cast<std::size_t>(t[2])];
+      // Barycentric coordinates of the hit.
+      const Vec3 v0 = b - a, v1 = c - a, v2 = hint.point - a;
+      const double d00 = v0.dot(v0), d01 = v0.dot(v1), d11 = v1.dot(v1), d20 = v2.dot(v0), d21 = v2.dot(v1);
+      const double den = d00 * d11 - d01 * d01;
+      const double bb = den > 0 ? (d11 * d20 - d01 * d21) / den : 0.0, bc = den > 0 ? (d00 * d21 - d01 * d20) / den : 0.0;
+      const double ba = 1.0 - bb - bc;
+      double u = 0.0, v = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        const double w = k == 0 ? ba : (k == 1 ? bb : bc);
+        u += w * uv[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][0];
+        v += w * uv[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][1];
+      }
+      const std::size_t p = patchOf[static_cast<std::size_t>(hint.face)];
+      const GregoryPatch& patch = s.patches[p];
+      Vec3 du, dv;
+      Vec3 x = patch.evaluate(u, v, &du, &dv);
+      for (int it = 0; it < 4; ++it)
+      {
+        const Vec3 e = q - x;
+        Eigen::Matrix2d J;
+        J << du.dot(du), du.dot(dv), du.dot(dv), dv.dot(dv);
+        const Eigen::Vector2d g(du.dot(e), dv.dot(e));
+        const double det = J.determinant();
+        if (!(std::abs(det) > 1e-30))
+          break;
+        const Eigen::Vector2d step = J.inverse() * g;
+        const double nu = std::clamp(u + step[0], 0.0, 1.0), nv = std::clamp(v + step[1], 0.0, 1.0);
+        Vec3 ndu, ndv;
+        const Vec3 nx = patch.evaluate(nu, nv, &ndu, &ndv);
+        if ((q - nx).squaredNorm() >= e.squaredNorm())
+          break;
+        u = nu;
+        v = nv;
+        x = nx;
+        du = ndu;
+        dv = ndv;
+      }
+      out[i] = { p, u, v, x, patch.normalFrom(du, dv, u, v), (q - x).norm() };
     }
   };
   const std::size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));

@@ -12,7 +12,8 @@
 ///
 /// Each outer iteration (Gauss-Newton with closest points re-found, like ICP):
 /// 1. build the surface, find every sample's foot point (patch, u, v) and the
-///    surface normal n_s there (LatticeSurfaceLocator);
+///    surface normal n_s there (closest point on a tessellation, CGAL AABB
+///    tree, then Gauss-Newton on the patch);
 /// 2. linearise the surface point at (patch, u, v) in X. The exact surface is
 ///    not affine in X (tangent planes, normalised basis vectors), but it passes
 ///    exactly through points that are: each vertex's rounded point V' (eq.

@@ -1,0 +1,214 @@
+// latticekit-fit: a dense triangle mesh -> a lattice whose smooth surface fits it.
+#include "common/AppSupport.h"
+
+#include "vtkLKLatticeFitFilter.h"
+#include "vtkLKLatticeSurfaceFilter.h"
+
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+namespace
+{
+void usage(std::ostream& os)
+{
+  os << "usage: latticekit-fit MESH -o LATTICE [options]\n"
+        "\n"
+        "Fits a lattice (coarse control mesh) to a manifold triangle mesh: quadric edge collapse\n"
+        "with the error measured on the rounded lattice surface, feature lines kept, optional\n"
+        "quad pairing and global refinement (Ceres). Reports the Metro error of the lattice\n"
+        "surface against MESH. MESH: .vtp, .vtk, .ply, .obj or .stl; LATTICE: .vtp, .vtk, .ply,\n"
+        ".obj (feature edges are line cells in .vtp/.vtk).\n"
+        "\n"
+        "  --vertices N           lattice vertices (default: 10 % of the input's)\n"
+        "  --ratio R              keep this fraction of the vertices instead (0 < R < 1)\n"
+        "  --max-error E          fewest vertices whose surface stays within E % of the\n"
+        "                         bounding-box diagonal (Hausdorff), found by bisection\n"
+        "  --features LINES       polylines along mesh edges (.vtp/.vtk; point data MeshPointId,\n"
+        "                         or points equal to mesh points)\n"
+        "  --feature-weight K     k of eq. 3.14 on feature edges (default 1000)\n"
+        "  --neighbour-weight W   weight of edges next to a feature (default 100)\n"
+        "  --lock-features        feature edges are never collapsed and never move\n"
+        "  --flat-quadrics        plain Garland-Heckbert placement (for comparison)\n"
+        "  --quads                pair triangles into quads where the pair is near-rectangular\n"
+        "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
+        "  --refine-iterations N  outer iterations of the refinement (default 4)\n"
+        "  --surface OUT          also write the lattice surface (.vtp/.vtk/.stl/.ply/.obj/.gltf)\n"
+        "  --vertex-map OUT       write MESH with LatticeFaceId, LatticeVertexId, Distance\n"
+        "  --resolution N         tessellation of the surface and of the error (default 8)\n"
+        "  -q, --quiet            no progress bar\n"
+        "  -h, --help             this help\n";
+}
+
+long long fileBytes(const std::string& path)
+{
+  return static_cast<long long>(vtksys::SystemTools::FileLength(path));
+}
+
+double field(vtkPolyData* pd, const char* name)
+{
+  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
+  return a ? a->GetTuple1(0) : 0.0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::string input, output, featuresIn, surfaceOut, mapOut;
+  long vertices = 0, iterations = 4, resolution = 8;
+  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0;
+  bool lock = false, flat = false, quads = false, refine = false, quiet = false;
+  lkapp::Arguments args(argc, argv, usage);
+  std::string a;
+  while (args.next(a))
+  {
+    if (a == "-o" || a == "--output")
+      output = args.value(a);
+    else if (a == "--vertices")
+      vertices = args.integer(a, 4, 2000000000L, "an integer of at least 4");
+    else if (a == "--ratio")
+      ratio = args.number(a, 1e-9, 1.0 - 1e-9, "a number between 0 and 1");
+    else if (a == "--max-error")
+      maxError = args.number(a, 1e-9, 100.0, "a percentage above 0");
+    else if (a == "--features")
+      featuresIn = args.value(a);
+    else if (a == "--feature-weight")
+      k = args.number(a, 1e-300, 1e300, "a number above 0");
+    else if (a == "--neighbour-weight")
+      kn = args.number(a, 1e-300, 1e300, "a number above 0");
+    else if (a == "--lock-features")
+      lock = true;
+    else if (a == "--flat-quadrics")
+      flat = true;
+    else if (a == "--quads")
+      quads = true;
+    else if (a == "--refine")
+      refine = true;
+    else if (a == "--refine-iterations")
+      iterations = args.integer(a, 1, 100, "an integer from 1 to 100");
+    else if (a == "--surface")
+      surfaceOut = args.value(a);
+    else if (a == "--vertex-map")
+      mapOut = args.value(a);
+    else if (a == "--resolution")
+      resolution = args.integer(a, 2, 64, "an integer from 2 to 64");
+    else if (a == "-q" || a == "--quiet")
+      quiet = true;
+    else if (lkapp::Arguments::isOption(a))
+      args.unknown(a);
+    else if (input.empty())
+      input = a;
+    else
+    {
+      std::cerr << "error: more than one mesh given\n";
+      return 2;
+    }
+  }
+  if (input.empty() || output.empty())
+  {
+    std::cerr << "error: a MESH and -o LATTICE are required\n";
+    usage(std::cerr);
+    return 2;
+  }
+  lkapp::installMessageHandler(quiet);
+  std::string error;
+  for (const std::string& path : { output, surfaceOut, mapOut })
+  {
+    if (!path.empty() && !lkapp::checkWritable(path, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+  }
+  vtkSmartPointer<vtkPolyData> mesh = lkapp::readMesh(input, error);
+  if (!mesh)
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+  vtkSmartPointer<vtkPolyData> features;
+  if (!featuresIn.empty())
+  {
+    features = lkapp::readMesh(featuresIn, error);
+    if (!features)
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(mesh);
+  if (features)
+    fit->SetFeatureLinesData(features);
+  if (vertices > 0)
+    fit->SetTargetNumberOfVertices(vertices);
+  else if (ratio > 0.0)
+    fit->SetTargetReduction(1.0 - ratio);
+  fit->SetMaximumError(maxError);
+  fit->SetFeatureWeight(k);
+  fit->SetFeatureNeighbourWeight(kn);
+  fit->SetLockFeatures(lock);
+  fit->SetRoundedSurfaceQuadrics(!flat);
+  fit->SetQuadPairing(quads);
+  fit->SetRefinement(refine);
+  fit->SetRefinementIterations(static_cast<int>(iterations));
+  fit->SetErrorResolution(static_cast<int>(resolution));
+  {
+    lkapp::ProgressBar bar(fit, "lattice fit", !quiet);
+    fit->Update();
+  }
+  if (lkapp::errorCount() > 0)
+    return 1;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  vtkPolyData* lattice = fit->GetOutput();
+  if (!lkapp::writeMesh(lattice, output, error) ||
+    (!mapOut.empty() && !lkapp::writeMesh(fit->GetVertexMapOutput(), mapOut, error)))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+  long long surfaceBytes = -1;
+  if (!surfaceOut.empty())
+  {
+    vtkNew<vtkLKLatticeSurfaceFilter> surface;
+    surface->SetInputData(lattice);
+    surface->SetResolution(static_cast<int>(resolution));
+    surface->Update();
+    if (lkapp::errorCount() > 0)
+      return 1;
+    if (!lkapp::writeMesh(surface->GetOutput(), surfaceOut, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+    surfaceBytes = fileBytes(surfaceOut);
+  }
+  std::printf("input            %lld vertices, %lld triangles (%s, %lld bytes)\n",
+    static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(mesh->GetNumberOfPolys()),
+    input.c_str(), fileBytes(input));
+  std::printf("lattice          %.0f control vertices; faces: %.0f triangles, %.0f quads; %.0f feature edges\n",
+    field(lattice, "ControlVertices"), field(lattice, "Triangles"), field(lattice, "Quads"),
+    field(lattice, "FeatureEdges"));
+  std::printf("display polygons %.0f (resolution %ld)\n", field(lattice, "DisplayPolygons"), resolution);
+  std::printf("bytes on disk    lattice %lld (%s)", fileBytes(output), output.c_str());
+  if (surfaceBytes >= 0)
+    std::printf(", surface %lld (%s)", surfaceBytes, surfaceOut.c_str());
+  std::printf("\n");
+  if (refine)
+    std::printf("refinement       RMS distance %.4g -> %.4g in %.0f iterations\n",
+      field(lattice, "RefinementInitialRMS"), field(lattice, "RefinementFinalRMS"),
+      field(lattice, "RefinementIterations"));
+  std::printf("Metro error      max %.4f %%, mean %.4f %%, RMS %.4f %% of the bounding-box diagonal (%.4g)\n",
+    field(lattice, "Hausdorff_MaxPercent"), field(lattice, "Hausdorff_MeanPercent"),
+    field(lattice, "Hausdorff_RMSPercent"), field(lattice, "BoundingBoxDiagonal"));
+  std::printf("time             %.2f s\n", seconds);
+  return 0;
+}

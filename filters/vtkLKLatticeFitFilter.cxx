@@ -1,0 +1,431 @@
+#include "vtkLKLatticeFitFilter.h"
+
+#include "latticekit/ClosestPointTree.h"
+#include "latticekit/LatticeRefinement.h"
+#include "latticekit/LatticeSimplification.h"
+#include "latticekit/QuadPairing.h"
+#include "latticekit/SurfaceSampling.h"
+#include "vtkLKLatticeSurfaceFilter.h"
+#include "vtkLKMetroFilter.h"
+#include "vtkLKPolyDataConversion.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkMath.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStaticPointLocator.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+vtkStandardNewMacro(vtkLKLatticeFitFilter);
+
+namespace
+{
+void addValue(vtkFieldData* fd, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  fd->AddArray(a);
+}
+
+/// Feature polylines to mesh edges; a sentence on failure.
+std::string featureEdges(vtkPolyData* lines, vtkPolyData* mesh, std::vector<lk::EdgeKey>& out)
+{
+  if (!lines || lines->GetNumberOfPoints() == 0)
+    return {};
+  if (lines->GetNumberOfPolys() > 0 || lines->GetNumberOfStrips() > 0)
+    return "the feature lines input holds polygons; it takes polylines";
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<vtkIdType> meshId(static_cast<std::size_t>(lines->GetNumberOfPoints()), -1);
+  vtkDataArray* ids = lines->GetPointData()->GetArray("MeshPointId");
+  if (ids)
+  {
+    for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+    {
+      const double v = ids->GetComponent(i, 0);
+      if (!(v >= 0.0 && v < static_cast<double>(n)) || v != std::floor(v))
+        return "feature point " + std::to_string(i) + " has MeshPointId " + std::to_string(v) +
+          ", outside the mesh's point ids 0.." + std::to_string(n - 1);
+      meshId[static_cast<std::size_t>(i)] = static_cast<vtkIdType>(v);
+    }
+  }
+  else
+  {
+    vtkNew<vtkStaticPointLocator> locator;
+    locator->SetDataSet(mesh);
+    locator->BuildLocator();
+    const double tol = 1e-9 * std::sqrt(mesh->GetLength() * mesh->GetLength());
+    for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      lines->GetPoint(i, p);
+      const vtkIdType id = locator->FindClosestPoint(p);
+      mesh->GetPoint(id, q);
+      if (id < 0 || std::sqrt(vtkMath::Distance2BetweenPoints(p, q)) > tol)
+        return "feature point " + std::to_string(i) +
+          " is not a point of the mesh (give point data MeshPointId, or points equal to mesh points)";
+      meshId[static_cast<std::size_t>(i)] = id;
+    }
+  }
+  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType np;
+    const vtkIdType* pts;
+    it->GetCurrentCell(np, pts);
+    for (vtkIdType k = 0; k + 1 < np; ++k)
+    {
+      const vtkIdType a = meshId[static_cast<std::size_t>(pts[k])], b = meshId[static_cast<std::size_t>(pts[k + 1])];
+      if (a != b)
+        out.push_back(lk::edgeKey(a, b));
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return {};
+}
+
+struct Fit
+{
+  lk::PolygonMesh lattice;
+  std::vector<lk::EdgeKey> features;
+  std::vector<std::int64_t> collapsedInto;
+  std::size_t quads = 0;
+  lk::RefinementReport refinement;
+};
+} // namespace
+
+vtkLKLatticeFitFilter::vtkLKLatticeFitFilter()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+void vtkLKLatticeFitFilter::SetFeatureLinesConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkLKLatticeFitFilter::SetFeatureLinesData(vtkPolyData* lines)
+{
+  this->SetInputData(1, lines);
+}
+
+vtkPolyData* vtkLKLatticeFitFilter::GetVertexMapOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int vtkLKLatticeFitFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkLKLatticeFitFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* lines = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* vertexMap = vtkPolyData::GetData(outputVector, 1);
+
+  lk::TriangleMesh mesh;
+  std::string problem = lkvtk::toTriangleMesh(input, mesh);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Cannot fit a lattice: " << problem << ".");
+    return 0;
+  }
+  std::vector<lk::EdgeKey> features;
+  problem = featureEdges(lines, input, features);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Cannot fit a lattice: " << problem << ".");
+    return 0;
+  }
+
+  lk::SimplificationOptions so;
+  so.featureWeight = this->FeatureWeight;
+  so.featureNeighbourWeight = this->FeatureNeighbourWeight;
+  so.lockFeatures = this->LockFeatures;
+  so.roundedSurfaceQuadrics = this->RoundedSurfaceQuadrics;
+  lk::QuadPairingOptions qo;
+  qo.rightAngleTolerance = this->RightAngleTolerance;
+  qo.angleSumTolerance = this->AngleSumTolerance;
+  qo.maxDihedralDegrees = this->MaximumDihedralAngle;
+
+  const auto inputVertices = static_cast<vtkIdType>(mesh.points.size());
+  // Refinement samples: Metro's own sampling of the input (vertices, edges,
+  // faces; similar triangles, so deterministic), 4 per input triangle.
+  std::vector<lk::Vec3> samples;
+  if (this->Refinement)
+  {
+    lk::SamplingOptions sampling;
+    sampling.targetSamples = std::max<std::size_t>(4 * mesh.triangles.size(), 20000);
+    sampling.method = lk::FaceSamplingMethod::SimilarTriangles;
+    samples = lk::sampleSurface(mesh, sampling).points;
+  }
+  const bool searching = this->MaximumError > 0.0;
+
+  // One fit at a vertex count; progress runs over [p0, p1].
+  auto fitAt = [&](std::size_t target, double p0, double p1, Fit& fit) -> bool {
+    const bool refine = this->Refinement;
+    const double split = refine ? 0.5 : 0.95;
+    so.targetVertices = target;
+    so.progress = [&](double f) {
+      this->UpdateProgress(p0 + (p1 - p0) * split * f);
+      return !this->GetAbortExecute();
+    };
+    const lk::SimplificationResult r = lk::simplifyLattice(mesh, features, so);
+    if (r.aborted)
+      return false;
+    fit.features = r.featureEdges;
+    fit.collapsedInto = r.collapsedInto;
+    fit.quads = 0;
+    if (this->QuadPairing)
+    {
+      const std::set<lk::EdgeKey> featureSet(r.featureEdges.begin(), r.featureEdges.end());
+      lk::QuadPairingResult q = lk::pairTrianglesIntoQuads(r.mesh, featureSet, qo, &r.edgeCost);
+      fit.lattice = std::move(q.lattice);
+      fit.quads = q.quads;
+    }
+    else
+    {
+      fit.lattice.points = r.mesh.points;
+      fit.lattice.faces.clear();
+      for (const auto& t : r.mesh.triangles)
+        fit.lattice.faces.push_back({ t[0], t[1], t[2] });
+    }
+    if (refine)
+    {
+      lk::RefinementOptions ro;
+      ro.iterations = this->RefinementIterations;
+      ro.fixed.assign(fit.lattice.points.size(), 0);
+      for (const auto& e : fit.features)
+        ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
+      ro.progress = [&](double f) {
+        this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * f));
+        return !this->GetAbortExecute();
+      };
+      fit.refinement = lk::refineLatticeFit(fit.lattice, samples, ro);
+    }
+    return !this->GetAbortExecute();
+  };
+
+  // The lattice as polydata: faces, then a line per feature edge.
+  auto toPolyData = [](const Fit& fit, vtkPolyData* pd) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const auto& p : fit.lattice.points)
+      points->InsertNextPoint(p.data());
+    vtkNew<vtkCellArray> polys, lineCells;
+    for (const auto& f : fit.lattice.faces)
+    {
+      std::vector<vtkIdType> ids(f.begin(), f.end());
+      polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    }
+    for (const auto& e : fit.features)
+    {
+      const vtkIdType ids[2] = { e.first, e.second };
+      lineCells->InsertNextCell(2, ids);
+    }
+    pd->Initialize();
+    pd->SetPoints(points);
+    pd->SetPolys(polys);
+    pd->SetLines(lineCells);
+    // Cell order: lines, then polygons.
+    vtkNew<vtkUnsignedCharArray> flag;
+    flag->SetName("FeatureEdge");
+    vtkNew<vtkDoubleArray> weight;
+    weight->SetName("RoundingWeight");
+    for (std::size_t i = 0; i < fit.features.size(); ++i)
+    {
+      flag->InsertNextValue(1);
+      weight->InsertNextValue(1.0);
+    }
+    for (std::size_t i = 0; i < fit.lattice.faces.size(); ++i)
+    {
+      flag->InsertNextValue(0);
+      weight->InsertNextValue(1.0);
+    }
+    pd->GetCellData()->AddArray(flag);
+    pd->GetCellData()->AddArray(weight);
+  };
+
+  // Surface and Metro error of a lattice.
+  vtkNew<vtkLKLatticeSurfaceFilter> surface;
+  surface->SetResolution(this->ErrorResolution);
+  vtkNew<vtkLKMetroFilter> metro;
+  auto measure = [&](vtkPolyData* latticePd) -> bool {
+    surface->SetInputData(latticePd);
+    surface->Update();
+    if (surface->GetOutput()->GetNumberOfPolys() == 0)
+      return false;
+    metro->SetInputData(surface->GetOutput());
+    metro->SetNumberOfSamples(this->ErrorSamples > 0 ? this->ErrorSamples
+                                                      : std::max<vtkIdType>(200000, 20 * input->GetNumberOfPolys()));
+    metro->SetTargetData(input);
+    metro->Update();
+    return true;
+  };
+
+  Fit fit;
+  try
+  {
+    if (!searching)
+    {
+      vtkIdType target = this->TargetNumberOfVertices;
+      if (target == 0)
+        target = static_cast<vtkIdType>(std::llround((1.0 - this->TargetReduction) * inputVertices));
+      if (target >= inputVertices)
+      {
+        vtkErrorMacro("Cannot fit a lattice: the target of "
+          << target << " vertices is not below the input's " << inputVertices << " vertices.");
+        return 0;
+      }
+      if (!fitAt(static_cast<std::size_t>(target), 0.0, 0.9, fit))
+      {
+        vtkWarningMacro("Aborted.");
+        return 1;
+      }
+    }
+    else
+    {
+      // Bisection on the vertex count: the fewest vertices within the bound.
+      std::size_t lo = 4, hi = static_cast<std::size_t>(inputVertices) - 1;
+      bool found = false;
+      Fit trial;
+      vtkNew<vtkPolyData> pd;
+      int step = 0;
+      while (lo < hi)
+      {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        const double p0 = std::min(0.85, 0.1 * step), p1 = std::min(0.9, p0 + 0.1);
+        if (!fitAt(mid, p0, p1, trial))
+        {
+          vtkWarningMacro("Aborted.");
+          return 1;
+        }
+        toPolyData(trial, pd);
+        const bool ok = measure(pd) && metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal() <=
+          this->MaximumError;
+        if (ok)
+        {
+          hi = mid;
+          fit = trial;
+          found = true;
+        }
+        else
+          lo = mid + 1;
+        ++step;
+      }
+      if (!found || fit.lattice.points.size() != hi)
+      {
+        if (!fitAt(hi, 0.85, 0.9, fit))
+          return 1;
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Cannot fit a lattice: " << e.what() << ".");
+    return 0;
+  }
+
+  toPolyData(fit, output);
+  vtkFieldData* fd = output->GetFieldData();
+  addValue(fd, "ControlVertices", static_cast<double>(fit.lattice.points.size()));
+  addValue(fd, "Triangles", static_cast<double>(fit.lattice.faces.size() - fit.quads));
+  addValue(fd, "Quads", static_cast<double>(fit.quads));
+  addValue(fd, "FeatureEdges", static_cast<double>(fit.features.size()));
+  if (this->Refinement)
+  {
+    addValue(fd, "RefinementInitialRMS", fit.refinement.initialRms);
+    addValue(fd, "RefinementFinalRMS", fit.refinement.finalRms);
+    addValue(fd, "RefinementIterations", fit.refinement.iterations);
+  }
+
+  vertexMap->ShallowCopy(input);
+  vtkNew<vtkIdTypeArray> vertexIds;
+  vertexIds->SetName("LatticeVertexId");
+  for (auto v : fit.collapsedInto)
+    vertexIds->InsertNextValue(static_cast<vtkIdType>(v));
+  vertexMap->GetPointData()->AddArray(vertexIds);
+
+  {
+    // The face map needs the surface; the error comes with it.
+    if (!measure(output))
+    {
+      vtkErrorMacro("Cannot build the lattice surface of the fitted lattice.");
+      return 0;
+    }
+    vtkPolyData* tess = surface->GetOutput();
+    if (this->ComputeError)
+    {
+      vtkFieldData* mfd = metro->GetOutput()->GetFieldData();
+      for (const char* name : { "BoundingBoxDiagonal", "Hausdorff_Max", "Hausdorff_Mean", "Hausdorff_RMS",
+             "Hausdorff_MaxPercent", "Hausdorff_MeanPercent", "Hausdorff_RMSPercent" })
+      {
+        if (vtkAbstractArray* a = mfd->GetAbstractArray(name))
+          fd->AddArray(a);
+      }
+    }
+    if (vtkAbstractArray* a = tess->GetFieldData()->GetAbstractArray("DisplayPolygons"))
+      fd->AddArray(a);
+    lk::TriangleMesh tessMesh;
+    vtkNew<vtkPolyData> tessPolys;
+    tessPolys->ShallowCopy(tess);
+    tessPolys->GetPointData()->Initialize();
+    if (lkvtk::toTriangleMesh(tessPolys, tessMesh).empty())
+    {
+      const lk::ClosestPointTree tree(tessMesh);
+      vtkDataArray* faceOf = tess->GetCellData()->GetArray("LatticeFaceId");
+      vtkNew<vtkIdTypeArray> faceIds;
+      faceIds->SetName("LatticeFaceId");
+      vtkNew<vtkDoubleArray> distance;
+      distance->SetName("Distance");
+      lk::ClosestPointTree::Hit hint = tree.closest(mesh.points[0]);
+      for (const auto& p : mesh.points)
+      {
+        hint = tree.closest(p, hint);
+        faceIds->InsertNextValue(faceOf ? static_cast<vtkIdType>(faceOf->GetComponent(hint.face, 0)) : -1);
+        distance->InsertNextValue(hint.distance);
+      }
+      vertexMap->GetPointData()->AddArray(faceIds);
+      vertexMap->GetPointData()->AddArray(distance);
+    }
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
+  os << indent << "TargetReduction: " << this->TargetReduction << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "FeatureWeight: " << this->FeatureWeight << "\n";
+  os << indent << "FeatureNeighbourWeight: " << this->FeatureNeighbourWeight << "\n";
+  os << indent << "LockFeatures: " << this->LockFeatures << "\n";
+  os << indent << "RoundedSurfaceQuadrics: " << this->RoundedSurfaceQuadrics << "\n";
+  os << indent << "QuadPairing: " << this->QuadPairing << "\n";
+  os << indent << "Refinement: " << this->Refinement << " (" << this->RefinementIterations << " iterations)\n";
+  os << indent << "ComputeError: " << this->ComputeError << " (resolution " << this->ErrorResolution << ")\n";
+}
