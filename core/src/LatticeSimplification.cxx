@@ -8,6 +8,7 @@
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <Eigen/Eigenvalues>
+#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -87,8 +88,8 @@ struct Star
     VD x;
     Quadric q; ///< sum of the quadrics of (v0, x) and (v1, x)
   };
-  std::vector<Face> faces;
-  std::vector<Link> links;
+  boost::container::small_vector<Face, 16> faces;
+  boost::container::small_vector<Link, 12> links;
   Quadric vertex;
   bool border = false;
   VD p, q; ///< boundary neighbours of V when on the border
@@ -224,7 +225,8 @@ struct State
 /// Minimum of the quadric, solved about `mid` with small eigenvalues dropped.
 Vec3 minimum(const Quadric& q, const Vec3& mid)
 {
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(q.A);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+  es.computeDirect(q.A);
   const Eigen::Vector3d lambda = es.eigenvalues();
   const double lmax = lambda.maxCoeff();
   Vec3 x = mid;

@@ -1,0 +1,393 @@
+#include "TestSupport.h"
+#include "latticekit/EdgePath.h"
+#include "latticekit/LatticeSimplification.h"
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKLatticeFitFilter.h"
+#include "vtkLKMedicalImageReader.h"
+#include "vtkLKQuadPairingFilter.h"
+
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+
+#include <cmath>
+#include <set>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> mandible()
+{
+  static vtkSmartPointer<vtkPolyData> cached;
+  if (!cached)
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputConnection(reader->GetOutputPort());
+    bone->Update();
+    cached = vtkSmartPointer<vtkPolyData>::New();
+    cached->DeepCopy(bone->GetOutput());
+  }
+  return cached;
+}
+
+double field(vtkPolyData* pd, const char* name)
+{
+  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
+  return a ? a->GetComponent(0, 0) : std::nan("");
+}
+
+/// A closed feature line around the mandible: the plane x = centre, sampled
+/// on the surface and snapped to an edge path. Points carry MeshPointId.
+vtkSmartPointer<vtkPolyData> featureLoop(vtkPolyData* mesh, std::vector<lk::EdgeKey>& edges)
+{
+  const lk::TriangleMesh tm = lktest::toCore(mesh);
+  double b[6];
+  mesh->GetBounds(b);
+  const double x0 = 0.5 * (b[0] + b[1]);
+  // Vertices near the plane, ordered by angle around their centroid in (y, z).
+  std::vector<lk::Vec3> near;
+  for (const auto& p : tm.points)
+    if (std::abs(p.x() - x0) < 0.6)
+      near.push_back(p);
+  lk::Vec3 c = lk::Vec3::Zero();
+  for (const auto& p : near)
+    c += p / static_cast<double>(near.size());
+  std::sort(near.begin(), near.end(), [&](const lk::Vec3& a, const lk::Vec3& d) {
+    return std::atan2(a.z() - c.z(), a.y() - c.y()) < std::atan2(d.z() - c.z(), d.y() - c.y());
+  });
+  std::vector<lk::Vec3> stroke;
+  for (std::size_t i = 0; i < near.size(); i += std::max<std::size_t>(1, near.size() / 24))
+    stroke.push_back(near[i]);
+  stroke.push_back(stroke.front());
+  const auto path = lk::edgePathThrough(tm, stroke);
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("MeshPointId");
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(static_cast<vtkIdType>(path.size()));
+  for (std::size_t i = 0; i < path.size(); ++i)
+  {
+    lines->InsertCellPoint(pts->InsertNextPoint(tm.points[static_cast<std::size_t>(path[i])].data()));
+    ids->InsertNextValue(path[i]);
+    if (i > 0)
+      edges.push_back(lk::edgeKey(path[i - 1], path[i]));
+  }
+  out->SetPoints(pts);
+  out->SetLines(lines);
+  out->GetPointData()->AddArray(ids);
+  return out;
+}
+
+std::set<lk::EdgeKey> latticeEdges(vtkPolyData* lattice)
+{
+  std::set<lk::EdgeKey> edges;
+  auto it = vtk::TakeSmartPointer(lattice->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+      edges.insert(lk::edgeKey(ids[k], ids[(k + 1) % n]));
+  }
+  return edges;
+}
+} // namespace
+
+TEST(LatticeFitFilter, MandibleLatticeWithErrorAndVertexMap)
+{
+  vtkPolyData* bone = mandible();
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(bone);
+  fit->SetTargetNumberOfVertices(2000);
+  int progressEvents = 0;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progressEvents);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* cd, void*) { ++*static_cast<int*>(cd); });
+  fit->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  fit->Update();
+  vtkPolyData* lattice = fit->GetOutput();
+  EXPECT_EQ(lattice->GetNumberOfPoints(), 2000);
+  EXPECT_EQ(lattice->GetNumberOfPolys(), 2 * 2000 - 4); // closed, genus 0
+  EXPECT_GT(progressEvents, 20);
+  const double mean = field(lattice, "Hausdorff_MeanPercent"), max = field(lattice, "Hausdorff_MaxPercent");
+  std::printf("mandible, 2000 vertices: Metro max %.4f %%, mean %.4f %%\n", max, mean);
+  EXPECT_GT(mean, 0.0);
+  EXPECT_LT(mean, 0.05);
+  EXPECT_LT(max, 0.5);
+  EXPECT_GT(field(lattice, "DisplayPolygons"), 3 * 3996 * 8);
+  vtkPolyData* map = fit->GetVertexMapOutput();
+  ASSERT_EQ(map->GetNumberOfPoints(), bone->GetNumberOfPoints());
+  vtkDataArray* faces = map->GetPointData()->GetArray("LatticeFaceId");
+  vtkDataArray* verts = map->GetPointData()->GetArray("LatticeVertexId");
+  vtkDataArray* dist = map->GetPointData()->GetArray("Distance");
+  ASSERT_TRUE(faces && verts && dist);
+  double dmax = 0.0;
+  for (vtkIdType i = 0; i < map->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_GE(faces->GetComponent(i, 0), 0);
+    EXPECT_LT(faces->GetComponent(i, 0), lattice->GetNumberOfPolys());
+    EXPECT_GE(verts->GetComponent(i, 0), 0);
+    EXPECT_LT(verts->GetComponent(i, 0), 2000);
+    dmax = std::max(dmax, dist->GetComponent(i, 0));
+  }
+  // The vertices' distances cannot exceed the Hausdorff distance (up to the
+  // tessellation's chordal error).
+  EXPECT_LT(dmax, 1.05 * field(lattice, "Hausdorff_Max") + 1e-3);
+}
+
+TEST(LatticeFitFilter, LockedFeaturesAreLatticeEdges)
+{
+  vtkPolyData* bone = mandible();
+  std::vector<lk::EdgeKey> edges;
+  auto lines = featureLoop(bone, edges);
+  ASSERT_GT(edges.size(), 30u);
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(bone);
+  fit->SetFeatureLinesData(lines);
+  fit->SetTargetNumberOfVertices(1500);
+  fit->LockFeaturesOn();
+  fit->Update();
+  vtkPolyData* lattice = fit->GetOutput();
+  vtkDataArray* vmap = fit->GetVertexMapOutput()->GetPointData()->GetArray("LatticeVertexId");
+  const auto latt = latticeEdges(lattice);
+  EXPECT_EQ(lattice->GetNumberOfLines(), static_cast<vtkIdType>(edges.size()));
+  EXPECT_EQ(field(lattice, "FeatureEdges"), static_cast<double>(edges.size()));
+  for (const auto& e : edges)
+  {
+    const auto a = static_cast<vtkIdType>(vmap->GetComponent(e.first, 0));
+    const auto b = static_cast<vtkIdType>(vmap->GetComponent(e.second, 0));
+    EXPECT_TRUE(latt.count(lk::edgeKey(a, b))) << e.first << "-" << e.second;
+    double p[3], q[3];
+    lattice->GetPoint(a, p);
+    bone->GetPoint(e.first, q);
+    EXPECT_EQ(p[0], q[0]);
+    EXPECT_EQ(p[1], q[1]);
+    EXPECT_EQ(p[2], q[2]);
+  }
+  // Line cells come first: FeatureEdge 1 on them, 0 on faces.
+  vtkDataArray* flag = lattice->GetCellData()->GetArray("FeatureEdge");
+  ASSERT_TRUE(flag);
+  EXPECT_EQ(flag->GetComponent(0, 0), 1.0);
+  EXPECT_EQ(flag->GetComponent(lattice->GetNumberOfCells() - 1, 0), 0.0);
+}
+
+TEST(LatticeFitFilter, FeatureWeightsHalveTheErrorNearTheFeature)
+{
+  vtkPolyData* bone = mandible();
+  std::vector<lk::EdgeKey> edges;
+  auto lines = featureLoop(bone, edges);
+  std::set<vtkIdType> featureVertices;
+  for (const auto& e : edges)
+  {
+    featureVertices.insert(e.first);
+    featureVertices.insert(e.second);
+  }
+  auto nearError = [&](bool withFeatures) {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    if (withFeatures)
+      fit->SetFeatureLinesData(lines);
+    fit->SetTargetNumberOfVertices(1000);
+    fit->Update();
+    vtkDataArray* d = fit->GetVertexMapOutput()->GetPointData()->GetArray("Distance");
+    double sum = 0.0;
+    for (auto v : featureVertices)
+      sum += d->GetComponent(v, 0);
+    return sum / static_cast<double>(featureVertices.size());
+  };
+  const double plain = nearError(false), weighted = nearError(true);
+  std::printf("mean distance of the feature line's vertices to the surface: %.5f without, %.5f with k = 1000\n",
+    plain, weighted);
+  EXPECT_LT(weighted, 0.5 * plain);
+}
+
+TEST(LatticeFitFilter, RefinementWinsBackWhatQuadsLose)
+{
+  vtkPolyData* bone = mandible();
+  auto run = [&](bool quads, bool refine) {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetTargetNumberOfVertices(1000);
+    fit->SetQuadPairing(quads);
+    fit->SetRefinement(refine);
+    fit->SetRefinementIterations(3);
+    fit->Update();
+    return std::make_pair(field(fit->GetOutput(), "Hausdorff_MeanPercent"), field(fit->GetOutput(), "Quads"));
+  };
+  const auto tri = run(false, false), triRefined = run(false, true), quadRefined = run(true, true);
+  std::printf("mandible at 1000 vertices, mean %%: triangles %.4f, refined %.4f; %.0f quads refined %.4f\n", tri.first,
+    triRefined.first, quadRefined.second, quadRefined.first);
+  EXPECT_GT(quadRefined.second, 50.0);
+  EXPECT_LT(triRefined.first, tri.first);
+  EXPECT_LT(quadRefined.first, 1.05 * triRefined.first);
+}
+
+TEST(LatticeFitFilter, BadInputIsAClearError)
+{
+  vtkPolyData* bone = mandible();
+  auto expectError = [&](vtkLKLatticeFitFilter* fit, const std::string& text) {
+    lktest::ErrorRecorder errors(fit);
+    fit->Update();
+    EXPECT_EQ(errors.errors, 1) << text;
+    EXPECT_NE(errors.messages.find(text), std::string::npos) << errors.messages;
+    EXPECT_EQ(fit->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetTargetNumberOfVertices(bone->GetNumberOfPoints());
+    expectError(fit, "not below the input");
+  }
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetTargetNumberOfVertices(500);
+    fit->SetFeatureWeight(0.0);
+    expectError(fit, "feature weight");
+  }
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetTargetNumberOfVertices(500);
+    fit->SetFeatureNeighbourWeight(-2.0);
+    expectError(fit, "next to a feature");
+  }
+  {
+    vtkNew<vtkPolyData> lines;
+    vtkNew<vtkPoints> pts;
+    pts->InsertNextPoint(0, 0, 0);
+    pts->InsertNextPoint(1, 0, 0);
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetName("MeshPointId");
+    ids->InsertNextValue(0);
+    ids->InsertNextValue(bone->GetNumberOfPoints() + 5);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType c[2] = { 0, 1 };
+    cells->InsertNextCell(2, c);
+    lines->SetPoints(pts);
+    lines->SetLines(cells);
+    lines->GetPointData()->AddArray(ids);
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetFeatureLinesData(lines);
+    fit->SetTargetNumberOfVertices(500);
+    expectError(fit, "outside the mesh's point ids");
+    ids->SetValue(1, 5000); // in range, but not joined to 0 by an edge
+    ids->Modified();
+    vtkNew<vtkLKLatticeFitFilter> fit2;
+    fit2->SetInputData(bone);
+    fit2->SetFeatureLinesData(lines);
+    fit2->SetTargetNumberOfVertices(500);
+    expectError(fit2, "not an edge of the mesh");
+  }
+  {
+    // Two triangles sharing one vertex only (a bow tie): not a manifold.
+    vtkNew<vtkPolyData> bow;
+    vtkNew<vtkPoints> pts;
+    for (double p : { 0.0, 1.0, 2.0 })
+      (void)p;
+    pts->InsertNextPoint(0, 0, 0);
+    pts->InsertNextPoint(1, 0, 0);
+    pts->InsertNextPoint(0, 1, 0);
+    pts->InsertNextPoint(-1, 0, 0);
+    pts->InsertNextPoint(0, -1, 0);
+    vtkNew<vtkCellArray> tris;
+    const vtkIdType t1[3] = { 0, 1, 2 }, t2[3] = { 0, 3, 4 }, t3[3] = { 0, 2, 3 }, t4[3] = { 0, 4, 1 },
+                    t5[3] = { 0, 2, 1 };
+    tris->InsertNextCell(3, t1);
+    tris->InsertNextCell(3, t2);
+    tris->InsertNextCell(3, t3);
+    tris->InsertNextCell(3, t4);
+    tris->InsertNextCell(3, t5);
+    bow->SetPoints(pts);
+    bow->SetPolys(tris);
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bow);
+    fit->SetTargetNumberOfVertices(4);
+    lktest::ErrorRecorder errors(fit);
+    fit->Update();
+    EXPECT_EQ(errors.errors, 1) << errors.messages;
+  }
+  {
+    vtkNew<vtkPolyData> empty;
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(empty);
+    expectError(fit, "Cannot fit a lattice");
+  }
+}
+
+TEST(LatticeFitFilter, OpenMeshIsFittedWithItsBorder)
+{
+  // Documented behaviour: open meshes are fitted; the lattice keeps a border.
+  vtkPolyData* bone = mandible();
+  vtkNew<vtkPolyData> open;
+  open->DeepCopy(bone);
+  // Remove one triangle: a hole.
+  vtkNew<vtkCellArray> polys;
+  auto it = vtk::TakeSmartPointer(bone->GetPolys()->NewIterator());
+  vtkIdType c = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++c)
+  {
+    if (c == 100)
+      continue;
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    polys->InsertNextCell(n, ids);
+  }
+  open->SetPolys(polys);
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(open);
+  fit->SetTargetNumberOfVertices(1000);
+  lktest::ErrorRecorder errors(fit);
+  fit->Update();
+  EXPECT_EQ(errors.errors, 0) << errors.messages;
+  EXPECT_EQ(fit->GetOutput()->GetNumberOfPoints(), 1000);
+  EXPECT_LT(field(fit->GetOutput(), "Hausdorff_MeanPercent"), 0.1);
+}
+
+TEST(QuadPairingFilter, PairsAndKeepsLineCells)
+{
+  vtkPolyData* bone = mandible();
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(bone);
+  fit->SetTargetNumberOfVertices(1000);
+  fit->ComputeErrorOff();
+  std::vector<lk::EdgeKey> edges;
+  fit->SetFeatureLinesData(featureLoop(bone, edges));
+  fit->LockFeaturesOn();
+  vtkNew<vtkLKQuadPairingFilter> pairs;
+  pairs->SetInputConnection(fit->GetOutputPort());
+  pairs->SetMaximumDihedralAngle(40);
+  pairs->Update();
+  vtkPolyData* out = pairs->GetOutput();
+  const double quads = field(out, "Quads"), tris = field(out, "Triangles");
+  EXPECT_GT(quads, 30.0);
+  EXPECT_EQ(2 * quads + tris, static_cast<double>(fit->GetOutput()->GetNumberOfPolys()));
+  EXPECT_EQ(out->GetNumberOfLines(), fit->GetOutput()->GetNumberOfLines());
+  // Feature edges are still edges of the faces.
+  const auto latt = latticeEdges(out);
+  auto it = vtk::TakeSmartPointer(out->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    EXPECT_TRUE(latt.count(lk::edgeKey(ids[0], ids[1])));
+  }
+  vtkNew<vtkLKQuadPairingFilter> bad;
+  bad->SetInputConnection(fit->GetOutputPort());
+  bad->SetRightAngleTolerance(-1);
+  lktest::ErrorRecorder errors(bad);
+  bad->Update();
+  EXPECT_EQ(errors.errors, 1);
+  EXPECT_NE(errors.messages.find("S1"), std::string::npos);
+}
