@@ -15,7 +15,8 @@ class ImportTest(unittest.TestCase):
     def test_every_filter_is_exported(self):
         import latticekit
         for name in ("vtkLKMedicalImageReader", "vtkLKBoneSurfaceFilter",
-                     "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter"):
+                     "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter",
+                     "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -89,6 +90,53 @@ class PipelineTest(unittest.TestCase):
         mean_pct = metro.GetOutput().GetFieldData().GetArray("Hausdorff_MeanPercent").GetValue(0)
         self.assertGreater(mean_pct, 0.0)
         self.assertLess(mean_pct, 0.1)
+
+    def test_lattice_fit_with_features_quads_and_surface(self):
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(MANDIBLE)
+        bone = latticekit.vtkLKBoneSurfaceFilter()
+        bone.SetInputConnection(reader.GetOutputPort())
+        bone.Update()
+        mesh = bone.GetOutput()
+        # A feature line: three edges of the mesh's first triangle, by point id.
+        tri = mesh.GetCell(0)
+        ids = [tri.GetPointId(k) for k in range(3)] + [tri.GetPointId(0)]
+        points, cell, mesh_ids = vtkPoints(), vtkCellArray(), vtkIdTypeArray()
+        mesh_ids.SetName("MeshPointId")
+        cell.InsertNextCell(len(ids))
+        for i in ids:
+            cell.InsertCellPoint(points.InsertNextPoint(mesh.GetPoint(i)))
+            mesh_ids.InsertNextValue(i)
+        lines = vtkPolyData()
+        lines.SetPoints(points)
+        lines.SetLines(cell)
+        lines.GetPointData().AddArray(mesh_ids)
+
+        fit = latticekit.vtkLKLatticeFitFilter()
+        fit.SetInputConnection(bone.GetOutputPort())
+        fit.SetFeatureLinesData(lines)
+        fit.SetTargetNumberOfVertices(1500)
+        fit.LockFeaturesOn()
+        fit.QuadPairingOn()
+        surface = latticekit.vtkLKLatticeSurfaceFilter()
+        surface.SetInputConnection(fit.GetOutputPort())
+        surface.SetResolution(4)
+        surface.Update()
+        lattice = fit.GetOutput()
+        fd = lattice.GetFieldData()
+        self.assertEqual(lattice.GetNumberOfPoints(), 1500)
+        self.assertEqual(fd.GetArray("FeatureEdges").GetValue(0), 3)
+        self.assertEqual(lattice.GetNumberOfLines(), 3)
+        self.assertGreater(fd.GetArray("Quads").GetValue(0), 0)
+        self.assertLess(fd.GetArray("Hausdorff_MeanPercent").GetValue(0), 0.1)
+        vmap = fit.GetVertexMapOutput().GetPointData()
+        self.assertEqual(vmap.GetArray("LatticeFaceId").GetNumberOfTuples(), mesh.GetNumberOfPoints())
+        # The surface of the lattice comes out of the same pipeline.
+        self.assertGreater(surface.GetOutput().GetNumberOfPolys(), 10 * lattice.GetNumberOfPolys())
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
