@@ -419,62 +419,68 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   report.initialRms = std::sqrt(e0 / static_cast<double>(samples.size()));
   const std::size_t nv = lattice.points.size();
 
+  // Levenberg-Marquardt on the outer loop: the damping falls after a step
+  // that lowered the exact energy and rises (the step is retried) after one
+  // that did not.
+  double damping = options.damping;
   for (int it = 0; it < options.iterations; ++it)
   {
     const Anchors anchors = buildAnchors(lattice);
     const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
-
-    std::vector<std::array<double, 3>> delta(nv, { 0.0, 0.0, 0.0 });
-    ceres::Problem::Options po;
-    po.cost_function_ownership = ceres::TAKE_OWNERSHIP;
-    ceres::Problem problem(po);
+    std::vector<Combo> combos(samples.size());
     double weight = 0.0;
     for (std::size_t s = 0; s < samples.size(); ++s)
     {
-      const Foot& f = feet[s];
-      const Combo c = sampleCombo(models[f.patch], f.u, f.v);
-      if (c.empty())
-        continue;
-      std::vector<double> coeffs;
-      std::vector<double*> blocks;
-      for (const auto& [v, w] : c)
-      {
-        coeffs.push_back(w);
-        blocks.push_back(delta[static_cast<std::size_t>(v)].data());
-        weight += w * w;
-      }
-      problem.AddResidualBlock(
-        new PlaneResidual(f.normal.dot(f.point - samples[s]), f.normal, std::move(coeffs)), nullptr, blocks);
+      combos[s] = sampleCombo(models[feet[s].patch], feet[s].u, feet[s].v);
+      for (const auto& vw : combos[s])
+        weight += vw.second * vw.second;
     }
-    const double lambda = options.damping * weight / static_cast<double>(nv);
-    for (std::size_t v = 0; v < nv; ++v)
-    {
-      if (!problem.HasParameterBlock(delta[v].data()))
-        continue;
-      problem.AddResidualBlock(new Damping(std::sqrt(lambda)), nullptr, delta[v].data());
-      if (!options.fixed.empty() && options.fixed[v])
-        problem.SetParameterBlockConstant(delta[v].data());
-    }
-    ceres::Solver::Options so;
-    so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-    so.max_num_iterations = 3;
-    so.initial_trust_region_radius = 1e8;
-    so.logging_type = ceres::SILENT;
-    so.minimizer_progress_to_stdout = false;
-    so.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    ceres::Solver::Summary summary;
-    ceres::Solve(so, &problem, &summary);
-    if (!summary.IsSolutionUsable())
-      break;
 
-    // Exact energy with step halving.
     const std::vector<Vec3> x0 = lattice.points;
     bool accepted = false;
-    double t = 1.0;
-    for (int h = 0; h < 5 && !accepted; ++h, t *= 0.5)
+    for (int attempt = 0; attempt < 4 && !accepted; ++attempt)
     {
+      std::vector<std::array<double, 3>> delta(nv, { 0.0, 0.0, 0.0 });
+      ceres::Problem::Options po;
+      po.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+      ceres::Problem problem(po);
+      for (std::size_t s = 0; s < samples.size(); ++s)
+      {
+        const Foot& f = feet[s];
+        if (combos[s].empty())
+          continue;
+        std::vector<double> coeffs;
+        std::vector<double*> blocks;
+        for (const auto& [v, w] : combos[s])
+        {
+          coeffs.push_back(w);
+          blocks.push_back(delta[static_cast<std::size_t>(v)].data());
+        }
+        problem.AddResidualBlock(
+          new PlaneResidual(f.normal.dot(f.point - samples[s]), f.normal, std::move(coeffs)), nullptr, blocks);
+      }
+      const double lambda = damping * weight / static_cast<double>(nv);
       for (std::size_t v = 0; v < nv; ++v)
-        lattice.points[v] = x0[v] + t * Vec3(delta[v][0], delta[v][1], delta[v][2]);
+      {
+        if (!problem.HasParameterBlock(delta[v].data()))
+          continue;
+        problem.AddResidualBlock(new Damping(std::sqrt(lambda)), nullptr, delta[v].data());
+        if (!options.fixed.empty() && options.fixed[v])
+          problem.SetParameterBlockConstant(delta[v].data());
+      }
+      ceres::Solver::Options so;
+      so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+      so.max_num_iterations = 3;
+      so.initial_trust_region_radius = 1e8;
+      so.logging_type = ceres::SILENT;
+      so.minimizer_progress_to_stdout = false;
+      so.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+      ceres::Solver::Summary summary;
+      ceres::Solve(so, &problem, &summary);
+      if (!summary.IsSolutionUsable())
+        break;
+      for (std::size_t v = 0; v < nv; ++v)
+        lattice.points[v] = x0[v] + Vec3(delta[v][0], delta[v][1], delta[v][2]);
       try
       {
         LatticeSurface trial = buildLatticeSurface(lattice);
@@ -490,8 +496,9 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       }
       catch (const std::invalid_argument&)
       {
-        // A degenerate trial lattice: try a shorter step.
+        // A degenerate trial lattice: damp more.
       }
+      damping = accepted ? std::max(1e-4, 0.5 * damping) : 4.0 * damping;
     }
     if (!accepted)
     {

@@ -4,13 +4,14 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
-#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <Eigen/Eigenvalues>
 #include <boost/container/small_vector.hpp>
 
 #include <algorithm>
+#include <queue>
+#include <tuple>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,7 +20,6 @@ namespace lk
 {
 namespace
 {
-namespace SMS = CGAL::Surface_mesh_simplification;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
@@ -110,14 +110,7 @@ struct State
   std::size_t reportEvery = 1;
   bool aborted = false;
 
-  // Merged quadrics between OnCollapsing and OnCollapsed.
-  Quadric pendingVertex, pendingLeft, pendingRight;
-  bool pendingFeatureLeft = false, pendingFeatureRight = false, pendingFeatureVertex = false;
 
-  // The total quadric of the last placement, reused by the cost.
-  VD cacheV0, cacheV1;
-  Quadric cacheTotal;
-  bool cacheValid = false;
 
   Vec3 pos(VD v) const { return toVec(mesh.point(v)); }
 
@@ -244,47 +237,24 @@ Vec3 minimum(const Quadric& q, const Vec3& mid)
   return x;
 }
 
-struct Placement
+/// Optimal position and cost of collapsing (v0, v1); false when no
+/// position exists.
+bool placeAndCost(const State& s, VD v0, VD v1, Vec3& x, double& cost)
 {
-  State* state;
-  boost::optional<Point> operator()(const SMS::Edge_profile<Mesh>& profile) const
-  {
-    State& s = *state;
-    const VD v0 = profile.v0(), v1 = profile.v1();
-    const Vec3 p0 = s.pos(v0), p1 = s.pos(v1);
-    const Vec3 mid = 0.5 * (p0 + p1);
-    const Star star = s.star(v0, v1);
-    s.cacheTotal = s.total(star, mid);
-    s.cacheV0 = v0;
-    s.cacheV1 = v1;
-    s.cacheValid = true;
-    Vec3 x;
-    if (s.options.lockFeatures && s.featureVertex[v0])
-      x = p0;
-    else if (s.options.lockFeatures && s.featureVertex[v1])
-      x = p1;
-    else
-      x = minimum(s.cacheTotal, mid);
-    if (!x.allFinite())
-      return boost::none;
-    return Point(x.x(), x.y(), x.z());
-  }
-};
-
-struct Cost
-{
-  State* state;
-  boost::optional<double> operator()(
-    const SMS::Edge_profile<Mesh>& profile, const boost::optional<Point>& placement) const
-  {
-    if (!placement)
-      return boost::none;
-    State& s = *state;
-    if (!s.cacheValid || s.cacheV0 != profile.v0() || s.cacheV1 != profile.v1())
-      Placement{ state }(profile);
-    return std::max(0.0, s.cacheTotal(toVec(*placement)));
-  }
-};
+  const Vec3 p0 = s.pos(v0), p1 = s.pos(v1);
+  const Vec3 mid = 0.5 * (p0 + p1);
+  const Quadric total = s.total(s.star(v0, v1), mid);
+  if (s.options.lockFeatures && s.featureVertex[v0])
+    x = p0;
+  else if (s.options.lockFeatures && s.featureVertex[v1])
+    x = p1;
+  else
+    x = minimum(total, mid);
+  if (!x.allFinite())
+    return false;
+  cost = std::max(0.0, total(x));
+  return std::isfinite(cost);
+}
 
 double minAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
@@ -295,118 +265,53 @@ double minAngle(const Vec3& a, const Vec3& b, const Vec3& c)
   return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
 }
 
-/// Refuses collapses that turn a triangle too far or create a sliver.
-struct Filter
+/// Refuses collapses that turn a triangle too far (or flip it) or create a sliver.
+bool geometricallyValid(const State& s, VD v0, VD v1, const Vec3& x)
 {
-  State* state;
-  boost::optional<Point> operator()(const SMS::Edge_profile<Mesh>& profile, boost::optional<Point> op) const
+  const double cosMax = std::cos(s.options.maxNormalChangeDegrees * kPi / 180.0);
+  const double angleMin = s.options.minAngleDegrees * kPi / 180.0;
+  double oldMin = kPi, newMin = kPi;
+  for (VD v : { v0, v1 })
   {
-    if (!op)
-      return op;
-    const State& s = *state;
-    const Vec3 x = toVec(*op);
-    const double cosMax = std::cos(s.options.maxNormalChangeDegrees * kPi / 180.0);
-    const double angleMin = s.options.minAngleDegrees * kPi / 180.0;
-    double oldMin = kPi, newMin = kPi;
-    for (VD v : { profile.v0(), profile.v1() })
+    const VD other = v == v0 ? v1 : v0;
+    for (HD h : CGAL::halfedges_around_target(s.mesh.halfedge(v), s.mesh))
     {
-      const VD other = v == profile.v0() ? profile.v1() : profile.v0();
-      for (HD h : CGAL::halfedges_around_target(s.mesh.halfedge(v), s.mesh))
-      {
-        if (s.mesh.is_border(h))
-          continue;
-        const VD b = s.mesh.source(h), a = s.mesh.target(s.mesh.next(h));
-        const Vec3 pv = s.pos(v), pa = s.pos(a), pb = s.pos(b);
-        oldMin = std::min(oldMin, minAngle(pv, pa, pb));
-        if (a == other || b == other)
-          continue;
-        const Vec3 nOld = (pa - pv).cross(pb - pv);
-        const Vec3 nNew = (pa - x).cross(pb - x);
-        const double len = nOld.norm() * nNew.norm();
-        if (!(len > 0.0) || nOld.dot(nNew) < cosMax * len)
-          return boost::none;
-        newMin = std::min(newMin, minAngle(x, pa, pb));
-      }
+      if (s.mesh.is_border(h))
+        continue;
+      const VD b = s.mesh.source(h), a = s.mesh.target(s.mesh.next(h));
+      const Vec3 pv = s.pos(v), pa = s.pos(a), pb = s.pos(b);
+      oldMin = std::min(oldMin, minAngle(pv, pa, pb));
+      if (a == other || b == other)
+        continue;
+      const Vec3 nOld = (pa - pv).cross(pb - pv);
+      const Vec3 nNew = (pa - x).cross(pb - x);
+      const double len = nOld.norm() * nNew.norm();
+      if (!(len > 0.0) || nOld.dot(nNew) < cosMax * len)
+        return false;
+      newMin = std::min(newMin, minAngle(x, pa, pb));
     }
-    if (newMin < angleMin && newMin < oldMin)
-      return boost::none;
-    return op;
   }
-};
+  return !(newMin < angleMin && newMin < oldMin);
+}
 
-struct Stop
+/// Topology: CGAL's link condition, no edge joining two border vertices
+/// through the interior, no collapse that would leave fewer than four
+/// vertices on a closed piece.
+bool topologicallyValid(const Mesh& m, ED e)
 {
-  State* state;
-  template <typename Profile>
-  bool operator()(const double&, const Profile&, std::size_t, std::size_t) const
-  {
-    return state->aborted || state->vertices <= state->options.targetVertices;
-  }
-};
+  const HD h = m.halfedge(e);
+  const VD v0 = m.source(h), v1 = m.target(h);
+  if (m.is_border(v0) && m.is_border(v1) && !m.is_border(e))
+    return false;
+  return CGAL::Euler::does_satisfy_link_condition(e, m);
+}
 
-struct Visitor : SMS::Edge_collapse_visitor_base<Mesh>
+struct HeapEntry
 {
-  State* state;
-  explicit Visitor(State* s) : state(s) {}
-
-  void OnCollapsing(const SMS::Edge_profile<Mesh>& profile, const boost::optional<Point>&)
-  {
-    State& s = *state;
-    const Mesh& m = s.mesh;
-    s.pendingVertex = s.vq[profile.v0()];
-    s.pendingVertex += s.vq[profile.v1()];
-    s.pendingVertex += s.eq[m.edge(profile.v0_v1())];
-    s.pendingFeatureVertex = s.featureVertex[profile.v0()] || s.featureVertex[profile.v1()];
-    if (profile.left_face_exists())
-    {
-      const ED a = m.edge(profile.vL_v0()), b = m.edge(profile.v1_vL());
-      s.pendingLeft = s.eq[a];
-      s.pendingLeft += s.eq[b];
-      s.pendingFeatureLeft = s.feature[a] || s.feature[b];
-    }
-    if (profile.right_face_exists())
-    {
-      const ED a = m.edge(profile.v0_vR()), b = m.edge(profile.vR_v1());
-      s.pendingRight = s.eq[a];
-      s.pendingRight += s.eq[b];
-      s.pendingFeatureRight = s.feature[a] || s.feature[b];
-    }
-  }
-
-  void OnCollapsed(const SMS::Edge_profile<Mesh>& profile, const VD& kept)
-  {
-    State& s = *state;
-    s.cacheValid = false;
-    s.vq[kept] = s.pendingVertex;
-    s.featureVertex[kept] = s.pendingFeatureVertex;
-    if (profile.left_face_exists())
-    {
-      const auto h = CGAL::halfedge(kept, profile.vL(), s.mesh);
-      if (h.second)
-      {
-        s.eq[s.mesh.edge(h.first)] = s.pendingLeft;
-        s.feature[s.mesh.edge(h.first)] = s.pendingFeatureLeft;
-      }
-    }
-    if (profile.right_face_exists())
-    {
-      const auto h = CGAL::halfedge(kept, profile.vR(), s.mesh);
-      if (h.second)
-      {
-        s.eq[s.mesh.edge(h.first)] = s.pendingRight;
-        s.feature[s.mesh.edge(h.first)] = s.pendingFeatureRight;
-      }
-    }
-    const VD removed = kept == profile.v0() ? profile.v1() : profile.v0();
-    s.parent[static_cast<std::size_t>(removed)] = static_cast<std::int64_t>(kept);
-    --s.vertices;
-    ++s.collapses;
-    if (s.options.progress && s.collapses % s.reportEvery == 0)
-    {
-      if (!s.options.progress(std::min(1.0, double(s.collapses) / double(s.toRemove))))
-        s.aborted = true;
-    }
-  }
+  double cost;
+  std::uint32_t edge;
+  std::uint32_t stamp;
+  bool operator>(const HeapEntry& o) const { return std::tie(cost, edge) > std::tie(o.cost, o.edge); }
 };
 
 void checkOptions(const TriangleMesh& mesh, const SimplificationOptions& o)
@@ -523,20 +428,118 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
   state.toRemove = state.vertices - options.targetVertices;
   state.reportEvery = std::max<std::size_t>(1, state.toRemove / 200);
 
-  Placement placement{ &state };
-  Cost cost{ &state };
-  Filter filter{ &state };
-  Visitor visitor(&state);
-  if (options.lockFeatures)
+  // Lazy queue: a collapse marks the edges around its new vertex's ring
+  // dirty (their old cost stays in the heap); a dirty edge that reaches the
+  // top is re-costed and pushed back. Far fewer cost evaluations than
+  // re-costing every neighbour at once, the same greedy order up to ties.
+  const std::size_t edgeCount = mesh.number_of_edges();
+  std::vector<std::uint32_t> stamp(edgeCount, 0);
+  std::vector<char> dirty(edgeCount, 0);
+  std::vector<double> lastCost(edgeCount, 0.0);
+  std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<HeapEntry>> heap;
+  auto push = [&](ED e) {
+    const auto i = static_cast<std::size_t>(e);
+    if (options.lockFeatures && state.feature[e])
+      return;
+    Vec3 x;
+    double c;
+    const HD h = mesh.halfedge(e);
+    if (!placeAndCost(state, mesh.source(h), mesh.target(h), x, c))
+      return;
+    lastCost[i] = c;
+    dirty[i] = 0;
+    heap.push({ c, static_cast<std::uint32_t>(i), ++stamp[i] });
+  };
+  for (ED e : mesh.edges())
+    push(e);
+
+  while (state.vertices > options.targetVertices && !heap.empty() && !state.aborted)
   {
-    SMS::edge_collapse(mesh, Stop{ &state },
-      CGAL::parameters::get_cost(cost).get_placement(placement).filter(filter).visitor(visitor).edge_is_constrained_map(
-        state.feature));
-  }
-  else
-  {
-    SMS::edge_collapse(
-      mesh, Stop{ &state }, CGAL::parameters::get_cost(cost).get_placement(placement).filter(filter).visitor(visitor));
+    const HeapEntry top = heap.top();
+    heap.pop();
+    const ED e(top.edge);
+    if (mesh.is_removed(e) || top.stamp != stamp[top.edge])
+      continue;
+    if (dirty[top.edge])
+    {
+      push(e);
+      continue;
+    }
+    const HD h = mesh.halfedge(e);
+    const VD v0 = mesh.source(h), v1 = mesh.target(h);
+    if (options.lockFeatures && state.featureVertex[v0] && state.featureVertex[v1])
+      continue;
+    if (!topologicallyValid(mesh, e))
+      continue;
+    Vec3 x;
+    double c;
+    if (!placeAndCost(state, v0, v1, x, c) || !geometricallyValid(state, v0, v1, x))
+      continue; // comes back when its neighbourhood changes
+
+    // Merged quadrics and flags.
+    Quadric qv = state.vq[v0];
+    qv += state.vq[v1];
+    qv += state.eq[e];
+    const bool fv = state.featureVertex[v0] || state.featureVertex[v1];
+    struct Side
+    {
+      bool exists = false;
+      VD apex;
+      Quadric q;
+      bool feature = false;
+    } sides[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      const HD side = k == 0 ? h : mesh.opposite(h);
+      if (mesh.is_border(side))
+        continue;
+      // side: a -> b, next: b -> apex, prev: apex -> a.
+      const HD n = mesh.next(side), p = mesh.prev(side);
+      sides[k].exists = true;
+      sides[k].apex = mesh.target(n);
+      sides[k].q = state.eq[mesh.edge(n)];
+      sides[k].q += state.eq[mesh.edge(p)];
+      sides[k].feature = state.feature[mesh.edge(n)] || state.feature[mesh.edge(p)];
+    }
+    const VD kept = options.lockFeatures ? CGAL::Euler::collapse_edge(e, mesh, state.feature)
+                                         : CGAL::Euler::collapse_edge(e, mesh);
+    mesh.point(kept) = Point(x.x(), x.y(), x.z());
+    state.vq[kept] = qv;
+    state.featureVertex[kept] = fv;
+    for (const Side& sd : sides)
+    {
+      if (!sd.exists)
+        continue;
+      const auto hk = CGAL::halfedge(kept, sd.apex, mesh);
+      if (hk.second)
+      {
+        state.eq[mesh.edge(hk.first)] = sd.q;
+        state.feature[mesh.edge(hk.first)] = sd.feature;
+      }
+    }
+    const VD removed = kept == v0 ? v1 : v0;
+    state.parent[static_cast<std::size_t>(removed)] = static_cast<std::int64_t>(kept);
+    --state.vertices;
+    ++state.collapses;
+    // Everything whose cost reads the moved vertex: the edges at its ring.
+    for (HD r : CGAL::halfedges_around_target(mesh.halfedge(kept), mesh))
+    {
+      for (HD g : CGAL::halfedges_around_target(r, mesh))
+      {
+        const ED ge = mesh.edge(g);
+        const auto i = static_cast<std::size_t>(ge);
+        if (options.lockFeatures && state.feature[ge])
+          continue;
+        if (!dirty[i])
+        {
+          dirty[i] = 1;
+          heap.push({ lastCost[i], static_cast<std::uint32_t>(i), ++stamp[i] });
+        }
+      }
+    }
+    if (options.progress && state.collapses % state.reportEvery == 0 &&
+      !options.progress(std::min(1.0, double(state.collapses) / double(state.toRemove))))
+      state.aborted = true;
   }
 
   if (!state.aborted && options.progress)

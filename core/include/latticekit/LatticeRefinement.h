@@ -28,8 +28,10 @@
 ///    with Ceres (sparse normal Cholesky); the damping lambda is relative to
 ///    the mean squared residual weight, and point-to-plane residuals leave
 ///    the tangential drift to it;
-/// 4. apply dX and rebuild; if the exact energy did not fall, halve the step
-///    (up to four times) or stop.
+/// 4. apply dX and rebuild; Levenberg-Marquardt on the exact energy: a step
+///    that lowers it is kept and lambda halves (down to 1e-4), one that does
+///    not is retried with lambda four times larger (up to four times), then
+///    the refinement stops.
 /// Vertices flagged fixed (locked feature vertices) do not move, so feature
 /// edges stay exactly where they were.
 
@@ -45,7 +47,7 @@ namespace lk
 struct RefinementOptions
 {
   int iterations = 4;
-  double damping = 1e-2;          ///< lambda, relative
+  double damping = 1e-2;          ///< initial lambda, relative
   std::vector<char> fixed;        ///< per lattice vertex; empty: none fixed
   int locatorResolution = 4;      ///< tessellation the closest-point search starts from
   /// Called with the fraction done; returning false stops after the current step.

@@ -39,16 +39,26 @@
 /// Features (eq. 3.14): the quadrics of feature edges and of their vertices
 /// are multiplied by k = featureWeight, those of the other edges that share a
 /// vertex with a feature edge by featureNeighbourWeight (fig. 3.7: both are
-/// needed). lockFeatures takes feature edges out of the queue (CGAL's
-/// constrained edges): a collapse onto a feature vertex keeps that vertex
-/// where it is, and an edge joining two feature vertices is never collapsed,
-/// so every feature edge survives exactly.
+/// needed). lockFeatures takes feature edges out of the queue: a collapse
+/// onto a feature vertex keeps that vertex where it is, an edge joining two
+/// feature vertices is never collapsed, and CGAL's constrained collapse keeps
+/// a feature edge where two edges merge, so every feature edge survives exactly.
 ///
-/// Validity: CGAL's edge collapse refuses collapses that break the link
-/// condition (manifoldness) or flip a triangle; this filter also refuses
-/// collapses that turn a triangle's normal by more than maxNormalChangeDegrees
-/// or create a triangle with an angle below minAngleDegrees when none of the
-/// triangles it replaces was that thin (slivers fold the lattice surface).
+/// The queue: a binary heap of edge costs with lazy updates. A collapse marks
+/// the edges around its new vertex's ring dirty (they keep their old cost in
+/// the heap); a dirty edge that reaches the top is re-costed and pushed back.
+/// Costs around a collapse almost always rise, so the order is the greedy
+/// order up to near-ties, at a fraction of the cost evaluations of eager
+/// re-costing (3.7 x faster on the TCIA mandible than CGAL's edge_collapse
+/// driven by the same cost). Topology and geometry use CGAL: the half-edge
+/// Surface_mesh, Euler::collapse_edge and the link condition.
+///
+/// Validity: collapses that break the link condition (manifoldness), join
+/// two border vertices through the interior, turn a triangle's normal by more
+/// than maxNormalChangeDegrees (flips included) or create a triangle with an
+/// angle below minAngleDegrees when none of the triangles it replaces was
+/// that thin (slivers fold the lattice surface) are refused; a refused edge
+/// returns to the queue when its neighbourhood changes.
 
 #include "latticekit/TriangleMesh.h"
 
