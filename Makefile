@@ -16,6 +16,7 @@ test: setup
 bench: setup
 	build/bin/bench_metro sample_data
 	build/bin/bench_lattice sample_data
+	build/bin/bench_fit sample_data
 
 setup build:
 	bash scripts/setup.sh

@@ -3,14 +3,15 @@
 
 usage: PYTHONPATH=build/python xvfb-run -a /usr/bin/python3 python/examples/lattice_surface.py LABELMAP_OR_CT OUT.png [VERTICES]
 
-The bone surface is simplified to a coarse triangle lattice (vtkQuadricDecimation,
-then repaired), and vtkLKLatticeSurfaceFilter builds its G1 Gregory-patch surface.
+The bone surface is fitted with a lattice of VERTICES vertices (vtkLKLatticeFitFilter:
+QEM on the rounded lattice surface, quad pairing, Ceres refinement), and
+vtkLKLatticeSurfaceFilter builds its G1 Gregory-patch surface. The Metro error of
+the fit is printed.
 Left: the lattice (cage). Right: the smooth surface with the cage over it.
 """
 import sys
 
 import latticekit
-from vtkmodules.vtkFiltersCore import vtkQuadricDecimation
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
@@ -28,11 +29,17 @@ def main(argv):
     bone = latticekit.vtkLKBoneSurfaceFilter()
     bone.SetInputConnection(reader.GetOutputPort())
     bone.Update()
-    coarse = vtkQuadricDecimation()
-    coarse.SetInputConnection(bone.GetOutputPort())
-    coarse.SetTargetReduction(1.0 - vertices / float(bone.GetOutput().GetNumberOfPoints()))
-    lattice = latticekit.vtkLKMeshRepairFilter()
-    lattice.SetInputConnection(coarse.GetOutputPort())
+    lattice = latticekit.vtkLKLatticeFitFilter()
+    lattice.SetInputConnection(bone.GetOutputPort())
+    lattice.SetTargetNumberOfVertices(vertices)
+    lattice.QuadPairingOn()
+    lattice.RefinementOn()
+    lattice.Update()
+    fd = lattice.GetOutput().GetFieldData()
+    print("lattice: %d vertices, %d triangles, %d quads; Metro max %.4f %%, mean %.4f %% of the diagonal" % (
+        fd.GetArray("ControlVertices").GetValue(0), fd.GetArray("Triangles").GetValue(0),
+        fd.GetArray("Quads").GetValue(0), fd.GetArray("Hausdorff_MaxPercent").GetValue(0),
+        fd.GetArray("Hausdorff_MeanPercent").GetValue(0)))
     surface = latticekit.vtkLKLatticeSurfaceFilter()
     surface.SetInputConnection(lattice.GetOutputPort())
     surface.SetResolution(8)
