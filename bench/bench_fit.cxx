@@ -35,6 +35,7 @@
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkDataArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkQuadricDecimation.h>
@@ -95,12 +96,17 @@ struct Row
   std::size_t bytes;
   double seconds;
   long long vertices;
+  double nearFeature = -1.0; ///< mean distance of the feature lines' vertices, % of the diagonal
+  double featureEdges = 0.0;
 };
 
 void print(const Row& r)
 {
-  std::printf("  %-34s %6lld %8.4f %8.4f %8.4f %9lld %9zu %7.2f\n", r.name.c_str(), r.vertices, r.max, r.mean, r.rms,
+  std::printf("  %-34s %6lld %8.4f %8.4f %8.4f %9lld %9zu %7.2f", r.name.c_str(), r.vertices, r.max, r.mean, r.rms,
     r.polygons, r.bytes, r.seconds);
+  if (r.nearFeature >= 0.0)
+    std::printf(" %8.4f %6.0f", r.nearFeature, r.featureEdges);
+  std::printf("\n");
 }
 
 Row flatRow(const std::string& name, vtkPolyData* flat, vtkPolyData* original, double t)
@@ -168,8 +174,22 @@ vtkSmartPointer<vtkPolyData> cgalDecimate(vtkPolyData* in, vtkIdType vertices, d
   return lkvtk::fromTriangleMesh(out);
 }
 
+/// Mean distance to the lattice surface of the feature lines' mesh vertices
+/// (the error near the features), or -1 without lines.
+double nearFeatureError(vtkLKLatticeFitFilter* fit, vtkPolyData* lines)
+{
+  if (!lines)
+    return -1.0;
+  vtkDataArray* d = fit->GetVertexMapOutput()->GetPointData()->GetArray("Distance");
+  vtkDataArray* ids = lines->GetPointData()->GetArray("MeshPointId");
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
+    sum += d->GetComponent(static_cast<vtkIdType>(ids->GetComponent(i, 0)), 0);
+  return 100.0 * sum / static_cast<double>(ids->GetNumberOfTuples()) / field(fit->GetOutput(), "BoundingBoxDiagonal");
+}
+
 Row latticeRow(const std::string& name, vtkPolyData* original, vtkPolyData* features, vtkIdType vertices,
-  bool quads, bool refine, bool lock = false)
+  bool quads, bool refine, bool lock = false, vtkPolyData* measureAt = nullptr)
 {
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(original);
@@ -188,7 +208,8 @@ Row latticeRow(const std::string& name, vtkPolyData* original, vtkPolyData* feat
   const double tri = field(out, "Triangles"), quad = field(out, "Quads");
   return { name, field(out, "Hausdorff_MaxPercent"), field(out, "Hausdorff_MeanPercent"),
     field(out, "Hausdorff_RMSPercent"), static_cast<long long>(tri * 24 + quad * 32), objBytes(out), t,
-    static_cast<long long>(out->GetNumberOfPoints()) };
+    static_cast<long long>(out->GetNumberOfPoints()), nearFeatureError(fit, measureAt ? measureAt : features),
+    field(out, "FeatureEdges") };
 }
 
 /// A polyline of world points, turned into a mesh edge path (points carry MeshPointId).
@@ -245,15 +266,15 @@ void table(const std::string& title, vtkPolyData* original, vtkPolyData* feature
   std::printf("\n%s: %lld vertices, %lld triangles; lattices of %lld vertices\n", title.c_str(),
     static_cast<long long>(original->GetNumberOfPoints()), static_cast<long long>(original->GetNumberOfPolys()),
     static_cast<long long>(vertices));
-  std::printf("  %-34s %6s %8s %8s %8s %9s %9s %7s\n", "model", "verts", "max %", "mean %", "RMS %", "display",
-    "OBJ bytes", "s");
+  std::printf("  %-34s %6s %8s %8s %8s %9s %9s %7s%s\n", "model", "verts", "max %", "mean %", "RMS %", "display",
+    "OBJ bytes", "s", features ? "  near % f.edges" : "");
   double tv = 0, tc = 0;
   auto v = vtkDecimate(original, vertices, &tv);
   print(flatRow("vtkQuadricDecimation (flat)", v, original, tv));
   auto c = cgalDecimate(original, vertices, &tc);
   print(flatRow("CGAL Garland-Heckbert (flat)", c, original, tc));
-  print(latticeRow("lattice, no features", original, nullptr, vertices, false, false));
-  print(latticeRow("lattice, refined", original, nullptr, vertices, false, true));
+  print(latticeRow("lattice, no features", original, nullptr, vertices, false, false, false, features));
+  print(latticeRow("lattice, refined", original, nullptr, vertices, false, true, false, features));
   if (features)
   {
     print(latticeRow("lattice, features", original, features, vertices, false, false));

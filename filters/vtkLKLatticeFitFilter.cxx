@@ -229,7 +229,8 @@ int vtkLKLatticeFitFilter::RequestData(
   };
 
   // The lattice as polydata: faces, then a line per feature edge.
-  auto toPolyData = [](const Fit& fit, vtkPolyData* pd) {
+  const bool interpolate = this->InterpolateFeatures;
+  auto toPolyData = [interpolate](const Fit& fit, vtkPolyData* pd) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     for (const auto& p : fit.lattice.points)
@@ -266,6 +267,20 @@ int vtkLKLatticeFitFilter::RequestData(
     }
     pd->GetCellData()->AddArray(flag);
     pd->GetCellData()->AddArray(weight);
+    if (interpolate && !fit.features.empty())
+    {
+      // Vertex weight 0: the lattice surface passes through the feature vertices.
+      vtkNew<vtkDoubleArray> vw;
+      vw->SetName("RoundingWeight");
+      vw->SetNumberOfTuples(static_cast<vtkIdType>(fit.lattice.points.size()));
+      vw->Fill(1.0);
+      for (const auto& e : fit.features)
+      {
+        vw->SetValue(static_cast<vtkIdType>(e.first), 0.0);
+        vw->SetValue(static_cast<vtkIdType>(e.second), 0.0);
+      }
+      pd->GetPointData()->AddArray(vw);
+    }
   };
 
   // Surface and Metro error of a lattice.

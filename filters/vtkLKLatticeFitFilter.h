@@ -29,7 +29,9 @@
  * Output 0: the lattice: triangles and quads, plus one line cell per
  * surviving feature edge; cell data "FeatureEdge" (1 on those lines, 0 on
  * faces) and "RoundingWeight" (1: smooth; set 0 on a line to make that edge a
- * crease in vtkLKLatticeSurfaceFilter, which reads the lattice as it is).
+ * crease in vtkLKLatticeSurfaceFilter, which reads the lattice as it is);
+ * with InterpolateFeatures, point data "RoundingWeight" 0 on feature
+ * vertices (1 elsewhere), so the surface passes through them.
  * Field data: the achieved error of the lattice surface against the input
  * (vtkLKMetroFilter, both directions: Hausdorff_Max, Hausdorff_Mean,
  * Hausdorff_RMS, each also as ..._Percent of the bounding-box diagonal,
@@ -107,6 +109,16 @@ public:
   ///@}
 
   ///@{
+  /// Give the surviving feature vertices point data RoundingWeight 0, so
+  /// that the lattice surface (vtkLKLatticeSurfaceFilter) passes through
+  /// them and the feature line is kept on the surface, not only in the
+  /// lattice. Default on.
+  vtkSetMacro(InterpolateFeatures, bool);
+  vtkGetMacro(InterpolateFeatures, bool);
+  vtkBooleanMacro(InterpolateFeatures, bool);
+  ///@}
+
+  ///@{
   /// Evaluate the collapse error on the rounded lattice surface (Hayashi et
   /// al.; default on) or at the vertex itself (plain Garland-Heckbert).
   vtkSetMacro(RoundedSurfaceQuadrics, bool);
@@ -170,6 +182,7 @@ protected:
   double FeatureWeight = 1000.0;
   double FeatureNeighbourWeight = 100.0;
   bool LockFeatures = false;
+  bool InterpolateFeatures = true;
   bool RoundedSurfaceQuadrics = true;
   bool QuadPairing = false;
   double RightAngleTolerance = 0.5;
