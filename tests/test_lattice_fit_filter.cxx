@@ -172,6 +172,11 @@ TEST(LatticeFitFilter, LockedFeaturesAreLatticeEdges)
     EXPECT_EQ(p[1], q[1]);
     EXPECT_EQ(p[2], q[2]);
   }
+  // With InterpolateFeatures (default) the surface passes through the
+  // feature vertices: they lie on the tessellation (patch corners).
+  vtkDataArray* dist = fit->GetVertexMapOutput()->GetPointData()->GetArray("Distance");
+  for (const auto& e : edges)
+    EXPECT_LT(dist->GetComponent(e.first, 0), 1e-9);
   // Line cells come first: FeatureEdge 1 on them, 0 on faces.
   vtkDataArray* flag = lattice->GetCellData()->GetArray("FeatureEdge");
   ASSERT_TRUE(flag);
