@@ -396,3 +396,32 @@ TEST(QuadPairingFilter, PairsAndKeepsLineCells)
   EXPECT_EQ(errors.errors, 1);
   EXPECT_NE(errors.messages.find("S1"), std::string::npos);
 }
+
+#include <vtkSphereSource.h>
+
+TEST(LatticeFitFilter, ErrorBoundFindsAFewVerticesWithinIt)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(60);
+  sphere->SetPhiResolution(60);
+  sphere->SetRadius(10.0);
+  sphere->Update();
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputConnection(sphere->GetOutputPort());
+  fit->SetMaximumError(0.5);
+  fit->Update();
+  vtkPolyData* lattice = fit->GetOutput();
+  const double max = field(lattice, "Hausdorff_MaxPercent");
+  std::printf("sphere of %lld vertices within 0.5 %%: %lld lattice vertices, max %.4f %%\n",
+    static_cast<long long>(sphere->GetOutput()->GetNumberOfPoints()),
+    static_cast<long long>(lattice->GetNumberOfPoints()), max);
+  EXPECT_LE(max, 0.5);
+  EXPECT_GT(lattice->GetNumberOfPoints(), 4);
+  EXPECT_LT(lattice->GetNumberOfPoints(), sphere->GetOutput()->GetNumberOfPoints() / 4);
+  // Not stopped early: with 20 % fewer vertices the bound no longer holds.
+  vtkNew<vtkLKLatticeFitFilter> fewer;
+  fewer->SetInputConnection(sphere->GetOutputPort());
+  fewer->SetTargetNumberOfVertices(lattice->GetNumberOfPoints() * 4 / 5);
+  fewer->Update();
+  EXPECT_GT(field(fewer->GetOutput(), "Hausdorff_MaxPercent"), 0.5);
+}
