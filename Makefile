@@ -17,6 +17,7 @@ bench: setup
 	build/bin/bench_metro sample_data
 	build/bin/bench_lattice sample_data
 	build/bin/bench_fit sample_data
+	build/bin/bench_subdivision sample_data
 
 setup build:
 	bash scripts/setup.sh

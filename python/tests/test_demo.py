@@ -79,5 +79,23 @@ class LatticeExampleTest(unittest.TestCase):
             self.assertGreater(shaded / (width * height / 11), 0.05, "the picture is almost blank")
 
 
+    @unittest.skipIf(shutil.which("xvfb-run") is None, "xvfb-run is not installed")
+    def test_homogenized_loop_example_renders(self):
+        from vtkmodules.vtkIOImage import vtkPNGReader
+
+        example = os.path.join(os.path.dirname(__file__), "..", "examples", "homogenized_loop.py")
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "loop.png")
+            result = subprocess.run(["xvfb-run", "-a", sys.executable, example, png, "6"],
+                                    capture_output=True, text=True, check=False, timeout=300)
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            self.assertIn("face weight 6.0", result.stdout)
+            reader = vtkPNGReader()
+            reader.SetFileName(png)
+            reader.Update()
+            width, height, _ = reader.GetOutput().GetDimensions()
+            self.assertEqual((width, height), (1600, 420))
+
+
 if __name__ == "__main__":
     unittest.main()

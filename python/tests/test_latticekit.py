@@ -16,7 +16,8 @@ class ImportTest(unittest.TestCase):
         import latticekit
         for name in ("vtkLKMedicalImageReader", "vtkLKBoneSurfaceFilter",
                      "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter",
-                     "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter"):
+                     "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter",
+                     "vtkLKHomogenizedLoopFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -137,6 +138,44 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(vmap.GetArray("LatticeFaceId").GetNumberOfTuples(), mesh.GetNumberOfPoints())
         # The surface of the lattice comes out of the same pipeline.
         self.assertGreater(surface.GetOutput().GetNumberOfPolys(), 10 * lattice.GetNumberOfPolys())
+
+    def test_homogenized_loop_from_python(self):
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkDoubleArray
+        from vtkmodules.vtkFiltersModeling import vtkLoopSubdivisionFilter
+        from vtkmodules.vtkFiltersSources import vtkPlatonicSolidSource
+
+        solid = vtkPlatonicSolidSource()
+        solid.SetSolidTypeToIcosahedron()
+        solid.Update()
+        plain = latticekit.vtkLKHomogenizedLoopFilter()
+        plain.SetInputConnection(solid.GetOutputPort())
+        plain.SetNumberOfSubdivisions(2)
+        vtk_loop = vtkLoopSubdivisionFilter()
+        vtk_loop.SetInputConnection(solid.GetOutputPort())
+        vtk_loop.SetNumberOfSubdivisions(2)
+        plain.Update()
+        vtk_loop.Update()
+        self.assertEqual(plain.GetOutput().GetNumberOfPoints(), vtk_loop.GetOutput().GetNumberOfPoints())
+        # Vertices keep their ids; VTK's even vertices come first as well.
+        for i in range(12):
+            a, b = plain.GetOutput().GetPoint(i), vtk_loop.GetOutput().GetPoint(i)
+            self.assertAlmostEqual(sum((x - y) ** 2 for x, y in zip(a, b)), 0.0, places=10)
+        # A vertex weight pulls the surface towards the vertex.
+        mesh = solid.GetOutput()
+        w = vtkDoubleArray()
+        w.SetName("LoopWeight")
+        w.SetNumberOfTuples(mesh.GetNumberOfPoints())
+        w.Fill(1.0)
+        w.SetValue(0, 4.0)
+        mesh.GetPointData().AddArray(w)
+        weighted = latticekit.vtkLKHomogenizedLoopFilter()
+        weighted.SetInputData(mesh)
+        weighted.SetNumberOfSubdivisions(2)
+        weighted.Update()
+        p0 = mesh.GetPoint(0)
+        d = lambda pd: sum((x - y) ** 2 for x, y in zip(pd.GetPoint(0), p0))
+        self.assertLess(d(weighted.GetOutput()), d(plain.GetOutput()))
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
