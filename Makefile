@@ -18,6 +18,7 @@ bench: setup
 	build/bin/bench_lattice sample_data
 	build/bin/bench_fit sample_data
 	build/bin/bench_subdivision sample_data
+	build/bin/bench_ifs
 
 setup build:
 	bash scripts/setup.sh

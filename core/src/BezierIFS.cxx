@@ -250,7 +250,7 @@ IfsPoints chaosGame(const std::vector<IfsMap>& maps, const std::vector<double>& 
   IfsPoints out;
   out.points.reserve(count);
   out.parameters.reserve(count);
-  Eigen::VectorXd x = start;
+  Eigen::VectorXd x = start, y(start.size());
   for (std::size_t k = 0; k < count; ++k)
   {
     const double r = uniform(rng);
@@ -258,7 +258,9 @@ IfsPoints chaosGame(const std::vector<IfsMap>& maps, const std::vector<double>& 
     while (i + 1 < maps.size() && r >= cumulative[i])
       ++i;
     const IfsMap& w = maps[i];
-    x = w.A * x + w.c;
+    y.noalias() = w.A * x;
+    y += w.c;
+    x.swap(y);
     param = { w.a[0] + w.s[0] * param[0], w.a[1] + w.s[1] * param[1] };
     out.points.push_back(plot(x, control));
     out.parameters.push_back(param);

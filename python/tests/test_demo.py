@@ -97,5 +97,17 @@ class LatticeExampleTest(unittest.TestCase):
             self.assertEqual((width, height), (1600, 420))
 
 
+    @unittest.skipIf(shutil.which("xvfb-run") is None, "xvfb-run is not installed")
+    def test_bezier_ifs_example_renders(self):
+        example = os.path.join(os.path.dirname(__file__), "..", "examples", "bezier_ifs.py")
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "ifs.png")
+            result = subprocess.run(["xvfb-run", "-a", sys.executable, example, png],
+                                    capture_output=True, text=True, check=False, timeout=300)
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            self.assertIn("wrote", result.stdout)
+            self.assertTrue(os.path.getsize(png) > 10000)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -17,7 +17,7 @@ class ImportTest(unittest.TestCase):
         for name in ("vtkLKMedicalImageReader", "vtkLKBoneSurfaceFilter",
                      "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter",
                      "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter",
-                     "vtkLKHomogenizedLoopFilter"):
+                     "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -176,6 +176,44 @@ class PipelineTest(unittest.TestCase):
         p0 = mesh.GetPoint(0)
         d = lambda pd: sum((x - y) ** 2 for x, y in zip(pd.GetPoint(0), p0))
         self.assertLess(d(weighted.GetOutput()), d(plain.GetOutput()))
+
+    def test_bezier_ifs_from_python(self):
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+        pts = vtkPoints()
+        for p in ((0, 0, 0), (1, 2, 0), (3, 2, 1), (4, 0, 0)):
+            pts.InsertNextPoint(p)
+        control = vtkPolyData()
+        control.SetPoints(pts)
+        ifs = latticekit.vtkLKBezierIFSFilter()
+        ifs.SetInputData(control)
+        ifs.SetNumberOfMaps(3)
+        ifs.SetDepth(3)
+        ifs.Update()
+        self.assertEqual(ifs.GetOutput().GetNumberOfPoints(), 28)
+        # Every point on the curve: compare with de Casteljau at its parameter.
+        t_array = ifs.GetOutput().GetPointData().GetArray("Parameter")
+        for i in range(ifs.GetOutput().GetNumberOfPoints()):
+            t = t_array.GetValue(i)
+            b = [(1 - t) ** 3, 3 * (1 - t) ** 2 * t, 3 * (1 - t) * t ** 2, t ** 3]
+            expected = [sum(b[k] * pts.GetPoint(k)[c] for k in range(4)) for c in range(3)]
+            for c in range(3):
+                self.assertAlmostEqual(ifs.GetOutput().GetPoint(i)[c], expected[c], places=12)
+        chaos = latticekit.vtkLKBezierIFSFilter()
+        chaos.SetInputData(control)
+        chaos.SetAlgorithmToChaosGame()
+        chaos.SetNumberOfPoints(5000)
+        probabilities = vtkDoubleArray()
+        probabilities.InsertNextValue(0.2)
+        probabilities.InsertNextValue(0.8)
+        chaos.SetProbabilities(probabilities)
+        chaos.Update()
+        density = chaos.GetOutput().GetPointData().GetArray("HitDensity")
+        self.assertEqual(density.GetNumberOfTuples(), 5000)
+        low, high = density.GetRange()
+        self.assertGreater(high / max(low, 1e-9), 5.0)
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
