@@ -1,0 +1,129 @@
+#include "TestMeshes.h"
+#include "latticekit/EdgePath.h"
+#include "latticekit/ManifoldRepair.h"
+#include "latticekit/MeshCut.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+lk::PolygonMesh asPolygons(const lk::TriangleMesh& m)
+{
+  lk::PolygonMesh p;
+  p.points = m.points;
+  for (const auto& t : m.triangles)
+    p.faces.push_back({ t[0], t[1], t[2] });
+  return p;
+}
+
+lk::TriangleMesh asTriangles(const lk::PolygonMesh& p)
+{
+  lk::TriangleMesh m;
+  m.points = p.points;
+  for (const auto& f : p.faces)
+    for (std::size_t i = 1; i + 1 < f.size(); ++i)
+      m.triangles.push_back({ f[0], f[i], f[i + 1] });
+  return m;
+}
+
+std::vector<std::int64_t> circleLoop(const lk::TriangleMesh& m, double z, double r)
+{
+  std::vector<lk::Vec3> stroke;
+  for (int k = 0; k <= 24; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * (k % 24) / 24.0;
+    stroke.emplace_back(r * std::cos(a), r * std::sin(a), z);
+  }
+  return lk::edgePathThrough(m, stroke);
+}
+} // namespace
+
+TEST(MeshCut, LoopSplitsTheSphereIntoTwoPiecesWithCoincidingBorders)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  const auto loop = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
+  const auto cut = lk::cutAlongLoops(asPolygons(sphere), { loop }, false);
+  ASSERT_EQ(cut.pieces.size(), 2u);
+  double area = 0.0;
+  std::size_t border = 0;
+  for (const auto& p : cut.pieces)
+  {
+    const lk::TriangleMesh t = asTriangles(p);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(t), "");
+    area += lk::surfaceArea(t);
+    border += lk::countBoundaryEdges(t);
+  }
+  EXPECT_NEAR(area, lk::surfaceArea(sphere), 1e-9 * lk::surfaceArea(sphere));
+  EXPECT_EQ(border, 2 * (loop.size() - 1));
+  // The loop's vertices appear in both pieces at the same positions.
+  for (std::size_t i = 0; i + 1 < loop.size(); ++i)
+  {
+    int found = 0;
+    for (std::size_t p = 0; p < 2; ++p)
+      for (std::size_t v = 0; v < cut.vertexOrigin[p].size(); ++v)
+        if (cut.vertexOrigin[p][v] == loop[i])
+        {
+          EXPECT_EQ(cut.pieces[p].points[v], sphere.points[static_cast<std::size_t>(loop[i])]);
+          ++found;
+        }
+    EXPECT_EQ(found, 2);
+  }
+}
+
+TEST(MeshCut, CappedPiecesAreClosedAndTheirVolumesSumToTheWhole)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  const auto loop = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
+  const auto cut = lk::cutAlongLoops(asPolygons(sphere), { loop }, true);
+  ASSERT_EQ(cut.pieces.size(), 2u);
+  double volume = 0.0;
+  for (const auto& p : cut.pieces)
+  {
+    const lk::TriangleMesh t = asTriangles(p);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(t), "");
+    EXPECT_EQ(lk::countBoundaryEdges(t), 0u);
+    EXPECT_GT(lk::signedVolume(t), 0.0);
+    volume += lk::signedVolume(t);
+  }
+  std::printf("capped volumes sum to %.9f of the sphere's %.9f\n", volume, lk::signedVolume(sphere));
+  EXPECT_NEAR(volume, lk::signedVolume(sphere), 1e-9);
+  EXPECT_EQ(cut.capFailures, 0u);
+}
+
+TEST(MeshCut, TwoLoopsCutOutASegment)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  const auto a = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
+  const auto b = circleLoop(sphere, -0.4, std::sqrt(1 - 0.16));
+  const auto cut = lk::cutAlongLoops(asPolygons(sphere), { a, b }, true);
+  EXPECT_EQ(cut.pieces.size(), 3u);
+  for (const auto& p : cut.pieces)
+    EXPECT_EQ(lk::countBoundaryEdges(asTriangles(p)), 0u);
+}
+
+TEST(MeshCut, BadLoopsAreRefused)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(2, 1.0);
+  auto message = [&](const std::vector<std::vector<std::int64_t>>& loops) -> std::string {
+    try
+    {
+      lk::cutAlongLoops(asPolygons(sphere), loops, false);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return e.what();
+    }
+    return "";
+  };
+  const auto t = sphere.triangles[0];
+  // One triangle's boundary is a closed loop that separates that triangle.
+  EXPECT_EQ(message({ { t[0], t[1], t[2] } }), "");
+  EXPECT_NE(message({ { t[0], t[1] } }).find("fewer than 3"), std::string::npos);
+  EXPECT_NE(message({}).find("no loop"), std::string::npos);
+  // Not joined by edges: an open line.
+  EXPECT_NE(message({ { 0, 1, 2, 3, 4 } }).find("not closed along mesh edges"), std::string::npos);
+  // The same vertex twice: a self-crossing loop.
+  EXPECT_NE(message({ { t[0], t[1], t[2], t[0], t[1], t[2] } }).find("crosses itself"), std::string::npos);
+}
