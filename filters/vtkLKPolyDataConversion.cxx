@@ -1,12 +1,18 @@
 #include "vtkLKPolyDataConversion.h"
 
+
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkMath.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStaticPointLocator.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace lkvtk
@@ -123,5 +129,62 @@ vtkSmartPointer<vtkPolyData> fromTriangleMesh(const lk::TriangleMesh& mesh)
   pd->SetPolys(polys);
   return pd;
 }
+
+std::string lineEdges(vtkPolyData* lines, vtkPolyData* mesh, std::vector<lk::EdgeKey>& out)
+{
+  if (!lines || lines->GetNumberOfPoints() == 0)
+    return {};
+  if (lines->GetNumberOfPolys() > 0 || lines->GetNumberOfStrips() > 0)
+    return "the lines input holds polygons; it takes polylines";
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<vtkIdType> meshId(static_cast<std::size_t>(lines->GetNumberOfPoints()), -1);
+  vtkDataArray* ids = lines->GetPointData()->GetArray("MeshPointId");
+  if (ids)
+  {
+    for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+    {
+      const double v = ids->GetComponent(i, 0);
+      if (!(v >= 0.0 && v < static_cast<double>(n)) || v != std::floor(v))
+        return "line point " + std::to_string(i) + " has MeshPointId " + std::to_string(v) +
+          ", outside the mesh's point ids 0.." + std::to_string(n - 1);
+      meshId[static_cast<std::size_t>(i)] = static_cast<vtkIdType>(v);
+    }
+  }
+  else
+  {
+    vtkNew<vtkStaticPointLocator> locator;
+    locator->SetDataSet(mesh);
+    locator->BuildLocator();
+    const double tol = 1e-9 * std::sqrt(mesh->GetLength() * mesh->GetLength());
+    for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      lines->GetPoint(i, p);
+      const vtkIdType id = locator->FindClosestPoint(p);
+      mesh->GetPoint(id, q);
+      if (id < 0 || std::sqrt(vtkMath::Distance2BetweenPoints(p, q)) > tol)
+        return "line point " + std::to_string(i) +
+          " is not a point of the mesh (give point data MeshPointId, or points equal to mesh points)";
+      meshId[static_cast<std::size_t>(i)] = id;
+    }
+  }
+  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType np;
+    const vtkIdType* pts;
+    it->GetCurrentCell(np, pts);
+    for (vtkIdType k = 0; k + 1 < np; ++k)
+    {
+      const vtkIdType a = meshId[static_cast<std::size_t>(pts[k])], b = meshId[static_cast<std::size_t>(pts[k + 1])];
+      if (a != b)
+        out.push_back(lk::edgeKey(a, b));
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return {};
+}
+
 
 } // namespace lkvtk

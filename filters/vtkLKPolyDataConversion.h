@@ -3,6 +3,7 @@
 /// Private: conversion between vtkPolyData and the cores' lk::TriangleMesh,
 /// with the input checks every latticekit filter shares.
 
+#include "latticekit/LatticeSimplification.h"
 #include "latticekit/PolygonMesh.h"
 #include "latticekit/TriangleMesh.h"
 
@@ -26,5 +27,12 @@ std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh);
 
 /// A vtkPolyData with the mesh's points (double precision) and triangles.
 vtkSmartPointer<vtkPolyData> fromTriangleMesh(const lk::TriangleMesh& mesh);
+
+/// The mesh edges a set of polylines runs along (sorted, unique). Line points
+/// name mesh points by point data "MeshPointId" (any integer type) or by
+/// coordinates equal to a mesh point's (within 1e-9 of the diagonal).
+/// Returns an empty string, or a sentence for vtkErrorMacro. Whether
+/// consecutive points are joined by an edge is left to the caller.
+std::string lineEdges(vtkPolyData* lines, vtkPolyData* mesh, std::vector<lk::EdgeKey>& out);
 
 } // namespace lkvtk

@@ -1,3 +1,4 @@
+#include "MandibleLoop.h"
 #include "TestSupport.h"
 #include "latticekit/EdgePath.h"
 #include "latticekit/LatticeSimplification.h"
@@ -40,49 +41,6 @@ double field(vtkPolyData* pd, const char* name)
 {
   vtkDataArray* a = pd->GetFieldData()->GetArray(name);
   return a ? a->GetComponent(0, 0) : std::nan("");
-}
-
-/// A closed feature line around the mandible: the plane x = centre, sampled
-/// on the surface and snapped to an edge path. Points carry MeshPointId.
-vtkSmartPointer<vtkPolyData> featureLoop(vtkPolyData* mesh, std::vector<lk::EdgeKey>& edges)
-{
-  const lk::TriangleMesh tm = lktest::toCore(mesh);
-  double b[6];
-  mesh->GetBounds(b);
-  const double x0 = 0.5 * (b[0] + b[1]);
-  // Vertices near the plane, ordered by angle around their centroid in (y, z).
-  std::vector<lk::Vec3> near;
-  for (const auto& p : tm.points)
-    if (std::abs(p.x() - x0) < 0.6)
-      near.push_back(p);
-  lk::Vec3 c = lk::Vec3::Zero();
-  for (const auto& p : near)
-    c += p / static_cast<double>(near.size());
-  std::sort(near.begin(), near.end(), [&](const lk::Vec3& a, const lk::Vec3& d) {
-    return std::atan2(a.z() - c.z(), a.y() - c.y()) < std::atan2(d.z() - c.z(), d.y() - c.y());
-  });
-  std::vector<lk::Vec3> stroke;
-  for (std::size_t i = 0; i < near.size(); i += std::max<std::size_t>(1, near.size() / 24))
-    stroke.push_back(near[i]);
-  stroke.push_back(stroke.front());
-  const auto path = lk::edgePathThrough(tm, stroke);
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> pts;
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("MeshPointId");
-  vtkNew<vtkCellArray> lines;
-  lines->InsertNextCell(static_cast<vtkIdType>(path.size()));
-  for (std::size_t i = 0; i < path.size(); ++i)
-  {
-    lines->InsertCellPoint(pts->InsertNextPoint(tm.points[static_cast<std::size_t>(path[i])].data()));
-    ids->InsertNextValue(path[i]);
-    if (i > 0)
-      edges.push_back(lk::edgeKey(path[i - 1], path[i]));
-  }
-  out->SetPoints(pts);
-  out->SetLines(lines);
-  out->GetPointData()->AddArray(ids);
-  return out;
 }
 
 std::set<lk::EdgeKey> latticeEdges(vtkPolyData* lattice)
@@ -147,7 +105,7 @@ TEST(LatticeFitFilter, LockedFeaturesAreLatticeEdges)
 {
   vtkPolyData* bone = mandible();
   std::vector<lk::EdgeKey> edges;
-  auto lines = featureLoop(bone, edges);
+  auto lines = lktest::mandibleLoop(bone, edges);
   ASSERT_GT(edges.size(), 30u);
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(bone);
@@ -188,7 +146,7 @@ TEST(LatticeFitFilter, FeatureWeightsHalveTheErrorNearTheFeature)
 {
   vtkPolyData* bone = mandible();
   std::vector<lk::EdgeKey> edges;
-  auto lines = featureLoop(bone, edges);
+  auto lines = lktest::mandibleLoop(bone, edges);
   std::set<vtkIdType> featureVertices;
   for (const auto& e : edges)
   {
@@ -367,7 +325,7 @@ TEST(QuadPairingFilter, PairsAndKeepsLineCells)
   fit->SetTargetNumberOfVertices(1000);
   fit->ComputeErrorOff();
   std::vector<lk::EdgeKey> edges;
-  fit->SetFeatureLinesData(featureLoop(bone, edges));
+  fit->SetFeatureLinesData(lktest::mandibleLoop(bone, edges));
   fit->LockFeaturesOn();
   vtkNew<vtkLKQuadPairingFilter> pairs;
   pairs->SetInputConnection(fit->GetOutputPort());

@@ -1,0 +1,193 @@
+#include "vtkLKClosedLineCutFilter.h"
+
+#include "latticekit/MeshCut.h"
+#include "vtkLKPolyDataConversion.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <map>
+#include <string>
+
+vtkStandardNewMacro(vtkLKClosedLineCutFilter);
+
+namespace
+{
+/// Chains line edges into closed loops; a sentence on failure.
+std::string loopsOf(const std::vector<lk::EdgeKey>& edges, std::vector<std::vector<std::int64_t>>& loops)
+{
+  std::map<std::int64_t, std::vector<std::int64_t>> adj;
+  for (const auto& e : edges)
+  {
+    adj[e.first].push_back(e.second);
+    adj[e.second].push_back(e.first);
+  }
+  for (const auto& [v, n] : adj)
+  {
+    if (n.size() == 1)
+      return "the line is not closed: it ends at mesh point " + std::to_string(v);
+    if (n.size() > 2)
+      return "lines meet or cross at mesh point " + std::to_string(v) + " (" + std::to_string(n.size()) +
+        " line edges there); give separate closed loops";
+  }
+  std::map<std::int64_t, bool> used;
+  for (const auto& [start, n] : adj)
+  {
+    if (used[start])
+      continue;
+    std::vector<std::int64_t> loop{ start };
+    used[start] = true;
+    std::int64_t prev = start, cur = n[0];
+    while (cur != start)
+    {
+      loop.push_back(cur);
+      used[cur] = true;
+      const auto& nn = adj[cur];
+      const std::int64_t next = nn[0] == prev ? nn[1] : nn[0];
+      prev = cur;
+      cur = next;
+    }
+    loops.push_back(loop);
+  }
+  return {};
+}
+} // namespace
+
+vtkLKClosedLineCutFilter::vtkLKClosedLineCutFilter()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+void vtkLKClosedLineCutFilter::SetLinesConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkLKClosedLineCutFilter::SetLinesData(vtkPolyData* lines)
+{
+  this->SetInputData(1, lines);
+}
+
+int vtkLKClosedLineCutFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkLKClosedLineCutFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* linesIn = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->NumberOfPieces = 0;
+
+  vtkNew<vtkPolyData> faces;
+  vtkNew<vtkPolyData> ownLines;
+  if (input)
+  {
+    faces->ShallowCopy(input);
+    vtkNew<vtkCellArray> none;
+    faces->SetLines(none);
+    ownLines->SetPoints(input->GetPoints());
+    ownLines->SetLines(input->GetLines());
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetName("MeshPointId");
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+      ids->InsertNextValue(i);
+    ownLines->GetPointData()->AddArray(ids);
+  }
+  lk::PolygonMesh mesh;
+  std::string problem = lkvtk::toPolygonMesh(faces, mesh);
+  std::vector<lk::EdgeKey> edges;
+  std::vector<std::vector<std::int64_t>> loops;
+  if (problem.empty())
+    problem = lkvtk::lineEdges(linesIn ? linesIn : ownLines.Get(), input, edges);
+  if (problem.empty() && edges.empty())
+    problem = "no closed line to cut along (give input 1, or line cells on the mesh)";
+  if (problem.empty())
+    problem = loopsOf(edges, loops);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Cannot cut: " << problem << ".");
+    return 0;
+  }
+  lk::CutResult cut;
+  try
+  {
+    cut = lk::cutAlongLoops(mesh, loops, this->Capping);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Cannot cut: " << e.what() << ".");
+    return 0;
+  }
+  if (cut.capFailures > 0)
+    vtkWarningMacro(<< cut.capFailures << " cap(s) could not be faired; they are refined but not smoothed.");
+  this->UpdateProgress(0.8);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdTypeArray> pointOrigin, cellOrigin;
+  pointOrigin->SetName("InputPointId");
+  cellOrigin->SetName("InputCellId");
+  vtkNew<vtkIntArray> region;
+  region->SetName("RegionId");
+  vtkNew<vtkUnsignedCharArray> capFlag;
+  capFlag->SetName("Cap");
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p)
+  {
+    const vtkIdType base = points->GetNumberOfPoints();
+    for (std::size_t v = 0; v < cut.pieces[p].points.size(); ++v)
+    {
+      points->InsertNextPoint(cut.pieces[p].points[v].data());
+      pointOrigin->InsertNextValue(static_cast<vtkIdType>(cut.vertexOrigin[p][v]));
+    }
+    for (std::size_t f = 0; f < cut.pieces[p].faces.size(); ++f)
+    {
+      const auto& face = cut.pieces[p].faces[f];
+      polys->InsertNextCell(static_cast<vtkIdType>(face.size()));
+      for (auto v : face)
+        polys->InsertCellPoint(base + static_cast<vtkIdType>(v));
+      const auto origin = cut.faceOrigin[p][f];
+      cellOrigin->InsertNextValue(origin < 0 ? -1 : firstPoly + static_cast<vtkIdType>(origin));
+      region->InsertNextValue(static_cast<int>(p));
+      capFlag->InsertNextValue(origin < 0 ? 1 : 0);
+    }
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->GetPointData()->AddArray(pointOrigin);
+  output->GetCellData()->AddArray(cellOrigin);
+  output->GetCellData()->AddArray(region);
+  output->GetCellData()->AddArray(capFlag);
+  vtkNew<vtkDoubleArray> count;
+  count->SetName("Pieces");
+  count->InsertNextValue(static_cast<double>(cut.pieces.size()));
+  output->GetFieldData()->AddArray(count);
+  this->NumberOfPieces = static_cast<int>(cut.pieces.size());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkLKClosedLineCutFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Capping: " << this->Capping << "\n";
+}

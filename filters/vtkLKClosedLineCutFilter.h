@@ -1,0 +1,68 @@
+/**
+ * @class   vtkLKClosedLineCutFilter
+ * @brief   Cuts a surface (or a lattice) along closed lines into pieces,
+ *          optionally capped so that each piece is watertight (seed 004, 3.2).
+ *
+ * Input 0: a manifold polygon mesh (triangles, or a lattice's polygons); its
+ * line cells are ignored as geometry. Input 1 (optional, SetLinesConnection /
+ * SetLinesData): the closed lines, as polylines or as separate segments along
+ * mesh edges, whose points name mesh points (point data "MeshPointId", or
+ * coordinates equal to mesh points). Without input 1 the line cells of input
+ * 0 are the lines: a fitted lattice (vtkLKLatticeFitFilter) carries its
+ * feature edges as line cells, so "fit, then cut" is one pipeline.
+ * The lines must form closed loops: every vertex on them joins exactly two
+ * line edges.
+ *
+ * Output: all pieces in one polydata, the loop vertices duplicated so each
+ * piece has its own; cell data "RegionId" (the piece), "InputCellId" (-1 on
+ * caps), "Cap" (1 on cap triangles); point data "InputPointId" (-1 on cap
+ * points); field data "Pieces". Their cut borders coincide exactly. With
+ * Capping, each loop is closed by one smooth hole-filling surface (CGAL
+ * triangulate, refine and fair) shared, reversed, by the two pieces beside
+ * it: both pieces are closed and fit each other (see MeshCut.h).
+ *
+ * Bad input (an open line, lines crossing, a loop that crosses itself, loops
+ * that do not separate the mesh, points that are not mesh points) gives a
+ * VTK error and an empty output.
+ */
+#ifndef vtkLKClosedLineCutFilter_h
+#define vtkLKClosedLineCutFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class LATTICEKITFILTERS_EXPORT vtkLKClosedLineCutFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKClosedLineCutFilter* New();
+  vtkTypeMacro(vtkLKClosedLineCutFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void SetLinesConnection(vtkAlgorithmOutput* output);
+  void SetLinesData(vtkPolyData* lines);
+
+  ///@{
+  /// Close every piece with the loop's shared cap (default off).
+  vtkSetMacro(Capping, bool);
+  vtkGetMacro(Capping, bool);
+  vtkBooleanMacro(Capping, bool);
+  ///@}
+
+  /// Pieces of the last update.
+  int GetNumberOfPieces() const { return this->NumberOfPieces; }
+
+protected:
+  vtkLKClosedLineCutFilter();
+  ~vtkLKClosedLineCutFilter() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  bool Capping = false;
+  int NumberOfPieces = 0;
+
+private:
+  vtkLKClosedLineCutFilter(const vtkLKClosedLineCutFilter&) = delete;
+  void operator=(const vtkLKClosedLineCutFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,145 @@
+#include "MandibleLoop.h"
+#include "TestSupport.h"
+#include "latticekit/ManifoldRepair.h"
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKLatticeFitFilter.h"
+#include "vtkLKMedicalImageReader.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkThreshold.h>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> mandibleSurface()
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(bone->GetOutput());
+  return out;
+}
+
+/// The triangles of one region as a core mesh.
+lk::TriangleMesh piece(vtkPolyData* cut, int region)
+{
+  lk::TriangleMesh all = lktest::toCore(cut);
+  vtkDataArray* r = cut->GetCellData()->GetArray("RegionId");
+  lk::TriangleMesh out;
+  out.points = all.points;
+  for (std::size_t t = 0; t < all.triangles.size(); ++t)
+    if (r->GetComponent(static_cast<vtkIdType>(t), 0) == region)
+      out.triangles.push_back(all.triangles[t]);
+  // Drop unused points.
+  std::vector<std::int64_t> id(out.points.size(), -1);
+  lk::TriangleMesh compact;
+  for (auto& t : out.triangles)
+    for (auto& v : t)
+    {
+      if (id[static_cast<std::size_t>(v)] < 0)
+      {
+        id[static_cast<std::size_t>(v)] = static_cast<std::int64_t>(compact.points.size());
+        compact.points.push_back(out.points[static_cast<std::size_t>(v)]);
+      }
+      v = id[static_cast<std::size_t>(v)];
+    }
+  compact.triangles = out.triangles;
+  return compact;
+}
+} // namespace
+
+TEST(ClosedLineCut, MandibleCutIntoTwoPiecesThatCapWatertight)
+{
+  auto bone = mandibleSurface();
+  std::vector<lk::EdgeKey> edges;
+  auto loop = lktest::mandibleLoop(bone, edges);
+  const lk::TriangleMesh whole = lktest::toCore(bone);
+  for (bool capping : { false, true })
+  {
+    vtkNew<vtkLKClosedLineCutFilter> cut;
+    cut->SetInputData(bone);
+    cut->SetLinesData(loop);
+    cut->SetCapping(capping);
+    lktest::ErrorRecorder errors(cut);
+    cut->Update();
+    ASSERT_EQ(errors.errors, 0) << errors.messages;
+    ASSERT_EQ(cut->GetNumberOfPieces(), 2);
+    const lk::TriangleMesh a = piece(cut->GetOutput(), 0), b = piece(cut->GetOutput(), 1);
+    if (!capping)
+    {
+      EXPECT_NEAR(lk::surfaceArea(a) + lk::surfaceArea(b), lk::surfaceArea(whole), 1e-9 * lk::surfaceArea(whole));
+      EXPECT_EQ(lk::countBoundaryEdges(a), edges.size());
+      EXPECT_EQ(lk::countBoundaryEdges(b), edges.size());
+    }
+    else
+    {
+      EXPECT_EQ(lk::countBoundaryEdges(a), 0u);
+      EXPECT_EQ(lk::countBoundaryEdges(b), 0u);
+      EXPECT_EQ(lk::cgalSurfaceMeshProblem(a), "");
+      EXPECT_EQ(lk::cgalSurfaceMeshProblem(b), "");
+      const double va = lk::signedVolume(a), vb = lk::signedVolume(b), v = lk::signedVolume(whole);
+      std::printf("capped pieces: %.3f + %.3f = %.3f ml against %.3f ml\n", va / 1000, vb / 1000, (va + vb) / 1000,
+        v / 1000);
+      EXPECT_GT(va, 0.0);
+      EXPECT_GT(vb, 0.0);
+      EXPECT_NEAR(va + vb, v, 0.005 * v);
+    }
+  }
+}
+
+TEST(ClosedLineCut, LatticeThenCutAlongItsFeatureEdges)
+{
+  auto bone = mandibleSurface();
+  std::vector<lk::EdgeKey> edges;
+  auto loop = lktest::mandibleLoop(bone, edges);
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(bone);
+  fit->SetFeatureLinesData(loop);
+  fit->LockFeaturesOn();
+  fit->SetTargetNumberOfVertices(1000);
+  fit->QuadPairingOn();
+  fit->ComputeErrorOff();
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputConnection(fit->GetOutputPort()); // its line cells are the loop
+  cut->CappingOn();
+  lktest::ErrorRecorder errors(cut);
+  cut->Update();
+  ASSERT_EQ(errors.errors, 0) << errors.messages;
+  EXPECT_EQ(cut->GetNumberOfPieces(), 2);
+  EXPECT_GT(cut->GetOutput()->GetNumberOfPolys(), fit->GetOutput()->GetNumberOfPolys());
+}
+
+TEST(ClosedLineCut, OpenOrCrossingLinesAreClearErrors)
+{
+  auto bone = mandibleSurface();
+  std::vector<lk::EdgeKey> edges;
+  auto loop = lktest::mandibleLoop(bone, edges);
+  // Open: drop the closing point.
+  vtkNew<vtkPolyData> open;
+  open->DeepCopy(loop);
+  vtkNew<vtkCellArray> cells;
+  const vtkIdType n = loop->GetNumberOfPoints() - 1;
+  cells->InsertNextCell(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    cells->InsertCellPoint(i);
+  open->SetLines(cells);
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputData(bone);
+  cut->SetLinesData(open);
+  lktest::ErrorRecorder errors(cut);
+  cut->Update();
+  EXPECT_EQ(errors.errors, 1);
+  EXPECT_NE(errors.messages.find("not closed"), std::string::npos) << errors.messages;
+  EXPECT_EQ(cut->GetOutput()->GetNumberOfPoints(), 0);
+  // No line at all.
+  vtkNew<vtkLKClosedLineCutFilter> none;
+  none->SetInputData(bone);
+  lktest::ErrorRecorder errors2(none);
+  none->Update();
+  EXPECT_NE(errors2.messages.find("no closed line"), std::string::npos) << errors2.messages;
+}
