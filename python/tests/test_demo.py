@@ -109,5 +109,18 @@ class LatticeExampleTest(unittest.TestCase):
             self.assertTrue(os.path.getsize(png) > 10000)
 
 
+    @unittest.skipIf(shutil.which("xvfb-run") is None, "xvfb-run is not installed")
+    def test_osteotomy_cut_example_renders(self):
+        example = os.path.join(os.path.dirname(__file__), "..", "examples", "osteotomy_cut.py")
+        mandible = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_0522c0017_Mandible.nrrd")
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "cut.png")
+            result = subprocess.run(["xvfb-run", "-a", sys.executable, example, mandible, png],
+                                    capture_output=True, text=True, check=False, timeout=300)
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            self.assertIn("pieces: 2", result.stdout)
+            self.assertTrue(os.path.getsize(png) > 10000)
+
+
 if __name__ == "__main__":
     unittest.main()

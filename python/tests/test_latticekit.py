@@ -17,7 +17,8 @@ class ImportTest(unittest.TestCase):
         for name in ("vtkLKMedicalImageReader", "vtkLKBoneSurfaceFilter",
                      "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter",
                      "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter",
-                     "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter"):
+                     "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter",
+                     "vtkLKClosedLineCutFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
