@@ -1,0 +1,64 @@
+#pragma once
+/// \file StrokeFeatureLine.h
+/// Pen strokes on a triangle mesh to feature lines (seed 004, section 3.1).
+/// The stroke is a polyline of world points on or near the surface (the
+/// planner picks screen points onto the nearest visible surface first).
+/// It is resampled at `spacing` and each sample projected to its closest
+/// surface point (CGAL AABB tree); a sample farther than `maxDistance` from
+/// the surface means the stroke misses it.
+///
+/// Modes:
+/// - Paint (3.1.1): every edge of the faces the stroke covers; a face is
+///   covered when it lies within `brushRadius` of a projected sample (region
+///   growing from the sample's face).
+/// - NearestEdges (3.1.2): the nearest mesh vertex of each projected sample,
+///   consecutive vertices joined by shortest edge paths (Dijkstra); where
+///   the path would revisit a vertex, the detour between the two visits is
+///   dropped, so the line does not intersect itself.
+/// - Snap (3.1.3): the same path, each of its vertices moved to the closest
+///   point of the projected stroke polyline; connectivity is unchanged.
+///   (Eq. 3.12 slides a vertex along one of its edges towards the next
+///   input point; the closest point on the stroke is the same aim without
+///   being limited to one edge. Only path vertices move.)
+/// A stroke whose ends are within `closeTolerance` of each other gives a
+/// closed line (its last vertex repeats the first).
+
+#include "latticekit/LatticeSimplification.h"
+#include "latticekit/TriangleMesh.h"
+
+#include <vector>
+
+namespace lk
+{
+
+enum class StrokeMode
+{
+  Paint,
+  NearestEdges,
+  Snap
+};
+
+struct StrokeOptions
+{
+  StrokeMode mode = StrokeMode::NearestEdges;
+  double spacing = 0.0;        ///< resampling step; 0: a quarter of the mean edge length
+  double brushRadius = 0.0;    ///< paint; 0: half the mean edge length
+  double closeTolerance = 0.0; ///< ends closer than this close the line; 0: twice the mean edge length
+  double maxDistance = 0.0;    ///< samples farther from the surface miss it; 0: 5 mean edge lengths
+};
+
+struct StrokeResult
+{
+  TriangleMesh mesh;                       ///< the mesh (vertices moved in Snap mode)
+  std::vector<EdgeKey> featureEdges;       ///< sorted, unique
+  std::vector<std::int64_t> line;          ///< the vertex path (NearestEdges, Snap)
+  std::vector<std::int64_t> paintedFaces;  ///< Paint: the covered faces
+  std::vector<std::int64_t> movedVertices; ///< Snap
+  bool closed = false;
+};
+
+/// Throws std::invalid_argument for an invalid mesh, a stroke of fewer than
+/// two points or with non-finite points, or a stroke that misses the surface.
+StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& stroke, const StrokeOptions& options);
+
+} // namespace lk

@@ -1,0 +1,224 @@
+#include "latticekit/StrokeFeatureLine.h"
+
+#include "latticekit/ClosestPointTree.h"
+#include "latticekit/EdgePath.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <queue>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace lk
+{
+namespace
+{
+/// Closest point of triangle (a, b, c) to p (Ericson's regions).
+Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0)
+    return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3)
+    return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    return a + ab * (d1 / (d1 - d3));
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6)
+    return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double den = 1.0 / (va + vb + vc);
+  return a + ab * (vb * den) + ac * (vc * den);
+}
+
+Vec3 closestOnPolyline(const std::vector<Vec3>& line, const Vec3& p)
+{
+  Vec3 best = line.front();
+  double bd = (best - p).squaredNorm();
+  for (std::size_t i = 0; i + 1 < line.size(); ++i)
+  {
+    const Vec3 d = line[i + 1] - line[i];
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - line[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
+    const Vec3 q = line[i] + t * d;
+    const double qd = (q - p).squaredNorm();
+    if (qd < bd)
+    {
+      bd = qd;
+      best = q;
+    }
+  }
+  return best;
+}
+} // namespace
+
+StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& strokeIn, const StrokeOptions& o)
+{
+  const std::string problem = validateTriangleMesh(mesh);
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
+  if (strokeIn.size() < 2)
+    throw std::invalid_argument("a stroke needs at least two points");
+  for (const Vec3& p : strokeIn)
+    if (!p.allFinite())
+      throw std::invalid_argument("a stroke point is not finite");
+  double meanEdge = 0.0;
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      meanEdge += (mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>(i)])] -
+                    mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>((i + 1) % 3)])])
+                    .norm();
+  meanEdge /= 3.0 * static_cast<double>(mesh.triangles.size());
+  const double spacing = o.spacing > 0 ? o.spacing : 0.25 * meanEdge;
+  const double radius = o.brushRadius > 0 ? o.brushRadius : 0.5 * meanEdge;
+  const double closeTol = o.closeTolerance > 0 ? o.closeTolerance : 2.0 * meanEdge;
+  const double maxDist = o.maxDistance > 0 ? o.maxDistance : 5.0 * meanEdge;
+
+  StrokeResult result;
+  result.mesh = mesh;
+  result.closed = (strokeIn.front() - strokeIn.back()).norm() <= closeTol;
+  // Resample (closing the stroke when its ends meet) and project.
+  std::vector<Vec3> stroke = strokeIn;
+  if (result.closed)
+    stroke.back() = stroke.front();
+  std::vector<Vec3> samples;
+  for (std::size_t i = 0; i + 1 < stroke.size(); ++i)
+  {
+    const double len = (stroke[i + 1] - stroke[i]).norm();
+    const int n = std::max(1, static_cast<int>(std::ceil(len / spacing)));
+    for (int k = 0; k < n; ++k)
+      samples.push_back(stroke[i] + (stroke[i + 1] - stroke[i]) * (double(k) / n));
+  }
+  samples.push_back(stroke.back());
+  const ClosestPointTree tree(mesh);
+  std::vector<ClosestPointTree::Hit> hits;
+  for (const Vec3& s : samples)
+  {
+    hits.push_back(hits.empty() ? tree.closest(s) : tree.closest(s, hits.back()));
+    if (hits.back().distance > maxDist)
+      throw std::invalid_argument("the stroke misses the surface: a stroke point lies " +
+        std::to_string(hits.back().distance) + " from it (more than " + std::to_string(maxDist) + ")");
+  }
+  std::vector<Vec3> projected;
+  for (const auto& h : hits)
+    projected.push_back(h.point);
+
+  auto addFaceEdges = [&](std::size_t f) {
+    const Triangle& t = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i)
+      result.featureEdges.push_back(edgeKey(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]));
+  };
+
+  if (o.mode == StrokeMode::Paint)
+  {
+    std::vector<std::vector<std::size_t>> facesOf(mesh.points.size());
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for (auto v : mesh.triangles[f])
+        facesOf[static_cast<std::size_t>(v)].push_back(f);
+    std::vector<char> painted(mesh.triangles.size(), 0);
+    for (std::size_t s = 0; s < projected.size(); ++s)
+    {
+      std::queue<std::size_t> q;
+      std::set<std::size_t> seen{ static_cast<std::size_t>(hits[s].face) };
+      q.push(static_cast<std::size_t>(hits[s].face));
+      while (!q.empty())
+      {
+        const std::size_t f = q.front();
+        q.pop();
+        const Triangle& t = mesh.triangles[f];
+        const Vec3 c = closestOnTriangle(projected[s], mesh.points[static_cast<std::size_t>(t[0])],
+          mesh.points[static_cast<std::size_t>(t[1])], mesh.points[static_cast<std::size_t>(t[2])]);
+        if ((c - projected[s]).norm() > radius)
+          continue;
+        painted[f] = 1;
+        for (auto v : t)
+          for (std::size_t g : facesOf[static_cast<std::size_t>(v)])
+            if (seen.insert(g).second)
+              q.push(g);
+      }
+    }
+    for (std::size_t f = 0; f < painted.size(); ++f)
+      if (painted[f])
+      {
+        result.paintedFaces.push_back(static_cast<std::int64_t>(f));
+        addFaceEdges(f);
+      }
+  }
+  else
+  {
+    // Nearest vertices of the projected samples, joined by shortest edge paths.
+    std::vector<Vec3> anchors = projected;
+    std::vector<std::int64_t> path = edgePathThrough(mesh, anchors);
+    // Drop detours that revisit a vertex (keep the closing vertex of a loop).
+    std::vector<std::int64_t> simple;
+    std::map<std::int64_t, std::size_t> at;
+    for (std::size_t i = 0; i < path.size(); ++i)
+    {
+      const auto v = path[i];
+      if (result.closed && simple.size() > 2 && v == simple.front())
+      {
+        simple.push_back(v); // the loop is closed
+        break;
+      }
+      auto it = at.find(v);
+      if (it != at.end())
+      {
+        const std::size_t k = it->second;
+        if (result.closed && 2 * k < simple.size())
+        {
+          // A closed line coming back near its start: the loop closes at v;
+          // the part before v's first visit is dropped.
+          simple.erase(simple.begin(), simple.begin() + static_cast<std::ptrdiff_t>(k));
+          simple.push_back(v);
+          break;
+        }
+        else
+          simple.resize(k + 1);
+        at.clear();
+        for (std::size_t j = 0; j < simple.size(); ++j)
+          at[simple[j]] = j;
+        continue;
+      }
+      at[v] = simple.size();
+      simple.push_back(v);
+    }
+    if (result.closed && simple.size() > 2 && simple.back() != simple.front())
+    {
+      const auto back = shortestEdgePath(mesh, simple.back(), simple.front());
+      for (std::size_t k = 1; k < back.size(); ++k)
+        simple.push_back(back[k]);
+    }
+    result.line = simple;
+    for (std::size_t i = 0; i + 1 < simple.size(); ++i)
+      result.featureEdges.push_back(edgeKey(simple[i], simple[i + 1]));
+    if (o.mode == StrokeMode::Snap)
+    {
+      std::set<std::int64_t> done;
+      for (auto v : simple)
+      {
+        if (!done.insert(v).second)
+          continue;
+        result.mesh.points[static_cast<std::size_t>(v)] =
+          closestOnPolyline(projected, mesh.points[static_cast<std::size_t>(v)]);
+        result.movedVertices.push_back(v);
+      }
+    }
+  }
+  std::sort(result.featureEdges.begin(), result.featureEdges.end());
+  result.featureEdges.erase(std::unique(result.featureEdges.begin(), result.featureEdges.end()), result.featureEdges.end());
+  return result;
+}
+
+} // namespace lk

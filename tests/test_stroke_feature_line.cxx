@@ -1,0 +1,151 @@
+#include "TestMeshes.h"
+#include "latticekit/MeshCut.h"
+#include "latticekit/StrokeFeatureLine.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace
+{
+std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
+{
+  std::set<lk::EdgeKey> e;
+  for (const auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i)
+      e.insert(lk::edgeKey(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]));
+  return e;
+}
+
+const std::vector<lk::Vec3> kStroke = { { 0.12, 0.2, 0.0 }, { 0.5, 0.45, 0.0 }, { 0.9, 0.62, 0.0 } };
+} // namespace
+
+TEST(StrokeFeatureLine, NearestEdgesGiveAConnectedSimpleEdgePath)
+{
+  const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
+  const auto r = lk::strokeToFeatureLine(grid, kStroke, {});
+  const auto edges = edgesOf(grid);
+  ASSERT_GT(r.line.size(), 10u);
+  EXPECT_FALSE(r.closed);
+  std::set<std::int64_t> seen;
+  for (std::size_t i = 0; i < r.line.size(); ++i)
+  {
+    EXPECT_TRUE(seen.insert(r.line[i]).second) << "vertex visited twice";
+    if (i + 1 < r.line.size())
+      EXPECT_TRUE(edges.count(lk::edgeKey(r.line[i], r.line[i + 1])));
+  }
+  // Ends at the grid vertices nearest the stroke's ends.
+  EXPECT_LT((grid.points[static_cast<std::size_t>(r.line.front())] - kStroke.front()).norm(), 0.05);
+  EXPECT_LT((grid.points[static_cast<std::size_t>(r.line.back())] - kStroke.back()).norm(), 0.05);
+  EXPECT_EQ(r.featureEdges.size(), r.line.size() - 1);
+}
+
+TEST(StrokeFeatureLine, SnapMovesOnlyPathVerticesOntoTheStroke)
+{
+  const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
+  lk::StrokeOptions o;
+  o.mode = lk::StrokeMode::Snap;
+  const auto r = lk::strokeToFeatureLine(grid, kStroke, o);
+  EXPECT_EQ(r.mesh.triangles, grid.triangles); // connectivity unchanged
+  const std::set<std::int64_t> path(r.line.begin(), r.line.end());
+  for (std::size_t v = 0; v < grid.points.size(); ++v)
+  {
+    if (!path.count(static_cast<std::int64_t>(v)))
+    {
+      EXPECT_EQ(r.mesh.points[v], grid.points[v]);
+      continue;
+    }
+    // On the stroke polyline (the plane is the surface, so the projected stroke is the stroke).
+    const lk::Vec3 p = r.mesh.points[v];
+    double d = 1e9;
+    for (std::size_t i = 0; i + 1 < kStroke.size(); ++i)
+    {
+      const lk::Vec3 s = kStroke[i + 1] - kStroke[i];
+      const double t = std::clamp((p - kStroke[i]).dot(s) / s.squaredNorm(), 0.0, 1.0);
+      d = std::min(d, (kStroke[i] + t * s - p).norm());
+    }
+    EXPECT_LT(d, 1e-12);
+  }
+  EXPECT_EQ(r.movedVertices.size(), path.size());
+}
+
+TEST(StrokeFeatureLine, PaintReturnsExactlyTheEdgesOfTheCoveredFaces)
+{
+  const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
+  lk::StrokeOptions o;
+  o.mode = lk::StrokeMode::Paint;
+  o.brushRadius = 0.06;
+  o.spacing = 0.01;
+  const auto r = lk::strokeToFeatureLine(grid, kStroke, o);
+  std::set<lk::EdgeKey> expected;
+  for (auto f : r.paintedFaces)
+    for (int i = 0; i < 3; ++i)
+      expected.insert(lk::edgeKey(grid.triangles[static_cast<std::size_t>(f)][static_cast<std::size_t>(i)],
+        grid.triangles[static_cast<std::size_t>(f)][static_cast<std::size_t>((i + 1) % 3)]));
+  EXPECT_EQ(std::set<lk::EdgeKey>(r.featureEdges.begin(), r.featureEdges.end()), expected);
+  // Every face whose centroid is within the radius minus a margin of the
+  // stroke is painted, and none farther than the radius plus a face.
+  for (std::size_t f = 0; f < grid.triangles.size(); ++f)
+  {
+    const auto& t = grid.triangles[f];
+    const lk::Vec3 c = (grid.points[static_cast<std::size_t>(t[0])] + grid.points[static_cast<std::size_t>(t[1])] +
+                         grid.points[static_cast<std::size_t>(t[2])]) /
+      3.0;
+    double d = 1e9;
+    for (std::size_t i = 0; i + 1 < kStroke.size(); ++i)
+    {
+      const lk::Vec3 s = kStroke[i + 1] - kStroke[i];
+      const double u = std::clamp((c - kStroke[i]).dot(s) / s.squaredNorm(), 0.0, 1.0);
+      d = std::min(d, (kStroke[i] + u * s - c).norm());
+    }
+    const bool painted = std::count(r.paintedFaces.begin(), r.paintedFaces.end(), static_cast<std::int64_t>(f)) > 0;
+    if (d < 0.06 - 0.02)
+      EXPECT_TRUE(painted) << f;
+    if (d > 0.06 + 0.06)
+      EXPECT_FALSE(painted) << f;
+  }
+}
+
+TEST(StrokeFeatureLine, ClosedStrokeCutsTheSphere)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  std::vector<lk::Vec3> stroke;
+  for (int k = 0; k <= 40; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * k / 40.0;
+    stroke.emplace_back(0.95 * std::cos(a), 0.95 * std::sin(a), 0.2);
+  }
+  const auto r = lk::strokeToFeatureLine(sphere, stroke, {});
+  ASSERT_TRUE(r.closed);
+  EXPECT_EQ(r.line.front(), r.line.back());
+  const auto edges = edgesOf(sphere);
+  std::set<std::int64_t> seen;
+  for (std::size_t i = 0; i + 1 < r.line.size(); ++i)
+  {
+    EXPECT_TRUE(edges.count(lk::edgeKey(r.line[i], r.line[i + 1])));
+    EXPECT_TRUE(seen.insert(r.line[i]).second);
+  }
+  EXPECT_GT(r.line.size(), 30u);
+  lk::PolygonMesh pm;
+  pm.points = sphere.points;
+  for (const auto& t : sphere.triangles)
+    pm.faces.push_back({ t[0], t[1], t[2] });
+  EXPECT_EQ(lk::cutAlongLoops(pm, { r.line }, false).pieces.size(), 2u);
+}
+
+TEST(StrokeFeatureLine, BadStrokesAreRefused)
+{
+  const lk::TriangleMesh grid = lktest::grid(10, 1.0, 0.0);
+  EXPECT_THROW(lk::strokeToFeatureLine(grid, { { 0.5, 0.5, 0 } }, {}), std::invalid_argument);
+  EXPECT_THROW(lk::strokeToFeatureLine(grid, { { 0.5, 0.5, 0 }, { std::nan(""), 0, 0 } }, {}), std::invalid_argument);
+  try
+  {
+    lk::strokeToFeatureLine(grid, { { 0.5, 0.5, 5 }, { 0.6, 0.5, 5 } }, {});
+    FAIL() << "a stroke far from the surface was accepted";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("misses the surface"), std::string::npos);
+  }
+}
