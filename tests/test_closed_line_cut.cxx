@@ -11,6 +11,8 @@
 #include <vtkFieldData.h>
 #include <vtkThreshold.h>
 
+#include <set>
+
 namespace
 {
 vtkSmartPointer<vtkPolyData> mandibleSurface()
@@ -142,4 +144,87 @@ TEST(ClosedLineCut, OpenOrCrossingLinesAreClearErrors)
   lktest::ErrorRecorder errors2(none);
   none->Update();
   EXPECT_NE(errors2.messages.find("no closed line"), std::string::npos) << errors2.messages;
+}
+
+#include "vtkLKStrokeFeatureLineFilter.h"
+
+#include <vtkCellArrayIterator.h>
+
+TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
+{
+  auto bone = mandibleSurface();
+  std::vector<lk::EdgeKey> edges;
+  auto loop = lktest::mandibleLoop(bone, edges);
+  // A pen stroke near that loop: every third point, pushed 0.3 mm off the
+  // surface and along x (the pen is not on the mesh's vertices).
+  vtkNew<vtkPoints> pts;
+  for (vtkIdType i = 0; i < loop->GetNumberOfPoints(); i += 3)
+  {
+    double p[3];
+    loop->GetPoint(i, p);
+    pts->InsertNextPoint(p[0] + 0.3, p[1], p[2] + 0.2);
+  }
+  double first[3];
+  pts->GetPoint(0, first);
+  pts->InsertNextPoint(first);
+  vtkNew<vtkPolyData> stroke;
+  stroke->SetPoints(pts);
+  for (int mode : { vtkLKStrokeFeatureLineFilter::NEAREST_EDGES, vtkLKStrokeFeatureLineFilter::SNAP })
+  {
+    vtkNew<vtkLKStrokeFeatureLineFilter> feature;
+    feature->SetInputData(bone);
+    feature->SetStrokeData(stroke);
+    feature->SetMode(mode);
+    lktest::ErrorRecorder errors(feature);
+    feature->Update();
+    ASSERT_EQ(errors.errors, 0) << errors.messages;
+    vtkPolyData* line = feature->GetFeatureLineOutput();
+    EXPECT_EQ(line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0), 1.0);
+    EXPECT_EQ(feature->GetOutput()->GetNumberOfPolys(), bone->GetNumberOfPolys());
+    if (mode == vtkLKStrokeFeatureLineFilter::SNAP)
+    {
+      // Only the line's vertices moved.
+      std::set<vtkIdType> onLine;
+      vtkDataArray* ids = line->GetPointData()->GetArray("MeshPointId");
+      for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
+        onLine.insert(static_cast<vtkIdType>(ids->GetComponent(i, 0)));
+      int moved = 0;
+      for (vtkIdType v = 0; v < bone->GetNumberOfPoints(); ++v)
+      {
+        double a[3], b[3];
+        bone->GetPoint(v, a);
+        feature->GetOutput()->GetPoint(v, b);
+        if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2])
+        {
+          EXPECT_TRUE(onLine.count(v)) << v;
+          ++moved;
+        }
+      }
+      EXPECT_GT(moved, 10);
+    }
+    // The line cuts the (possibly snapped) mesh into two pieces.
+    vtkNew<vtkPolyData> surface;
+    surface->ShallowCopy(feature->GetOutput());
+    vtkNew<vtkCellArray> noLines;
+    surface->SetLines(noLines);
+    vtkNew<vtkLKClosedLineCutFilter> cut;
+    cut->SetInputData(surface);
+    cut->SetLinesConnection(feature->GetOutputPort(1));
+    lktest::ErrorRecorder cutErrors(cut);
+    cut->Update();
+    EXPECT_EQ(cutErrors.errors, 0) << cutErrors.messages;
+    EXPECT_EQ(cut->GetNumberOfPieces(), 2);
+  }
+  // A stroke far from the bone misses it.
+  vtkNew<vtkPoints> far;
+  far->InsertNextPoint(1e4, 1e4, 1e4);
+  far->InsertNextPoint(1e4 + 1, 1e4, 1e4);
+  vtkNew<vtkPolyData> miss;
+  miss->SetPoints(far);
+  vtkNew<vtkLKStrokeFeatureLineFilter> feature;
+  feature->SetInputData(bone);
+  feature->SetStrokeData(miss);
+  lktest::ErrorRecorder errors(feature);
+  feature->Update();
+  EXPECT_NE(errors.messages.find("misses the surface"), std::string::npos) << errors.messages;
 }

@@ -18,7 +18,7 @@ class ImportTest(unittest.TestCase):
                      "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter",
                      "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter",
                      "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter",
-                     "vtkLKClosedLineCutFilter"):
+                     "vtkLKClosedLineCutFilter", "vtkLKStrokeFeatureLineFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)

@@ -1,0 +1,86 @@
+/**
+ * @class   vtkLKStrokeFeatureLineFilter
+ * @brief   Turns a pen stroke on a triangle mesh into a feature line (seed
+ *          004, section 3.1): paint, nearest edges or snap.
+ *
+ * Input 0: a triangle mesh. Input 1 (SetStrokeConnection / SetStrokeData):
+ * the stroke as world points on or near the surface (the points of the
+ * first polyline, or all points in order when there is no line cell).
+ * See core/include/latticekit/StrokeFeatureLine.h for the modes:
+ * PAINT (every edge of the faces within BrushRadius of the stroke),
+ * NEAREST_EDGES (the edge path through the vertices nearest the stroke,
+ * without self-intersection) and SNAP (that path with its vertices moved onto
+ * the stroke, connectivity unchanged). A stroke whose ends are within
+ * CloseTolerance gives a closed line.
+ *
+ * Output 0: the mesh (with moved vertices in SNAP mode), its triangles, plus
+ * one line cell per feature edge (cell data "FeatureEdge" 1 on them, 0 on the
+ * triangles). Output 1: the feature line as a polyline (NEAREST_EDGES, SNAP;
+ * closed lines repeat their first point) or the feature edges as segments
+ * (PAINT), with point data "MeshPointId": the form vtkLKLatticeFitFilter
+ * (feature lines) and vtkLKClosedLineCutFilter (cut lines) take. Field data
+ * "Closed" (1 or 0).
+ *
+ * Bad input (a stroke of fewer than two points, non-finite points, a stroke
+ * that misses the surface, a mesh that is not triangles) gives a VTK error
+ * and empty outputs.
+ */
+#ifndef vtkLKStrokeFeatureLineFilter_h
+#define vtkLKStrokeFeatureLineFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class LATTICEKITFILTERS_EXPORT vtkLKStrokeFeatureLineFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKStrokeFeatureLineFilter* New();
+  vtkTypeMacro(vtkLKStrokeFeatureLineFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Modes
+  {
+    PAINT = 0,
+    NEAREST_EDGES = 1,
+    SNAP = 2
+  };
+
+  void SetStrokeConnection(vtkAlgorithmOutput* output);
+  void SetStrokeData(vtkPolyData* stroke);
+
+  ///@{
+  vtkSetClampMacro(Mode, int, PAINT, SNAP);
+  vtkGetMacro(Mode, int);
+  void SetModeToPaint() { this->SetMode(PAINT); }
+  void SetModeToNearestEdges() { this->SetMode(NEAREST_EDGES); }
+  void SetModeToSnap() { this->SetMode(SNAP); }
+  ///@}
+
+  ///@{
+  /// Lengths in model units; 0 (default) picks one from the mean edge length
+  /// (brush: half of it; close tolerance: twice it).
+  vtkSetClampMacro(BrushRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(BrushRadius, double);
+  vtkSetClampMacro(CloseTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(CloseTolerance, double);
+  ///@}
+
+  /// Output 1: the feature line with MeshPointId.
+  vtkPolyData* GetFeatureLineOutput();
+
+protected:
+  vtkLKStrokeFeatureLineFilter();
+  ~vtkLKStrokeFeatureLineFilter() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Mode = NEAREST_EDGES;
+  double BrushRadius = 0.0;
+  double CloseTolerance = 0.0;
+
+private:
+  vtkLKStrokeFeatureLineFilter(const vtkLKStrokeFeatureLineFilter&) = delete;
+  void operator=(const vtkLKStrokeFeatureLineFilter&) = delete;
+};
+
+#endif
