@@ -88,7 +88,9 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   }
   lk::StrokeOptions o;
   o.mode = this->Mode == PAINT ? lk::StrokeMode::Paint
-                               : (this->Mode == SNAP ? lk::StrokeMode::Snap : lk::StrokeMode::NearestEdges);
+    : this->Mode == SNAP       ? lk::StrokeMode::Snap
+    : this->Mode == SPLIT      ? lk::StrokeMode::Split
+                               : lk::StrokeMode::NearestEdges;
   o.brushRadius = this->BrushRadius;
   o.closeTolerance = this->CloseTolerance;
   lk::StrokeResult r;
@@ -104,7 +106,8 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
 
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(r.mesh);
   output->SetPoints(result->GetPoints());
-  output->GetPointData()->PassData(input->GetPointData());
+  if (r.mesh.points.size() == mesh.points.size())
+    output->GetPointData()->PassData(input->GetPointData());
   vtkNew<vtkCellArray> lines;
   for (const auto& e : r.featureEdges)
   {

@@ -9,11 +9,14 @@
  * See core/include/latticekit/StrokeFeatureLine.h for the modes:
  * PAINT (every edge of the faces within BrushRadius of the stroke),
  * NEAREST_EDGES (the edge path through the vertices nearest the stroke,
- * without self-intersection) and SNAP (that path with its vertices moved onto
- * the stroke, connectivity unchanged). A stroke whose ends are within
- * CloseTolerance gives a closed line.
+ * without self-intersection), SNAP (that path with its vertices moved onto
+ * the stroke, connectivity unchanged) and SPLIT (new vertices where the
+ * stroke crosses edges and at its ends, faces split so that new edges follow
+ * the stroke; the mesh stays a manifold triangle mesh; input point data are
+ * not passed in this mode, as points are added). A stroke whose ends are
+ * within CloseTolerance gives a closed line.
  *
- * Output 0: the mesh (with moved vertices in SNAP mode), its triangles, plus
+ * Output 0: the mesh (vertices moved in SNAP mode, faces split in SPLIT mode), plus
  * one line cell per feature edge (cell data "FeatureEdge" 1 on them, 0 on the
  * triangles). Output 1: the feature line as a polyline (NEAREST_EDGES, SNAP;
  * closed lines repeat their first point) or the feature edges as segments
@@ -42,18 +45,20 @@ public:
   {
     PAINT = 0,
     NEAREST_EDGES = 1,
-    SNAP = 2
+    SNAP = 2,
+    SPLIT = 3
   };
 
   void SetStrokeConnection(vtkAlgorithmOutput* output);
   void SetStrokeData(vtkPolyData* stroke);
 
   ///@{
-  vtkSetClampMacro(Mode, int, PAINT, SNAP);
+  vtkSetClampMacro(Mode, int, PAINT, SPLIT);
   vtkGetMacro(Mode, int);
   void SetModeToPaint() { this->SetMode(PAINT); }
   void SetModeToNearestEdges() { this->SetMode(NEAREST_EDGES); }
   void SetModeToSnap() { this->SetMode(SNAP); }
+  void SetModeToSplit() { this->SetMode(SPLIT); }
   ///@}
 
   ///@{

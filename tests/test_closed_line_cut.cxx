@@ -169,7 +169,8 @@ TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
   pts->InsertNextPoint(first);
   vtkNew<vtkPolyData> stroke;
   stroke->SetPoints(pts);
-  for (int mode : { vtkLKStrokeFeatureLineFilter::NEAREST_EDGES, vtkLKStrokeFeatureLineFilter::SNAP })
+  for (int mode : { vtkLKStrokeFeatureLineFilter::NEAREST_EDGES, vtkLKStrokeFeatureLineFilter::SNAP,
+         vtkLKStrokeFeatureLineFilter::SPLIT })
   {
     vtkNew<vtkLKStrokeFeatureLineFilter> feature;
     feature->SetInputData(bone);
@@ -180,7 +181,20 @@ TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
     ASSERT_EQ(errors.errors, 0) << errors.messages;
     vtkPolyData* line = feature->GetFeatureLineOutput();
     EXPECT_EQ(line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0), 1.0);
-    EXPECT_EQ(feature->GetOutput()->GetNumberOfPolys(), bone->GetNumberOfPolys());
+    if (mode != vtkLKStrokeFeatureLineFilter::SPLIT)
+      EXPECT_EQ(feature->GetOutput()->GetNumberOfPolys(), bone->GetNumberOfPolys());
+    else
+    {
+      vtkNew<vtkPolyData> faces;
+      faces->ShallowCopy(feature->GetOutput());
+      vtkNew<vtkCellArray> none;
+      faces->SetLines(none);
+      const lk::TriangleMesh split = lktest::toCore(faces);
+      EXPECT_EQ(lk::cgalSurfaceMeshProblem(split), "");
+      EXPECT_EQ(lk::countBoundaryEdges(split), 0u);
+      EXPECT_GT(split.points.size(), static_cast<std::size_t>(bone->GetNumberOfPoints()));
+      EXPECT_NEAR(lk::signedVolume(split), lk::signedVolume(lktest::toCore(bone)), 1e-9 * lk::signedVolume(split));
+    }
     if (mode == vtkLKStrokeFeatureLineFilter::SNAP)
     {
       // Only the line's vertices moved.

@@ -149,3 +149,53 @@ TEST(StrokeFeatureLine, BadStrokesAreRefused)
     EXPECT_NE(std::string(e.what()).find("misses the surface"), std::string::npos);
   }
 }
+
+#include "latticekit/ManifoldRepair.h"
+
+TEST(StrokeFeatureLine, SplitAddsEdgesThatLieOnTheStroke)
+{
+  const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
+  const std::vector<lk::Vec3> straight = { { 0.113, 0.207, 0.0 }, { 0.871, 0.633, 0.0 } };
+  lk::StrokeOptions o;
+  o.mode = lk::StrokeMode::Split;
+  const auto r = lk::strokeToFeatureLine(grid, straight, o);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
+  EXPECT_NEAR(lk::surfaceArea(r.mesh), 1.0, 1e-12);
+  EXPECT_GT(r.mesh.points.size(), grid.points.size() + 20);
+  const auto edges = edgesOf(r.mesh);
+  const lk::Vec3 d = (straight[1] - straight[0]).normalized();
+  ASSERT_GT(r.line.size(), 20u);
+  for (std::size_t i = 0; i < r.line.size(); ++i)
+  {
+    const lk::Vec3 p = r.mesh.points[static_cast<std::size_t>(r.line[i])];
+    const lk::Vec3 q = p - straight[0];
+    EXPECT_LT((q - q.dot(d) * d).norm(), 1e-12) << "vertex " << i << " is off the stroke";
+    if (i + 1 < r.line.size())
+      EXPECT_TRUE(edges.count(lk::edgeKey(r.line[i], r.line[i + 1])));
+  }
+  EXPECT_EQ(r.mesh.points[static_cast<std::size_t>(r.line.front())], straight.front());
+  EXPECT_EQ(r.mesh.points[static_cast<std::size_t>(r.line.back())], straight.back());
+}
+
+TEST(StrokeFeatureLine, ClosedSplitStrokeCutsTheSphere)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  std::vector<lk::Vec3> stroke;
+  for (int k = 0; k <= 40; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * k / 40.0;
+    stroke.emplace_back(0.95 * std::cos(a), 0.95 * std::sin(a), 0.2);
+  }
+  lk::StrokeOptions o;
+  o.mode = lk::StrokeMode::Split;
+  const auto r = lk::strokeToFeatureLine(sphere, stroke, o);
+  ASSERT_TRUE(r.closed);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
+  EXPECT_EQ(lk::countBoundaryEdges(r.mesh), 0u);
+  EXPECT_NEAR(lk::signedVolume(r.mesh), lk::signedVolume(sphere), 1e-12);
+  lk::PolygonMesh pm;
+  pm.points = r.mesh.points;
+  for (const auto& t : r.mesh.triangles)
+    pm.faces.push_back({ t[0], t[1], t[2] });
+  EXPECT_EQ(lk::cutAlongLoops(pm, { r.line }, false).pieces.size(), 2u);
+}

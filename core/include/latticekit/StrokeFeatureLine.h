@@ -20,6 +20,12 @@
 ///   (Eq. 3.12 slides a vertex along one of its edges towards the next
 ///   input point; the closest point on the stroke is the same aim without
 ///   being limited to one edge. Only path vertices move.)
+/// - Split (3.1.4): new vertices where the projected stroke crosses mesh edges
+///   (the point of the edge nearest the stroke segment between two samples
+///   on either side, eq. 3.13's foot point), and at the stroke's two ends
+///   (each splits its face into a fan); faces are split between consecutive
+///   new vertices and re-triangulated, so the new edges follow the stroke
+///   and the mesh stays a manifold triangle mesh (CGAL Euler operations).
 /// A stroke whose ends are within `closeTolerance` of each other gives a
 /// closed line (its last vertex repeats the first).
 
@@ -35,7 +41,8 @@ enum class StrokeMode
 {
   Paint,
   NearestEdges,
-  Snap
+  Snap,
+  Split
 };
 
 struct StrokeOptions
