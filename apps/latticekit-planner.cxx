@@ -1,0 +1,698 @@
+// latticekit-planner: the osteotomy planner in a plain VTK render window.
+// Draw strokes on the bone, turn them into feature lines, cut along closed
+// lines, fit lattices to the pieces, see the Metro error, undo and redo,
+// save and replay sessions (JSON), export the pieces.
+#include "common/AppSupport.h"
+
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKLatticeFitFilter.h"
+#include "vtkLKLatticeSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
+#include "vtkLKMetroFilter.h"
+#include "vtkLKStrokeFeatureLineFilter.h"
+
+#include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellPicker.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkExtractEdges.h>
+#include <vtkFieldData.h>
+#include <vtkGeometryFilter.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkThreshold.h>
+#include <vtkWindowToImageFilter.h>
+#include <vtk_jsoncpp.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* kHelp = "d: draw on/off | 1 paint 2 nearest 3 snap 4 split | x: cut (capped) | l: lattice | m: Metro colours\n"
+                    "z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
+
+struct Stroke
+{
+  int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
+  std::vector<std::array<double, 3>> points;
+};
+
+struct Session
+{
+  std::vector<Stroke> strokes;
+  std::vector<Stroke> redo;
+  bool cut = false;
+  bool capping = true;
+  bool lattice = false;
+  long latticeVertices = 600;
+  bool metro = false;
+};
+
+const char* modeName(int mode)
+{
+  switch (mode)
+  {
+    case vtkLKStrokeFeatureLineFilter::PAINT:
+      return "paint";
+    case vtkLKStrokeFeatureLineFilter::SNAP:
+      return "snap";
+    case vtkLKStrokeFeatureLineFilter::SPLIT:
+      return "split";
+    default:
+      return "nearest";
+  }
+}
+
+int modeOf(const std::string& name)
+{
+  if (name == "paint")
+    return vtkLKStrokeFeatureLineFilter::PAINT;
+  if (name == "snap")
+    return vtkLKStrokeFeatureLineFilter::SNAP;
+  if (name == "split")
+    return vtkLKStrokeFeatureLineFilter::SPLIT;
+  return vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
+}
+
+bool saveSession(const Session& s, const std::string& path, std::string& error)
+{
+  Json::Value root;
+  for (const Stroke& st : s.strokes)
+  {
+    Json::Value js;
+    js["mode"] = modeName(st.mode);
+    for (const auto& p : st.points)
+    {
+      Json::Value jp(Json::arrayValue);
+      for (double c : p)
+        jp.append(c);
+      js["points"].append(jp);
+    }
+    root["strokes"].append(js);
+  }
+  root["cut"] = s.cut;
+  root["capping"] = s.capping;
+  root["lattice"] = s.lattice;
+  root["latticeVertices"] = static_cast<Json::Int64>(s.latticeVertices);
+  root["metro"] = s.metro;
+  std::ofstream out(path);
+  if (!out)
+  {
+    error = "cannot write '" + path + "'";
+    return false;
+  }
+  Json::StreamWriterBuilder builder;
+  builder["indentation"] = " ";
+  out << Json::writeString(builder, root) << "\n";
+  return static_cast<bool>(out);
+}
+
+bool loadSession(const std::string& path, Session& s, std::string& error)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    error = "cannot open '" + path + "'";
+    return false;
+  }
+  Json::Value root;
+  Json::CharReaderBuilder builder;
+  std::string errs;
+  if (!Json::parseFromStream(builder, in, &root, &errs) || !root.isObject())
+  {
+    error = "'" + path + "' is not a session (JSON object): " + errs;
+    return false;
+  }
+  s = Session();
+  for (const auto& js : root["strokes"])
+  {
+    Stroke st;
+    st.mode = modeOf(js["mode"].asString());
+    for (const auto& jp : js["points"])
+    {
+      if (!jp.isArray() || jp.size() != 3)
+      {
+        error = "a stroke point in '" + path + "' is not [x, y, z]";
+        return false;
+      }
+      st.points.push_back({ jp[0].asDouble(), jp[1].asDouble(), jp[2].asDouble() });
+    }
+    s.strokes.push_back(st);
+  }
+  s.cut = root.get("cut", false).asBool();
+  s.capping = root.get("capping", true).asBool();
+  s.lattice = root.get("lattice", false).asBool();
+  s.latticeVertices = static_cast<long>(root.get("latticeVertices", 600).asInt64());
+  s.metro = root.get("metro", false).asBool();
+  return true;
+}
+
+class Planner
+{
+public:
+  vtkSmartPointer<vtkPolyData> bone;
+  Session session;
+  int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
+  bool drawing = false;
+  std::vector<std::array<double, 3>> current;
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkTextActor> help, status;
+  vtkNew<vtkScalarBarActor> scalarBar;
+  vtkNew<vtkActor> strokeActor;
+  vtkNew<vtkPolyData> strokePd;
+  std::vector<vtkSmartPointer<vtkActor>> sceneActors;
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+  vtkSmartPointer<vtkPolyData> surface; // after the strokes
+  std::string message;
+
+  void setup()
+  {
+    window->AddRenderer(renderer);
+    window->SetSize(1000, 750);
+    window->SetWindowName("latticekit planner");
+    renderer->SetBackground(1, 1, 1);
+    help->SetInput(kHelp);
+    help->GetTextProperty()->SetFontSize(13);
+    help->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+    help->SetDisplayPosition(8, 8);
+    renderer->AddViewProp(help);
+    status->GetTextProperty()->SetFontSize(15);
+    status->GetTextProperty()->SetColor(0.1, 0.1, 0.4);
+    status->SetDisplayPosition(8, 44);
+    renderer->AddViewProp(status);
+    scalarBar->SetTitle("Metro distance");
+    scalarBar->SetNumberOfLabels(4);
+    scalarBar->SetVisibility(false);
+    renderer->AddViewProp(scalarBar);
+    vtkNew<vtkPolyDataMapper> sm;
+    sm->SetInputData(strokePd);
+    strokeActor->SetMapper(sm);
+    strokeActor->GetProperty()->SetColor(0.9, 0.1, 0.1);
+    strokeActor->GetProperty()->SetLineWidth(3);
+    renderer->AddActor(strokeActor);
+  }
+
+  /// Re-runs the plan from the bone: strokes, cut, lattices, colours.
+  void rebuild()
+  {
+    for (auto& a : sceneActors)
+      renderer->RemoveActor(a);
+    sceneActors.clear();
+    pieces.clear();
+    scalarBar->SetVisibility(false);
+    message.clear();
+    surface = bone;
+    std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
+    int failed = 0;
+    for (const Stroke& st : session.strokes)
+    {
+      vtkNew<vtkPoints> pts;
+      for (const auto& p : st.points)
+        pts->InsertNextPoint(p.data());
+      vtkNew<vtkPolyData> stroke;
+      stroke->SetPoints(pts);
+      vtkNew<vtkPolyData> faces;
+      faces->ShallowCopy(surface);
+      vtkNew<vtkCellArray> none;
+      faces->SetLines(none);
+      vtkNew<vtkLKStrokeFeatureLineFilter> f;
+      f->SetInputData(faces);
+      f->SetStrokeData(stroke);
+      f->SetMode(st.mode);
+      const int before = lkapp::errorCount();
+      f->Update();
+      if (lkapp::errorCount() > before || f->GetOutput()->GetNumberOfPoints() == 0)
+      {
+        ++failed;
+        continue; // the stroke stays in the session; the message says why
+      }
+      auto next = vtkSmartPointer<vtkPolyData>::New();
+      next->ShallowCopy(f->GetOutput());
+      surface = next;
+      auto line = vtkSmartPointer<vtkPolyData>::New();
+      line->DeepCopy(f->GetFeatureLineOutput());
+      addLineActor(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);
+      if (line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5 &&
+        st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
+        closedLines.push_back(line);
+    }
+    if (failed > 0)
+      message = std::to_string(failed) + " stroke(s) missed the surface or failed (see the terminal)";
+    vtkNew<vtkPolyData> faces;
+    faces->ShallowCopy(surface);
+    vtkNew<vtkCellArray> none;
+    faces->SetLines(none);
+    if (session.cut && !closedLines.empty())
+    {
+      vtkNew<vtkPolyData> loops;
+      vtkNew<vtkPoints> lp;
+      vtkNew<vtkCellArray> lc;
+      vtkNew<vtkIdTypeArray> ids;
+      ids->SetName("MeshPointId");
+      for (const auto& l : closedLines)
+      {
+        vtkDataArray* mid = l->GetPointData()->GetArray("MeshPointId");
+        lc->InsertNextCell(l->GetNumberOfPoints());
+        for (vtkIdType i = 0; i < l->GetNumberOfPoints(); ++i)
+        {
+          lc->InsertCellPoint(lp->InsertNextPoint(l->GetPoint(i)));
+          ids->InsertNextValue(static_cast<vtkIdType>(mid->GetComponent(i, 0)));
+        }
+      }
+      loops->SetPoints(lp);
+      loops->SetLines(lc);
+      loops->GetPointData()->AddArray(ids);
+      vtkNew<vtkLKClosedLineCutFilter> cut;
+      cut->SetInputData(faces);
+      cut->SetLinesData(loops);
+      cut->SetCapping(session.capping);
+      const int before = lkapp::errorCount();
+      cut->Update();
+      if (lkapp::errorCount() == before)
+      {
+        for (int r = 0; r < cut->GetNumberOfPieces(); ++r)
+          pieces.push_back(region(cut->GetOutput(), r));
+      }
+      else
+        message = "the cut failed: " + lkapp::errors();
+    }
+    else if (session.cut)
+      message = "no closed line to cut along: draw a stroke whose ends meet";
+    if (pieces.empty())
+    {
+      auto whole = vtkSmartPointer<vtkPolyData>::New();
+      whole->ShallowCopy(faces);
+      pieces.push_back(whole);
+    }
+    const double colours[4][3] = { { 0.93, 0.85, 0.65 }, { 0.6, 0.75, 0.93 }, { 0.7, 0.9, 0.7 }, { 0.95, 0.7, 0.7 } };
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+    {
+      vtkSmartPointer<vtkPolyData> shown = pieces[p];
+      if (session.lattice)
+      {
+        vtkNew<vtkLKLatticeFitFilter> fit;
+        fit->SetInputData(pieces[p]);
+        fit->SetTargetNumberOfVertices(std::min<vtkIdType>(session.latticeVertices, pieces[p]->GetNumberOfPoints() / 2));
+        fit->QuadPairingOn();
+        fit->ComputeErrorOff();
+        vtkNew<vtkLKLatticeSurfaceFilter> smooth;
+        smooth->SetInputConnection(fit->GetOutputPort());
+        smooth->SetResolution(4);
+        smooth->Update();
+        if (smooth->GetOutput()->GetNumberOfPoints() > 0)
+        {
+          shown = smooth->GetOutput();
+          vtkNew<vtkExtractEdges> cage;
+          cage->SetInputConnection(fit->GetOutputPort());
+          addActor(cage->GetOutputPort(), nullptr, { 0.2, 0.2, 0.2 }, false);
+        }
+      }
+      if (session.metro && shown != pieces[p])
+      {
+        vtkNew<vtkLKMetroFilter> metro;
+        metro->SetInputData(shown);
+        metro->SetTargetData(pieces[p]);
+        metro->Update();
+        auto coloured = vtkSmartPointer<vtkPolyData>::New();
+        coloured->ShallowCopy(metro->GetOutput());
+        coloured->GetPointData()->SetActiveScalars("Distance");
+        auto actor = addActorData(coloured, { 1, 1, 1 }, true);
+        vtkNew<vtkLookupTable> lut;
+        lut->SetHueRange(0.667, 0.0);
+        lut->SetRange(0.0, metro->GetEffectiveColorMaximum());
+        lut->Build();
+        actor->GetMapper()->SetLookupTable(lut);
+        actor->GetMapper()->SetScalarRange(0.0, metro->GetEffectiveColorMaximum());
+        scalarBar->SetLookupTable(lut);
+        scalarBar->SetVisibility(true);
+      }
+      else
+        addActorData(shown, { colours[p % 4][0], colours[p % 4][1], colours[p % 4][2] }, false);
+    }
+    updateStatus();
+  }
+
+  vtkSmartPointer<vtkPolyData> region(vtkPolyData* cut, int r)
+  {
+    vtkNew<vtkThreshold> t;
+    t->SetInputData(cut);
+    t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "RegionId");
+    t->SetLowerThreshold(r - 0.5);
+    t->SetUpperThreshold(r + 0.5);
+    vtkNew<vtkGeometryFilter> g;
+    g->SetInputConnection(t->GetOutputPort());
+    g->Update();
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->ShallowCopy(g->GetOutput());
+    out->GetPointData()->Initialize();
+    out->GetCellData()->Initialize();
+    return out;
+  }
+
+  vtkSmartPointer<vtkActor> addActorData(vtkPolyData* pd, std::array<double, 3> colour, bool scalars)
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(pd);
+    return addActor(normals->GetOutputPort(), pd, colour, scalars);
+  }
+
+  vtkSmartPointer<vtkActor> addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars)
+  {
+    vtkNew<vtkPolyDataMapper> m;
+    m->SetInputConnection(port);
+    m->SetScalarVisibility(scalars);
+    auto a = vtkSmartPointer<vtkActor>::New();
+    a->SetMapper(m);
+    a->GetProperty()->SetColor(colour.data());
+    renderer->AddActor(a);
+    sceneActors.push_back(a);
+    return a;
+  }
+
+  void addLineActor(vtkPolyData* line, double shade)
+  {
+    vtkNew<vtkPolyDataMapper> m;
+    m->SetInputData(line);
+    m->ScalarVisibilityOff();
+    auto a = vtkSmartPointer<vtkActor>::New();
+    a->SetMapper(m);
+    a->GetProperty()->SetColor(0.1 + shade, 0.5, 0.1);
+    a->GetProperty()->SetLineWidth(3);
+    renderer->AddActor(a);
+    sceneActors.push_back(a);
+  }
+
+  void updateStatus()
+  {
+    std::ostringstream s;
+    s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
+      << " | pieces: " << pieces.size() << (session.lattice ? " | lattice" : "");
+    if (!message.empty())
+      s << " | " << message;
+    status->SetInput(s.str().c_str());
+  }
+
+  void showStroke()
+  {
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkCellArray> lines;
+    lines->InsertNextCell(static_cast<vtkIdType>(current.size()));
+    for (const auto& p : current)
+      lines->InsertCellPoint(pts->InsertNextPoint(p.data()));
+    strokePd->SetPoints(pts);
+    strokePd->SetLines(lines);
+    strokePd->Modified();
+  }
+
+  void report()
+  {
+    std::printf("strokes: %zu\npieces: %zu\n", session.strokes.size(), pieces.size());
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+      std::printf("piece %zu: %lld points, %lld faces\n", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
+        static_cast<long long>(pieces[p]->GetNumberOfPolys()));
+    if (!message.empty())
+      std::printf("message: %s\n", message.c_str());
+  }
+
+  bool exportPieces(const std::string& folder, std::string& error)
+  {
+    vtksys::SystemTools::MakeDirectory(folder);
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+    {
+      for (const char* ext : { ".stl", ".vtp", ".obj" })
+      {
+        const std::string path = folder + "/piece" + std::to_string(p) + ext;
+        if (!lkapp::writeMesh(pieces[p], path, error))
+          return false;
+      }
+    }
+    return true;
+  }
+
+  bool screenshot(const std::string& path)
+  {
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    vtkNew<vtkPNGWriter> w;
+    w->SetInputConnection(grab->GetOutputPort());
+    w->SetFileName(path.c_str());
+    w->Write();
+    return vtksys::SystemTools::FileExists(path);
+  }
+};
+
+class PlannerStyle : public vtkInteractorStyleTrackballCamera
+{
+public:
+  static PlannerStyle* New();
+  vtkTypeMacro(PlannerStyle, vtkInteractorStyleTrackballCamera);
+  Planner* planner = nullptr;
+  std::string sessionPath = "planner_session.json", exportFolder = "planner-pieces";
+  bool pressed = false;
+  vtkNew<vtkCellPicker> picker;
+
+  void pick()
+  {
+    int* pos = this->Interactor->GetEventPosition();
+    picker->SetTolerance(0.0005);
+    if (picker->Pick(pos[0], pos[1], 0, planner->renderer) && picker->GetCellId() >= 0)
+    {
+      double p[3];
+      picker->GetPickPosition(p);
+      planner->current.push_back({ p[0], p[1], p[2] });
+      planner->showStroke();
+      this->Interactor->Render();
+    }
+  }
+  void OnLeftButtonDown() override
+  {
+    if (!planner->drawing)
+      return vtkInteractorStyleTrackballCamera::OnLeftButtonDown();
+    pressed = true;
+    planner->current.clear();
+    pick();
+  }
+  void OnMouseMove() override
+  {
+    if (planner->drawing && pressed)
+      return pick();
+    vtkInteractorStyleTrackballCamera::OnMouseMove();
+  }
+  void OnLeftButtonUp() override
+  {
+    if (!planner->drawing || !pressed)
+      return vtkInteractorStyleTrackballCamera::OnLeftButtonUp();
+    pressed = false;
+    if (planner->current.size() >= 2)
+    {
+      planner->session.strokes.push_back({ planner->mode, planner->current });
+      planner->session.redo.clear();
+      planner->rebuild();
+    }
+    planner->current.clear();
+    planner->showStroke();
+    this->Interactor->Render();
+  }
+  void OnChar() override
+  {
+    const std::string key = this->Interactor->GetKeySym() ? this->Interactor->GetKeySym() : "";
+    Session& s = planner->session;
+    std::string error;
+    bool rebuild = true;
+    if (key == "d")
+    {
+      planner->drawing = !planner->drawing;
+      rebuild = false;
+    }
+    else if (key == "1" || key == "2" || key == "3" || key == "4")
+    {
+      planner->mode = key[0] - '1';
+      rebuild = false;
+    }
+    else if (key == "x")
+      s.cut = !s.cut;
+    else if (key == "l")
+      s.lattice = !s.lattice;
+    else if (key == "m")
+      s.metro = !s.metro;
+    else if (key == "z" && !s.strokes.empty())
+    {
+      s.redo.push_back(s.strokes.back());
+      s.strokes.pop_back();
+    }
+    else if (key == "y" && !s.redo.empty())
+    {
+      s.strokes.push_back(s.redo.back());
+      s.redo.pop_back();
+    }
+    else if (key == "w")
+    {
+      planner->message = saveSession(s, sessionPath, error) ? "saved " + sessionPath : error;
+      rebuild = false;
+    }
+    else if (key == "e")
+    {
+      planner->message = planner->exportPieces(exportFolder, error) ? "exported to " + exportFolder : error;
+      rebuild = false;
+    }
+    else if (key == "q" || key == "Escape")
+    {
+      this->Interactor->TerminateApp();
+      return;
+    }
+    else
+      return; // no VTK default keys: 'e' and 'w' mean other things here
+    if (rebuild)
+      planner->rebuild();
+    planner->updateStatus();
+    this->Interactor->Render();
+  }
+};
+vtkStandardNewMacro(PlannerStyle);
+
+void usage(std::ostream& os)
+{
+  os << "usage: latticekit-planner INPUT [options]\n"
+        "\n"
+        "The osteotomy planner: a VTK window on the bone surface of INPUT (a CT or label map:\n"
+        "DICOM folder or file, .nrrd, .mha, .nii; or a mesh: .vtp .vtk .stl .ply .obj).\n"
+        "Keys: "
+     << kHelp
+     << "\n"
+        "\n"
+        "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro)\n"
+        "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
+        "  --export FOLDER      write every piece as STL, VTP and OBJ and exit\n"
+        "  --session OUT        where 'w' saves the session (default planner_session.json)\n"
+        "  -h, --help           this help\n";
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::string input, replay, shot, exportFolder, sessionOut = "planner_session.json";
+  lkapp::Arguments args(argc, argv, usage);
+  std::string a;
+  while (args.next(a))
+  {
+    if (a == "--replay")
+      replay = args.value(a);
+    else if (a == "--screenshot")
+      shot = args.value(a);
+    else if (a == "--export")
+      exportFolder = args.value(a);
+    else if (a == "--session")
+      sessionOut = args.value(a);
+    else if (lkapp::Arguments::isOption(a))
+      args.unknown(a);
+    else if (input.empty())
+      input = a;
+    else
+    {
+      std::cerr << "error: more than one input given\n";
+      return 2;
+    }
+  }
+  if (input.empty())
+  {
+    std::cerr << "error: an INPUT is required\n";
+    usage(std::cerr);
+    return 2;
+  }
+  lkapp::installMessageHandler(true);
+  Planner planner;
+  std::string error;
+  const std::string ext = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(input));
+  if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
+  {
+    planner.bone = lkapp::readMesh(input, error);
+    if (!planner.bone)
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+  }
+  else
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    reader->SetFileName(input.c_str());
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputConnection(reader->GetOutputPort());
+    bone->Update();
+    if (lkapp::errorCount() > 0 || bone->GetOutput()->GetNumberOfPolys() == 0)
+    {
+      std::cerr << "error: " << (lkapp::errorCount() ? lkapp::errors() : "no bone surface in " + input) << "\n";
+      return 1;
+    }
+    planner.bone = vtkSmartPointer<vtkPolyData>::New();
+    planner.bone->ShallowCopy(bone->GetOutput());
+  }
+  if (!replay.empty() && !loadSession(replay, planner.session, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+  planner.setup();
+  planner.rebuild();
+  planner.renderer->ResetCamera();
+  const bool batch = !shot.empty() || !exportFolder.empty();
+  if (batch)
+  {
+    planner.report();
+    if (!exportFolder.empty() && !planner.exportPieces(exportFolder, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+    if (!shot.empty())
+    {
+      planner.window->SetOffScreenRendering(1);
+      if (!planner.screenshot(shot))
+      {
+        std::cerr << "error: cannot write '" << shot << "'\n";
+        return 1;
+      }
+      std::printf("screenshot: %s\n", shot.c_str());
+    }
+    return planner.message.empty() ? 0 : 1;
+  }
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<PlannerStyle> style;
+  style->planner = &planner;
+  style->sessionPath = sessionOut;
+  interactor->SetInteractorStyle(style);
+  interactor->SetRenderWindow(planner.window);
+  planner.window->Render();
+  interactor->Start();
+  return 0;
+}
