@@ -18,6 +18,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkExtractEdges.h>
@@ -48,6 +49,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -193,6 +195,7 @@ public:
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   vtkSmartPointer<vtkPolyData> surface; // after the strokes
   std::string message;
+  bool cutFailed = false;
 
   void setup()
   {
@@ -230,6 +233,7 @@ public:
     pieces.clear();
     scalarBar->SetVisibility(false);
     message.clear();
+    cutFailed = false;
     surface = bone;
     std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
     int failed = 0;
@@ -303,7 +307,10 @@ public:
           pieces.push_back(region(cut->GetOutput(), r));
       }
       else
+      {
         message = "the cut failed: " + lkapp::errors();
+        cutFailed = true;
+      }
     }
     else if (session.cut)
       message = "no closed line to cut along: draw a stroke whose ends meet";
@@ -327,7 +334,10 @@ public:
         vtkNew<vtkLKLatticeSurfaceFilter> smooth;
         smooth->SetInputConnection(fit->GetOutputPort());
         smooth->SetResolution(4);
+        const int before = lkapp::errorCount();
         smooth->Update();
+        if (lkapp::errorCount() > before)
+          message = "no lattice for piece " + std::to_string(p) + " (see the terminal)";
         if (smooth->GetOutput()->GetNumberOfPoints() > 0)
         {
           shown = smooth->GetOutput();
@@ -594,13 +604,16 @@ void usage(std::ostream& os)
         "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
         "  --export FOLDER      write every piece as STL, VTP and OBJ and exit\n"
         "  --session OUT        where 'w' saves the session (default planner_session.json)\n"
+        "  --events LOG         play an event stream (vtkInteractorEventRecorder's format: mouse\n"
+        "                       strokes, keys) through the window, then report (and\n"
+        "                       --screenshot, --export) and exit\n"
         "  -h, --help           this help\n";
 }
 } // namespace
 
 int main(int argc, char* argv[])
 {
-  std::string input, replay, shot, exportFolder, sessionOut = "planner_session.json";
+  std::string input, replay, shot, exportFolder, events, sessionOut = "planner_session.json";
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -611,6 +624,8 @@ int main(int argc, char* argv[])
       shot = args.value(a);
     else if (a == "--export")
       exportFolder = args.value(a);
+    else if (a == "--events")
+      events = args.value(a);
     else if (a == "--session")
       sessionOut = args.value(a);
     else if (lkapp::Arguments::isOption(a))
@@ -665,7 +680,55 @@ int main(int argc, char* argv[])
   planner.setup();
   planner.rebuild();
   planner.renderer->ResetCamera();
-  const bool batch = !shot.empty() || !exportFolder.empty();
+  const bool batch = !shot.empty() || !exportFolder.empty() || !events.empty();
+  if (!events.empty())
+  {
+    // Headless interaction: the recorded events go through the real style.
+    if (!vtksys::SystemTools::FileExists(events))
+    {
+      std::cerr << "error: cannot open '" << events << "'\n";
+      return 1;
+    }
+    planner.window->SetOffScreenRendering(1);
+    vtkNew<vtkRenderWindowInteractor> interactor;
+    vtkNew<PlannerStyle> style;
+    style->planner = &planner;
+    style->sessionPath = sessionOut;
+    interactor->SetInteractorStyle(style);
+    interactor->SetRenderWindow(planner.window);
+    interactor->Initialize();
+    planner.window->Render();
+    // The event stream in vtkInteractorEventRecorder's documented format
+    // (EventName X Y ctrl shift keycode repeatCount keySym, '#' comments),
+    // invoked on the interactor one by one.
+    std::ifstream in(events);
+    std::string line;
+    int played = 0;
+    while (std::getline(in, line))
+    {
+      if (line.empty() || line[0] == '#')
+        continue;
+      std::istringstream fields(line);
+      std::string name, keyCode, keySym;
+      int x = 0, y = 0, ctrl = 0, shift = 0, repeat = 0;
+      if (!(fields >> name >> x >> y >> ctrl >> shift >> keyCode >> repeat >> keySym))
+      {
+        std::cerr << "error: cannot read the event line '" << line << "'\n";
+        return 1;
+      }
+      const unsigned long id = vtkCommand::GetEventIdFromString(name.c_str());
+      if (id == vtkCommand::NoEvent)
+      {
+        std::cerr << "error: unknown event '" << name << "'\n";
+        return 1;
+      }
+      const char code = keyCode.size() == 1 ? keyCode[0] : static_cast<char>(std::atoi(keyCode.c_str()));
+      interactor->SetEventInformation(x, y, ctrl, shift, code, repeat, keySym == "0" ? nullptr : keySym.c_str());
+      interactor->InvokeEvent(id, nullptr);
+      ++played;
+    }
+    std::printf("events: %d\n", played);
+  }
   if (batch)
   {
     planner.report();
@@ -684,7 +747,7 @@ int main(int argc, char* argv[])
       }
       std::printf("screenshot: %s\n", shot.c_str());
     }
-    return planner.message.empty() ? 0 : 1;
+    return planner.cutFailed ? 1 : 0;
   }
   vtkNew<vtkRenderWindowInteractor> interactor;
   vtkNew<PlannerStyle> style;
