@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
 #include <set>
@@ -218,6 +219,20 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
         result.pieces[p].points.push_back(q);
         result.vertexOrigin[p].push_back(-1);
       }
+      // A face of the piece spanned by loop vertices only may coincide with a
+      // cap triangle: the two would enclose nothing (a doubled triangle,
+      // non-manifold). Both are dropped; the piece stays closed there.
+      std::map<std::array<std::int64_t, 3>, std::size_t> onLoop;
+      for (std::size_t f = 0; f < result.pieces[p].faces.size(); ++f)
+      {
+        const auto& face = result.pieces[p].faces[f];
+        if (face.size() != 3)
+          continue;
+        std::array<std::int64_t, 3> key{ face[0], face[1], face[2] };
+        std::sort(key.begin(), key.end());
+        onLoop[key] = f;
+      }
+      std::vector<char> dropFace(result.pieces[p].faces.size(), 0);
       for (const auto& t : c.triangles)
       {
         std::vector<std::int64_t> face;
@@ -225,9 +240,48 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
           face.push_back(i < 0 ? local[p].at(loop[static_cast<std::size_t>(-i - 1)]) : capIds[static_cast<std::size_t>(i)]);
         if (reverse)
           std::reverse(face.begin(), face.end());
+        std::array<std::int64_t, 3> key{ face[0], face[1], face[2] };
+        std::sort(key.begin(), key.end());
+        const auto twin = onLoop.find(key);
+        if (twin != onLoop.end() && twin->second < dropFace.size())
+        {
+          dropFace[twin->second] = 1;
+          continue;
+        }
         result.pieces[p].faces.push_back(face);
         result.faceOrigin[p].push_back(-1);
       }
+      // Compact: dropped faces out, then points no face uses.
+      PolygonMesh& piece = result.pieces[p];
+      std::vector<std::vector<std::int64_t>> faces;
+      std::vector<std::int64_t> origin;
+      for (std::size_t f = 0; f < piece.faces.size(); ++f)
+      {
+        if (f < dropFace.size() && dropFace[f])
+          continue;
+        faces.push_back(piece.faces[f]);
+        origin.push_back(result.faceOrigin[p][f]);
+      }
+      std::vector<std::int64_t> newId(piece.points.size(), -1);
+      std::vector<Vec3> points;
+      std::vector<std::int64_t> vorigin;
+      for (auto& face : faces)
+        for (auto& v : face)
+        {
+          if (newId[static_cast<std::size_t>(v)] < 0)
+          {
+            newId[static_cast<std::size_t>(v)] = static_cast<std::int64_t>(points.size());
+            points.push_back(piece.points[static_cast<std::size_t>(v)]);
+            vorigin.push_back(result.vertexOrigin[p][static_cast<std::size_t>(v)]);
+          }
+          v = newId[static_cast<std::size_t>(v)];
+        }
+      for (auto& [v, id] : local[p])
+        id = newId[static_cast<std::size_t>(id)];
+      piece.faces = std::move(faces);
+      piece.points = std::move(points);
+      result.faceOrigin[p] = std::move(origin);
+      result.vertexOrigin[p] = std::move(vorigin);
     }
   }
   return result;
