@@ -103,13 +103,8 @@ int main(int argc, char* argv[])
       quiet = true;
     else if (lkapp::Arguments::isOption(a))
       args.unknown(a);
-    else if (input.empty())
-      input = a;
     else
-    {
-      std::cerr << "error: more than one mesh given\n";
-      return 2;
-    }
+      args.positional(a, input, "mesh");
   }
   if (input.empty() || output.empty())
   {
@@ -119,14 +114,8 @@ int main(int argc, char* argv[])
   }
   lkapp::installMessageHandler(quiet);
   std::string error;
-  for (const std::string& path : { output, surfaceOut, mapOut })
-  {
-    if (!path.empty() && !lkapp::checkWritable(path, error))
-    {
-      std::cerr << "error: " << error << "\n";
-      return 1;
-    }
-  }
+  if (!lkapp::checkAllWritable({ output, surfaceOut, mapOut }))
+    return 1;
   vtkSmartPointer<vtkPolyData> mesh = lkapp::readMesh(input, error);
   if (!mesh)
   {

@@ -63,13 +63,8 @@ int main(int argc, char* argv[])
       quiet = true;
     else if (lkapp::Arguments::isOption(a))
       args.unknown(a);
-    else if (input.empty())
-      input = a;
     else
-    {
-      std::cerr << "error: more than one lattice given\n";
-      return 2;
-    }
+      args.positional(a, input, "lattice");
   }
   if (input.empty() || output.empty())
   {
@@ -79,14 +74,8 @@ int main(int argc, char* argv[])
   }
   lkapp::installMessageHandler(quiet);
   std::string error;
-  for (const std::string& path : { output, netOut, latticeOut })
-  {
-    if (!path.empty() && !lkapp::checkWritable(path, error))
-    {
-      std::cerr << "error: " << error << "\n";
-      return 1;
-    }
-  }
+  if (!lkapp::checkAllWritable({ output, netOut, latticeOut }))
+    return 1;
   vtkSmartPointer<vtkPolyData> lattice = lkapp::readMesh(input, error);
   if (!lattice)
   {

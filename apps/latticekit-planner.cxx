@@ -630,13 +630,8 @@ int main(int argc, char* argv[])
       sessionOut = args.value(a);
     else if (lkapp::Arguments::isOption(a))
       args.unknown(a);
-    else if (input.empty())
-      input = a;
     else
-    {
-      std::cerr << "error: more than one input given\n";
-      return 2;
-    }
+      args.positional(a, input, "input");
   }
   if (input.empty())
   {

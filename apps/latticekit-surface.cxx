@@ -88,13 +88,8 @@ int main(int argc, char* argv[])
       quiet = true;
     else if (lkapp::Arguments::isOption(a))
       args.unknown(a);
-    else if (input.empty())
-      input = a;
     else
-    {
-      std::cerr << "error: more than one input given ('" << input << "', '" << a << "')\n";
-      return 2;
-    }
+      args.positional(a, input, "input");
   }
   if (input.empty() || output.empty())
   {

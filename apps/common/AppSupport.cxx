@@ -482,4 +482,28 @@ bool checkWritable(const std::string& path, std::string& error)
   return true;
 }
 
+bool checkAllWritable(std::initializer_list<std::string> paths)
+{
+  std::string error;
+  for (const std::string& path : paths)
+  {
+    if (!path.empty() && !checkWritable(path, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+void Arguments::positional(const std::string& arg, std::string& slot, const char* what)
+{
+  if (!slot.empty())
+  {
+    std::cerr << "error: more than one " << what << " given ('" << slot << "', '" << arg << "')\n";
+    std::exit(2);
+  }
+  slot = arg;
+}
+
 } // namespace lkapp

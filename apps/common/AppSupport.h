@@ -7,6 +7,7 @@
 #include <vtkSmartPointer.h>
 
 #include <iosfwd>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,9 @@ public:
   double number(const std::string& arg, double lo, double hi, const char* what);
   /// Three numbers X,Y,Z.
   void triple(const std::string& arg, double v[3]);
+  /// Stores a positional argument in `slot`; exits 2 with "more than one
+  /// WHAT given" when the slot is already taken.
+  void positional(const std::string& arg, std::string& slot, const char* what);
   /// Exits 2 for an option the tool does not know.
   [[noreturn]] void unknown(const std::string& arg);
   /// True for an argument that looks like an option.
@@ -89,5 +93,9 @@ private:
 /// unknown extension: checked before a long run, so that the run does not
 /// end in a lost result.
 bool checkWritable(const std::string& path, std::string& error);
+
+/// checkWritable for every non-empty path; prints "error: ..." for the first
+/// that fails and returns false.
+bool checkAllWritable(std::initializer_list<std::string> paths);
 
 } // namespace lkapp
