@@ -18,58 +18,14 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 using CgalTriangle = Kernel::Triangle_3;
 
-/// The closest point of a triangle to p by Voronoi-region tests (Ericson,
-/// "Real-Time Collision Detection", 5.1.5): a handful of dot products, where
-/// the kernel's generic projection builds planes and segments (it took about
-/// half of every query).
+/// lk::closestPointOnTriangle (Ericson's Voronoi regions) on CGAL types: a
+/// handful of dot products, where the kernel's generic projection builds
+/// planes and segments (it took about half of every query).
 Point closestPointOnTriangle(const CgalTriangle& t, const Point& p)
 {
-  const double ax = t[0].x(), ay = t[0].y(), az = t[0].z();
-  const double abx = t[1].x() - ax, aby = t[1].y() - ay, abz = t[1].z() - az;
-  const double acx = t[2].x() - ax, acy = t[2].y() - ay, acz = t[2].z() - az;
-  const double apx = p.x() - ax, apy = p.y() - ay, apz = p.z() - az;
-  const double d1 = abx * apx + aby * apy + abz * apz;
-  const double d2 = acx * apx + acy * apy + acz * apz;
-  if (d1 <= 0.0 && d2 <= 0.0)
-  {
-    return t[0];
-  }
-  const double bpx = p.x() - t[1].x(), bpy = p.y() - t[1].y(), bpz = p.z() - t[1].z();
-  const double d3 = abx * bpx + aby * bpy + abz * bpz;
-  const double d4 = acx * bpx + acy * bpy + acz * bpz;
-  if (d3 >= 0.0 && d4 <= d3)
-  {
-    return t[1];
-  }
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-  {
-    const double v = d1 / (d1 - d3);
-    return Point(ax + v * abx, ay + v * aby, az + v * abz);
-  }
-  const double cpx = p.x() - t[2].x(), cpy = p.y() - t[2].y(), cpz = p.z() - t[2].z();
-  const double d5 = abx * cpx + aby * cpy + abz * cpz;
-  const double d6 = acx * cpx + acy * cpy + acz * cpz;
-  if (d6 >= 0.0 && d5 <= d6)
-  {
-    return t[2];
-  }
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-  {
-    const double w = d2 / (d2 - d6);
-    return Point(ax + w * acx, ay + w * acy, az + w * acz);
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-  {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return Point(t[1].x() + w * (t[2].x() - t[1].x()), t[1].y() + w * (t[2].y() - t[1].y()),
-      t[1].z() + w * (t[2].z() - t[1].z()));
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  const double v = vb * denom, w = vc * denom;
-  return Point(ax + abx * v + acx * w, ay + aby * v + acy * w, az + abz * v + acz * w);
+  auto v = [](const Point& q) { return Vec3(q.x(), q.y(), q.z()); };
+  const Vec3 c = lk::closestPointOnTriangle(v(p), v(t[0]), v(t[1]), v(t[2]));
+  return Point(c.x(), c.y(), c.z());
 }
 
 /// The kernel CGAL's AABB traits see: Simple_cartesian<double> with the

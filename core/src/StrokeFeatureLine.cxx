@@ -21,34 +21,6 @@ namespace lk
 {
 namespace
 {
-/// Closest point of triangle (a, b, c) to p (Ericson's regions).
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0)
-    return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3)
-    return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0)
-    return a + ab * (d1 / (d1 - d3));
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6)
-    return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0)
-    return a + ac * (d2 / (d2 - d6));
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-  const double den = 1.0 / (va + vb + vc);
-  return a + ab * (vb * den) + ac * (vc * den);
-}
-
 Vec3 closestOnPolyline(const std::vector<Vec3>& line, const Vec3& p)
 {
   Vec3 best = line.front();
@@ -359,7 +331,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
         const std::size_t f = q.front();
         q.pop();
         const Triangle& t = mesh.triangles[f];
-        const Vec3 c = closestOnTriangle(projected[s], mesh.points[static_cast<std::size_t>(t[0])],
+        const Vec3 c = closestPointOnTriangle(projected[s], mesh.points[static_cast<std::size_t>(t[0])],
           mesh.points[static_cast<std::size_t>(t[1])], mesh.points[static_cast<std::size_t>(t[2])]);
         if ((c - projected[s]).norm() > radius)
           continue;
