@@ -1,11 +1,13 @@
 #pragma once
 /// \file MandibleLoop.h
-/// A closed feature line around a bone surface, shared by the fit and cut
-/// tests.
+/// The TCIA mandible's bone surface and a closed feature line around a bone
+/// surface, shared by the fit and cut tests.
 
 #include "TestSupport.h"
 #include "latticekit/EdgePath.h"
 #include "latticekit/LatticeSimplification.h"
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
 
 #include <vtkIdTypeArray.h>
 #include <vtkPointData.h>
@@ -17,6 +19,19 @@
 
 namespace lktest
 {
+
+/// The bone surface of the first TCIA mandible (a fresh copy each call).
+inline vtkSmartPointer<vtkPolyData> tciaMandible()
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(bone->GetOutput());
+  return out;
+}
 
 /// A closed feature line around the mandible: the plane x = centre, sampled
 /// on the surface and snapped to an edge path. Points carry MeshPointId.

@@ -15,18 +15,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> mandibleSurface()
-{
-  vtkNew<vtkLKMedicalImageReader> reader;
-  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
-  vtkNew<vtkLKBoneSurfaceFilter> bone;
-  bone->SetInputConnection(reader->GetOutputPort());
-  bone->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->DeepCopy(bone->GetOutput());
-  return out;
-}
-
 /// The triangles of one region as a core mesh.
 lk::TriangleMesh piece(vtkPolyData* cut, int region)
 {
@@ -57,7 +45,7 @@ lk::TriangleMesh piece(vtkPolyData* cut, int region)
 
 TEST(ClosedLineCut, MandibleCutIntoTwoPiecesThatCapWatertight)
 {
-  auto bone = mandibleSurface();
+  auto bone = lktest::tciaMandible();
   std::vector<lk::EdgeKey> edges;
   auto loop = lktest::mandibleLoop(bone, edges);
   const lk::TriangleMesh whole = lktest::toCore(bone);
@@ -96,7 +84,7 @@ TEST(ClosedLineCut, MandibleCutIntoTwoPiecesThatCapWatertight)
 
 TEST(ClosedLineCut, LatticeThenCutAlongItsFeatureEdges)
 {
-  auto bone = mandibleSurface();
+  auto bone = lktest::tciaMandible();
   std::vector<lk::EdgeKey> edges;
   auto loop = lktest::mandibleLoop(bone, edges);
   vtkNew<vtkLKLatticeFitFilter> fit;
@@ -118,7 +106,7 @@ TEST(ClosedLineCut, LatticeThenCutAlongItsFeatureEdges)
 
 TEST(ClosedLineCut, OpenOrCrossingLinesAreClearErrors)
 {
-  auto bone = mandibleSurface();
+  auto bone = lktest::tciaMandible();
   std::vector<lk::EdgeKey> edges;
   auto loop = lktest::mandibleLoop(bone, edges);
   // Open: drop the closing point.
@@ -152,7 +140,7 @@ TEST(ClosedLineCut, OpenOrCrossingLinesAreClearErrors)
 
 TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
 {
-  auto bone = mandibleSurface();
+  auto bone = lktest::tciaMandible();
   std::vector<lk::EdgeKey> edges;
   auto loop = lktest::mandibleLoop(bone, edges);
   // A pen stroke near that loop: every third point, pushed 0.3 mm off the

@@ -21,22 +21,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> mandible()
-{
-  static vtkSmartPointer<vtkPolyData> cached;
-  if (!cached)
-  {
-    vtkNew<vtkLKMedicalImageReader> reader;
-    reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
-    vtkNew<vtkLKBoneSurfaceFilter> bone;
-    bone->SetInputConnection(reader->GetOutputPort());
-    bone->Update();
-    cached = vtkSmartPointer<vtkPolyData>::New();
-    cached->DeepCopy(bone->GetOutput());
-  }
-  return cached;
-}
-
 double field(vtkPolyData* pd, const char* name)
 {
   vtkDataArray* a = pd->GetFieldData()->GetArray(name);
@@ -61,7 +45,7 @@ std::set<lk::EdgeKey> latticeEdges(vtkPolyData* lattice)
 
 TEST(LatticeFitFilter, MandibleLatticeWithErrorAndVertexMap)
 {
-  vtkPolyData* bone = mandible();
+  auto bone = lktest::tciaMandible();
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(bone);
   fit->SetTargetNumberOfVertices(2000);
@@ -103,7 +87,7 @@ TEST(LatticeFitFilter, MandibleLatticeWithErrorAndVertexMap)
 
 TEST(LatticeFitFilter, LockedFeaturesAreLatticeEdges)
 {
-  vtkPolyData* bone = mandible();
+  auto bone = lktest::tciaMandible();
   std::vector<lk::EdgeKey> edges;
   auto lines = lktest::mandibleLoop(bone, edges);
   ASSERT_GT(edges.size(), 30u);
@@ -144,7 +128,7 @@ TEST(LatticeFitFilter, LockedFeaturesAreLatticeEdges)
 
 TEST(LatticeFitFilter, FeatureWeightsHalveTheErrorNearTheFeature)
 {
-  vtkPolyData* bone = mandible();
+  auto bone = lktest::tciaMandible();
   std::vector<lk::EdgeKey> edges;
   auto lines = lktest::mandibleLoop(bone, edges);
   std::set<vtkIdType> featureVertices;
@@ -174,7 +158,7 @@ TEST(LatticeFitFilter, FeatureWeightsHalveTheErrorNearTheFeature)
 
 TEST(LatticeFitFilter, RefinementWinsBackWhatQuadsLose)
 {
-  vtkPolyData* bone = mandible();
+  auto bone = lktest::tciaMandible();
   auto run = [&](bool quads, bool refine) {
     vtkNew<vtkLKLatticeFitFilter> fit;
     fit->SetInputData(bone);
@@ -195,7 +179,7 @@ TEST(LatticeFitFilter, RefinementWinsBackWhatQuadsLose)
 
 TEST(LatticeFitFilter, BadInputIsAClearError)
 {
-  vtkPolyData* bone = mandible();
+  auto bone = lktest::tciaMandible();
   auto expectError = [&](vtkLKLatticeFitFilter* fit, const std::string& text) {
     lktest::ErrorRecorder errors(fit);
     fit->Update();
@@ -290,7 +274,7 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
 TEST(LatticeFitFilter, OpenMeshIsFittedWithItsBorder)
 {
   // Documented behaviour: open meshes are fitted; the lattice keeps a border.
-  vtkPolyData* bone = mandible();
+  auto bone = lktest::tciaMandible();
   vtkNew<vtkPolyData> open;
   open->DeepCopy(bone);
   // Remove one triangle: a hole.
@@ -319,7 +303,7 @@ TEST(LatticeFitFilter, OpenMeshIsFittedWithItsBorder)
 
 TEST(QuadPairingFilter, PairsAndKeepsLineCells)
 {
-  vtkPolyData* bone = mandible();
+  auto bone = lktest::tciaMandible();
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(bone);
   fit->SetTargetNumberOfVertices(1000);

@@ -10,15 +10,6 @@
 
 namespace
 {
-lk::PolygonMesh asLattice(const lk::TriangleMesh& m)
-{
-  lk::PolygonMesh p;
-  p.points = m.points;
-  for (const auto& t : m.triangles)
-    p.faces.push_back({ t[0], t[1], t[2] });
-  return p;
-}
-
 /// Mean and max of | |x| - r | over a grid of points on every patch.
 std::pair<double, double> sphereError(const lk::LatticeSurface& s, double r)
 {
@@ -98,8 +89,8 @@ TEST(LatticeSimplification, RoundedSurfaceQuadricsFitTheLatticeSurfaceBetter)
   const auto rounded = lk::simplifyLattice(sphere, {}, o);
   o.roundedSurfaceQuadrics = false;
   const auto flat = lk::simplifyLattice(sphere, {}, o);
-  const auto eRounded = sphereError(lk::buildLatticeSurface(asLattice(rounded.mesh)), radius);
-  const auto eFlat = sphereError(lk::buildLatticeSurface(asLattice(flat.mesh)), radius);
+  const auto eRounded = sphereError(lk::buildLatticeSurface(lktest::asPolygonMesh(rounded.mesh)), radius);
+  const auto eFlat = sphereError(lk::buildLatticeSurface(lktest::asPolygonMesh(flat.mesh)), radius);
   std::printf("sphere r=10 at 200 vertices: lattice surface mean/max |r - 10|: rounded %.5f/%.5f, flat %.5f/%.5f\n",
     eRounded.first, eRounded.second, eFlat.first, eFlat.second);
   // The flat placement keeps vertices on the sphere, so the rounded surface
@@ -241,7 +232,7 @@ TEST(LatticeRefinement, MovesTheSurfaceOntoTheSamples)
   lk::SimplificationOptions o;
   o.targetVertices = 200;
   o.roundedSurfaceQuadrics = false; // vertices on the sphere: the surface sinks inside
-  lk::PolygonMesh lattice = asLattice(lk::simplifyLattice(sphere, {}, o).mesh);
+  lk::PolygonMesh lattice = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
   const auto before = sphereError(lk::buildLatticeSurface(lattice), radius);
   lk::RefinementOptions ro;
   ro.fixed.assign(lattice.points.size(), 0);
@@ -264,7 +255,7 @@ TEST(LatticeRefinement, WinsBackTheAccuracyQuadPairingLoses)
   lk::SimplificationOptions o;
   o.targetVertices = 300;
   const auto simplified = lk::simplifyLattice(sphere, {}, o);
-  lk::PolygonMesh tri = asLattice(simplified.mesh);
+  lk::PolygonMesh tri = lktest::asPolygonMesh(simplified.mesh);
   lk::QuadPairingOptions qo;
   qo.maxDihedralDegrees = 40.0;
   auto paired = lk::pairTrianglesIntoQuads(simplified.mesh, {}, qo, &simplified.edgeCost);
@@ -283,7 +274,7 @@ TEST(LatticeRefinement, WinsBackTheAccuracyQuadPairingLoses)
 
 TEST(LatticeRefinement, BadInputIsRefused)
 {
-  lk::PolygonMesh lattice = asLattice(lktest::icosphere(1, 1.0));
+  lk::PolygonMesh lattice = lktest::asPolygonMesh(lktest::icosphere(1, 1.0));
   lk::RefinementOptions ro;
   EXPECT_THROW(lk::refineLatticeFit(lattice, {}, ro), std::invalid_argument);
   ro.fixed.assign(3, 0);

@@ -9,15 +9,6 @@
 
 namespace
 {
-lk::PolygonMesh asPolygons(const lk::TriangleMesh& m)
-{
-  lk::PolygonMesh p;
-  p.points = m.points;
-  for (const auto& t : m.triangles)
-    p.faces.push_back({ t[0], t[1], t[2] });
-  return p;
-}
-
 lk::TriangleMesh asTriangles(const lk::PolygonMesh& p)
 {
   lk::TriangleMesh m;
@@ -44,7 +35,7 @@ TEST(MeshCut, LoopSplitsTheSphereIntoTwoPiecesWithCoincidingBorders)
 {
   const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
   const auto loop = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
-  const auto cut = lk::cutAlongLoops(asPolygons(sphere), { loop }, false);
+  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { loop }, false);
   ASSERT_EQ(cut.pieces.size(), 2u);
   double area = 0.0;
   std::size_t border = 0;
@@ -76,7 +67,7 @@ TEST(MeshCut, CappedPiecesAreClosedAndTheirVolumesSumToTheWhole)
 {
   const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
   const auto loop = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
-  const auto cut = lk::cutAlongLoops(asPolygons(sphere), { loop }, true);
+  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { loop }, true);
   ASSERT_EQ(cut.pieces.size(), 2u);
   double volume = 0.0;
   for (const auto& p : cut.pieces)
@@ -97,7 +88,7 @@ TEST(MeshCut, TwoLoopsCutOutASegment)
   const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
   const auto a = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
   const auto b = circleLoop(sphere, -0.4, std::sqrt(1 - 0.16));
-  const auto cut = lk::cutAlongLoops(asPolygons(sphere), { a, b }, true);
+  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { a, b }, true);
   EXPECT_EQ(cut.pieces.size(), 3u);
   for (const auto& p : cut.pieces)
     EXPECT_EQ(lk::countBoundaryEdges(asTriangles(p)), 0u);
@@ -109,7 +100,7 @@ TEST(MeshCut, BadLoopsAreRefused)
   auto message = [&](const std::vector<std::vector<std::int64_t>>& loops) -> std::string {
     try
     {
-      lk::cutAlongLoops(asPolygons(sphere), loops, false);
+      lk::cutAlongLoops(lktest::asPolygonMesh(sphere), loops, false);
     }
     catch (const std::invalid_argument& e)
     {

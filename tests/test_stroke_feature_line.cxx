@@ -127,11 +127,7 @@ TEST(StrokeFeatureLine, ClosedStrokeCutsTheSphere)
     EXPECT_TRUE(seen.insert(r.line[i]).second);
   }
   EXPECT_GT(r.line.size(), 30u);
-  lk::PolygonMesh pm;
-  pm.points = sphere.points;
-  for (const auto& t : sphere.triangles)
-    pm.faces.push_back({ t[0], t[1], t[2] });
-  EXPECT_EQ(lk::cutAlongLoops(pm, { r.line }, false).pieces.size(), 2u);
+  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { r.line }, false).pieces.size(), 2u);
 }
 
 TEST(StrokeFeatureLine, BadStrokesAreRefused)
@@ -193,9 +189,5 @@ TEST(StrokeFeatureLine, ClosedSplitStrokeCutsTheSphere)
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
   EXPECT_EQ(lk::countBoundaryEdges(r.mesh), 0u);
   EXPECT_NEAR(lk::signedVolume(r.mesh), lk::signedVolume(sphere), 1e-12);
-  lk::PolygonMesh pm;
-  pm.points = r.mesh.points;
-  for (const auto& t : r.mesh.triangles)
-    pm.faces.push_back({ t[0], t[1], t[2] });
-  EXPECT_EQ(lk::cutAlongLoops(pm, { r.line }, false).pieces.size(), 2u);
+  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(r.mesh), { r.line }, false).pieces.size(), 2u);
 }
