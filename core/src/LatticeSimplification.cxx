@@ -1,6 +1,7 @@
 #include "latticekit/LatticeSimplification.h"
 
 #include "latticekit/ManifoldRepair.h"
+#include "SurfaceMeshConversion.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,9 +21,8 @@ namespace lk
 {
 namespace
 {
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using Point = cgal::Point;
+using Mesh = cgal::SurfaceMesh;
 using VD = Mesh::Vertex_index;
 using HD = Mesh::Halfedge_index;
 using ED = Mesh::Edge_index;
@@ -341,14 +341,8 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
   checkOptions(input, options);
 
   Mesh mesh;
-  for (const Vec3& p : input.points)
-    mesh.add_vertex(Point(p.x(), p.y(), p.z()));
-  for (const Triangle& t : input.triangles)
-  {
-    if (mesh.add_face(VD(static_cast<Mesh::size_type>(t[0])), VD(static_cast<Mesh::size_type>(t[1])),
-          VD(static_cast<Mesh::size_type>(t[2]))) == Mesh::null_face())
-      throw std::invalid_argument("the mesh is not a manifold, consistently oriented triangle mesh");
-  }
+  if (!cgal::toSurfaceMesh(input, mesh))
+    throw std::invalid_argument("the mesh is not a manifold, consistently oriented triangle mesh");
 
   State state{ mesh, options, mesh.add_property_map<VD, Quadric>("v:q").first,
     mesh.add_property_map<ED, Quadric>("e:q").first, mesh.add_property_map<ED, bool>("e:feature", false).first,

@@ -1,5 +1,6 @@
 #include "latticekit/ManifoldRepair.h"
 #include "latticekit/PolygonMesh.h"
+#include "SurfaceMeshConversion.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -46,37 +47,6 @@ void toSoup(const TriangleMesh& mesh, std::vector<Point>& points, std::vector<Po
     polygons.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]),
       static_cast<std::size_t>(t[2]) });
   }
-}
-
-TriangleMesh fromSurfaceMesh(Mesh& sm)
-{
-  sm.collect_garbage();
-  TriangleMesh out;
-  out.points.reserve(sm.number_of_vertices());
-  for (auto v : sm.vertices())
-  {
-    const Point& p = sm.point(v);
-    out.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  out.triangles.reserve(sm.number_of_faces());
-  for (auto f : sm.faces())
-  {
-    Triangle t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
-    {
-      if (k < 3)
-      {
-        t[k] = static_cast<std::int64_t>(static_cast<std::size_t>(v));
-      }
-      ++k;
-    }
-    if (k == 3)
-    {
-      out.triangles.push_back(t);
-    }
-  }
-  return out;
 }
 
 double componentSignedVolume(const Mesh& sm, const std::vector<Mesh::Face_index>& faces)
@@ -161,7 +131,7 @@ RepairReport repairToManifold(TriangleMesh& mesh)
     PMP::orient_to_bound_a_volume(sm);
   }
 
-  mesh = fromSurfaceMesh(sm);
+  mesh = cgal::fromSurfaceMesh(sm);
   report.outputTriangles = mesh.triangles.size();
   report.outputPoints = mesh.points.size();
   report.boundaryEdges = countBoundaryEdges(mesh);

@@ -3,9 +3,9 @@
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/EdgePath.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "SurfaceMeshConversion.h"
+
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
@@ -59,8 +59,7 @@ double segmentParameter(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3&
   return s;
 }
 
-using SKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SMesh = CGAL::Surface_mesh<SKernel::Point_3>;
+using SMesh = cgal::SurfaceMesh;
 
 /// Split mode: see the header.
 void splitAlongStroke(const TriangleMesh& mesh, const ClosestPointTree& tree, const std::vector<Vec3>& projected,
@@ -122,14 +121,9 @@ void splitAlongStroke(const TriangleMesh& mesh, const ClosestPointTree& tree, co
     cross(projected[i], hits[i].face, projected[i + 1], hits[i + 1].face, 0);
 
   SMesh m;
-  for (const Vec3& p : mesh.points)
-    m.add_vertex(SKernel::Point_3(p.x(), p.y(), p.z()));
-  for (const Triangle& t : mesh.triangles)
-    if (m.add_face(SMesh::Vertex_index(static_cast<SMesh::size_type>(t[0])),
-          SMesh::Vertex_index(static_cast<SMesh::size_type>(t[1])),
-          SMesh::Vertex_index(static_cast<SMesh::size_type>(t[2]))) == SMesh::null_face())
-      throw std::invalid_argument("split mode needs a manifold, consistently oriented triangle mesh");
-  auto setPoint = [&](SMesh::Vertex_index v, const Vec3& x) { m.point(v) = SKernel::Point_3(x.x(), x.y(), x.z()); };
+  if (!cgal::toSurfaceMesh(mesh, m))
+    throw std::invalid_argument("split mode needs a manifold, consistently oriented triangle mesh");
+  auto setPoint = [&](SMesh::Vertex_index v, const Vec3& x) { m.point(v) = cgal::Point(x.x(), x.y(), x.z()); };
   std::vector<std::int64_t> pathVertices;
   auto centre = [&](std::int64_t face, const Vec3& x) {
     const auto h = CGAL::Euler::add_center_vertex(m.halfedge(SMesh::Face_index(static_cast<SMesh::size_type>(face))), m);
@@ -231,22 +225,7 @@ void splitAlongStroke(const TriangleMesh& mesh, const ClosestPointTree& tree, co
       throw std::invalid_argument("the stroke could not be followed across the mesh (consecutive crossings share no face)");
   }
   CGAL::Polygon_mesh_processing::triangulate_faces(m);
-  result.mesh.points.clear();
-  result.mesh.triangles.clear();
-  for (auto v : m.vertices())
-  {
-    const auto& p = m.point(v);
-    result.mesh.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto f : m.faces())
-  {
-    Triangle t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m))
-      if (k < 3)
-        t[static_cast<std::size_t>(k++)] = static_cast<std::int64_t>(static_cast<std::size_t>(v));
-    result.mesh.triangles.push_back(t);
-  }
+  result.mesh = cgal::fromSurfaceMesh(m); // nothing was removed: ids stay
   result.line = pathVertices;
   for (std::size_t i = 0; i + 1 < pathVertices.size(); ++i)
     result.featureEdges.push_back(edgeKey(pathVertices[i], pathVertices[i + 1]));
