@@ -230,11 +230,14 @@ int vtkLKLatticeFitFilter::RequestData(
   vtkNew<vtkLKLatticeSurfaceFilter> surface;
   surface->SetResolution(this->ErrorResolution);
   vtkNew<vtkLKMetroFilter> metro;
-  auto measure = [&](vtkPolyData* latticePd) -> bool {
+  // The lattice surface, and with `withError` its Metro distance to the input.
+  auto measure = [&](vtkPolyData* latticePd, bool withError) -> bool {
     surface->SetInputData(latticePd);
     surface->Update();
     if (surface->GetOutput()->GetNumberOfPolys() == 0)
       return false;
+    if (!withError)
+      return true;
     metro->SetInputData(surface->GetOutput());
     metro->SetNumberOfSamples(this->ErrorSamples > 0 ? this->ErrorSamples
                                                       : std::max<vtkIdType>(200000, 20 * input->GetNumberOfPolys()));
@@ -281,7 +284,7 @@ int vtkLKLatticeFitFilter::RequestData(
           return 1;
         }
         toPolyData(trial, pd);
-        const bool ok = measure(pd) && metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal() <=
+        const bool ok = measure(pd, true) && metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal() <=
           this->MaximumError;
         if (ok)
         {
@@ -328,7 +331,7 @@ int vtkLKLatticeFitFilter::RequestData(
 
   {
     // The face map needs the surface; the error comes with it.
-    if (!measure(output))
+    if (!measure(output, this->ComputeError))
     {
       vtkErrorMacro("Cannot build the lattice surface of the fitted lattice.");
       return 0;
