@@ -1,0 +1,445 @@
+#include "latticekit/StrokeSplitter.h"
+
+#include "latticekit/ClosestPointTree.h"
+
+#include "SurfaceMeshConversion.h"
+
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace lk
+{
+namespace
+{
+using SMesh = cgal::SurfaceMesh;
+using VI = SMesh::Vertex_index;
+using HI = SMesh::Halfedge_index;
+using FI = SMesh::Face_index;
+
+/// One step of a planned walk: the plane crosses an edge (split it at x) or
+/// passes through a vertex.
+struct Event
+{
+  bool atVertex = false;
+  HI edge;   ///< a halfedge of the crossed edge
+  VI vertex; ///< the vertex passed
+  Vec3 x;
+};
+
+struct Plan
+{
+  std::vector<Event> events;
+  bool endInFace = false; ///< the end is a new vertex inside `endFace` at `end`
+  FI endFace;
+  Vec3 end;
+};
+} // namespace
+
+struct StrokeSplitter::Impl
+{
+  SMesh m;
+  ClosestPointTree tree;
+  std::vector<Vec3> faceNormals; ///< of the input faces (splitting keeps the surface)
+  std::vector<std::int64_t> line;
+  bool closed = false;
+  double maxDistance = 0.0;
+  double meanEdge = 0.0;
+
+  explicit Impl(const TriangleMesh& mesh)
+    : tree(mesh)
+  {
+  }
+
+  Vec3 p(VI v) const
+  {
+    const auto& q = m.point(v);
+    return Vec3(q.x(), q.y(), q.z());
+  }
+
+  Vec3 vertexNormal(VI v) const
+  {
+    Vec3 n = Vec3::Zero();
+    for (HI h : CGAL::halfedges_around_target(m.halfedge(v), m))
+    {
+      if (m.is_border(h))
+        continue;
+      const Vec3 a = p(m.source(h)), b = p(v), c = p(m.target(m.next(h)));
+      n += (b - a).cross(c - b);
+    }
+    return n.norm() > 0 ? Vec3(n.normalized()) : n;
+  }
+
+  /// The walk from vertex `a` to the point `x` (or to the vertex `target`
+  /// when it is valid), in the plane through a and x that holds the mean
+  /// normal `normal`. Does not change the mesh.
+  Plan plan(VI a, Vec3 x, VI target, const Vec3& normal) const
+  {
+    const Vec3 pa = p(a);
+    if (target != SMesh::null_vertex())
+      x = p(target);
+    const Vec3 d = x - pa;
+    const double dd = d.squaredNorm();
+    Vec3 planeNormal = d.cross(normal);
+    if (dd <= 0.0 || planeNormal.norm() <= 1e-12 * std::sqrt(dd))
+      throw std::invalid_argument("the stroke segment runs along the surface normal (no plane to follow)");
+    planeNormal.normalize();
+    const double snapLength = 1e-6 * meanEdge; // closer than this to a vertex: through the vertex
+    auto side = [&](const Vec3& y) { return planeNormal.dot(y - pa); };
+    auto along = [&](const Vec3& y) { return (y - pa).dot(d) / dd; };
+    const double endTolerance = 1e-3 * meanEdge / std::sqrt(dd); // in t
+    Plan plan;
+    auto endHere = [&](FI f) {
+      // The end lies in f: snap to one of its vertices when it is on one.
+      for (VI v : CGAL::vertices_around_face(m.halfedge(f), m))
+        if ((p(v) - x).norm() <= 1e-3 * meanEdge)
+        {
+          plan.events.push_back({ true, HI(), v, p(v) });
+          return;
+        }
+      plan.endInFace = true;
+      plan.endFace = f;
+      plan.end = x;
+    };
+    // Crossing of edge (u, w) by the plane: the parameter along u -> w.
+    auto crossing = [&](VI u, VI w, double& lambda) {
+      const double su = side(p(u)), sw = side(p(w));
+      if ((su > 0) == (sw > 0) && su != 0 && sw != 0)
+        return false;
+      lambda = su / (su - sw);
+      return true;
+    };
+    const std::size_t maxSteps = 4 * m.number_of_faces() + 16;
+    bool atVertex = true;
+    VI v = a;
+    HI entering; // edge state: the halfedge of the crossed edge in the face being entered
+    double tPrevious = 0.0;
+    for (std::size_t step = 0; step < maxSteps; ++step)
+    {
+      if (atVertex)
+      {
+        if (v == target)
+          return plan;
+        const double tv = along(p(v));
+        struct Candidate
+        {
+          double score = -2.0;
+          Event event;
+          double t = 0.0;
+          FI face;
+          bool isEnd = false;
+        } best;
+        for (HI h : CGAL::halfedges_around_target(m.halfedge(v), m))
+        {
+          if (m.is_border(h))
+            continue;
+          const FI f = m.face(h);
+          const HI opposite = m.next(m.next(h)); // w1 -> w2, the edge facing v
+          const VI w1 = m.source(opposite), w2 = m.target(opposite);
+          if (target != SMesh::null_vertex() && (w1 == target || w2 == target))
+          {
+            plan.events.push_back({ true, HI(), target, x });
+            return plan;
+          }
+          double lambda = 0.0;
+          if (!crossing(w1, w2, lambda))
+            continue;
+          const double length = (p(w2) - p(w1)).norm();
+          Event e;
+          if (lambda * length <= snapLength)
+            e = { true, HI(), w1, p(w1) };
+          else if ((1.0 - lambda) * length <= snapLength)
+            e = { true, HI(), w2, p(w2) };
+          else
+            e = { false, opposite, VI(), p(w1) + lambda * (p(w2) - p(w1)) };
+          const double t = along(e.x);
+          if (t <= tv)
+            continue;
+          const Vec3 dir = e.x - p(v);
+          const double score = dir.norm() > 0 ? dir.normalized().dot(d) / std::sqrt(dd) : -1.0;
+          if (score > best.score)
+            best = { score, e, t, f, t >= 1.0 - endTolerance };
+        }
+        if (best.score <= -2.0)
+          throw std::invalid_argument("the stroke could not be followed from a line vertex (no face ahead)");
+        if (best.isEnd && target == SMesh::null_vertex())
+        {
+          if (std::abs(best.t - 1.0) <= endTolerance)
+            plan.events.push_back(best.event); // the end is on the crossing
+          else
+            endHere(best.face);
+          return plan;
+        }
+        plan.events.push_back(best.event);
+        tPrevious = best.t;
+        if (best.event.atVertex)
+          v = best.event.vertex;
+        else
+        {
+          atVertex = false;
+          entering = m.opposite(best.event.edge);
+        }
+        continue;
+      }
+      // Edge state: entering the face of `entering` across its edge.
+      if (m.is_border(entering))
+        throw std::invalid_argument("the stroke leaves the surface at a border");
+      const FI g = m.face(entering);
+      const VI z = m.target(m.next(entering));
+      if (target != SMesh::null_vertex() && z == target)
+      {
+        plan.events.push_back({ true, HI(), z, x });
+        return plan;
+      }
+      Event e;
+      if (std::abs(side(p(z))) <= snapLength)
+        e = { true, HI(), z, p(z) };
+      else
+      {
+        const HI e1 = m.next(entering), e2 = m.next(e1); // w -> z, z -> u
+        double lambda = 0.0;
+        HI exit = e1;
+        if (!crossing(m.source(e1), m.target(e1), lambda))
+        {
+          exit = e2;
+          if (!crossing(m.source(e2), m.target(e2), lambda))
+            throw std::invalid_argument("internal: the stroke plane left a face without crossing an edge");
+        }
+        const Vec3 pu = p(m.source(exit)), pw = p(m.target(exit));
+        const double length = (pw - pu).norm();
+        if (lambda * length <= snapLength)
+          e = { true, HI(), m.source(exit), pu };
+        else if ((1.0 - lambda) * length <= snapLength)
+          e = { true, HI(), m.target(exit), pw };
+        else
+          e = { false, exit, VI(), pu + lambda * (pw - pu) };
+      }
+      const double t = along(e.x);
+      if (target == SMesh::null_vertex() && t >= 1.0 - endTolerance)
+      {
+        if (std::abs(t - 1.0) <= endTolerance)
+          plan.events.push_back(e);
+        else
+          endHere(g);
+        return plan;
+      }
+      if (t < tPrevious - 1e-9)
+        throw std::invalid_argument("the stroke could not be followed (the walk turned back)");
+      tPrevious = t;
+      plan.events.push_back(e);
+      if (e.atVertex)
+      {
+        atVertex = true;
+        v = e.vertex;
+      }
+      else
+        entering = m.opposite(e.edge);
+    }
+    throw std::invalid_argument("the stroke could not be followed (the walk did not reach the point)");
+  }
+
+  /// Splits the face shared by a and b (when they are not joined yet).
+  void connect(VI a, VI b)
+  {
+    if (a == b || CGAL::halfedge(a, b, m).second)
+      return;
+    for (HI h : CGAL::halfedges_around_target(m.halfedge(a), m))
+    {
+      if (m.is_border(h))
+        continue;
+      for (HI g : CGAL::halfedges_around_face(h, m))
+        if (m.target(g) == b && g != m.next(h) && h != m.next(g))
+        {
+          CGAL::Euler::split_face(h, g, m);
+          return;
+        }
+    }
+    throw std::invalid_argument("internal: consecutive line vertices share no face");
+  }
+
+  void appendToLine(VI v)
+  {
+    const auto id = static_cast<std::int64_t>(static_cast<std::size_t>(v));
+    if (line.empty() || line.back() != id)
+      line.push_back(id);
+  }
+
+  /// When the split edge (u, w) was an edge of the line, the new vertex goes
+  /// between them.
+  void insertIntoLine(VI u, VI w, VI c)
+  {
+    const auto iu = static_cast<std::int64_t>(static_cast<std::size_t>(u));
+    const auto iw = static_cast<std::int64_t>(static_cast<std::size_t>(w));
+    for (std::size_t i = 0; i + 1 < line.size(); ++i)
+      if ((line[i] == iu && line[i + 1] == iw) || (line[i] == iw && line[i + 1] == iu))
+      {
+        line.insert(line.begin() + static_cast<std::ptrdiff_t>(i + 1), static_cast<std::int64_t>(static_cast<std::size_t>(c)));
+        ++i;
+      }
+  }
+
+  std::size_t apply(VI a, const Plan& plan)
+  {
+    const std::size_t before = line.size();
+    std::vector<VI> touched{ a };
+    VI previous = a;
+    for (const Event& e : plan.events)
+    {
+      VI next = e.vertex;
+      if (!e.atVertex)
+      {
+        const VI u = m.source(e.edge), w = m.target(e.edge);
+        const HI h = CGAL::Euler::split_edge(e.edge, m);
+        next = m.target(h);
+        m.point(next) = cgal::Point(e.x.x(), e.x.y(), e.x.z());
+        insertIntoLine(u, w, next);
+      }
+      connect(previous, next);
+      appendToLine(next);
+      touched.push_back(next);
+      previous = next;
+    }
+    if (plan.endInFace)
+    {
+      const HI h = CGAL::Euler::add_center_vertex(m.halfedge(plan.endFace), m);
+      const VI c = m.target(h);
+      m.point(c) = cgal::Point(plan.end.x(), plan.end.y(), plan.end.z());
+      appendToLine(c);
+      touched.push_back(c);
+    }
+    // Faces left with more than three corners (an edge split on their side)
+    // are convex and planar: triangulate them.
+    std::set<FI> polygons;
+    for (VI v : touched)
+      for (FI f : CGAL::faces_around_target(m.halfedge(v), m))
+        if (f != SMesh::null_face() && CGAL::degree(f, m) > 3)
+          polygons.insert(f);
+    for (FI f : polygons)
+      CGAL::Polygon_mesh_processing::triangulate_face(f, m);
+    return line.size() - before;
+  }
+};
+
+StrokeSplitter::StrokeSplitter(const TriangleMesh& mesh, double maxDistance)
+{
+  const std::string problem = validateTriangleMesh(mesh);
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
+  impl_ = std::make_unique<Impl>(mesh);
+  if (!cgal::toSurfaceMesh(mesh, impl_->m))
+    throw std::invalid_argument("split mode needs a manifold, consistently oriented triangle mesh");
+  double total = 0.0;
+  impl_->faceNormals.reserve(mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Vec3 &a = mesh.points[static_cast<std::size_t>(t[0])], &b = mesh.points[static_cast<std::size_t>(t[1])],
+               &c = mesh.points[static_cast<std::size_t>(t[2])];
+    total += (b - a).norm() + (c - b).norm() + (a - c).norm();
+    const Vec3 n = (b - a).cross(c - a);
+    impl_->faceNormals.push_back(n.norm() > 0 ? Vec3(n.normalized()) : n);
+  }
+  impl_->meanEdge = total / (3.0 * static_cast<double>(mesh.triangles.size()));
+  impl_->maxDistance = maxDistance > 0 ? maxDistance : 5.0 * impl_->meanEdge;
+}
+
+StrokeSplitter::~StrokeSplitter() = default;
+
+std::size_t StrokeSplitter::addPoint(const Vec3& point)
+{
+  Impl& s = *impl_;
+  if (!point.allFinite())
+    throw std::invalid_argument("a stroke point is not finite");
+  if (s.closed)
+    throw std::invalid_argument("the line is closed; start a new splitter for another stroke");
+  const auto hit = s.tree.closest(point);
+  if (hit.distance > s.maxDistance)
+    throw std::invalid_argument("the stroke misses the surface: a stroke point lies " + std::to_string(hit.distance) +
+      " from it (more than " + std::to_string(s.maxDistance) + ")");
+  if (s.line.empty())
+  {
+    // The input's faces keep their ids until the first split.
+    const FI f(static_cast<SMesh::size_type>(hit.face));
+    for (VI v : CGAL::vertices_around_face(s.m.halfedge(f), s.m))
+      if ((s.p(v) - hit.point).norm() <= 1e-3 * s.meanEdge)
+      {
+        s.appendToLine(v);
+        return 1;
+      }
+    const HI h = CGAL::Euler::add_center_vertex(s.m.halfedge(f), s.m);
+    s.m.point(s.m.target(h)) = cgal::Point(hit.point.x(), hit.point.y(), hit.point.z());
+    s.appendToLine(s.m.target(h));
+    return 1;
+  }
+  const VI a(static_cast<SMesh::size_type>(s.line.back()));
+  if ((s.p(a) - hit.point).norm() <= 1e-3 * s.meanEdge)
+    return 0;
+  Vec3 normal = s.vertexNormal(a) + s.faceNormals[static_cast<std::size_t>(hit.face)];
+  const Plan plan = s.plan(a, hit.point, SMesh::null_vertex(), normal);
+  return s.apply(a, plan);
+}
+
+void StrokeSplitter::close()
+{
+  Impl& s = *impl_;
+  if (s.closed)
+    return;
+  if (s.line.size() < 3)
+    throw std::invalid_argument("a closed line needs at least three vertices");
+  const VI a(static_cast<SMesh::size_type>(s.line.back()));
+  const VI first(static_cast<SMesh::size_type>(s.line.front()));
+  const Plan plan = s.plan(a, s.p(first), first, s.vertexNormal(a) + s.vertexNormal(first));
+  s.apply(a, plan);
+  if (s.line.back() != s.line.front())
+    s.line.push_back(s.line.front());
+  s.closed = true;
+}
+
+const std::vector<std::int64_t>& StrokeSplitter::line() const
+{
+  return impl_->line;
+}
+
+bool StrokeSplitter::closed() const
+{
+  return impl_->closed;
+}
+
+TriangleMesh StrokeSplitter::mesh() const
+{
+  const SMesh& m = impl_->m;
+  TriangleMesh out;
+  out.points.reserve(m.number_of_vertices());
+  for (VI v : m.vertices())
+    out.points.push_back(impl_->p(v));
+  out.triangles.reserve(m.number_of_faces());
+  for (FI f : m.faces())
+  {
+    Triangle t{};
+    int k = 0;
+    for (VI v : CGAL::vertices_around_face(m.halfedge(f), m))
+      if (k < 3)
+        t[static_cast<std::size_t>(k++)] = static_cast<std::int64_t>(static_cast<std::size_t>(v));
+      else
+        ++k;
+    if (k == 3) // every face is a triangle after each step
+      out.triangles.push_back(t);
+  }
+  return out;
+}
+
+std::size_t StrokeSplitter::numberOfTriangles() const
+{
+  return impl_->m.number_of_faces();
+}
+
+double StrokeSplitter::meanEdgeLength() const
+{
+  return impl_->meanEdge;
+}
+
+} // namespace lk

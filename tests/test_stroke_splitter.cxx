@@ -1,0 +1,121 @@
+#include "TestMeshes.h"
+#include "latticekit/ManifoldRepair.h"
+#include "latticekit/MeshCut.h"
+#include "latticekit/LatticeSimplification.h"
+#include "latticekit/StrokeSplitter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace
+{
+std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
+{
+  std::set<lk::EdgeKey> e;
+  for (const auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i)
+      e.insert(lk::edgeKey(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]));
+  return e;
+}
+
+void expectConnectedLine(const lk::TriangleMesh& m, const std::vector<std::int64_t>& line)
+{
+  const auto edges = edgesOf(m);
+  for (std::size_t i = 0; i + 1 < line.size(); ++i)
+    EXPECT_TRUE(edges.count(lk::edgeKey(line[i], line[i + 1]))) << "line vertices " << i << " and " << i + 1;
+}
+} // namespace
+
+TEST(StrokeSplitter, SegmentsAddEdgesOnTheStrokeOfAPlane)
+{
+  const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
+  lk::StrokeSplitter splitter(grid);
+  const std::vector<lk::Vec3> stroke = { { 0.113, 0.207, 0.0 }, { 0.371, 0.333, 0.0 }, { 0.5, 0.6, 0.0 },
+    { 0.871, 0.633, 0.0 } };
+  for (const auto& p : stroke)
+    EXPECT_GE(splitter.addPoint(p), 1u);
+  const lk::TriangleMesh m = splitter.mesh();
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_NEAR(lk::surfaceArea(m), 1.0, 1e-12);
+  const auto& line = splitter.line();
+  ASSERT_GT(line.size(), 20u);
+  expectConnectedLine(m, line);
+  // Every line vertex lies on the stroke polyline (the plane is the surface).
+  for (std::size_t i = 0; i < line.size(); ++i)
+  {
+    const lk::Vec3 p = m.points[static_cast<std::size_t>(line[i])];
+    double d = 1e9;
+    for (std::size_t k = 0; k + 1 < stroke.size(); ++k)
+    {
+      const lk::Vec3 s = stroke[k + 1] - stroke[k];
+      const double t = std::clamp((p - stroke[k]).dot(s) / s.squaredNorm(), 0.0, 1.0);
+      d = std::min(d, (stroke[k] + t * s - p).norm());
+    }
+    EXPECT_LT(d, 1e-9) << "line vertex " << i;
+  }
+  // The stroke points are line vertices, in order.
+  std::size_t k = 0;
+  for (auto v : line)
+    if (k < stroke.size() && (m.points[static_cast<std::size_t>(v)] - stroke[k]).norm() < 1e-12)
+      ++k;
+  EXPECT_EQ(k, stroke.size());
+  // Only line vertices were added (the line may also pass through grid vertices).
+  const std::set<std::int64_t> onLine(line.begin(), line.end());
+  for (std::size_t v = grid.points.size(); v < m.points.size(); ++v)
+    EXPECT_TRUE(onLine.count(static_cast<std::int64_t>(v))) << "vertex " << v << " is not on the line";
+}
+
+TEST(StrokeSplitter, ClosedStrokeOnTheSphereSplitsItIntoTwoPieces)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  lk::StrokeSplitter splitter(sphere);
+  for (int k = 0; k < 40; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * k / 40.0;
+    splitter.addPoint({ 0.95 * std::cos(a), 0.95 * std::sin(a), 0.2 });
+  }
+  splitter.close();
+  ASSERT_TRUE(splitter.closed());
+  const lk::TriangleMesh m = splitter.mesh();
+  const auto& line = splitter.line();
+  EXPECT_EQ(line.front(), line.back());
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_EQ(lk::countBoundaryEdges(m), 0u);
+  EXPECT_NEAR(lk::signedVolume(m), lk::signedVolume(sphere), 1e-12);
+  expectConnectedLine(m, line);
+  std::set<std::int64_t> once(line.begin(), line.end() - 1);
+  EXPECT_EQ(once.size(), line.size() - 1) << "the loop crosses itself";
+  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(m), { line }, false).pieces.size(), 2u);
+}
+
+TEST(StrokeSplitter, AFailedPointLeavesTheMeshAndLineUnchanged)
+{
+  const lk::TriangleMesh grid = lktest::grid(10, 1.0, 0.0);
+  lk::StrokeSplitter splitter(grid);
+  splitter.addPoint({ 0.21, 0.33, 0.0 });
+  splitter.addPoint({ 0.52, 0.41, 0.0 });
+  const auto before = splitter.mesh();
+  const auto line = splitter.line();
+  EXPECT_THROW(splitter.addPoint({ 0.5, 0.5, 3.0 }), std::invalid_argument);    // misses
+  EXPECT_THROW(splitter.addPoint({ 0.5, std::nan(""), 0 }), std::invalid_argument); // not finite
+  EXPECT_EQ(splitter.line(), line);
+  EXPECT_EQ(splitter.mesh().triangles, before.triangles);
+  EXPECT_THROW(lk::StrokeSplitter(lk::TriangleMesh{}), std::invalid_argument);
+  lk::StrokeSplitter two(grid);
+  two.addPoint({ 0.21, 0.33, 0.0 });
+  EXPECT_THROW(two.close(), std::invalid_argument); // fewer than three vertices
+}
+
+TEST(StrokeSplitter, AStrokeThatCrossesItsOwnLineKeepsTheLineConnected)
+{
+  const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
+  lk::StrokeSplitter splitter(grid);
+  for (const lk::Vec3& p : std::vector<lk::Vec3>{ { 0.1, 0.5, 0 }, { 0.9, 0.5, 0 }, { 0.9, 0.8, 0 }, { 0.5, 0.8, 0 },
+         { 0.5, 0.2, 0 } })
+    splitter.addPoint(p);
+  const lk::TriangleMesh m = splitter.mesh();
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  expectConnectedLine(m, splitter.line());
+}
