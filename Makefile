@@ -19,6 +19,7 @@ bench: setup
 	build/bin/bench_fit sample_data
 	build/bin/bench_subdivision sample_data
 	build/bin/bench_ifs
+	build/bin/bench_osteotomy sample_data
 
 setup build:
 	bash scripts/setup.sh

@@ -1,6 +1,5 @@
 #include "latticekit/MeshCut.h"
 
-#include "latticekit/LatticeSimplification.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -65,7 +64,7 @@ Cap makeCap(const std::vector<Vec3>& loop)
   std::vector<Mesh::Face_index> faces;
   std::vector<Mesh::Vertex_index> newVertices;
   const auto result = PMP::triangulate_refine_and_fair_hole(
-    m, border, std::back_inserter(faces), std::back_inserter(newVertices));
+    m, border, std::back_inserter(faces), std::back_inserter(newVertices), CGAL::parameters::density_control_factor(0.7));
   cap.faired = std::get<0>(result);
   std::map<Mesh::Vertex_index, std::int64_t> id;
   for (std::size_t i = 0; i < vs.size(); ++i)
@@ -90,23 +89,101 @@ Cap makeCap(const std::vector<Vec3>& loop)
 }
 } // namespace
 
+namespace
+{
+/// Directed edges grouped by their source vertex (compressed rows): the
+/// face of a -> b in O(valence), without a tree or hash of all edges.
+struct DirectedEdges
+{
+  std::vector<std::size_t> start;    ///< per vertex, into target/face
+  std::vector<std::int64_t> target;
+  std::vector<std::size_t> face;
+  std::vector<char> cut;             ///< per directed edge: on a loop
+
+  explicit DirectedEdges(const PolygonMesh& mesh)
+    : start(mesh.points.size() + 1, 0)
+  {
+    for (const auto& f : mesh.faces)
+      for (auto v : f)
+        ++start[static_cast<std::size_t>(v) + 1];
+    for (std::size_t i = 1; i < start.size(); ++i)
+      start[i] += start[i - 1];
+    target.resize(start.back());
+    face.resize(start.back());
+    cut.assign(start.back(), 0);
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    {
+      const auto& fv = mesh.faces[f];
+      for (std::size_t i = 0; i < fv.size(); ++i)
+      {
+        const std::size_t k = next[static_cast<std::size_t>(fv[i])]++;
+        target[k] = fv[(i + 1) % fv.size()];
+        face[k] = f;
+      }
+    }
+  }
+  /// The slot of a -> b, or npos.
+  std::size_t find(std::int64_t a, std::int64_t b) const
+  {
+    for (std::size_t k = start[static_cast<std::size_t>(a)]; k < start[static_cast<std::size_t>(a) + 1]; ++k)
+      if (target[k] == b)
+        return k;
+    return npos;
+  }
+  /// Empty, or why the faces do not form an oriented 2-manifold along edges.
+  std::string problem() const
+  {
+    for (std::size_t a = 0; a + 1 < start.size(); ++a)
+      for (std::size_t k = start[a]; k < start[a + 1]; ++k)
+        for (std::size_t j = k + 1; j < start[a + 1]; ++j)
+          if (target[j] == target[k])
+            return "the edge " + std::to_string(a) + "-" + std::to_string(target[k]) +
+              " is used twice in the same direction (a non-manifold edge or inconsistent orientation)";
+    return {};
+  }
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+};
+
+std::string basicProblem(const PolygonMesh& mesh)
+{
+  if (mesh.faces.empty())
+    return "the mesh has no faces";
+  const auto n = static_cast<std::int64_t>(mesh.points.size());
+  for (const Vec3& p : mesh.points)
+    if (!p.allFinite())
+      return "a point has a NaN or infinite coordinate";
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+  {
+    const auto& face = mesh.faces[f];
+    if (face.size() < 3)
+      return "face " + std::to_string(f) + " has fewer than 3 vertices";
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      if (face[i] < 0 || face[i] >= n)
+        return "face " + std::to_string(f) + " refers to a point outside the mesh";
+      for (std::size_t j = i + 1; j < face.size(); ++j)
+        if (face[j] == face[i])
+          return "face " + std::to_string(f) + " repeats a vertex";
+    }
+  }
+  return {};
+}
+} // namespace
+
 CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
 {
-  const std::string problem = latticeProblem(mesh);
+  std::string problem = basicProblem(mesh);
   if (!problem.empty())
     throw std::invalid_argument(problem);
   if (loopsIn.empty())
     throw std::invalid_argument("no loop to cut along");
-  // Directed edges -> face.
-  std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> directed;
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-  {
-    const auto& face = mesh.faces[f];
-    for (std::size_t i = 0; i < face.size(); ++i)
-      directed[{ face[i], face[(i + 1) % face.size()] }] = f;
-  }
+  DirectedEdges directed(mesh);
+  problem = directed.problem();
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
   std::vector<std::vector<std::int64_t>> loops;
-  std::set<EdgeKey> cutEdges;
+  std::vector<char> onLoop(mesh.points.size(), 0);
   for (std::size_t l = 0; l < loopsIn.size(); ++l)
   {
     std::vector<std::int64_t> loop = loopsIn[l];
@@ -119,75 +196,102 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
     for (std::size_t i = 0; i < loop.size(); ++i)
     {
       const auto a = loop[i], b = loop[(i + 1) % loop.size()];
-      if (a < 0 || a >= static_cast<std::int64_t>(mesh.points.size()))
+      if (a < 0 || a >= static_cast<std::int64_t>(mesh.points.size()) || b < 0 ||
+        b >= static_cast<std::int64_t>(mesh.points.size()))
         throw std::invalid_argument(which + " has a vertex id outside the mesh");
       if (!seen.insert(a).second)
         throw std::invalid_argument(which + " crosses itself (vertex " + std::to_string(a) + " twice)");
-      if (!directed.count({ a, b }) && !directed.count({ b, a }))
+      const std::size_t ab = directed.find(a, b), ba = directed.find(b, a);
+      if (ab == DirectedEdges::npos && ba == DirectedEdges::npos)
         throw std::invalid_argument(which + " is not closed along mesh edges: " + std::to_string(a) + " and " +
           std::to_string(b) + " are not joined by an edge");
-      cutEdges.insert(a < b ? EdgeKey(a, b) : EdgeKey(b, a));
+      if (ab != DirectedEdges::npos)
+        directed.cut[ab] = 1;
+      if (ba != DirectedEdges::npos)
+        directed.cut[ba] = 1;
+      onLoop[static_cast<std::size_t>(a)] = 1;
     }
     loops.push_back(loop);
   }
-  // Regions: faces joined across edges that are not cut.
-  std::vector<std::size_t> parent(mesh.faces.size());
+  // Regions: faces joined across edges that are not cut; components: joined
+  // across every edge (loops only separate within a component).
+  std::vector<std::size_t> parent(mesh.faces.size()), compParent(mesh.faces.size());
   std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& [e, f] : directed)
-  {
-    const auto back = directed.find({ e.second, e.first });
-    if (back == directed.end() || cutEdges.count(e.first < e.second ? EdgeKey(e.first, e.second) : EdgeKey(e.second, e.first)))
-      continue;
-    parent[find(parent, f)] = find(parent, back->second);
-  }
-  std::map<std::size_t, std::size_t> regionOf;
+  std::iota(compParent.begin(), compParent.end(), 0);
+  for (std::size_t a = 0; a + 1 < directed.start.size(); ++a)
+    for (std::size_t k = directed.start[a]; k < directed.start[a + 1]; ++k)
+    {
+      const auto b = directed.target[k];
+      if (b < static_cast<std::int64_t>(a))
+        continue; // each edge once, from its smaller end
+      const std::size_t back = directed.find(b, static_cast<std::int64_t>(a));
+      if (back == DirectedEdges::npos)
+        continue;
+      const std::size_t f = directed.face[k], g = directed.face[back];
+      compParent[find(compParent, f)] = find(compParent, g);
+      if (!directed.cut[k])
+        parent[find(parent, f)] = find(parent, g);
+    }
+  std::vector<std::size_t> label(mesh.faces.size(), static_cast<std::size_t>(-1));
   std::vector<std::size_t> faceRegion(mesh.faces.size());
+  std::size_t pieces = 0, components = 0;
+  std::vector<char> isComponent(mesh.faces.size(), 0);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
   {
     const std::size_t r = find(parent, f);
-    auto it = regionOf.find(r);
-    if (it == regionOf.end())
-      it = regionOf.emplace(r, regionOf.size()).first;
-    faceRegion[f] = it->second;
+    if (label[r] == static_cast<std::size_t>(-1))
+      label[r] = pieces++;
+    faceRegion[f] = label[r];
+    const std::size_t c = find(compParent, f);
+    if (!isComponent[c])
+    {
+      isComponent[c] = 1;
+      ++components;
+    }
   }
-  // Components of the input (loops only separate within a component).
-  std::vector<std::size_t> compParent(mesh.faces.size());
-  std::iota(compParent.begin(), compParent.end(), 0);
-  for (const auto& [e, f] : directed)
-  {
-    const auto back = directed.find({ e.second, e.first });
-    if (back != directed.end())
-      compParent[find(compParent, f)] = find(compParent, back->second);
-  }
-  std::set<std::size_t> components;
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    components.insert(find(compParent, f));
-  if (regionOf.size() <= components.size())
+  if (pieces <= components)
     throw std::invalid_argument("the loops do not separate the mesh (it stays in one piece)");
 
   CutResult result;
-  const std::size_t pieces = regionOf.size();
   result.pieces.resize(pieces);
   result.vertexOrigin.resize(pieces);
   result.faceOrigin.resize(pieces);
-  std::vector<std::map<std::int64_t, std::int64_t>> local(pieces);
+  // The piece's id of each input vertex: most vertices are in one piece
+  // (firstPiece, firstId); loop vertices (and the fans of a non-manifold
+  // vertex) are in more, kept in `other`.
+  std::vector<std::int64_t> firstPiece(mesh.points.size(), -1), firstId(mesh.points.size(), -1);
+  std::map<std::pair<std::size_t, std::int64_t>, std::int64_t> other;
   auto localId = [&](std::size_t p, std::int64_t v) {
-    auto it = local[p].find(v);
-    if (it != local[p].end())
-      return it->second;
-    const auto id = static_cast<std::int64_t>(result.pieces[p].points.size());
-    result.pieces[p].points.push_back(mesh.points[static_cast<std::size_t>(v)]);
-    result.vertexOrigin[p].push_back(v);
-    local[p][v] = id;
-    return id;
+    const auto i = static_cast<std::size_t>(v);
+    std::int64_t* id = nullptr;
+    if (firstPiece[i] < 0)
+    {
+      firstPiece[i] = static_cast<std::int64_t>(p);
+      id = &firstId[i];
+    }
+    else if (firstPiece[i] == static_cast<std::int64_t>(p))
+      id = &firstId[i];
+    else
+    {
+      const auto it = other.emplace(std::make_pair(p, v), -1).first;
+      id = &it->second;
+    }
+    if (*id < 0)
+    {
+      *id = static_cast<std::int64_t>(result.pieces[p].points.size());
+      result.pieces[p].points.push_back(mesh.points[i]);
+      result.vertexOrigin[p].push_back(v);
+    }
+    return *id;
   };
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
   {
     const std::size_t p = faceRegion[f];
     std::vector<std::int64_t> face;
+    face.reserve(mesh.faces[f].size());
     for (auto v : mesh.faces[f])
       face.push_back(localId(p, v));
-    result.pieces[p].faces.push_back(face);
+    result.pieces[p].faces.push_back(std::move(face));
     result.faceOrigin[p].push_back(static_cast<std::int64_t>(f));
   }
   if (!cap)
@@ -207,10 +311,10 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
     for (int side = 0; side < 2; ++side)
     {
       const auto a = loop[0], b = loop[1];
-      const auto it = directed.find(side == 0 ? std::make_pair(a, b) : std::make_pair(b, a));
-      if (it == directed.end())
+      const std::size_t slot = side == 0 ? directed.find(a, b) : directed.find(b, a);
+      if (slot == DirectedEdges::npos)
         continue;
-      const std::size_t p = faceRegion[it->second];
+      const std::size_t p = faceRegion[directed.face[slot]];
       const bool reverse = side == 0;
       std::vector<std::int64_t> capIds;
       for (const Vec3& q : c.points)
@@ -222,28 +326,32 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
       // A face of the piece spanned by loop vertices only may coincide with a
       // cap triangle: the two would enclose nothing (a doubled triangle,
       // non-manifold). Both are dropped; the piece stays closed there.
-      std::map<std::array<std::int64_t, 3>, std::size_t> onLoop;
+      std::map<std::array<std::int64_t, 3>, std::size_t> loopFaces;
       for (std::size_t f = 0; f < result.pieces[p].faces.size(); ++f)
       {
         const auto& face = result.pieces[p].faces[f];
-        if (face.size() != 3)
+        if (face.size() != 3 || result.faceOrigin[p][f] < 0)
+          continue;
+        const auto& input = mesh.faces[static_cast<std::size_t>(result.faceOrigin[p][f])];
+        if (!onLoop[static_cast<std::size_t>(input[0])] || !onLoop[static_cast<std::size_t>(input[1])] ||
+          !onLoop[static_cast<std::size_t>(input[2])])
           continue;
         std::array<std::int64_t, 3> key{ face[0], face[1], face[2] };
         std::sort(key.begin(), key.end());
-        onLoop[key] = f;
+        loopFaces[key] = f;
       }
       std::vector<char> dropFace(result.pieces[p].faces.size(), 0);
       for (const auto& t : c.triangles)
       {
         std::vector<std::int64_t> face;
         for (auto i : t)
-          face.push_back(i < 0 ? local[p].at(loop[static_cast<std::size_t>(-i - 1)]) : capIds[static_cast<std::size_t>(i)]);
+          face.push_back(i < 0 ? localId(p, loop[static_cast<std::size_t>(-i - 1)]) : capIds[static_cast<std::size_t>(i)]);
         if (reverse)
           std::reverse(face.begin(), face.end());
         std::array<std::int64_t, 3> key{ face[0], face[1], face[2] };
         std::sort(key.begin(), key.end());
-        const auto twin = onLoop.find(key);
-        if (twin != onLoop.end() && twin->second < dropFace.size())
+        const auto twin = loopFaces.find(key);
+        if (twin != loopFaces.end() && twin->second < dropFace.size())
         {
           dropFace[twin->second] = 1;
           continue;
@@ -252,6 +360,8 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
         result.faceOrigin[p].push_back(-1);
       }
       // Compact: dropped faces out, then points no face uses.
+      if (std::find(dropFace.begin(), dropFace.end(), 1) == dropFace.end())
+        continue;
       PolygonMesh& piece = result.pieces[p];
       std::vector<std::vector<std::int64_t>> faces;
       std::vector<std::int64_t> origin;
@@ -259,7 +369,7 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
       {
         if (f < dropFace.size() && dropFace[f])
           continue;
-        faces.push_back(piece.faces[f]);
+        faces.push_back(std::move(piece.faces[f]));
         origin.push_back(result.faceOrigin[p][f]);
       }
       std::vector<std::int64_t> newId(piece.points.size(), -1);
@@ -276,8 +386,12 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
           }
           v = newId[static_cast<std::size_t>(v)];
         }
-      for (auto& [v, id] : local[p])
-        id = newId[static_cast<std::size_t>(id)];
+      for (std::size_t v = 0; v < firstPiece.size(); ++v)
+        if (firstPiece[v] == static_cast<std::int64_t>(p) && firstId[v] >= 0)
+          firstId[v] = newId[static_cast<std::size_t>(firstId[v])];
+      for (auto& [key, id] : other)
+        if (key.first == p && id >= 0)
+          id = newId[static_cast<std::size_t>(id)];
       piece.faces = std::move(faces);
       piece.points = std::move(points);
       result.faceOrigin[p] = std::move(origin);

@@ -4,7 +4,6 @@
 
 #include "SurfaceMeshConversion.h"
 
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
@@ -75,6 +74,43 @@ struct StrokeSplitter::Impl
     return n.norm() > 0 ? Vec3(n.normalized()) : n;
   }
 
+  /// Where a point of triangle f goes: onto a corner, onto an edge (a
+  /// point closer than 1e-3 mean edge lengths to it: a vertex inside the
+  /// face there would make needle triangles), or inside.
+  struct Placement
+  {
+    VI vertex = SMesh::null_vertex();
+    HI edge = SMesh::null_halfedge();
+    Vec3 point;
+  };
+  Placement place(FI f, const Vec3& x) const
+  {
+    Placement at;
+    const double snap = 1e-3 * meanEdge;
+    double bestVertex = snap, bestEdge = snap;
+    for (HI h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    {
+      const Vec3 a = p(m.source(h)), b = p(m.target(h));
+      if ((b - x).norm() <= bestVertex)
+      {
+        bestVertex = (b - x).norm();
+        at.vertex = m.target(h);
+      }
+      const Vec3 e = b - a;
+      const double t = std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      const Vec3 q = a + t * e;
+      if ((q - x).norm() <= bestEdge && t > 0.0 && t < 1.0)
+      {
+        bestEdge = (q - x).norm();
+        at.edge = h;
+        at.point = q;
+      }
+    }
+    if (at.vertex != SMesh::null_vertex())
+      at.edge = SMesh::null_halfedge();
+    return at;
+  }
+
   /// The walk from vertex `a` to the point `x` (or to the vertex `target`
   /// when it is valid), in the plane through a and x that holds the mean
   /// normal `normal`. Does not change the mesh.
@@ -95,16 +131,18 @@ struct StrokeSplitter::Impl
     const double endTolerance = 1e-3 * meanEdge / std::sqrt(dd); // in t
     Plan plan;
     auto endHere = [&](FI f) {
-      // The end lies in f: snap to one of its vertices when it is on one.
-      for (VI v : CGAL::vertices_around_face(m.halfedge(f), m))
-        if ((p(v) - x).norm() <= 1e-3 * meanEdge)
-        {
-          plan.events.push_back({ true, HI(), v, p(v) });
-          return;
-        }
-      plan.endInFace = true;
-      plan.endFace = f;
-      plan.end = x;
+      // The end lies in f: on one of its vertices or edges, or inside.
+      const Placement at = place(f, x);
+      if (at.vertex != SMesh::null_vertex())
+        plan.events.push_back({ true, HI(), at.vertex, p(at.vertex) });
+      else if (at.edge != SMesh::null_halfedge())
+        plan.events.push_back({ false, at.edge, VI(), at.point });
+      else
+      {
+        plan.endInFace = true;
+        plan.endFace = f;
+        plan.end = x;
+      }
     };
     // Crossing of edge (u, w) by the plane: the parameter along u -> w.
     auto crossing = [&](VI u, VI w, double& lambda) {
@@ -243,6 +281,39 @@ struct StrokeSplitter::Impl
     throw std::invalid_argument("the stroke could not be followed (the walk did not reach the point)");
   }
 
+  /// Triangulates a convex planar face (a triangle cut by straight line
+  /// edges) as a fan from its widest corner: a vertex inserted on an edge has
+  /// a straight angle, and a fan from it makes no needle triangles, where a
+  /// diagonal between the ends of that edge would make a flat one.
+  void triangulateConvex(FI f)
+  {
+    HI apex = m.halfedge(f);
+    double widest = -2.0;
+    for (HI h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    {
+      const Vec3 c = p(m.target(h));
+      const Vec3 a = (p(m.source(h)) - c).normalized(), b = (p(m.target(m.next(h))) - c).normalized();
+      const double straightness = -a.dot(b); // 1 for a straight angle
+      if (straightness > widest)
+      {
+        widest = straightness;
+        apex = h;
+      }
+    }
+    while (CGAL::degree(m.face(apex), m) > 3)
+      CGAL::Euler::split_face(apex, m.next(m.next(apex)), m);
+  }
+
+  void triangulateAround(VI v)
+  {
+    std::vector<FI> polygons;
+    for (FI f : CGAL::faces_around_target(m.halfedge(v), m))
+      if (f != SMesh::null_face() && CGAL::degree(f, m) > 3)
+        polygons.push_back(f);
+    for (FI f : polygons)
+      triangulateConvex(f);
+  }
+
   /// Splits the face shared by a and b (when they are not joined yet).
   void connect(VI a, VI b)
   {
@@ -314,13 +385,8 @@ struct StrokeSplitter::Impl
     }
     // Faces left with more than three corners (an edge split on their side)
     // are convex and planar: triangulate them.
-    std::set<FI> polygons;
     for (VI v : touched)
-      for (FI f : CGAL::faces_around_target(m.halfedge(v), m))
-        if (f != SMesh::null_face() && CGAL::degree(f, m) > 3)
-          polygons.insert(f);
-    for (FI f : polygons)
-      CGAL::Polygon_mesh_processing::triangulate_face(f, m);
+      triangulateAround(v);
     return line.size() - before;
   }
 };
@@ -364,15 +430,22 @@ std::size_t StrokeSplitter::addPoint(const Vec3& point)
   {
     // The input's faces keep their ids until the first split.
     const FI f(static_cast<SMesh::size_type>(hit.face));
-    for (VI v : CGAL::vertices_around_face(s.m.halfedge(f), s.m))
-      if ((s.p(v) - hit.point).norm() <= 1e-3 * s.meanEdge)
-      {
-        s.appendToLine(v);
-        return 1;
-      }
-    const HI h = CGAL::Euler::add_center_vertex(s.m.halfedge(f), s.m);
-    s.m.point(s.m.target(h)) = cgal::Point(hit.point.x(), hit.point.y(), hit.point.z());
-    s.appendToLine(s.m.target(h));
+    const Impl::Placement at = s.place(f, hit.point);
+    VI v = at.vertex;
+    if (v == SMesh::null_vertex() && at.edge != SMesh::null_halfedge())
+    {
+      const HI h = CGAL::Euler::split_edge(at.edge, s.m);
+      v = s.m.target(h);
+      s.m.point(v) = cgal::Point(at.point.x(), at.point.y(), at.point.z());
+      s.triangulateAround(v);
+    }
+    else if (v == SMesh::null_vertex())
+    {
+      const HI h = CGAL::Euler::add_center_vertex(s.m.halfedge(f), s.m);
+      v = s.m.target(h);
+      s.m.point(v) = cgal::Point(hit.point.x(), hit.point.y(), hit.point.z());
+    }
+    s.appendToLine(v);
     return 1;
   }
   const VI a(static_cast<SMesh::size_type>(s.line.back()));
