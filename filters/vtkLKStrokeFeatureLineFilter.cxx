@@ -3,20 +3,27 @@
 #include "latticekit/StrokeFeatureLine.h"
 #include "vtkLKPolyDataConversion.h"
 
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkMatrix4x4.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
+#include <vtkOBBTree.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
 
 vtkStandardNewMacro(vtkLKStrokeFeatureLineFilter);
 
@@ -24,7 +31,93 @@ vtkLKStrokeFeatureLineFilter::vtkLKStrokeFeatureLineFilter()
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
+  this->PickedStroke = vtkPolyData::New();
 }
+
+vtkLKStrokeFeatureLineFilter::~vtkLKStrokeFeatureLineFilter()
+{
+  this->SetCamera(nullptr);
+  this->PickedStroke->Delete();
+}
+
+vtkCxxSetObjectMacro(vtkLKStrokeFeatureLineFilter, Camera, vtkCamera);
+
+vtkMTimeType vtkLKStrokeFeatureLineFilter::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->Camera)
+    t = std::max(t, this->Camera->GetMTime());
+  return t;
+}
+
+vtkPolyData* vtkLKStrokeFeatureLineFilter::GetPickedStroke()
+{
+  return this->PickedStroke;
+}
+
+namespace
+{
+/// Display points (pixels) to the nearest visible surface points along the
+/// rays from the eye; rays that miss are skipped.
+std::vector<lk::Vec3> pickOnSurface(
+  vtkPolyData* mesh, vtkCamera* camera, const int size[2], const std::vector<lk::Vec3>& display)
+{
+  const double aspect = static_cast<double>(size[0]) / static_cast<double>(size[1]);
+  vtkNew<vtkMatrix4x4> toWorld;
+  toWorld->DeepCopy(camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0));
+  toWorld->Invert();
+  auto unproject = [&](double x, double y, double z, double out[3]) {
+    const double in[4] = { x, y, z, 1.0 };
+    double w[4];
+    toWorld->MultiplyPoint(in, w);
+    for (int i = 0; i < 3; ++i)
+      out[i] = w[i] / w[3];
+  };
+  vtkNew<vtkOBBTree> locator;
+  locator->SetDataSet(mesh);
+  locator->BuildLocator();
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  std::vector<lk::Vec3> picked;
+  vtkNew<vtkIdList> cells;
+  vtkNew<vtkPoints> hits;
+  for (const lk::Vec3& d : display)
+  {
+    const double x = 2.0 * d.x() / size[0] - 1.0, y = 2.0 * d.y() / size[1] - 1.0;
+    double nearPoint[3], farPoint[3];
+    unproject(x, y, -1.0, nearPoint);
+    unproject(x, y, 1.0, farPoint);
+    // Past the far clipping plane too: the ray runs until it has left the mesh's box.
+    const lk::Vec3 a(nearPoint[0], nearPoint[1], nearPoint[2]), f(farPoint[0], farPoint[1], farPoint[2]);
+    const lk::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
+    const lk::Vec3 dir = (f - a).normalized();
+    const lk::Vec3 b = a + dir * ((centre - a).norm() + diagonal);
+    // The first hit along the ray: all hits of the OBB tree, the nearest
+    // kept. (vtkCellLocator's IntersectWithLine and FindCellsAlongLine in
+    // VTK 9.1 can miss the front cells and return a hit on the far side.)
+    hits->Reset();
+    cells->Reset();
+    locator->IntersectWithLine(a.data(), b.data(), hits, cells);
+    double bestT = VTK_DOUBLE_MAX, best[3] = { 0, 0, 0 };
+    for (vtkIdType k = 0; k < hits->GetNumberOfPoints(); ++k)
+    {
+      double hit[3];
+      hits->GetPoint(k, hit);
+      const double t = (lk::Vec3(hit[0], hit[1], hit[2]) - a).norm();
+      if (t < bestT)
+      {
+        bestT = t;
+        std::copy(hit, hit + 3, best);
+      }
+    }
+    if (bestT < VTK_DOUBLE_MAX)
+      picked.emplace_back(best[0], best[1], best[2]);
+  }
+  return picked;
+}
+} // namespace
 
 void vtkLKStrokeFeatureLineFilter::SetStrokeConnection(vtkAlgorithmOutput* output)
 {
@@ -85,6 +178,35 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
       strokePd->GetPoint(i, p);
       stroke.emplace_back(p[0], p[1], p[2]);
     }
+  }
+  if (this->Camera)
+  {
+    if (this->ViewportSize[0] <= 0 || this->ViewportSize[1] <= 0)
+    {
+      vtkErrorMacro("Cannot make a feature line: a screen stroke needs the viewport size (SetViewportSize).");
+      return 0;
+    }
+    const std::size_t given = stroke.size();
+    stroke = pickOnSurface(input, this->Camera, this->ViewportSize, stroke);
+    if (stroke.size() < 2 && given >= 2)
+    {
+      vtkErrorMacro("Cannot make a feature line: the stroke misses the surface (" << stroke.size() << " of " << given
+                                                                                   << " screen points hit it).");
+      return 0;
+    }
+    if (stroke.size() < given)
+      vtkWarningMacro(<< given - stroke.size() << " of " << given << " screen points missed the surface and were skipped.");
+  }
+  {
+    vtkNew<vtkPoints> picked;
+    picked->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> line;
+    line->InsertNextCell(static_cast<vtkIdType>(stroke.size()));
+    for (const auto& p : stroke)
+      line->InsertCellPoint(picked->InsertNextPoint(p.data()));
+    this->PickedStroke->Initialize();
+    this->PickedStroke->SetPoints(picked);
+    this->PickedStroke->SetLines(line);
   }
   lk::StrokeOptions o;
   o.mode = this->Mode == PAINT ? lk::StrokeMode::Paint
@@ -165,4 +287,6 @@ void vtkLKStrokeFeatureLineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Mode: " << this->Mode << "\n";
   os << indent << "BrushRadius: " << this->BrushRadius << "\n";
   os << indent << "CloseTolerance: " << this->CloseTolerance << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1] << "\n";
 }

@@ -24,6 +24,15 @@
  * (feature lines) and vtkLKClosedLineCutFilter (cut lines) take. Field data
  * "Closed" (1 or 0).
  *
+ * Screen strokes: with a Camera and a ViewportSize set, the stroke's points
+ * are display coordinates (x, y in pixels from the viewport's lower left; z
+ * is ignored), as the interactor reports mouse positions. Each is picked onto
+ * the nearest visible surface along the ray from the eye through that pixel
+ * (the paper's picking, section 3.1), on an OBB tree of the mesh; pixels
+ * whose ray misses the surface are skipped. The picked world points then go
+ * through the chosen mode as a world-space stroke would. Without a camera
+ * (the default) the points are world points.
+ *
  * Bad input (a stroke of fewer than two points, non-finite points, a stroke
  * that misses the surface, a mesh that is not triangles) gives a VTK error
  * and empty outputs.
@@ -33,6 +42,8 @@
 
 #include "LatticeKitFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkCamera;
 
 class LATTICEKITFILTERS_EXPORT vtkLKStrokeFeatureLineFilter : public vtkPolyDataAlgorithm
 {
@@ -70,18 +81,35 @@ public:
   vtkGetMacro(CloseTolerance, double);
   ///@}
 
+  ///@{
+  /// Screen strokes (see above): the camera that showed the mesh and the
+  /// viewport's size in pixels. SetCamera(nullptr) goes back to world points.
+  void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  vtkSetVector2Macro(ViewportSize, int);
+  vtkGetVector2Macro(ViewportSize, int);
+  ///@}
+
+  /// The stroke as picked on the surface (world points) in the last update:
+  /// the input stroke itself for world strokes.
+  vtkPolyData* GetPickedStroke();
+
   /// Output 1: the feature line with MeshPointId.
   vtkPolyData* GetFeatureLineOutput();
 
 protected:
   vtkLKStrokeFeatureLineFilter();
-  ~vtkLKStrokeFeatureLineFilter() override = default;
+  ~vtkLKStrokeFeatureLineFilter() override;
+  vtkMTimeType GetMTime() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Mode = NEAREST_EDGES;
   double BrushRadius = 0.0;
   double CloseTolerance = 0.0;
+  vtkCamera* Camera = nullptr;
+  int ViewportSize[2] = { 0, 0 };
+  vtkPolyData* PickedStroke = nullptr;
 
 private:
   vtkLKStrokeFeatureLineFilter(const vtkLKStrokeFeatureLineFilter&) = delete;

@@ -216,6 +216,37 @@ class PipelineTest(unittest.TestCase):
         low, high = density.GetRange()
         self.assertGreater(high / max(low, 1e-9), 5.0)
 
+    def test_screen_stroke_with_a_camera(self):
+        # Pixels plus the camera that showed the mesh: picked on the visible side.
+        import latticekit
+        from vtkmodules.vtkFiltersSources import vtkSphereSource
+        from vtkmodules.vtkRenderingCore import vtkCamera
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+        ball = vtkSphereSource()
+        ball.SetThetaResolution(64)
+        ball.SetPhiResolution(48)
+        camera = vtkCamera()
+        camera.SetPosition(0, 0, 5)
+        camera.SetFocalPoint(0, 0, 0)
+        pixels = vtkPoints()
+        for x in range(150, 251, 10):  # a horizontal drag across the middle of 400 x 400
+            pixels.InsertNextPoint(x, 200, 0)
+        stroke = vtkPolyData()
+        stroke.SetPoints(pixels)
+        f = latticekit.vtkLKStrokeFeatureLineFilter()
+        f.SetInputConnection(ball.GetOutputPort())
+        f.SetStrokeData(stroke)
+        f.SetCamera(camera)
+        f.SetViewportSize(400, 400)
+        f.SetModeToSplit()
+        f.Update()
+        picked = f.GetPickedStroke()
+        self.assertEqual(picked.GetNumberOfPoints(), 11)
+        for i in range(picked.GetNumberOfPoints()):
+            self.assertGreater(picked.GetPoint(i)[2], 0.0)
+        self.assertGreater(f.GetFeatureLineOutput().GetNumberOfPoints(), 11)
+
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
         # vtkNrrdReader reads nothing; latticekit's reader must not be fooled.
