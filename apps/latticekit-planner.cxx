@@ -43,11 +43,17 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkThreshold.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkMatrix4x4.h>
 #include <vtkWindowToImageFilter.h>
 #include <vtk_jsoncpp.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <numeric>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -59,6 +65,7 @@
 namespace
 {
 const char* kHelp = "d: draw on/off | 1 paint 2 nearest 3 snap 4 split | x: cut (capped) | l: lattice | m: Metro colours\n"
+                    "n: pick the segment (smallest piece first) | g: move it (drag; shift+drag rotates) | r: reset its move\n"
                     "z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 struct Stroke
@@ -70,13 +77,39 @@ struct Stroke
 struct Session
 {
   std::vector<Stroke> strokes;
-  std::vector<Stroke> redo;
   bool cut = false;
   bool capping = true;
   bool lattice = false;
   long latticeVertices = 600;
   bool metro = false;
+  /// The moved segment: a piece index (pieces in cut order) and its rigid
+  /// transform, row-major 4x4 (the surgery moves the segment).
+  int segment = -1;
+  std::array<double, 16> segmentMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
 };
+
+bool isIdentity(const std::array<double, 16>& m)
+{
+  for (int i = 0; i < 16; ++i)
+    if (m[static_cast<std::size_t>(i)] != (i % 5 == 0 ? 1.0 : 0.0))
+      return false;
+  return true;
+}
+
+std::string matrixText(const std::array<double, 16>& m)
+{
+  std::ostringstream os;
+  os.precision(6);
+  os << std::fixed;
+  for (int r = 0; r < 4; ++r)
+  {
+    os << "  ";
+    for (int c = 0; c < 4; ++c)
+      os << (c ? " " : "") << m[static_cast<std::size_t>(4 * r + c)];
+    os << "\n";
+  }
+  return os.str();
+}
 
 const char* modeName(int mode)
 {
@@ -125,6 +158,12 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
   root["lattice"] = s.lattice;
   root["latticeVertices"] = static_cast<Json::Int64>(s.latticeVertices);
   root["metro"] = s.metro;
+  if (s.segment >= 0)
+  {
+    root["segment"]["piece"] = s.segment;
+    for (double v : s.segmentMatrix)
+      root["segment"]["matrix"].append(v);
+  }
   std::ofstream out(path);
   if (!out)
   {
@@ -174,6 +213,19 @@ bool loadSession(const std::string& path, Session& s, std::string& error)
   s.lattice = root.get("lattice", false).asBool();
   s.latticeVertices = static_cast<long>(root.get("latticeVertices", 600).asInt64());
   s.metro = root.get("metro", false).asBool();
+  if (root.isMember("segment"))
+  {
+    const Json::Value& seg = root["segment"];
+    const Json::Value& m = seg["matrix"];
+    if (!seg["piece"].isInt() || !m.isArray() || m.size() != 16)
+    {
+      error = "the segment in '" + path + "' needs a piece index and a 16-number matrix";
+      return false;
+    }
+    s.segment = seg["piece"].asInt();
+    for (Json::ArrayIndex i = 0; i < 16; ++i)
+      s.segmentMatrix[i] = m[i].asDouble();
+  }
   return true;
 }
 
@@ -194,8 +246,60 @@ public:
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   vtkSmartPointer<vtkPolyData> surface; // after the strokes
-  std::string message;
+  std::string message; ///< a problem: shown, and reported as "message:" in batch runs
+  std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
+  bool moving = false;                    ///< the mouse moves the segment
+  std::vector<Session> undoStack, redoStack; ///< whole-session snapshots
+  std::vector<std::vector<vtkSmartPointer<vtkActor>>> pieceActors;
+
+  /// Call before a change: the session as it was goes on the undo stack.
+  void remember()
+  {
+    undoStack.push_back(session);
+    redoStack.clear();
+  }
+
+  bool hasSegment() const { return session.segment >= 0 && session.segment < static_cast<int>(pieces.size()); }
+
+  vtkSmartPointer<vtkMatrix4x4> segmentMatrix() const
+  {
+    auto m = vtkSmartPointer<vtkMatrix4x4>::New();
+    m->DeepCopy(session.segmentMatrix.data());
+    return m;
+  }
+
+  /// Shows the segment where its transform puts it.
+  void placeSegment(const std::array<double, 16>& matrix)
+  {
+    for (std::size_t p = 0; p < pieceActors.size(); ++p)
+      for (auto& a : pieceActors[p])
+      {
+        if (static_cast<int>(p) == session.segment)
+        {
+          vtkNew<vtkMatrix4x4> m;
+          m->DeepCopy(matrix.data());
+          a->SetUserMatrix(m);
+        }
+        else
+          a->SetUserMatrix(nullptr);
+      }
+  }
+
+  /// The segment's transform as the surgery plan states it: which piece, the
+  /// matrix, its translation and rotation angle.
+  std::string segmentText() const
+  {
+    if (!hasSegment())
+      return "";
+    const auto& m = session.segmentMatrix;
+    const double trace = m[0] + m[5] + m[10];
+    const double angle = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979;
+    char line[200];
+    std::snprintf(line, sizeof line, "segment: piece %d moved, translation %.2f %.2f %.2f mm, rotation %.2f deg\n",
+      session.segment, m[3], m[7], m[11], angle);
+    return line + matrixText(m);
+  }
 
   void setup()
   {
@@ -210,7 +314,7 @@ public:
     renderer->AddViewProp(help);
     status->GetTextProperty()->SetFontSize(15);
     status->GetTextProperty()->SetColor(0.1, 0.1, 0.4);
-    status->SetDisplayPosition(8, 44);
+    status->SetDisplayPosition(8, 64);
     renderer->AddViewProp(status);
     scalarBar->SetTitle("Metro distance");
     scalarBar->SetNumberOfLabels(4);
@@ -321,8 +425,10 @@ public:
       pieces.push_back(whole);
     }
     const double colours[4][3] = { { 0.93, 0.85, 0.65 }, { 0.6, 0.75, 0.93 }, { 0.7, 0.9, 0.7 }, { 0.95, 0.7, 0.7 } };
+    pieceActors.assign(pieces.size(), {});
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
+      const std::size_t firstActor = sceneActors.size();
       vtkSmartPointer<vtkPolyData> shown = pieces[p];
       if (session.lattice)
       {
@@ -367,7 +473,12 @@ public:
       }
       else
         addActorData(shown, { colours[p % 4][0], colours[p % 4][1], colours[p % 4][2] }, false);
+      pieceActors[p].assign(sceneActors.begin() + static_cast<std::ptrdiff_t>(firstActor), sceneActors.end());
     }
+    if (session.segment >= static_cast<int>(pieces.size()))
+      message = "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
+        std::to_string(pieces.size()) + " piece(s)";
+    placeSegment(session.segmentMatrix);
     updateStatus();
   }
 
@@ -426,8 +537,14 @@ public:
     std::ostringstream s;
     s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
       << " | pieces: " << pieces.size() << (session.lattice ? " | lattice" : "");
+    if (moving)
+      s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
+    else if (hasSegment())
+      s << " | segment: piece " << session.segment << (isIdentity(session.segmentMatrix) ? "" : " (moved)");
     if (!message.empty())
       s << " | " << message;
+    if (!notice.empty())
+      s << " | " << notice;
     status->SetInput(s.str().c_str());
   }
 
@@ -449,6 +566,7 @@ public:
     for (std::size_t p = 0; p < pieces.size(); ++p)
       std::printf("piece %zu: %lld points, %lld faces\n", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
         static_cast<long long>(pieces[p]->GetNumberOfPolys()));
+    std::printf("%s", segmentText().c_str());
     if (!message.empty())
       std::printf("message: %s\n", message.c_str());
   }
@@ -458,11 +576,33 @@ public:
     vtksys::SystemTools::MakeDirectory(folder);
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
+      // The segment goes where the plan moves it.
+      vtkSmartPointer<vtkPolyData> piece = pieces[p];
+      if (static_cast<int>(p) == session.segment && !isIdentity(session.segmentMatrix))
+      {
+        vtkNew<vtkTransform> t;
+        t->SetMatrix(session.segmentMatrix.data());
+        vtkNew<vtkTransformPolyDataFilter> move;
+        move->SetInputData(pieces[p]);
+        move->SetTransform(t);
+        move->Update();
+        piece = move->GetOutput();
+      }
       for (const char* ext : { ".stl", ".vtp", ".obj" })
       {
         const std::string path = folder + "/piece" + std::to_string(p) + ext;
-        if (!lkapp::writeMesh(pieces[p], path, error))
+        if (!lkapp::writeMesh(piece, path, error))
           return false;
+      }
+    }
+    if (hasSegment())
+    {
+      std::ofstream out(folder + "/segment_transform.txt");
+      out << segmentText();
+      if (!out)
+      {
+        error = "cannot write '" + folder + "/segment_transform.txt'";
+        return false;
       }
     }
     return true;
@@ -490,6 +630,84 @@ public:
   std::string sessionPath = "planner_session.json", exportFolder = "planner-pieces";
   bool pressed = false;
   vtkNew<vtkCellPicker> picker;
+  // Moving the segment: where the drag started, the session then, the
+  // segment's centre (moved) and the matrix being shown.
+  int dragStart[2] = { 0, 0 };
+  Session beforeMove;
+  double centre[3] = { 0, 0, 0 };
+  std::array<double, 16> dragMatrix{};
+
+  /// World point at display (x, y) on the plane through `centre` facing the camera.
+  void displayToWorld(double x, double y, double world[3])
+  {
+    vtkRenderer* ren = planner->renderer;
+    ren->SetWorldPoint(centre[0], centre[1], centre[2], 1.0);
+    ren->WorldToDisplay();
+    const double depth = ren->GetDisplayPoint()[2];
+    ren->SetDisplayPoint(x, y, depth);
+    ren->DisplayToWorld();
+    const double* w = ren->GetWorldPoint();
+    for (int i = 0; i < 3; ++i)
+      world[i] = w[i] / w[3];
+  }
+
+  void startMove()
+  {
+    pressed = true;
+    beforeMove = planner->session;
+    const int* pos = this->Interactor->GetEventPosition();
+    dragStart[0] = pos[0];
+    dragStart[1] = pos[1];
+    double b[6];
+    planner->pieces[static_cast<std::size_t>(planner->session.segment)]->GetBounds(b);
+    const double c[4] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]), 1.0 };
+    double moved[4];
+    planner->segmentMatrix()->MultiplyPoint(c, moved);
+    std::copy(moved, moved + 3, centre);
+    dragMatrix = planner->session.segmentMatrix;
+  }
+
+  void drag()
+  {
+    const int* pos = this->Interactor->GetEventPosition();
+    vtkNew<vtkTransform> t;
+    t->PostMultiply();
+    t->SetMatrix(beforeMove.segmentMatrix.data());
+    if (this->Interactor->GetShiftKey())
+    {
+      // Rotate about the view direction through the segment's centre.
+      double axis[3];
+      planner->renderer->GetActiveCamera()->GetDirectionOfProjection(axis);
+      t->Translate(-centre[0], -centre[1], -centre[2]);
+      t->RotateWXYZ(0.5 * (pos[0] - dragStart[0]), axis);
+      t->Translate(centre);
+    }
+    else
+    {
+      double a[3], b[3];
+      displayToWorld(dragStart[0], dragStart[1], a);
+      displayToWorld(pos[0], pos[1], b);
+      t->Translate(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+    }
+    vtkMatrix4x4* m = t->GetMatrix();
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        dragMatrix[static_cast<std::size_t>(4 * r + c)] = m->GetElement(r, c);
+    planner->placeSegment(dragMatrix);
+    this->Interactor->Render();
+  }
+
+  void endMove()
+  {
+    pressed = false;
+    planner->undoStack.push_back(beforeMove);
+    planner->redoStack.clear();
+    planner->session.segmentMatrix = dragMatrix;
+    std::printf("%s", planner->segmentText().c_str());
+    std::fflush(stdout);
+    planner->updateStatus();
+    this->Interactor->Render();
+  }
 
   void pick()
   {
@@ -506,6 +724,8 @@ public:
   }
   void OnLeftButtonDown() override
   {
+    if (planner->moving && planner->hasSegment())
+      return startMove();
     if (!planner->drawing)
       return vtkInteractorStyleTrackballCamera::OnLeftButtonDown();
     pressed = true;
@@ -514,19 +734,23 @@ public:
   }
   void OnMouseMove() override
   {
+    if (planner->moving && pressed)
+      return drag();
     if (planner->drawing && pressed)
       return pick();
     vtkInteractorStyleTrackballCamera::OnMouseMove();
   }
   void OnLeftButtonUp() override
   {
+    if (planner->moving && pressed)
+      return endMove();
     if (!planner->drawing || !pressed)
       return vtkInteractorStyleTrackballCamera::OnLeftButtonUp();
     pressed = false;
     if (planner->current.size() >= 2)
     {
+      planner->remember();
       planner->session.strokes.push_back({ planner->mode, planner->current });
-      planner->session.redo.clear();
       planner->rebuild();
     }
     planner->current.clear();
@@ -539,9 +763,11 @@ public:
     Session& s = planner->session;
     std::string error;
     bool rebuild = true;
+    planner->notice.clear();
     if (key == "d")
     {
       planner->drawing = !planner->drawing;
+      planner->moving = false;
       rebuild = false;
     }
     else if (key == "1" || key == "2" || key == "3" || key == "4")
@@ -549,30 +775,81 @@ public:
       planner->mode = key[0] - '1';
       rebuild = false;
     }
-    else if (key == "x")
-      s.cut = !s.cut;
-    else if (key == "l")
-      s.lattice = !s.lattice;
-    else if (key == "m")
-      s.metro = !s.metro;
-    else if (key == "z" && !s.strokes.empty())
+    else if (key == "x" || key == "l" || key == "m")
     {
-      s.redo.push_back(s.strokes.back());
-      s.strokes.pop_back();
+      planner->remember();
+      bool& flag = key == "x" ? s.cut : key == "l" ? s.lattice : s.metro;
+      flag = !flag;
     }
-    else if (key == "y" && !s.redo.empty())
+    else if (key == "n")
     {
-      s.strokes.push_back(s.redo.back());
-      s.redo.pop_back();
+      // The next segment, smallest piece first (the part a surgeon moves).
+      rebuild = false;
+      if (planner->pieces.size() < 2)
+        planner->message = "no segment to pick: cut first (x)";
+      else
+      {
+        std::vector<int> bySize(planner->pieces.size());
+        std::iota(bySize.begin(), bySize.end(), 0);
+        std::stable_sort(bySize.begin(), bySize.end(), [&](int a, int b) {
+          return planner->pieces[static_cast<std::size_t>(a)]->GetNumberOfPolys() <
+            planner->pieces[static_cast<std::size_t>(b)]->GetNumberOfPolys();
+        });
+        const auto at = std::find(bySize.begin(), bySize.end(), s.segment);
+        planner->remember();
+        s.segment = at == bySize.end() || at + 1 == bySize.end() ? bySize.front() : *(at + 1);
+        s.segmentMatrix = Session().segmentMatrix;
+        planner->placeSegment(s.segmentMatrix);
+        planner->message.clear();
+      }
+    }
+    else if (key == "g")
+    {
+      rebuild = false;
+      if (!planner->hasSegment())
+        planner->message = "pick a segment first (n)";
+      else
+      {
+        planner->moving = !planner->moving;
+        planner->drawing = false;
+      }
+    }
+    else if (key == "r")
+    {
+      rebuild = false;
+      if (planner->hasSegment())
+      {
+        planner->remember();
+        s.segmentMatrix = Session().segmentMatrix;
+        planner->placeSegment(s.segmentMatrix);
+      }
+    }
+    else if (key == "z" && !planner->undoStack.empty())
+    {
+      planner->redoStack.push_back(s);
+      s = planner->undoStack.back();
+      planner->undoStack.pop_back();
+    }
+    else if (key == "y" && !planner->redoStack.empty())
+    {
+      planner->undoStack.push_back(s);
+      s = planner->redoStack.back();
+      planner->redoStack.pop_back();
     }
     else if (key == "w")
     {
-      planner->message = saveSession(s, sessionPath, error) ? "saved " + sessionPath : error;
+      if (saveSession(s, sessionPath, error))
+        planner->notice = "saved " + vtksys::SystemTools::GetFilenameName(sessionPath);
+      else
+        planner->message = error;
       rebuild = false;
     }
     else if (key == "e")
     {
-      planner->message = planner->exportPieces(exportFolder, error) ? "exported to " + exportFolder : error;
+      if (planner->exportPieces(exportFolder, error))
+        planner->notice = "exported to " + exportFolder;
+      else
+        planner->message = error;
       rebuild = false;
     }
     else if (key == "q" || key == "Escape")
@@ -600,7 +877,7 @@ void usage(std::ostream& os)
      << kHelp
      << "\n"
         "\n"
-        "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro)\n"
+        "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro, moved segment)\n"
         "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
         "  --export FOLDER      write every piece as STL, VTP and OBJ and exit\n"
         "  --session OUT        where 'w' saves the session (default planner_session.json)\n"

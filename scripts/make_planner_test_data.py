@@ -1,7 +1,8 @@
 # Makes the planner test data: tests/data/mandible_session.json (a split-mode stroke
 # along the plane x = centre of the TCIA mandible, cut, lattice, Metro) and
 # tests/data/mandible_events.log (a closed circle stroke drawn with the mouse on the
-# condyle, then the cut and lattice keys, in vtkInteractorEventRecorder format).
+# condyle, then the cut and lattice keys, then the cut-out segment moved and
+# rotated with the mouse and the session saved; vtkInteractorEventRecorder format).
 # Run from the repository root after a build: xvfb-run -a /usr/bin/python3 scripts/make_planner_test_data.py
 import json
 import sys
@@ -60,4 +61,19 @@ ev('LeftButtonReleaseEvent', *pts[-1])
 for k in ['x', 'l']:
     for e in ['KeyPressEvent', 'CharEvent', 'KeyReleaseEvent']:
         ev(e, cx, cy, k, k)
+# Pick the segment (the smallest piece: the cut-out cap), switch to move mode,
+# drag it 60 pixels right and 20 up, then rotate it with shift+drag, and save.
+for k in ['n', 'g']:
+    for e in ['KeyPressEvent', 'CharEvent', 'KeyReleaseEvent']:
+        ev(e, 500, 375, k, k)
+ev('LeftButtonPressEvent', 500, 375)
+for k in range(1, 7):
+    ev('MouseMoveEvent', 500 + 10 * k, 375 + round(20 * k / 6))
+ev('LeftButtonReleaseEvent', 560, 395)
+lines.append('LeftButtonPressEvent 500 375 0 1 0 0 0')
+for k in range(1, 5):
+    lines.append('MouseMoveEvent %d 375 0 1 0 0 0' % (500 + 10 * k))
+lines.append('LeftButtonReleaseEvent 540 375 0 1 0 0 0')
+for e in ['KeyPressEvent', 'CharEvent', 'KeyReleaseEvent']:
+    ev(e, 500, 375, 'w', 'w')
 open('tests/data/mandible_events.log', 'w').write('\n'.join(lines) + '\n')
