@@ -1,43 +1,65 @@
-// latticekit-demo: the main job on a CT. Version 0 (until the lattice exists):
-// CT -> bone surface -> decimated copy (vtkQuadricDecimation) -> Metro error of
-// the copy against the surface -> files, a short report and a PNG of the
-// error painted on the surface.
+// latticekit-demo: the main job. A mandible osteotomy planned on a CT:
+// CT -> mandible surface -> a scripted closed pen stroke around one side of
+// the mandible body (split mode) -> capped cut into two pieces -> a lattice
+// for each piece (the cut line kept exactly) -> a Metro report like the
+// paper's Table 2 (no cut / cut / cut with quads), exported pieces and
+// lattices, and PNG pictures.
 #include "common/AppSupport.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKLatticeFitFilter.h"
+#include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKMetroFilter.h"
+#include "vtkLKStrokeFeatureLineFilter.h"
 
 #include <vtkActor.h>
+#include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkCutter.h>
 #include <vtkDataArray.h>
+#include <vtkExtractEdges.h>
+#include <vtkExtractVOI.h>
 #include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkImageConstantPad.h>
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPlane.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
-#include <vtkQuadricDecimation.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkStripper.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTubeFilter.h>
 #include <vtkWindowToImageFilter.h>
+#include <vtk_jsoncpp.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
-#include <limits>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #ifndef LATTICEKIT_SOURCE_DIR
 #define LATTICEKIT_SOURCE_DIR "."
@@ -47,28 +69,23 @@ namespace
 {
 void usage(std::ostream& os)
 {
-  os << "usage: latticekit-demo [INPUT] [-o FOLDER] [options]\n"
+  os << "usage: latticekit-demo [INPUT] [-o FOLDER] [--plan PLAN.json] [options]\n"
         "\n"
-        "Runs the main job: CT -> bone surface -> simplified copy -> Metro error -> files,\n"
-        "report.md and error.png in FOLDER (default: latticekit-output).\n"
-        "INPUT defaults to the bundled CT head (sample_data/cthead/cthead_hu_approx.nii.gz).\n"
+        "Runs the main job, a mandible osteotomy plan on a CT: the mandible surface, a scripted\n"
+        "closed pen stroke around one side of the mandible body (split mode), the capped cut into\n"
+        "two pieces, a lattice for each piece with the cut line kept exactly, and a Metro report\n"
+        "like the paper's Table 2 (no cut / cut / cut with quads). Writes to FOLDER (default\n"
+        "latticekit-output): mandible.vtp/.stl, the cut line, piece0/1 (.stl .vtp .obj), the\n"
+        "lattices and their surfaces, report.md and plan.png, pieces.png, error.png.\n"
+        "INPUT defaults to the bundled CT head and PLAN to its plan\n"
+        "(sample_data/cthead/mandible_plan.json: crop box, seed, iso value, cut plane, lattice\n"
+        "size, view; see that file).\n"
         "\n"
-        "  --iso V          bone iso value in HU (default 300)\n"
-        "  --vertices N     vertices of the simplified copy (default 20000)\n"
-        "  --samples N      Metro face samples per direction (default: 10 per face)\n"
-        "  --smooth N       windowed-sinc smoothing iterations of the bone (default 10)\n"
-        "  --view-from X,Y,Z  direction from the surface to the camera, patient coordinates\n"
-        "                   (default 0,-1,0: anterior in LPS)\n"
-        "  --view-up X,Y,Z  camera up direction (default 0,0,1: superior)\n"
-        "  --no-render      skip the PNG (it needs an X display: run under xvfb-run)\n"
+        "  --plan FILE      the plan (JSON)\n"
+        "  --vertices N     lattice control vertices in all (default: the plan's)\n"
+        "  --no-render      skip the PNGs (they need an X display: run under xvfb-run)\n"
         "  -q, --quiet      no progress bars\n"
         "  -h, --help       this help\n";
-}
-
-double field(vtkPolyData* pd, const char* name)
-{
-  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
-  return a ? a->GetTuple1(0) : 0.0;
 }
 
 using Clock = std::chrono::steady_clock;
@@ -77,83 +94,401 @@ double since(Clock::time_point t)
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-bool renderError(vtkPolyData* colored, double maxDistance, const double viewFrom[3],
-  const double viewUp[3], const std::string& title, const std::string& png, std::string& error)
+double field(vtkPolyData* pd, const char* name)
+{
+  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
+  return a ? a->GetTuple1(0) : 0.0;
+}
+
+long long fileBytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  return in ? static_cast<long long>(in.tellg()) : -1;
+}
+
+/// The plan of the osteotomy (see sample_data/cthead/mandible_plan.json).
+struct Plan
+{
+  double iso = 300.0;
+  int smoothing = 10;
+  bool crop = false;
+  std::array<double, 6> box{};      ///< data coordinates, mm
+  bool seeded = false;
+  std::array<double, 3> seed{};     ///< the mandible's component
+  std::array<double, 3> origin{};   ///< the cut plane
+  std::array<double, 3> normal{};
+  double penOffset = 0.3;           ///< mm off the surface
+  double penStep = 1.0;             ///< mm between stroke points
+  long vertices = 1500;
+  std::array<double, 3> viewFrom{ 0, 0, 1 }, viewUp{ 0, -1, 0 };
+};
+
+bool readTriple(const Json::Value& v, std::array<double, 3>& out)
+{
+  if (!v.isArray() || v.size() != 3)
+    return false;
+  for (Json::ArrayIndex i = 0; i < 3; ++i)
+  {
+    if (!v[i].isNumeric())
+      return false;
+    out[i] = v[i].asDouble();
+  }
+  return true;
+}
+
+bool loadPlan(const std::string& path, Plan& plan, std::string& error)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    error = "cannot open the plan '" + path + "'";
+    return false;
+  }
+  Json::Value root;
+  Json::CharReaderBuilder builder;
+  std::string errs;
+  if (!Json::parseFromStream(builder, in, &root, &errs) || !root.isObject())
+  {
+    error = "'" + path + "' is not a plan (JSON object): " + errs;
+    return false;
+  }
+  plan.iso = root.get("iso", plan.iso).asDouble();
+  plan.smoothing = root.get("smoothing", plan.smoothing).asInt();
+  if (root.isMember("crop"))
+  {
+    const Json::Value& c = root["crop"];
+    if (!c.isArray() || c.size() != 6)
+    {
+      error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax]";
+      return false;
+    }
+    for (Json::ArrayIndex i = 0; i < 6; ++i)
+      plan.box[i] = c[i].asDouble();
+    plan.crop = true;
+  }
+  if (root.isMember("seed"))
+  {
+    if (!readTriple(root["seed"], plan.seed))
+    {
+      error = "the plan's seed must be [x, y, z]";
+      return false;
+    }
+    plan.seeded = true;
+  }
+  const Json::Value& cut = root["cut"];
+  if (!readTriple(cut["origin"], plan.origin) || !readTriple(cut["normal"], plan.normal))
+  {
+    error = "the plan needs a cut plane: \"cut\": {\"origin\": [x, y, z], \"normal\": [x, y, z]}";
+    return false;
+  }
+  plan.penOffset = cut.get("penOffset", plan.penOffset).asDouble();
+  plan.penStep = cut.get("penStep", plan.penStep).asDouble();
+  plan.vertices = root.get("latticeVertices", static_cast<Json::Int64>(plan.vertices)).asInt64();
+  if (root.isMember("view") &&
+    (!readTriple(root["view"]["from"], plan.viewFrom) || !readTriple(root["view"]["up"], plan.viewUp)))
+  {
+    error = "the plan's view needs \"from\" and \"up\" as [x, y, z]";
+    return false;
+  }
+  const double n = std::sqrt(plan.normal[0] * plan.normal[0] + plan.normal[1] * plan.normal[1] + plan.normal[2] * plan.normal[2]);
+  if (!(n > 0) || plan.vertices < 8 || !(plan.penStep > 0) || plan.penOffset < 0)
+  {
+    error = "the plan's cut normal must be non-zero, latticeVertices at least 8, penStep above 0";
+    return false;
+  }
+  return true;
+}
+
+/// The scripted pen stroke: the section of the surface by the cut plane (the
+/// closed loop nearest the plane's origin), traced every penStep mm and
+/// penOffset mm off the surface, as a pen held just above the bone.
+vtkSmartPointer<vtkPolyData> scriptedStroke(vtkPolyData* surface, const Plan& plan, std::string& error)
+{
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(plan.origin.data());
+  plane->SetNormal(plan.normal.data());
+  vtkNew<vtkCutter> cutter;
+  cutter->SetInputData(surface);
+  cutter->SetCutFunction(plane);
+  vtkNew<vtkStripper> strip;
+  strip->SetInputConnection(cutter->GetOutputPort());
+  strip->JoinContiguousSegmentsOn();
+  strip->Update();
+  vtkPolyData* sections = strip->GetOutput();
+  std::vector<std::array<double, 3>> loop;
+  double best = 1e300;
+  auto it = vtk::TakeSmartPointer(sections->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n < 8 || ids[0] != ids[n - 1])
+      continue; // open sections (at the volume's edge) are not loops
+    std::vector<std::array<double, 3>> pts(static_cast<std::size_t>(n));
+    double d = 1e300;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      sections->GetPoint(ids[k], pts[static_cast<std::size_t>(k)].data());
+      double dd = 0;
+      for (int c = 0; c < 3; ++c)
+        dd += (pts[static_cast<std::size_t>(k)][c] - plan.origin[c]) * (pts[static_cast<std::size_t>(k)][c] - plan.origin[c]);
+      d = std::min(d, dd);
+    }
+    if (d < best)
+    {
+      best = d;
+      loop = pts;
+    }
+  }
+  if (loop.empty())
+  {
+    error = "the plan's cut plane does not cross the mandible in a closed loop";
+    return nullptr;
+  }
+  std::array<double, 3> centre{ 0, 0, 0 };
+  for (const auto& p : loop)
+    for (int c = 0; c < 3; ++c)
+      centre[c] += p[c] / static_cast<double>(loop.size());
+  vtkNew<vtkPoints> pts;
+  double run = 1e300;
+  for (std::size_t i = 0; i + 1 < loop.size(); ++i)
+  {
+    double step = 0;
+    for (int c = 0; c < 3; ++c)
+      step += (loop[i + 1][c] - loop[i][c]) * (loop[i + 1][c] - loop[i][c]);
+    run += std::sqrt(step);
+    if (run < plan.penStep)
+      continue;
+    run = 0;
+    double out[3], len = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c] = loop[i][c] - centre[c];
+      len += out[c] * out[c];
+    }
+    len = std::sqrt(len);
+    double p[3];
+    for (int c = 0; c < 3; ++c)
+      p[c] = loop[i][c] + (len > 0 ? plan.penOffset * out[c] / len : 0.0);
+    pts->InsertNextPoint(p);
+  }
+  pts->InsertNextPoint(pts->GetPoint(0)); // the pen comes back to where it started
+  auto stroke = vtkSmartPointer<vtkPolyData>::New();
+  stroke->SetPoints(pts);
+  return stroke;
+}
+
+/// The piece `r` of the cut (cells with RegionId r), points compacted; the
+/// cap border (edges between cap and bone triangles) as feature lines with
+/// MeshPointId, the form vtkLKLatticeFitFilter takes.
+void extractPiece(vtkPolyData* cut, int r, vtkPolyData* piece, vtkPolyData* border)
+{
+  vtkDataArray* region = cut->GetCellData()->GetArray("RegionId");
+  vtkDataArray* cap = cut->GetCellData()->GetArray("Cap");
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(cut->GetNumberOfPoints()), -1);
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edgeSides; // bit 1: bone, bit 2: cap
+  auto it = vtk::TakeSmartPointer(cut->GetPolys()->NewIterator());
+  vtkIdType cellId = cut->GetNumberOfVerts() + cut->GetNumberOfLines();
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
+  {
+    if (static_cast<int>(region->GetTuple1(cellId)) != r)
+      continue;
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    polys->InsertNextCell(n);
+    const int side = cap && cap->GetTuple1(cellId) > 0.5 ? 2 : 1;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      vtkIdType& id = newId[static_cast<std::size_t>(ids[k])];
+      if (id < 0)
+        id = pts->InsertNextPoint(cut->GetPoint(ids[k]));
+      polys->InsertCellPoint(id);
+      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
+      edgeSides[{ std::min(a, b), std::max(a, b) }] |= side;
+    }
+  }
+  piece->SetPoints(pts);
+  piece->SetPolys(polys);
+  vtkNew<vtkPoints> bp;
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIdTypeArray> meshIds;
+  meshIds->SetName("MeshPointId");
+  for (const auto& [e, sides] : edgeSides)
+  {
+    if (sides != 3)
+      continue;
+    lines->InsertNextCell(2);
+    for (vtkIdType v : { e.first, e.second })
+    {
+      const vtkIdType id = newId[static_cast<std::size_t>(v)];
+      lines->InsertCellPoint(bp->InsertNextPoint(pts->GetPoint(id)));
+      meshIds->InsertNextValue(id);
+    }
+  }
+  border->SetPoints(bp);
+  border->SetLines(lines);
+  border->GetPointData()->AddArray(meshIds);
+}
+
+struct Row
+{
+  std::string name;
+  double vertices = 0, triangles = 0, quads = 0, polygons = 0;
+  long long bytes = 0;
+  double max = 0, mean = 0, rms = 0;
+  double seconds = 0;
+};
+
+/// Lattices for each mesh (vertices shared in proportion to the faces), their
+/// surfaces appended, Metro against the meshes appended.
+Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyData>>& meshes,
+  const std::vector<vtkSmartPointer<vtkPolyData>>& borders, long vertices, bool quads, const std::string& folder,
+  const std::string& stem, bool quiet, vtkSmartPointer<vtkPolyData>& surfaceOut,
+  std::vector<vtkSmartPointer<vtkPolyData>>& latticesOut)
+{
+  Row row;
+  row.name = name;
+  const auto start = Clock::now();
+  double faces = 0;
+  for (const auto& m : meshes)
+    faces += static_cast<double>(m->GetNumberOfPolys());
+  vtkNew<vtkAppendPolyData> surfaces, dense;
+  latticesOut.clear();
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(meshes[i]);
+    if (i < borders.size() && borders[i] && borders[i]->GetNumberOfLines() > 0)
+    {
+      fit->SetFeatureLinesData(borders[i]);
+      fit->LockFeaturesOn();
+    }
+    const auto share = static_cast<vtkIdType>(std::llround(static_cast<double>(vertices) *
+      static_cast<double>(meshes[i]->GetNumberOfPolys()) / faces));
+    fit->SetTargetNumberOfVertices(std::max<vtkIdType>(8, share));
+    fit->SetQuadPairing(quads);
+    fit->SetRefinement(quads); // the paper's open problem: refine after pairing
+    fit->ComputeErrorOff();
+    {
+      lkapp::ProgressBar bar(fit, name + " lattice " + std::to_string(i), !quiet);
+      fit->Update();
+    }
+    if (lkapp::errorCount() > 0)
+      return row;
+    vtkPolyData* lattice = fit->GetOutput();
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->DeepCopy(lattice);
+    latticesOut.push_back(copy);
+    row.vertices += field(lattice, "ControlVertices");
+    row.triangles += field(lattice, "Triangles");
+    row.quads += field(lattice, "Quads");
+    row.polygons += field(lattice, "DisplayPolygons");
+    const std::string path = folder + "/" + stem + (meshes.size() > 1 ? std::to_string(i) : "") + ".vtp";
+    std::string error;
+    if (!lkapp::writeMesh(lattice, path, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return row;
+    }
+    row.bytes += fileBytes(path);
+    vtkNew<vtkLKLatticeSurfaceFilter> surface;
+    surface->SetInputData(lattice);
+    surface->SetResolution(6);
+    surface->Update();
+    surfaces->AddInputData(surface->GetOutput());
+    dense->AddInputData(meshes[i]);
+  }
+  surfaces->Update();
+  dense->Update();
+  vtkNew<vtkLKMetroFilter> metro;
+  metro->SetInputData(surfaces->GetOutput());
+  metro->SetTargetData(dense->GetOutput());
+  metro->Update();
+  vtkPolyData* m = metro->GetOutput();
+  row.max = field(m, "Hausdorff_MaxPercent");
+  row.mean = field(m, "Hausdorff_MeanPercent");
+  row.rms = field(m, "Hausdorff_RMSPercent");
+  surfaceOut = vtkSmartPointer<vtkPolyData>::New();
+  surfaceOut->ShallowCopy(m);
+  row.seconds = since(start);
+  return row;
+}
+
+vtkSmartPointer<vtkActor> surfaceActor(vtkPolyData* pd, const double colour[3])
 {
   vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(colored);
+  normals->SetInputData(pd);
   normals->SplittingOff();
-  normals->ConsistencyOff();
-  normals->AutoOrientNormalsOff();
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0);
-  lut->SetTableRange(0.0, maxDistance > 0 ? maxDistance : 1.0);
-  lut->Build();
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(normals->GetOutputPort());
-  mapper->SetScalarModeToUsePointFieldData();
-  mapper->SelectColorArray("Distance");
-  mapper->SetLookupTable(lut);
-  mapper->SetScalarRange(0.0, maxDistance > 0 ? maxDistance : 1.0);
-  mapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> actor;
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetInterpolationToGouraud();
+  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
   actor->GetProperty()->SetSpecular(0.2);
-  vtkNew<vtkScalarBarActor> bar;
-  bar->SetLookupTable(lut);
-  bar->SetTitle("distance (mm)");
-  lut->SetAboveRangeColor(1.0, 0.0, 0.0, 1.0);
-  lut->UseAboveRangeColorOn();
-  bar->SetNumberOfLabels(5);
-  bar->SetMaximumWidthInPixels(90);
-  bar->GetTitleTextProperty()->SetFontSize(14);
+  return actor;
+}
+
+vtkSmartPointer<vtkActor> lineActor(vtkPolyData* pd, const double colour[3], double width)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(pd);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+  actor->GetProperty()->LightingOff();
+  return actor;
+}
+
+bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBarActor* bar, const std::string& title,
+  const Plan& plan, const std::string& png)
+{
+  vtkNew<vtkRenderer> renderer;
+  for (const auto& a : actors)
+    renderer->AddActor(a);
+  if (bar)
+    renderer->AddViewProp(bar);
   vtkNew<vtkTextActor> text;
   text->SetInput(title.c_str());
   text->GetTextProperty()->SetFontSize(16);
+  text->GetTextProperty()->SetColor(0, 0, 0);
   text->SetDisplayPosition(10, 10);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->AddViewProp(bar);
   renderer->AddViewProp(text);
   renderer->SetBackground(1.0, 1.0, 1.0);
-  text->GetTextProperty()->SetColor(0, 0, 0);
-  bar->GetLabelTextProperty()->SetColor(0, 0, 0);
-  bar->GetTitleTextProperty()->SetColor(0, 0, 0);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(0, 0, 0);
-  camera->SetPosition(viewFrom);
-  camera->SetViewUp(viewUp);
+  camera->SetPosition(plan.viewFrom.data());
+  camera->SetViewUp(plan.viewUp.data());
   renderer->ResetCamera();
-  camera->Zoom(1.25);
+  camera->Zoom(1.3);
+  renderer->ResetCameraClippingRange();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
-  window->SetSize(900, 800);
+  window->SetSize(1000, 800);
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
-  grab->ReadFrontBufferOff();
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(grab->GetOutputPort());
   writer->SetFileName(png.c_str());
   writer->Write();
-  if (!vtksys::SystemTools::FileExists(png, true))
-  {
-    error = "could not write " + png;
-    return false;
-  }
-  return true;
+  return fileBytes(png) > 0;
 }
 } // namespace
 
 int main(int argc, char* argv[])
 {
   std::string input = std::string(LATTICEKIT_SOURCE_DIR) + "/sample_data/cthead/cthead_hu_approx.nii.gz";
-  std::string folder = "latticekit-output";
-  double iso = 300.0;
-  long vertices = 20000, samples = 0, smooth = 10;
-  double viewFrom[3] = { 0, -1, 0 }, viewUp[3] = { 0, 0, 1 };
+  std::string planPath, folder = "latticekit-output";
+  long vertices = 0;
   bool render = true, quiet = false, inputGiven = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -161,185 +496,296 @@ int main(int argc, char* argv[])
   {
     if (a == "-o" || a == "--output")
       folder = args.value(a);
-    else if (a == "--iso")
-      iso = args.number(a, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), "a number");
+    else if (a == "--plan")
+      planPath = args.value(a);
     else if (a == "--vertices")
-      vertices = args.integer(a, 4, std::numeric_limits<long>::max(), "an integer >= 4");
-    else if (a == "--samples")
-      samples = args.integer(a, 1, std::numeric_limits<long>::max(), "a positive integer");
-    else if (a == "--smooth")
-      smooth = args.integer(a, 0, 1000, "an integer from 0 to 1000");
-    else if (a == "--view-from")
-      args.triple(a, viewFrom);
-    else if (a == "--view-up")
-      args.triple(a, viewUp);
+      vertices = args.integer(a, 8, 10000000L, "an integer of at least 8");
     else if (a == "--no-render")
       render = false;
     else if (a == "-q" || a == "--quiet")
       quiet = true;
     else if (lkapp::Arguments::isOption(a))
       args.unknown(a);
-    else if (!inputGiven)
+    else
     {
+      std::string slot = inputGiven ? "x" : "";
+      args.positional(a, slot, "INPUT");
       input = a;
       inputGiven = true;
     }
-    else
+  }
+  if (planPath.empty())
+  {
+    if (inputGiven)
     {
-      std::cerr << "error: more than one input given\n";
+      std::cerr << "error: an INPUT other than the bundled CT needs its --plan (see "
+                   "sample_data/cthead/mandible_plan.json)\n";
       return 2;
     }
+    planPath = std::string(LATTICEKIT_SOURCE_DIR) + "/sample_data/cthead/mandible_plan.json";
   }
   lkapp::installMessageHandler(quiet);
-  if (!vtksys::SystemTools::MakeDirectory(folder))
+  Plan plan;
+  std::string error;
+  if (!loadPlan(planPath, plan, error))
   {
-    std::cerr << "error: cannot create the output folder '" << folder << "'\n";
+    std::cerr << "error: " << error << "\n";
     return 1;
   }
-  std::string error;
+  if (vertices > 0)
+    plan.vertices = vertices;
+  if (!vtksys::SystemTools::MakeDirectory(folder) || !std::ofstream(folder + "/report.md", std::ios::app))
+  {
+    std::cerr << "error: cannot write to '" << folder << "'\n";
+    return 1;
+  }
   const auto start = Clock::now();
 
-  std::cout << "latticekit main job (v0): " << input << "\n";
+  // 1. The mandible: the plan's box of the CT, padded with air so that the
+  //    surface closes where the box cuts bone, the component at the seed.
   vtkNew<vtkLKMedicalImageReader> reader;
   reader->SetFileName(input.c_str());
   reader->Update();
   if (lkapp::errorCount() > 0)
-  {
     return 1;
-  }
-  const double tRead = since(start);
-
-  auto t = Clock::now();
-  vtkNew<vtkLKBoneSurfaceFilter> bone;
-  bone->SetInputConnection(reader->GetOutputPort());
-  bone->SetIsoValue(iso);
-  bone->SetSmoothingIterations(static_cast<int>(smooth));
+  vtkImageData* image = reader->GetOutput();
+  vtkNew<vtkExtractVOI> voi;
+  voi->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkImageConstantPad> pad;
+  vtkAlgorithmOutput* volume = reader->GetOutputPort();
+  if (plan.crop)
   {
-    lkapp::ProgressBar bar(bone, "bone surface ", !quiet);
+    int e[6], v[6];
+    image->GetExtent(e);
+    double origin[3], spacing[3];
+    image->GetOrigin(origin);
+    image->GetSpacing(spacing);
+    for (int c = 0; c < 3; ++c)
+    {
+      v[2 * c] = std::max(e[2 * c], static_cast<int>(std::floor((plan.box[2 * c] - origin[c]) / spacing[c])));
+      v[2 * c + 1] = std::min(e[2 * c + 1], static_cast<int>(std::ceil((plan.box[2 * c + 1] - origin[c]) / spacing[c])));
+      if (v[2 * c] >= v[2 * c + 1])
+      {
+        std::cerr << "error: the plan's crop box misses the volume\n";
+        return 1;
+      }
+    }
+    voi->SetVOI(v);
+    pad->SetInputConnection(voi->GetOutputPort());
+    pad->SetOutputWholeExtent(v[0] - 1, v[1] + 1, v[2] - 1, v[3] + 1, v[4] - 1, v[5] + 1);
+    double range[2];
+    image->GetScalarRange(range);
+    pad->SetConstant(range[0]);
+    volume = pad->GetOutputPort();
+  }
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(volume);
+  bone->SetIsoValue(plan.iso);
+  bone->SetLabelMapMode(vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO);
+  bone->SetSmoothingIterations(plan.smoothing);
+  if (plan.seeded)
+  {
+    bone->SetExtractionModeToSeededComponent();
+    bone->SetSeedPoint(plan.seed.data());
+  }
+  {
+    lkapp::ProgressBar bar(bone, "mandible surface", !quiet);
     bone->Update();
   }
   if (lkapp::errorCount() > 0)
+    return 1;
+  auto mandible = vtkSmartPointer<vtkPolyData>::New();
+  mandible->ShallowCopy(bone->GetOutput());
+
+  // 2. The scripted pen stroke, split into the mesh.
+  auto stroke = scriptedStroke(mandible, plan, error);
+  if (!stroke)
   {
+    std::cerr << "error: " << error << "\n";
     return 1;
   }
-  vtkPolyData* surface = bone->GetOutput();
-  const double tSurface = since(t);
-
-  t = Clock::now();
-  vtkNew<vtkQuadricDecimation> decimate;
-  decimate->SetInputData(surface);
-  const double reduction =
-    1.0 - static_cast<double>(vertices) / static_cast<double>(surface->GetNumberOfPoints());
-  if (reduction <= 0.0)
-  {
-    std::cerr << "error: the surface has only " << surface->GetNumberOfPoints()
-              << " points; ask for fewer --vertices\n";
-    return 1;
-  }
-  decimate->SetTargetReduction(reduction);
-  decimate->VolumePreservationOn();
-  {
-    lkapp::ProgressBar bar(decimate, "simplify     ", !quiet);
-    decimate->Update();
-  }
-  vtkPolyData* simplified = decimate->GetOutput();
-  const double tDecimate = since(t);
-
-  t = Clock::now();
-  vtkNew<vtkLKMetroFilter> metro;
-  metro->SetInputData(surface);
-  metro->SetTargetData(simplified);
-  metro->SetNumberOfSamples(samples);
-  {
-    lkapp::ProgressBar bar(metro, "metro        ", !quiet);
-    metro->Update();
-  }
+  vtkNew<vtkLKStrokeFeatureLineFilter> feature;
+  feature->SetInputData(mandible);
+  feature->SetStrokeData(stroke);
+  feature->SetModeToSplit();
+  feature->Update();
   if (lkapp::errorCount() > 0)
+    return 1;
+  vtkPolyData* line = feature->GetFeatureLineOutput();
+  if (line->GetFieldData()->GetArray("Closed")->GetTuple1(0) < 0.5)
   {
+    std::cerr << "error: the scripted stroke did not close\n";
     return 1;
   }
-  vtkPolyData* colored = metro->GetOutput();
-  const double tMetro = since(t);
+  vtkNew<vtkPolyData> marked;
+  marked->ShallowCopy(feature->GetOutput());
+  vtkNew<vtkCellArray> noLines;
+  marked->SetLines(noLines);
+  marked->GetCellData()->Initialize();
 
-  const std::string boneFile = folder + "/bone.vtp";
-  const std::string boneStl = folder + "/bone.stl";
-  const std::string simplifiedFile = folder + "/simplified.vtp";
-  const std::string coloredFile = folder + "/bone_error.vtp";
-  for (auto [mesh, path] : { std::pair<vtkPolyData*, std::string>{ surface, boneFile },
-         { surface, boneStl }, { simplified, simplifiedFile }, { colored, coloredFile } })
+  // 3. The capped cut.
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputData(marked);
+  cut->SetLinesData(line);
+  cut->CappingOn();
+  cut->Update();
+  if (lkapp::errorCount() > 0)
+    return 1;
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces, borders;
+  for (int r = 0; r < cut->GetNumberOfPieces(); ++r)
   {
-    if (!lkapp::writeMesh(mesh, path, error))
+    auto piece = vtkSmartPointer<vtkPolyData>::New();
+    auto border = vtkSmartPointer<vtkPolyData>::New();
+    extractPiece(cut->GetOutput(), r, piece, border);
+    pieces.push_back(piece);
+    borders.push_back(border);
+  }
+
+  // 4. Files of the plan.
+  for (const auto& [mesh, stem] : std::vector<std::pair<vtkPolyData*, std::string>>{
+         { mandible, "mandible.vtp" }, { mandible, "mandible.stl" }, { line, "cut_line.vtp" }, { stroke, "stroke.vtp" } })
+    if (!lkapp::writeMesh(mesh, folder + "/" + stem, error))
     {
       std::cerr << "error: " << error << "\n";
       return 1;
     }
-  }
-
-  const double samplesTotal = field(colored, "AtoB_Samples") + field(colored, "BtoA_Samples");
-  std::ostringstream report;
-  report << "# latticekit main job (v0)\n\n"
-         << "Input: `" << input << "` (" << reader->GetFileFormat() << ")\n\n"
-         << "| step | result | seconds |\n|---|---|---|\n"
-         << "| read | " << reader->GetOutput()->GetDimensions()[0] << " x "
-         << reader->GetOutput()->GetDimensions()[1] << " x " << reader->GetOutput()->GetDimensions()[2]
-         << " voxels | " << tRead << " |\n"
-         << "| bone surface (iso " << bone->GetEffectiveIsoValue() << ", largest component, repaired, "
-         << smooth << " smoothing iterations) | "
-         << surface->GetNumberOfPoints() << " vertices, " << surface->GetNumberOfPolys()
-         << " triangles, " << field(surface, "BoundaryEdges") << " boundary edges | " << tSurface
-         << " |\n"
-         << "| simplified copy (vtkQuadricDecimation) | " << simplified->GetNumberOfPoints()
-         << " vertices, " << simplified->GetNumberOfPolys() << " triangles | " << tDecimate << " |\n"
-         << "| Metro | " << samplesTotal << " samples | " << tMetro << " |\n\n";
-  char line[512];
-  report << "Metro error of the simplified copy against the bone surface "
-            "(bounding-box diagonal "
-         << field(colored, "BoundingBoxDiagonal") << " mm):\n\n"
-         << "| direction | max (mm) | mean (mm) | RMS (mm) | max % | mean % | RMS % |\n"
-         << "|---|---|---|---|---|---|---|\n";
-  for (auto [label, p] : { std::pair<const char*, std::string>{ "surface -> copy", "AtoB" },
-         { "copy -> surface", "BtoA" }, { "symmetric", "Hausdorff" } })
-  {
-    std::snprintf(line, sizeof(line), "| %s | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", label,
-      field(colored, (p + "_Max").c_str()), field(colored, (p + "_Mean").c_str()),
-      field(colored, (p + "_RMS").c_str()), field(colored, (p + "_MaxPercent").c_str()),
-      field(colored, (p + "_MeanPercent").c_str()), field(colored, (p + "_RMSPercent").c_str()));
-    report << line;
-  }
-  report << "\nFiles: `bone.vtp`, `bone.stl` (surface in patient coordinates, mm), `simplified.vtp`, "
-            "`bone_error.vtp` (surface with point data Distance and DistanceColors)";
-
-  if (render)
-  {
-    if (!std::getenv("DISPLAY"))
-    {
-      std::cerr << "note: no X display, so no error.png (run under xvfb-run -a, or pass --no-render)\n";
-      report << ".\n";
-    }
-    else
-    {
-      std::snprintf(line, sizeof(line),
-        "Metro error of a %lld-vertex copy: max %.3f%%, mean %.4f%% of bbox diagonal",
-        static_cast<long long>(simplified->GetNumberOfPoints()), field(colored, "Hausdorff_MaxPercent"),
-        field(colored, "Hausdorff_MeanPercent"));
-      if (!renderError(colored, metro->GetEffectiveColorMaximum(), viewFrom, viewUp, line,
-            folder + "/error.png", error))
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+    for (const char* ext : { ".stl", ".vtp", ".obj" })
+      if (!lkapp::writeMesh(pieces[p], folder + "/piece" + std::to_string(p) + ext, error))
       {
         std::cerr << "error: " << error << "\n";
         return 1;
       }
-      report << ", `error.png` (error painted on the surface, blue 0 to red "
-             << metro->GetEffectiveColorMaximum()
-             << " mm, the 99th percentile of the point distances).\n";
+
+  // 5. Table 2: no cut / cut / cut with quads (and refinement).
+  vtkSmartPointer<vtkPolyData> surfaceWhole, surfaceCut, surfaceQuads;
+  std::vector<vtkSmartPointer<vtkPolyData>> latticesWhole, latticesCut, latticesQuads;
+  std::vector<Row> rows;
+  rows.push_back(fitRow("no cut", { mandible }, {}, plan.vertices, false, folder, "lattice_whole", quiet, surfaceWhole,
+    latticesWhole));
+  rows.push_back(fitRow("cut", pieces, borders, plan.vertices, false, folder, "lattice_piece", quiet, surfaceCut,
+    latticesCut));
+  rows.push_back(fitRow("cut, quads, refined", pieces, borders, plan.vertices, true, folder, "lattice_quads_piece",
+    quiet, surfaceQuads, latticesQuads));
+  if (lkapp::errorCount() > 0)
+    return 1;
+  for (const auto& [pd, stem] : std::vector<std::pair<vtkPolyData*, std::string>>{
+         { surfaceCut, "lattice_surface_cut.vtp" }, { surfaceQuads, "lattice_surface_quads.vtp" } })
+    if (!lkapp::writeMesh(pd, folder + "/" + stem, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
     }
-  }
-  else
+
+  // 6. The report.
+  std::ostringstream report;
+  report << "# latticekit main job: a mandible osteotomy plan\n\n"
+         << "CT: `" << vtksys::SystemTools::GetFilenameName(input) << "`; plan: `"
+         << vtksys::SystemTools::GetFilenameName(planPath) << "`.\n\n"
+         << "- Mandible surface (" << plan.iso << " HU" << (plan.crop ? ", the plan's box, padded with air" : "")
+         << (plan.seeded ? ", the component at the seed" : "") << "): " << mandible->GetNumberOfPoints()
+         << " vertices, " << mandible->GetNumberOfPolys() << " triangles.\n"
+         << "- Scripted pen stroke: the section by the cut plane around one side of the body, "
+         << stroke->GetNumberOfPoints() << " points every " << plan.penStep << " mm, " << plan.penOffset
+         << " mm off the surface; split mode: a closed cut line of " << line->GetNumberOfPoints() - 1
+         << " vertices whose edges follow the stroke.\n"
+         << "- Capped cut: " << pieces.size() << " pieces, each closed by the same faired cap:";
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+    report << " piece " << p << " " << pieces[p]->GetNumberOfPolys() << " triangles" << (p + 1 < pieces.size() ? ";" : ".");
+  report << "\n\n## Table 2 (as in the paper): lattices at " << plan.vertices
+         << " control vertices in all\n\n"
+         << "Metro: symmetric Hausdorff distance between the lattice surfaces (one Doo-Sabin step, Gregory "
+            "patches) and the dense surfaces (the mandible; the capped pieces), in % of the bounding-box "
+            "diagonal. With the cut, each piece gets vertices in proportion to its faces and the cut line is "
+            "locked (kept exactly as lattice edges).\n\n"
+         << "| model | control vertices | triangles | quads | display polygons | lattice bytes | max % | mean % | RMS % | time s |\n"
+         << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
   {
-    report << ".\n";
+    char text[400];
+    std::snprintf(text, sizeof text, "| %s | %.0f | %.0f | %.0f | %.0f | %lld | %.4f | %.4f | %.4f | %.1f |\n",
+      r.name.c_str(), r.vertices, r.triangles, r.quads, r.polygons, r.bytes, r.max, r.mean, r.rms, r.seconds);
+    report << text;
   }
-  report << "\nTotal " << since(start) << " s.\n";
-  std::ofstream(folder + "/report.md") << report.str();
-  std::cout << "\n" << report.str();
-  std::cout << "\nResults in " << folder << "/\n";
-  return lkapp::errorCount() > 0 ? 1 : 0;
+  report << "\nFiles: `mandible.vtp`/`.stl`, `stroke.vtp`, `cut_line.vtp`, `piece0`/`piece1` (`.stl` for "
+            "printing, `.vtp`, `.obj`), `lattice_whole.vtp`, `lattice_piece*.vtp`, `lattice_quads_piece*.vtp`, "
+            "`lattice_surface_cut.vtp`, `lattice_surface_quads.vtp` (with the Metro distance)";
+
+  // 7. Pictures.
+  if (render)
+  {
+    const double boneColour[3] = { 0.93, 0.87, 0.72 }, red[3] = { 0.85, 0.1, 0.1 };
+    const double pieceColour[2][3] = { { 0.93, 0.85, 0.65 }, { 0.55, 0.72, 0.95 } }, cage[3] = { 0.15, 0.15, 0.15 };
+    vtkNew<vtkTubeFilter> tube; // the line as a tube, visible from any side
+    tube->SetInputData(line);
+    tube->SetRadius(0.5);
+    tube->SetNumberOfSides(8);
+    tube->Update();
+    auto tubePd = vtkSmartPointer<vtkPolyData>::New();
+    tubePd->ShallowCopy(tube->GetOutput());
+    bool ok = renderPng({ surfaceActor(mandible, boneColour), surfaceActor(tubePd, red) }, nullptr,
+      "the plan: the osteotomy line (red) from the scripted stroke", plan, folder + "/plan.png");
+    std::vector<vtkSmartPointer<vtkActor>> actors;
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+    {
+      vtkNew<vtkLKLatticeSurfaceFilter> surface;
+      surface->SetInputData(latticesQuads[p]);
+      surface->SetResolution(6);
+      surface->Update();
+      auto s = vtkSmartPointer<vtkPolyData>::New();
+      s->ShallowCopy(surface->GetOutput());
+      actors.push_back(surfaceActor(s, pieceColour[p % 2]));
+      vtkNew<vtkExtractEdges> edges;
+      edges->SetInputData(latticesQuads[p]);
+      edges->Update();
+      auto e = vtkSmartPointer<vtkPolyData>::New();
+      e->ShallowCopy(edges->GetOutput());
+      actors.push_back(lineActor(e, cage, 1.0));
+    }
+    ok = ok && renderPng(actors, nullptr, "the two pieces: lattice cages and their smooth surfaces", plan,
+                 folder + "/pieces.png");
+    surfaceQuads->GetPointData()->SetActiveScalars("Distance");
+    double range[2];
+    surfaceQuads->GetPointData()->GetArray("Distance")->GetRange(range);
+    vtkNew<vtkLookupTable> lut;
+    lut->SetHueRange(0.667, 0.0);
+    lut->SetTableRange(0.0, range[1] > 0 ? range[1] : 1.0);
+    lut->Build();
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(surfaceQuads);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(normals->GetOutputPort());
+    mapper->SetLookupTable(lut);
+    mapper->SetScalarRange(0.0, range[1] > 0 ? range[1] : 1.0);
+    mapper->SetScalarModeToUsePointFieldData();
+    mapper->SelectColorArray("Distance");
+    vtkNew<vtkActor> coloured;
+    coloured->SetMapper(mapper);
+    vtkNew<vtkScalarBarActor> bar;
+    bar->SetLookupTable(lut);
+    bar->SetTitle("distance (mm)");
+    bar->SetNumberOfLabels(5);
+    bar->SetMaximumWidthInPixels(90);
+    bar->GetLabelTextProperty()->SetColor(0, 0, 0);
+    bar->GetTitleTextProperty()->SetColor(0, 0, 0);
+    ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png");
+    if (!ok)
+    {
+      std::cerr << "error: the pictures could not be rendered (run under xvfb-run -a, or pass --no-render)\n";
+      return 1;
+    }
+    report << ", `plan.png`, `pieces.png`, `error.png`";
+  }
+  report << ".\n\nTotal time: " << std::fixed;
+  report.precision(1);
+  report << since(start) << " s.\n";
+  std::ofstream out(folder + "/report.md");
+  out << report.str();
+  if (!out)
+  {
+    std::cerr << "error: cannot write '" << folder << "/report.md'\n";
+    return 1;
+  }
+  std::cout << report.str();
+  return 0;
 }
