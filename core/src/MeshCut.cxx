@@ -284,6 +284,16 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
     }
     return *id;
   };
+  {
+    std::vector<std::size_t> facesIn(pieces, 0);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+      ++facesIn[faceRegion[f]];
+    for (std::size_t p = 0; p < pieces; ++p)
+    {
+      result.pieces[p].faces.reserve(facesIn[p]);
+      result.faceOrigin[p].reserve(facesIn[p]);
+    }
+  }
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
   {
     const std::size_t p = faceRegion[f];
