@@ -94,17 +94,6 @@ double since(Clock::time_point t)
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-double field(vtkPolyData* pd, const char* name)
-{
-  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
-  return a ? a->GetTuple1(0) : 0.0;
-}
-
-long long fileBytes(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  return in ? static_cast<long long>(in.tellg()) : -1;
-}
 
 /// The plan of the osteotomy (see sample_data/cthead/mandible_plan.json).
 struct Plan
@@ -384,10 +373,10 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
     auto copy = vtkSmartPointer<vtkPolyData>::New();
     copy->DeepCopy(lattice);
     latticesOut.push_back(copy);
-    row.vertices += field(lattice, "ControlVertices");
-    row.triangles += field(lattice, "Triangles");
-    row.quads += field(lattice, "Quads");
-    row.polygons += field(lattice, "DisplayPolygons");
+    row.vertices += lkapp::fieldValue(lattice, "ControlVertices");
+    row.triangles += lkapp::fieldValue(lattice, "Triangles");
+    row.quads += lkapp::fieldValue(lattice, "Quads");
+    row.polygons += lkapp::fieldValue(lattice, "DisplayPolygons");
     const std::string path = folder + "/" + stem + (meshes.size() > 1 ? std::to_string(i) : "") + ".vtp";
     std::string error;
     if (!lkapp::writeMesh(lattice, path, error))
@@ -395,7 +384,7 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
       std::cerr << "error: " << error << "\n";
       return row;
     }
-    row.bytes += fileBytes(path);
+    row.bytes += lkapp::fileBytes(path);
     vtkNew<vtkLKLatticeSurfaceFilter> surface;
     surface->SetInputData(lattice);
     surface->SetResolution(6);
@@ -410,9 +399,9 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
   metro->SetTargetData(dense->GetOutput());
   metro->Update();
   vtkPolyData* m = metro->GetOutput();
-  row.max = field(m, "Hausdorff_MaxPercent");
-  row.mean = field(m, "Hausdorff_MeanPercent");
-  row.rms = field(m, "Hausdorff_RMSPercent");
+  row.max = lkapp::fieldValue(m, "Hausdorff_MaxPercent");
+  row.mean = lkapp::fieldValue(m, "Hausdorff_MeanPercent");
+  row.rms = lkapp::fieldValue(m, "Hausdorff_RMSPercent");
   surfaceOut = vtkSmartPointer<vtkPolyData>::New();
   surfaceOut->ShallowCopy(m);
   row.seconds = since(start);
@@ -480,7 +469,7 @@ bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBa
   writer->SetInputConnection(grab->GetOutputPort());
   writer->SetFileName(png.c_str());
   writer->Write();
-  return fileBytes(png) > 0;
+  return lkapp::fileBytes(png) > 0;
 }
 } // namespace
 

@@ -47,16 +47,6 @@ void usage(std::ostream& os)
         "  -h, --help             this help\n";
 }
 
-long long fileBytes(const std::string& path)
-{
-  return static_cast<long long>(vtksys::SystemTools::FileLength(path));
-}
-
-double field(vtkPolyData* pd, const char* name)
-{
-  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
-  return a ? a->GetTuple1(0) : 0.0;
-}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -178,26 +168,26 @@ int main(int argc, char* argv[])
       std::cerr << "error: " << error << "\n";
       return 1;
     }
-    surfaceBytes = fileBytes(surfaceOut);
+    surfaceBytes = lkapp::fileBytes(surfaceOut);
   }
   std::printf("input            %lld vertices, %lld triangles (%s, %lld bytes)\n",
     static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(mesh->GetNumberOfPolys()),
-    input.c_str(), fileBytes(input));
+    input.c_str(), lkapp::fileBytes(input));
   std::printf("lattice          %.0f control vertices; faces: %.0f triangles, %.0f quads; %.0f feature edges\n",
-    field(lattice, "ControlVertices"), field(lattice, "Triangles"), field(lattice, "Quads"),
-    field(lattice, "FeatureEdges"));
-  std::printf("display polygons %.0f (resolution %ld)\n", field(lattice, "DisplayPolygons"), resolution);
-  std::printf("bytes on disk    lattice %lld (%s)", fileBytes(output), output.c_str());
+    lkapp::fieldValue(lattice, "ControlVertices"), lkapp::fieldValue(lattice, "Triangles"), lkapp::fieldValue(lattice, "Quads"),
+    lkapp::fieldValue(lattice, "FeatureEdges"));
+  std::printf("display polygons %.0f (resolution %ld)\n", lkapp::fieldValue(lattice, "DisplayPolygons"), resolution);
+  std::printf("bytes on disk    lattice %lld (%s)", lkapp::fileBytes(output), output.c_str());
   if (surfaceBytes >= 0)
     std::printf(", surface %lld (%s)", surfaceBytes, surfaceOut.c_str());
   std::printf("\n");
   if (refine)
     std::printf("refinement       RMS distance %.4g -> %.4g in %.0f iterations\n",
-      field(lattice, "RefinementInitialRMS"), field(lattice, "RefinementFinalRMS"),
-      field(lattice, "RefinementIterations"));
+      lkapp::fieldValue(lattice, "RefinementInitialRMS"), lkapp::fieldValue(lattice, "RefinementFinalRMS"),
+      lkapp::fieldValue(lattice, "RefinementIterations"));
   std::printf("Metro error      max %.4f %%, mean %.4f %%, RMS %.4f %% of the bounding-box diagonal (%.4g)\n",
-    field(lattice, "Hausdorff_MaxPercent"), field(lattice, "Hausdorff_MeanPercent"),
-    field(lattice, "Hausdorff_RMSPercent"), field(lattice, "BoundingBoxDiagonal"));
+    lkapp::fieldValue(lattice, "Hausdorff_MaxPercent"), lkapp::fieldValue(lattice, "Hausdorff_MeanPercent"),
+    lkapp::fieldValue(lattice, "Hausdorff_RMSPercent"), lkapp::fieldValue(lattice, "BoundingBoxDiagonal"));
   std::printf("time             %.2f s\n", seconds);
   return 0;
 }

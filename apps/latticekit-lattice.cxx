@@ -36,10 +36,6 @@ void usage(std::ostream& os)
         "  -h, --help         this help\n";
 }
 
-long long fileBytes(const std::string& path)
-{
-  return static_cast<long long>(vtksys::SystemTools::FileLength(path));
-}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -119,7 +115,7 @@ int main(int argc, char* argv[])
     static_cast<long long>(surface->GetNumberOfPatches()),
     static_cast<long long>(surface->GetOutput()->GetFieldData()->GetArray("DisplayPolygons")->GetTuple1(0)),
     resolution, seconds);
-  std::printf("bytes on disk    lattice %lld (%s), surface %lld (%s)\n", fileBytes(input), input.c_str(),
-    fileBytes(output), output.c_str());
+  std::printf("bytes on disk    lattice %lld (%s), surface %lld (%s)\n", lkapp::fileBytes(input), input.c_str(),
+    lkapp::fileBytes(output), output.c_str());
   return 0;
 }

@@ -38,12 +38,6 @@ void usage(std::ostream& os)
         "  -h, --help       this help\n";
 }
 
-double field(vtkPolyData* pd, const std::string& name)
-{
-  vtkDataArray* a = pd->GetFieldData()->GetArray(name.c_str());
-  return a ? a->GetTuple1(0) : 0.0;
-}
-
 void printMeshInfo(const char* label, const std::string& path, vtkPolyData* pd)
 {
   vtkNew<vtkMassProperties> mass;
@@ -61,14 +55,14 @@ void printMeshInfo(const char* label, const std::string& path, vtkPolyData* pd)
 void printDirection(vtkPolyData* out, const char* title, const std::string& p)
 {
   std::printf("\n%s\n", title);
-  std::printf("\tsamples   %12.0f (vertex %.0f, edge %.0f, face %.0f)\n", field(out, p + "_Samples"),
-    field(out, p + "_VertexSamples"), field(out, p + "_EdgeSamples"), field(out, p + "_FaceSamples"));
-  std::printf("\tmax       %12.6f (%9.6f%% of bbox diagonal)\n", field(out, p + "_Max"),
-    field(out, p + "_MaxPercent"));
-  std::printf("\tmean      %12.6f (%9.6f%% of bbox diagonal)\n", field(out, p + "_Mean"),
-    field(out, p + "_MeanPercent"));
-  std::printf("\tRMS       %12.6f (%9.6f%% of bbox diagonal)\n", field(out, p + "_RMS"),
-    field(out, p + "_RMSPercent"));
+  std::printf("\tsamples   %12.0f (vertex %.0f, edge %.0f, face %.0f)\n", lkapp::fieldValue(out, p + "_Samples"),
+    lkapp::fieldValue(out, p + "_VertexSamples"), lkapp::fieldValue(out, p + "_EdgeSamples"), lkapp::fieldValue(out, p + "_FaceSamples"));
+  std::printf("\tmax       %12.6f (%9.6f%% of bbox diagonal)\n", lkapp::fieldValue(out, p + "_Max"),
+    lkapp::fieldValue(out, p + "_MaxPercent"));
+  std::printf("\tmean      %12.6f (%9.6f%% of bbox diagonal)\n", lkapp::fieldValue(out, p + "_Mean"),
+    lkapp::fieldValue(out, p + "_MeanPercent"));
+  std::printf("\tRMS       %12.6f (%9.6f%% of bbox diagonal)\n", lkapp::fieldValue(out, p + "_RMS"),
+    lkapp::fieldValue(out, p + "_RMSPercent"));
 }
 } // namespace
 
@@ -167,7 +161,7 @@ int main(int argc, char* argv[])
   std::printf("latticekit-metro: Metro-style surface distance\n\nMesh info:\n");
   printMeshInfo("A", inputs[0], meshes[0]);
   printMeshInfo("B", inputs[1], meshes[1]);
-  std::printf("\tbbox diagonal (A and B together) %.6f\n", field(out, "BoundingBoxDiagonal"));
+  std::printf("\tbbox diagonal (A and B together) %.6f\n", lkapp::fieldValue(out, "BoundingBoxDiagonal"));
   std::printf("\tface sampling %s\n",
     method == vtkLKMetroFilter::MONTE_CARLO ? "Monte Carlo" : "similar triangles");
   printDirection(out, "Forward distance (A -> B):", "AtoB");
@@ -175,12 +169,12 @@ int main(int argc, char* argv[])
   {
     printDirection(out, "Backward distance (B -> A):", "BtoA");
   }
-  std::printf("\nHausdorff distance: %.6f (%.6f%% of bbox diagonal)\n", field(out, "Hausdorff_Max"),
-    field(out, "Hausdorff_MaxPercent"));
+  std::printf("\nHausdorff distance: %.6f (%.6f%% of bbox diagonal)\n", lkapp::fieldValue(out, "Hausdorff_Max"),
+    lkapp::fieldValue(out, "Hausdorff_MaxPercent"));
   std::printf("Worse-direction mean: %.6f (%.6f%%), RMS: %.6f (%.6f%%)\n",
-    field(out, "Hausdorff_Mean"), field(out, "Hausdorff_MeanPercent"), field(out, "Hausdorff_RMS"),
-    field(out, "Hausdorff_RMSPercent"));
-  const double total = field(out, "AtoB_Samples") + (symmetric ? field(out, "BtoA_Samples") : 0.0);
+    lkapp::fieldValue(out, "Hausdorff_Mean"), lkapp::fieldValue(out, "Hausdorff_MeanPercent"), lkapp::fieldValue(out, "Hausdorff_RMS"),
+    lkapp::fieldValue(out, "Hausdorff_RMSPercent"));
+  const double total = lkapp::fieldValue(out, "AtoB_Samples") + (symmetric ? lkapp::fieldValue(out, "BtoA_Samples") : 0.0);
   std::printf("Elapsed %.3f s, %.2f million samples per second\n", seconds,
     seconds > 0 ? total / seconds / 1e6 : 0.0);
   if (!colored.empty())

@@ -4,6 +4,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkGLTFWriter.h>
 #include <vtkLogger.h>
 #include <vtkMultiBlockDataSet.h>
@@ -504,6 +505,17 @@ void Arguments::positional(const std::string& arg, std::string& slot, const char
     std::exit(2);
   }
   slot = arg;
+}
+
+long long fileBytes(const std::string& path)
+{
+  return static_cast<long long>(vtksys::SystemTools::FileLength(path));
+}
+
+double fieldValue(vtkPolyData* pd, const std::string& name)
+{
+  vtkDataArray* a = pd->GetFieldData()->GetArray(name.c_str());
+  return a ? a->GetTuple1(0) : 0.0;
 }
 
 } // namespace lkapp

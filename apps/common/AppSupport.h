@@ -50,6 +50,11 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
 bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error);
 /// The extensions writeMesh accepts, for help texts.
 const char* meshExtensions();
+/// Size of a file in bytes (0 when it does not exist).
+long long fileBytes(const std::string& path);
+/// The first value of a field-data array of `pd` (0 when there is none): the
+/// filters report their measurements there.
+double fieldValue(vtkPolyData* pd, const std::string& name);
 
 /// Command-line helpers.
 bool parseDouble(const std::string& text, double& value);
