@@ -118,3 +118,36 @@ TEST(MeshCut, BadLoopsAreRefused)
   // The same vertex twice: a self-crossing loop.
   EXPECT_NE(message({ { t[0], t[1], t[2], t[0], t[1], t[2] } }).find("crosses itself"), std::string::npos);
 }
+
+TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)
+{
+  auto message = [](const lk::PolygonMesh& m) -> std::string {
+    try
+    {
+      lk::cutAlongLoops(m, { { 0, 1, 2 } }, false);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return e.what();
+    }
+    return "";
+  };
+  // Two triangles that touch only at vertex 0: two fans there.
+  lk::PolygonMesh pinched;
+  pinched.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 } };
+  pinched.faces = { { 0, 1, 2 }, { 0, 3, 4 } };
+  EXPECT_NE(message(pinched).find("pinched vertex"), std::string::npos) << message(pinched);
+  // Three triangles on one edge.
+  lk::PolygonMesh fin;
+  fin.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } };
+  fin.faces = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } };
+  EXPECT_NE(message(fin).find("more than two faces"), std::string::npos) << message(fin);
+  // A zero-area face and an isolated point, as latticeProblem reports them.
+  lk::PolygonMesh flat;
+  flat.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } };
+  flat.faces = { { 0, 1, 2 } };
+  EXPECT_NE(message(flat).find("zero area"), std::string::npos) << message(flat);
+  lk::PolygonMesh isolated = lktest::asPolygonMesh(lktest::icosphere(1, 1.0));
+  isolated.points.push_back({ 5, 5, 5 });
+  EXPECT_NE(message(isolated).find("isolated"), std::string::npos) << message(isolated);
+}

@@ -223,7 +223,7 @@ double signedVolume(const TriangleMesh& mesh)
   return v / 6.0;
 }
 
-std::string latticeProblem(const PolygonMesh& mesh)
+std::string polygonIndexProblem(const PolygonMesh& mesh)
 {
   if (mesh.faces.empty())
   {
@@ -277,6 +277,14 @@ std::string latticeProblem(const PolygonMesh& mesh)
       return os.str();
     }
   }
+  return {};
+}
+
+std::string latticeProblem(const PolygonMesh& mesh)
+{
+  const std::string problem = polygonIndexProblem(mesh);
+  if (!problem.empty())
+    return problem;
   std::vector<Polygon> polygons;
   polygons.reserve(mesh.faces.size());
   for (const auto& face : mesh.faces)

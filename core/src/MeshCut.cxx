@@ -1,6 +1,5 @@
 #include "latticekit/MeshCut.h"
 
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
@@ -95,9 +94,11 @@ namespace
 /// face of a -> b in O(valence), without a tree or hash of all edges.
 struct DirectedEdges
 {
-  std::vector<std::size_t> start;    ///< per vertex, into target/face
+  std::vector<std::size_t> start;    ///< per vertex, into the slots below
   std::vector<std::int64_t> target;
   std::vector<std::size_t> face;
+  std::vector<std::size_t> previous; ///< the slot of the edge before this one in its face
+  std::vector<std::size_t> twin;     ///< the slot of b -> a, or npos at a border
   std::vector<char> cut;             ///< per directed edge: on a loop
 
   explicit DirectedEdges(const PolygonMesh& mesh)
@@ -110,18 +111,33 @@ struct DirectedEdges
       start[i] += start[i - 1];
     target.resize(start.back());
     face.resize(start.back());
+    previous.resize(start.back());
     cut.assign(start.back(), 0);
-    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    std::vector<std::size_t> next(start.begin(), start.end() - 1), slots;
     for (std::size_t f = 0; f < mesh.faces.size(); ++f)
     {
       const auto& fv = mesh.faces[f];
+      slots.clear();
       for (std::size_t i = 0; i < fv.size(); ++i)
       {
         const std::size_t k = next[static_cast<std::size_t>(fv[i])]++;
         target[k] = fv[(i + 1) % fv.size()];
         face[k] = f;
+        slots.push_back(k);
       }
+      for (std::size_t i = 0; i < fv.size(); ++i)
+        previous[slots[i]] = slots[(i + fv.size() - 1) % fv.size()];
     }
+    twin.assign(start.back(), npos);
+    for (std::size_t a = 0; a + 1 < start.size(); ++a)
+      for (std::size_t k = start[a]; k < start[a + 1]; ++k)
+        if (target[k] > static_cast<std::int64_t>(a)) // each pair once, from its smaller end
+        {
+          const std::size_t back = find(target[k], static_cast<std::int64_t>(a));
+          twin[k] = back;
+          if (back != npos)
+            twin[back] = k;
+        }
   }
   /// The slot of a -> b, or npos.
   std::size_t find(std::int64_t a, std::int64_t b) const
@@ -131,49 +147,62 @@ struct DirectedEdges
         return k;
     return npos;
   }
-  /// Empty, or why the faces do not form an oriented 2-manifold along edges.
+  /// Empty, or why the faces do not form a manifold, consistently oriented
+  /// surface (what CGAL's polygon-soup test refuses, in linear time): a
+  /// directed edge used twice (an edge with more than two faces, or faces
+  /// oriented against each other), or a vertex whose faces form more than
+  /// one fan (a pinched vertex).
   std::string problem() const
   {
+    const std::string surface = "the mesh is not a manifold, consistently oriented surface: ";
     for (std::size_t a = 0; a + 1 < start.size(); ++a)
       for (std::size_t k = start[a]; k < start[a + 1]; ++k)
         for (std::size_t j = k + 1; j < start[a + 1]; ++j)
           if (target[j] == target[k])
-            return "the edge " + std::to_string(a) + "-" + std::to_string(target[k]) +
-              " is used twice in the same direction (a non-manifold edge or inconsistent orientation)";
+            return surface + "the edge " + std::to_string(a) + "-" + std::to_string(target[k]) +
+              " has more than two faces or faces oriented against each other";
+    // Fans: around vertex a, the face of a -> b is followed by the face of
+    // a -> c, where c -> a is the edge before a -> b in its face. The faces
+    // around a must form one orbit of this map (a cycle inside, a chain at a
+    // border): walked from the chain's start, or from any slot, it must
+    // visit every slot of a.
+    for (std::size_t a = 0; a + 1 < start.size(); ++a)
+    {
+      const std::size_t valence = start[a + 1] - start[a];
+      if (valence == 0)
+        continue;
+      std::size_t first = start[a];
+      for (std::size_t k = start[a]; k < start[a + 1]; ++k)
+      {
+        bool reached = false;
+        for (std::size_t j = start[a]; j < start[a + 1] && !reached; ++j)
+          reached = twin[previous[j]] == k;
+        if (!reached)
+        {
+          first = k;
+          break;
+        }
+      }
+      std::size_t visited = 0;
+      for (std::size_t k = first; k != npos && visited <= valence; k = twin[previous[k]])
+      {
+        ++visited;
+        if (twin[previous[k]] == first)
+          break;
+      }
+      if (visited != valence)
+        return surface + "its faces meet at vertex " + std::to_string(a) + " in more than one fan (a pinched vertex)";
+    }
     return {};
   }
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 };
 
-std::string basicProblem(const PolygonMesh& mesh)
-{
-  if (mesh.faces.empty())
-    return "the mesh has no faces";
-  const auto n = static_cast<std::int64_t>(mesh.points.size());
-  for (const Vec3& p : mesh.points)
-    if (!p.allFinite())
-      return "a point has a NaN or infinite coordinate";
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-  {
-    const auto& face = mesh.faces[f];
-    if (face.size() < 3)
-      return "face " + std::to_string(f) + " has fewer than 3 vertices";
-    for (std::size_t i = 0; i < face.size(); ++i)
-    {
-      if (face[i] < 0 || face[i] >= n)
-        return "face " + std::to_string(f) + " refers to a point outside the mesh";
-      for (std::size_t j = i + 1; j < face.size(); ++j)
-        if (face[j] == face[i])
-          return "face " + std::to_string(f) + " repeats a vertex";
-    }
-  }
-  return {};
-}
 } // namespace
 
 CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
 {
-  std::string problem = basicProblem(mesh);
+  std::string problem = polygonIndexProblem(mesh);
   if (!problem.empty())
     throw std::invalid_argument(problem);
   if (loopsIn.empty())
@@ -224,7 +253,7 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
       const auto b = directed.target[k];
       if (b < static_cast<std::int64_t>(a))
         continue; // each edge once, from its smaller end
-      const std::size_t back = directed.find(b, static_cast<std::int64_t>(a));
+      const std::size_t back = directed.twin[k];
       if (back == DirectedEdges::npos)
         continue;
       const std::size_t f = directed.face[k], g = directed.face[back];
@@ -257,8 +286,7 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
   result.vertexOrigin.resize(pieces);
   result.faceOrigin.resize(pieces);
   // The piece's id of each input vertex: most vertices are in one piece
-  // (firstPiece, firstId); loop vertices (and the fans of a non-manifold
-  // vertex) are in more, kept in `other`.
+  // (firstPiece, firstId); loop vertices are in more, kept in `other`.
   std::vector<std::int64_t> firstPiece(mesh.points.size(), -1), firstId(mesh.points.size(), -1);
   std::map<std::pair<std::size_t, std::int64_t>, std::int64_t> other;
   auto localId = [&](std::size_t p, std::int64_t v) {

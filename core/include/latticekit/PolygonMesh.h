@@ -30,6 +30,12 @@ inline Vec3 newellVector(const PolygonMesh& mesh, std::size_t f)
   return v;
 }
 
+/// The checks of latticeProblem that need no topology, in one pass: at least
+/// one face, every face with at least three distinct in-range vertices,
+/// finite coordinates, no isolated points, non-zero face areas. Empty, or the
+/// reason. (The cut adds its own linear-time manifold test to this.)
+std::string polygonIndexProblem(const PolygonMesh& mesh);
+
 /// Empty when the mesh is a usable lattice: at least one face, every face with
 /// at least three distinct in-range vertices, finite coordinates, no isolated
 /// points, non-zero face areas, and a manifold, consistently oriented surface
