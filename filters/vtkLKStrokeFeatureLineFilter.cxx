@@ -80,6 +80,7 @@ std::vector<lk::Vec3> pickOnSurface(
   mesh->GetBounds(bounds);
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  const lk::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
   std::vector<lk::Vec3> picked;
   vtkNew<vtkIdList> cells;
   vtkNew<vtkPoints> hits;
@@ -91,7 +92,6 @@ std::vector<lk::Vec3> pickOnSurface(
     unproject(x, y, 1.0, farPoint);
     // Past the far clipping plane too: the ray runs until it has left the mesh's box.
     const lk::Vec3 a(nearPoint[0], nearPoint[1], nearPoint[2]), f(farPoint[0], farPoint[1], farPoint[2]);
-    const lk::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
     const lk::Vec3 dir = (f - a).normalized();
     const lk::Vec3 b = a + dir * ((centre - a).norm() + diagonal);
     // The first hit along the ray: all hits of the OBB tree, the nearest

@@ -17,6 +17,12 @@ namespace lk
 {
 namespace
 {
+void sortUnique(std::vector<EdgeKey>& edges)
+{
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+}
+
 Vec3 closestOnPolyline(const std::vector<Vec3>& line, const Vec3& p)
 {
   Vec3 best = line.front();
@@ -81,8 +87,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     result.line = splitter.line();
     for (std::size_t i = 0; i + 1 < result.line.size(); ++i)
       result.featureEdges.push_back(edgeKey(result.line[i], result.line[i + 1]));
-    std::sort(result.featureEdges.begin(), result.featureEdges.end());
-    result.featureEdges.erase(std::unique(result.featureEdges.begin(), result.featureEdges.end()), result.featureEdges.end());
+    sortUnique(result.featureEdges);
     return result;
   }
   std::vector<Vec3> samples;
@@ -208,8 +213,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       }
     }
   }
-  std::sort(result.featureEdges.begin(), result.featureEdges.end());
-  result.featureEdges.erase(std::unique(result.featureEdges.begin(), result.featureEdges.end()), result.featureEdges.end());
+  sortUnique(result.featureEdges);
   return result;
 }
 
