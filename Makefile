@@ -18,6 +18,7 @@ bench: setup
 	build/bin/bench_subdivision sample_data
 	build/bin/bench_ifs
 	build/bin/bench_osteotomy sample_data
+	build/bin/bench_wrinkly
 
 setup build:
 	bash scripts/setup.sh

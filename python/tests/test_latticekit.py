@@ -18,7 +18,8 @@ class ImportTest(unittest.TestCase):
                      "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter",
                      "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter",
                      "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter",
-                     "vtkLKClosedLineCutFilter", "vtkLKStrokeFeatureLineFilter"):
+                     "vtkLKClosedLineCutFilter", "vtkLKStrokeFeatureLineFilter",
+                     "vtkLKWrinklySurfaceFilter", "vtkLKWrinklyNetSource"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -215,6 +216,46 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(density.GetNumberOfTuples(), 5000)
         low, high = density.GetRange()
         self.assertGreater(high / max(low, 1e-9), 5.0)
+
+    def test_wrinkly_surface_from_python(self):
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkCommand
+
+        net = latticekit.vtkLKWrinklyNetSource()
+        net.SetNetTypeToAnnular()
+        net.SetSpokes(10)
+        net.SetRings(3)
+        wrinkly = latticekit.vtkLKWrinklySurfaceFilter()
+        wrinkly.SetInputConnection(net.GetOutputPort())
+        wrinkly.SetIterations(2)
+        wrinkly.Update()
+        out = wrinkly.GetOutput()
+        shuffled = [out.GetPointData().GetArray("Height").GetValue(i) for i in range(out.GetNumberOfPoints())]
+        triangles = out.GetNumberOfPolys()
+        self.assertGreater(triangles, 4000)  # 30 patches, 9 x 9 samples each
+        low, high = out.GetPointData().GetArray("Height").GetRange()
+        self.assertLess(low, 0.0)
+        self.assertGreater(high, 0.0)
+        # Without the IST (K = 0) the same samples give a different, smooth height field.
+        wrinkly.SetIterations(0)
+        wrinkly.SetResolution(9)
+        wrinkly.Update()
+        self.assertEqual(wrinkly.GetOutput().GetNumberOfPolys(), triangles)
+        smooth = wrinkly.GetOutput().GetPointData().GetArray("Height")
+        moved = sum(1 for i in range(smooth.GetNumberOfTuples()) if abs(smooth.GetValue(i) - shuffled[i]) > 1e-9)
+        self.assertGreater(moved, len(shuffled) // 2)
+        # A net whose axes fall into one group is refused with the reason.
+        messages = []
+        odd = latticekit.vtkLKWrinklyNetSource()
+        odd.SetNetTypeToPolygon()
+        odd.SetSides(3)
+        refuse = latticekit.vtkLKWrinklySurfaceFilter()
+        refuse.SetInputConnection(odd.GetOutputPort())
+        refuse.AddObserver(vtkCommand.ErrorEvent, lambda obj, event: messages.append(event))
+        refuse.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda obj, event: None)
+        refuse.Update()
+        self.assertEqual(refuse.GetOutput().GetNumberOfPoints(), 0)
+        self.assertTrue(messages)
 
     def test_screen_stroke_with_a_camera(self):
         # Pixels plus the camera that showed the mesh: picked on the visible side.
