@@ -19,6 +19,7 @@ bench: setup
 	build/bin/bench_ifs
 	build/bin/bench_osteotomy sample_data
 	build/bin/bench_wrinkly
+	build/bin/bench_patch_deformation
 
 setup build:
 	bash scripts/setup.sh

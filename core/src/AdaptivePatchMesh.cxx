@@ -30,6 +30,8 @@ AdaptivePatchMesh::AdaptivePatchMesh(const TriangleMesh& mesh, int maxLevel)
   normal_.assign(np, Vec3::Zero());
   displacement_.assign(np, Vec3::Zero());
   tris_.reserve(mesh.triangles.size() * 2);
+  edgeTris_.reserve(mesh.triangles.size() * 4);
+  midpoints_.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
   {
     const auto& tri = mesh.triangles[t];
@@ -85,6 +87,14 @@ int AdaptivePatchMesh::makeMidpoint(int a, int b)
   normal_.push_back(n.norm() > 0.0 ? n.normalized() : normal_[a]);
   displacement_.push_back(0.5 * (displacement_[a] + displacement_[b]));
   midpoints_.emplace(key(a, b), m);
+  // Record it in the triangles on the edge (no hashing when drawing).
+  const auto it = edgeTris_.find(key(a, b));
+  if (it != edgeTris_.end())
+    for (int t : it->second)
+      if (t >= 0)
+        for (int e = 0; e < 3; ++e)
+          if (key(tris_[t].v[e], tris_[t].v[(e + 1) % 3]) == key(a, b))
+            tris_[t].mid[e] = m;
   return m;
 }
 
@@ -99,10 +109,9 @@ int AdaptivePatchMesh::neighbour(int t, int a, int b) const
 int AdaptivePatchMesh::hanging(int t) const
 {
   const auto& v = tris_[t].v;
-  int n = 0;
-  for (int e = 0; e < 3; ++e)
-    n += midpoint(v[e], v[(e + 1) % 3]) >= 0 ? 1 : 0;
-  return n;
+  (void)v;
+  const auto& mid = tris_[t].mid;
+  return (mid[0] >= 0 ? 1 : 0) + (mid[1] >= 0 ? 1 : 0) + (mid[2] >= 0 ? 1 : 0);
 }
 
 bool AdaptivePatchMesh::split(int t)
@@ -157,6 +166,8 @@ bool AdaptivePatchMesh::splitNow(int t)
     node.v = c;
     node.parent = t;
     node.level = tris_[t].level + 1;
+    for (int e = 0; e < 3; ++e) // normally none exist yet; kept exact regardless
+      node.mid[e] = midpoint(c[e], c[(e + 1) % 3]);
     tris_.push_back(node);
     addEdges(static_cast<int>(tris_.size()) - 1);
   }
@@ -193,7 +204,7 @@ std::vector<std::array<int, 3>> AdaptivePatchMesh::triangles() const
       continue;
     int e = 0, m = -1;
     for (; e < 3; ++e)
-      if ((m = midpoint(t.v[e], t.v[(e + 1) % 3])) >= 0)
+      if ((m = t.mid[e]) >= 0)
         break;
     if (m < 0)
     {

@@ -19,7 +19,8 @@ class ImportTest(unittest.TestCase):
                      "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter",
                      "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter",
                      "vtkLKClosedLineCutFilter", "vtkLKStrokeFeatureLineFilter",
-                     "vtkLKWrinklySurfaceFilter", "vtkLKWrinklyNetSource"):
+                     "vtkLKWrinklySurfaceFilter", "vtkLKWrinklyNetSource",
+                     "vtkLKPatchDeformationFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -256,6 +257,27 @@ class PipelineTest(unittest.TestCase):
         refuse.Update()
         self.assertEqual(refuse.GetOutput().GetNumberOfPoints(), 0)
         self.assertTrue(messages)
+
+    def test_patch_deformation_from_python(self):
+        import latticekit
+        from vtkmodules.vtkFiltersCore import vtkTriangleFilter
+        from vtkmodules.vtkFiltersSources import vtkPlaneSource
+
+        plane = vtkPlaneSource()
+        plane.SetResolution(16, 16)
+        tri = vtkTriangleFilter()
+        tri.SetInputConnection(plane.GetOutputPort())
+        deform = latticekit.vtkLKPatchDeformationFilter()
+        deform.SetInputConnection(tri.GetOutputPort())
+        deform.AddFunctionalDeformation(0.0, 0.0, 0.0, 0.3, 20.0, 0.4)
+        deform.Update()
+        out = deform.GetOutput()
+        self.assertAlmostEqual(out.GetBounds()[5], 0.3, places=12)  # the peak is k
+        self.assertGreater(out.GetNumberOfPolys(), 512)  # refined around the bump
+        self.assertEqual(deform.GetNumberOfDeformations(), 1)
+        deform.RemoveAllDeformations()
+        deform.Update()
+        self.assertEqual(deform.GetOutput().GetNumberOfPolys(), 512)
 
     def test_screen_stroke_with_a_camera(self):
         # Pixels plus the camera that showed the mesh: picked on the visible side.

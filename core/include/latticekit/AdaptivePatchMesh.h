@@ -88,6 +88,7 @@ private:
   struct Tri
   {
     std::array<int, 3> v;
+    std::array<int, 3> mid{ { -1, -1, -1 } }; ///< midpoint of edge (v[e], v[e + 1]), once made
     int parent = -1;
     int firstChild = -1; ///< children are firstChild .. firstChild + 3
     int level = 0;

@@ -1,0 +1,82 @@
+/**
+ * @class   vtkLKPatchDeformationFilter
+ * @brief   Deformation of adaptively refined micro planar patches (seed 002,
+ *          Futagami, Mizuguchi and Morita), for scripted use.
+ *
+ * Input: a manifold triangle mesh (open or closed; a planar patch in the
+ * paper). The deformations added to the filter are applied in order to a
+ * mesh that refines itself where they need it: triangles split 1-to-4 at
+ * their edge midpoints, neighbours of split triangles become transition
+ * triangles (output as two triangles), and the output is conforming at
+ * every moment (see core/include/latticekit/AdaptivePatchMesh.h).
+ * - functional (eq. 1): vertices within D of the centre move by
+ *   k exp(-a d^2) along the original surface normal;
+ * - range: vertices inside an axis-aligned box move by one vector;
+ * - smoothing (eq. 2): inside a ball, each displacement becomes the mean of
+ *   the vertex's and its neighbours' displacements, `iterations` times.
+ * MaxLevel bounds the depth (default 4). Tolerance is the edge bending that
+ * triggers a split (a length; 0, the default, means 0.1 % of the input's
+ * bounding-box diagonal).
+ *
+ * Output: the refined, deformed triangles. Point data "Displacement" (from
+ * the original surface) and "BaseNormals" (original normals); cell data
+ * "Level" (refinement depth of each triangle).
+ */
+#ifndef vtkLKPatchDeformationFilter_h
+#define vtkLKPatchDeformationFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <array>
+#include <vector>
+
+class LATTICEKITFILTERS_EXPORT vtkLKPatchDeformationFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKPatchDeformationFilter* New();
+  vtkTypeMacro(vtkLKPatchDeformationFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Eq. 1 around (x, y, z).
+  void AddFunctionalDeformation(double x, double y, double z, double k, double a, double D);
+  /// Vertices in [xmin, xmax] x [ymin, ymax] x [zmin, zmax] move by (dx, dy, dz).
+  void AddRangeDeformation(double xmin, double xmax, double ymin, double ymax, double zmin, double zmax,
+    double dx, double dy, double dz);
+  /// Eq. 2 inside the ball ((x, y, z), D).
+  void AddSmoothingDeformation(double x, double y, double z, double D, int iterations);
+  void RemoveAllDeformations();
+  int GetNumberOfDeformations() const { return static_cast<int>(this->Deformations.size()); }
+
+  ///@{
+  /// Refinement depth bound, 0 to 12 (default 4).
+  vtkSetClampMacro(MaxLevel, int, 0, 12);
+  vtkGetMacro(MaxLevel, int);
+  ///@}
+
+  ///@{
+  /// Edge bending that triggers a split; 0 = 0.1 % of the bounding-box diagonal.
+  vtkSetMacro(Tolerance, double);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+protected:
+  vtkLKPatchDeformationFilter() = default;
+  ~vtkLKPatchDeformationFilter() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  struct Deformation
+  {
+    int kind; ///< 0 functional, 1 range, 2 smoothing
+    std::array<double, 9> p;
+  };
+  std::vector<Deformation> Deformations;
+  int MaxLevel = 4;
+  double Tolerance = 0.0;
+
+private:
+  vtkLKPatchDeformationFilter(const vtkLKPatchDeformationFilter&) = delete;
+  void operator=(const vtkLKPatchDeformationFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,115 @@
+#include "TestSupport.h"
+#include "vtkLKPatchDeformationFilter.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPlaneSource.h>
+#include <vtkTriangleFilter.h>
+
+#include <cmath>
+#include <map>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> planarPatch(int resolution)
+{
+  vtkNew<vtkPlaneSource> plane; // [-0.5, 0.5]^2, normal +z
+  plane->SetResolution(resolution, resolution);
+  vtkNew<vtkTriangleFilter> tri;
+  tri->SetInputConnection(plane->GetOutputPort());
+  tri->Update();
+  return tri->GetOutput();
+}
+} // namespace
+
+TEST(PatchDeformationFilter, BumpBoxAndSmoothing)
+{
+  vtkNew<vtkLKPatchDeformationFilter> deform;
+  deform->SetInputData(planarPatch(20));
+  deform->AddFunctionalDeformation(0.0, 0.0, 0.0, 0.2, 40.0, 0.3); // (0, 0) is a grid point
+  deform->AddRangeDeformation(0.25, 0.45, -0.45, -0.25, -1, 1, 0, 0, -0.1);
+  deform->SetMaxLevel(3);
+  lktest::ErrorRecorder errors(deform);
+  deform->Update();
+  EXPECT_EQ(errors.errors, 0) << errors.messages;
+  vtkPolyData* out = deform->GetOutput();
+  double bounds[6];
+  out->GetBounds(bounds);
+  EXPECT_NEAR(bounds[5], 0.2, 1e-12); // the peak is k
+  EXPECT_NEAR(bounds[4], -0.1, 1e-12); // the box moved down
+  // Locality: points farther than D from the centre and outside the box stay put.
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    const bool inBox = p[0] >= 0.25 && p[0] <= 0.45 && p[1] >= -0.45 && p[1] <= -0.25;
+    if (std::hypot(p[0], p[1]) > 0.3 + 1e-9 && !inBox)
+      ASSERT_EQ(p[2], 0.0) << i;
+  }
+  // Conforming: every edge has one or two triangles; refined where deformed.
+  std::map<std::pair<vtkIdType, vtkIdType>, int> use;
+  const vtkIdType* ids;
+  vtkIdType n;
+  auto polys = out->GetPolys();
+  polys->InitTraversal();
+  while (polys->GetNextCell(n, ids))
+    for (int e = 0; e < 3; ++e)
+      ++use[{ std::min(ids[e], ids[(e + 1) % 3]), std::max(ids[e], ids[(e + 1) % 3]) }];
+  double border = 0.0;
+  for (const auto& [e, c] : use)
+  {
+    ASSERT_LE(c, 2);
+    if (c == 1)
+    {
+      double a[3], b[3];
+      out->GetPoint(e.first, a);
+      out->GetPoint(e.second, b);
+      ASSERT_TRUE(std::abs(std::abs(a[0] + b[0]) - 1.0) < 1e-12 || std::abs(std::abs(a[1] + b[1]) - 1.0) < 1e-12)
+        << "a crack inside the patch";
+      border += std::hypot(a[0] - b[0], a[1] - b[1]);
+    }
+  }
+  EXPECT_NEAR(border, 4.0, 1e-9); // exactly the patch's border: no cracks
+  EXPECT_EQ(out->GetCellData()->GetArray("Level")->GetRange()[1], 3.0);
+  // Smoothing the box's step lowers the largest jump along an edge.
+  auto largestJump = [](vtkPolyData* pd) {
+    double worst = 0.0;
+    const vtkIdType* c;
+    vtkIdType k;
+    pd->GetPolys()->InitTraversal();
+    while (pd->GetPolys()->GetNextCell(k, c))
+      for (int e = 0; e < 3; ++e)
+        worst = std::max(worst, std::abs(pd->GetPoint(c[e])[2] - pd->GetPoint(c[(e + 1) % 3])[2]));
+    return worst;
+  };
+  const double before = largestJump(out);
+  deform->AddSmoothingDeformation(0.35, -0.35, 0.0, 0.2, 4);
+  deform->Update();
+  EXPECT_LT(largestJump(deform->GetOutput()), before);
+}
+
+TEST(PatchDeformationFilter, BadInputGivesErrors)
+{
+  vtkNew<vtkLKPatchDeformationFilter> deform;
+  vtkNew<vtkPolyData> empty;
+  deform->SetInputData(empty);
+  {
+    lktest::ErrorRecorder errors(deform);
+    deform->Update();
+    EXPECT_GE(errors.errors, 1);
+  }
+  deform->SetInputData(planarPatch(4));
+  deform->SetTolerance(-1.0);
+  {
+    lktest::ErrorRecorder errors(deform);
+    deform->Update();
+    EXPECT_NE(errors.messages.find("Tolerance"), std::string::npos) << errors.messages;
+  }
+  deform->SetTolerance(0.0);
+  deform->AddFunctionalDeformation(0, 0, 0, 1.0, 1.0, -2.0); // D < 0
+  {
+    lktest::ErrorRecorder errors(deform);
+    deform->Update();
+    EXPECT_NE(errors.messages.find("D > 0"), std::string::npos) << errors.messages;
+  }
+}
