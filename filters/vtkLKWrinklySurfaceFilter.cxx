@@ -105,19 +105,18 @@ int vtkLKWrinklySurfaceFilter::RequestData(
     params.iterations = this->Iterations;
     params.alpha0 = this->Alpha0;
     params.alpha1 = this->Alpha1;
-    if (this->SamplingTolerance > 0.0)
-    {
-      params.iterations = 0;
-      const lk::WrinklySurface probe(mesh, params);
-      params.iterations = lk::wrinklyIterationsForTolerance(probe, this->SamplingTolerance);
-    }
-    else if (this->SamplingTolerance < 0.0 || !std::isfinite(this->SamplingTolerance))
+    if (this->SamplingTolerance < 0.0 || std::isnan(this->SamplingTolerance))
     {
       vtkErrorMacro("SamplingTolerance must be 0 (use Iterations) or a positive length.");
       return 0;
     }
+    if (this->SamplingTolerance > 0.0)
+      params.iterations = 0; // Iterations is ignored; the tolerance picks K below
+    lk::WrinklySurface surface(mesh, params);
+    if (this->SamplingTolerance > 0.0)
+      surface.setIterations(lk::wrinklyIterationsForTolerance(surface, this->SamplingTolerance));
+    params.iterations = surface.parameters().iterations;
     this->UsedIterations = params.iterations;
-    const lk::WrinklySurface surface(mesh, params);
     int resolution = this->Resolution;
     if (resolution == 0)
     {

@@ -90,41 +90,28 @@ WrinklySurface::WrinklySurface(const WrinklyControlMesh& mesh, const WrinklyPara
     const int n = axes_.patchPoints[pi];
     patchIndex_[n] = static_cast<int>(pi);
     const WrinklyFrame& fr = axes_.frames[n];
-    auto setNet = [&](int i, int j, auto&& fill) {
+    // The biquadratic net: net[i][j], i along u, j along v.
+    auto copy = [&](int i, int j, const double* from) {
+      std::copy(from, from + channels_, &net[(i * 3 + j) * channels_]);
+    };
+    auto cellValue = [&](int cell) { return &centroid[static_cast<std::size_t>(cell) * channels_]; };
+    auto pointValue = [&](int q) { return &value[static_cast<std::size_t>(q) * channels_]; };
+    auto edge = [&](int i, int j, int role) {
+      if (fr.link[role] < 0) // missing link: its side collapses onto the cell that holds it
+        return copy(i, j, cellValue(fr.missingCell[role]));
       double* b = &net[(i * 3 + j) * channels_];
-      fill(b);
-    };
-    auto fromCell = [&](int cell) {
-      return [&, cell](double* b) {
-        for (int c = 0; c < channels_; ++c)
-          b[c] = centroid[static_cast<std::size_t>(cell) * channels_ + c];
-      };
-    };
-    auto edge = [&](int role) {
-      return [&, role](double* b) {
-        if (fr.link[role] < 0)
-        {
-          for (int c = 0; c < channels_; ++c)
-            b[c] = centroid[static_cast<std::size_t>(fr.missingCell[role]) * channels_ + c];
-          return;
-        }
-        for (int c = 0; c < channels_; ++c)
-          b[c] = 0.5 * (value[static_cast<std::size_t>(n) * channels_ + c] +
-                         value[static_cast<std::size_t>(fr.link[role]) * channels_ + c]);
-      };
-    };
-    setNet(0, 0, fromCell(fr.corner[0]));
-    setNet(2, 0, fromCell(fr.corner[1]));
-    setNet(0, 2, fromCell(fr.corner[2]));
-    setNet(2, 2, fromCell(fr.corner[3]));
-    setNet(1, 0, edge(MinusV));
-    setNet(1, 2, edge(PlusV));
-    setNet(0, 1, edge(MinusU));
-    setNet(2, 1, edge(PlusU));
-    setNet(1, 1, [&](double* b) {
       for (int c = 0; c < channels_; ++c)
-        b[c] = value[static_cast<std::size_t>(n) * channels_ + c];
-    });
+        b[c] = 0.5 * (pointValue(n)[c] + pointValue(fr.link[role])[c]);
+    };
+    copy(0, 0, cellValue(fr.corner[0]));
+    copy(2, 0, cellValue(fr.corner[1]));
+    copy(0, 2, cellValue(fr.corner[2]));
+    copy(2, 2, cellValue(fr.corner[3]));
+    edge(1, 0, MinusV);
+    edge(1, 2, PlusV);
+    edge(0, 1, MinusU);
+    edge(2, 1, PlusU);
+    copy(1, 1, pointValue(n));
     double* out = &control_[pi * 16 * channels_];
     for (int k = 0; k < 4; ++k)
       for (int l = 0; l < 4; ++l)
@@ -145,27 +132,16 @@ WrinklySurface::WrinklySurface(const WrinklyControlMesh& mesh, const WrinklyPara
       for (std::size_t a = 0; a < face.size(); ++a)
         reference += mesh.points[face[a]].cross(mesh.points[face[(a + 1) % face.size()]]);
     }
-    double pu[3], pv[3];
-    {
-      double bu[4], bv[4], du[4], dv[4];
-      bernstein3(0.5, bu);
-      bernstein3(0.5, bv);
-      bernstein3Derivative(0.5, du);
-      bernstein3Derivative(0.5, dv);
-      for (int c = 0; c < 3; ++c)
-      {
-        pu[c] = pv[c] = 0.0;
-        for (int k = 0; k < 4; ++k)
-          for (int l = 0; l < 4; ++l)
-          {
-            pu[c] += du[k] * bv[l] * out[(k * 4 + l) * channels_ + c];
-            pv[c] += bu[k] * dv[l] * out[(k * 4 + l) * channels_ + c];
-          }
-      }
-    }
-    const Vec3 normal = Vec3(pu[0], pu[1], pu[2]).cross(Vec3(pv[0], pv[1], pv[2]));
+    const auto [pu, pv] = partials(static_cast<int>(pi), 0.5, 0.5);
+    const Vec3 normal = pu.cross(pv);
     orientation_[pi] = normal.dot(reference) < 0.0 ? -1.0 : 1.0;
   }
+}
+
+void WrinklySurface::setIterations(int iterations)
+{
+  shuffle_ = { { IteratedShuffle(parameters_.shuffleU, iterations), IteratedShuffle(parameters_.shuffleV, iterations) } };
+  parameters_.iterations = iterations;
 }
 
 int WrinklySurface::patchOf(int point) const
@@ -177,22 +153,45 @@ int WrinklySurface::patchOf(int point) const
 
 void WrinklySurface::evaluate(int patch, int channel0, int channels, double u, double v, double* out) const
 {
-  if (!out)
-    return;
+  std::fill(out, out + channels, 0.0);
+  accumulate(patch, channel0, channels, u, v, 1.0, out);
+}
+
+void WrinklySurface::accumulate(
+  int patch, int channel0, int channels, double u, double v, double weight, double* out) const
+{
   double bu[4], bv[4];
   bernstein3(u, bu);
   bernstein3(v, bv);
   const double* c = &control_[static_cast<std::size_t>(patch) * 16 * channels_];
-  for (int ch = 0; ch < channels; ++ch)
-    out[ch] = 0.0;
   for (int k = 0; k < 4; ++k)
     for (int l = 0; l < 4; ++l)
     {
-      const double w = bu[k] * bv[l];
+      const double w = weight * bu[k] * bv[l];
       const double* p = c + (k * 4 + l) * channels_ + channel0;
       for (int ch = 0; ch < channels; ++ch)
         out[ch] += w * p[ch];
     }
+}
+
+std::pair<Vec3, Vec3> WrinklySurface::partials(int patch, double u, double v) const
+{
+  double bu[4], bv[4], du[4], dv[4];
+  bernstein3(u, bu);
+  bernstein3(v, bv);
+  bernstein3Derivative(u, du);
+  bernstein3Derivative(v, dv);
+  const double* c = &control_[static_cast<std::size_t>(patch) * 16 * channels_];
+  Vec3 pu = Vec3::Zero(), pv = Vec3::Zero();
+  for (int k = 0; k < 4; ++k)
+    for (int l = 0; l < 4; ++l)
+    {
+      const double* q = c + (k * 4 + l) * channels_;
+      const Vec3 p(q[0], q[1], q[2]);
+      pu += du[k] * bv[l] * p;
+      pv += bu[k] * dv[l] * p;
+    }
+  return { pu, pv };
 }
 
 std::array<Vec3, 16> WrinklySurface::basePatch(int point) const
@@ -223,19 +222,7 @@ Vec3 WrinklySurface::baseNormal(const WrinklyLocal& t) const
       scale = std::max(scale, std::abs(c[i * channels_ + a] - c[a]));
   for (int attempt = 0; attempt < 8; ++attempt)
   {
-    double bu[4], bv[4], du[4], dv[4];
-    bernstein3(u, bu);
-    bernstein3(v, bv);
-    bernstein3Derivative(u, du);
-    bernstein3Derivative(v, dv);
-    Vec3 pu = Vec3::Zero(), pv = Vec3::Zero();
-    for (int k = 0; k < 4; ++k)
-      for (int l = 0; l < 4; ++l)
-      {
-        const Vec3 p(c[(k * 4 + l) * channels_], c[(k * 4 + l) * channels_ + 1], c[(k * 4 + l) * channels_ + 2]);
-        pu += du[k] * bv[l] * p;
-        pv += bu[k] * dv[l] * p;
-      }
+    const auto [pu, pv] = partials(patch, u, v);
     const Vec3 n = pu.cross(pv);
     if (n.norm() > 1e-12 * scale * scale)
       return orientation_[patch] * n.normalized();
@@ -311,17 +298,14 @@ double WrinklySurface::wrinklyHeight(const WrinklyLocal& t) const
 
 void WrinklySurface::wrinklyAttributes(const WrinklyLocal& t, double* out) const
 {
-  std::vector<double> tmp(attributeComponents_);
-  for (int c = 0; c < attributeComponents_; ++c)
-    out[c] = 0.0;
+  std::fill(out, out + attributeComponents_, 0.0);
   const double alpha[2] = { parameters_.alpha0, parameters_.alpha1 };
   for (int order = 0; order < 2; ++order)
   {
     if (alpha[order] <= 0.0)
       continue;
-    attributes(inverseShuffle(order, t), tmp.data());
-    for (int c = 0; c < attributeComponents_; ++c)
-      out[c] += alpha[order] * tmp[c];
+    const WrinklyLocal source = inverseShuffle(order, t);
+    accumulate(patchOf(source.point), 4, attributeComponents_, source.u, source.v, alpha[order], out);
   }
 }
 
@@ -380,8 +364,7 @@ WrinklyTessellation tessellateWrinkly(
   out.triangles.reserve(static_cast<std::size_t>(triangles));
 
   // Border samples are merged by their base-surface position.
-  double extent = surface.largestPatchSize();
-  const double quantum = std::max(extent, 1e-300) * 1e-9;
+  const double quantum = std::max(surface.largestPatchSize(), 1e-300) * 1e-9;
   struct KeyHash
   {
     std::size_t operator()(const std::array<long long, 3>& k) const

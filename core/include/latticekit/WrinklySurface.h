@@ -39,6 +39,7 @@
 
 #include <array>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace lk
@@ -69,6 +70,9 @@ public:
 
   const WrinklyGlobalAxes& axes() const { return axes_; }
   const WrinklyParameters& parameters() const { return parameters_; }
+  /// Changes K (e.g. once wrinklyIterationsForTolerance has chosen it)
+  /// without rebuilding the axes and patches; throws like IteratedShuffle.
+  void setIterations(int iterations);
   int attributeComponents() const { return attributeComponents_; }
   const std::vector<int>& patchPoints() const { return axes_.patchPoints; }
 
@@ -100,6 +104,10 @@ public:
 private:
   int patchOf(int point) const;
   void evaluate(int patch, int channel0, int channels, double u, double v, double* out) const;
+  /// out += weight * (channels channel0 ... of the patch at (u, v)).
+  void accumulate(int patch, int channel0, int channels, double u, double v, double weight, double* out) const;
+  /// dP/du, dP/dv of the base patch.
+  std::pair<Vec3, Vec3> partials(int patch, double u, double v) const;
 
   WrinklyGlobalAxes axes_;
   WrinklyParameters parameters_;
