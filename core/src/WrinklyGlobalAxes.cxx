@@ -319,10 +319,10 @@ WrinklyGlobalAxes buildWrinklyGlobalAxes(const WrinklyControlMesh& m)
         const WrinklyFrame& b = out.frames[axis.points[k + 1]];
         // Corners beside the shared link: for U axes (+u, +v) of a against
         // (-u, +v) of b; for V axes (+u, +v) of a against (+u, -v) of b.
+        // In both cases the opposite side is b's (-u, -v) corner.
         const int aSide = a.corner[3];
         const int bSame = g == 0 ? b.corner[2] : b.corner[1];
-        const int bOpposite = g == 0 ? b.corner[0] : b.corner[0];
-        const bool flipped = aSide != bSame && aSide == bOpposite;
+        const bool flipped = aSide != bSame && aSide == b.corner[0];
         axis.crossFlip[k + 1] = static_cast<char>(axis.crossFlip[k] ^ (flipped ? 1 : 0));
       }
     }
