@@ -12,11 +12,10 @@ invariant measure as a texture).
 import sys
 
 import latticekit
+from latticekit.rendering import save_png
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 
@@ -110,15 +109,8 @@ def main(argv):
     cam.SetViewUp(0, 0, 1)
     for r in renderers:
         r.ResetCamera()
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName(argv[1])
-    writer.Write()
     print("hit density from %.3f to %.3f of the mean" % (dmin, dmax))
-    print("wrote", argv[1])
+    save_png(window, argv[1])
     return 0
 
 

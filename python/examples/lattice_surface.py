@@ -12,10 +12,9 @@ Left: the lattice (cage). Right: the smooth surface with the cage over it.
 import sys
 
 import latticekit
+from latticekit.rendering import save_png
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 
@@ -86,14 +85,7 @@ def main(argv):
         else:
             renderer.SetActiveCamera(camera)
         window.AddRenderer(renderer)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName(argv[2])
-    writer.Write()
-    print("wrote", argv[2])
+    save_png(window, argv[2])
     return 0
 
 

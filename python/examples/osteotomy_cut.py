@@ -12,6 +12,7 @@ surface. The pieces are drawn apart, in two colours, the caps darker.
 import sys
 
 import latticekit
+from latticekit.rendering import save_png
 from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPlane, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkCutter, vtkPolyDataNormals, vtkStripper, vtkThreshold
@@ -19,9 +20,7 @@ from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
 from vtkmodules.vtkFiltersModeling import vtkDijkstraGraphGeodesicPath
 from vtkmodules.vtkCommonDataModel import vtkDataObject
 from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 
@@ -130,14 +129,7 @@ def main(argv):
     cam.SetPosition(centre[0] + 60, centre[1] - 250, centre[2] + 160)
     cam.SetViewUp(0, 0, 1)
     renderer.ResetCamera()
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName(argv[2])
-    writer.Write()
-    print("wrote", argv[2])
+    save_png(window, argv[2])
     return 0
 
 

@@ -11,11 +11,10 @@ refinement (1-to-4 splits and transition triangles) shows.
 import sys
 
 import latticekit
+from latticekit.rendering import save_png
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 
@@ -68,14 +67,7 @@ def main(argv):
         levels = out.GetCellData().GetArray("Level").GetRange()
         print(f"{kind}: {out.GetNumberOfPolys()} triangles, levels {int(levels[0])}-{int(levels[1])}, "
               f"z {out.GetBounds()[4]:.3f} to {out.GetBounds()[5]:.3f}")
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName(argv[1])
-    writer.Write()
-    print("wrote", argv[1])
+    save_png(window, argv[1])
     return 0
 
 

@@ -11,11 +11,10 @@ the IST (K = 0, the paper's "interpolation surface"), with the control mesh.
 import sys
 
 import latticekit
+from latticekit.rendering import save_png
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 NETS = [
@@ -84,14 +83,7 @@ def main(argv):
             cam.Zoom(1.25)
             window.AddRenderer(ren)
             print(f"{name}: K {k}, {out.GetNumberOfPolys()} triangles")
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName(argv[1])
-    writer.Write()
-    print("wrote", argv[1])
+    save_png(window, argv[1])
     return 0
 
 
