@@ -1,7 +1,8 @@
 // latticekit-planner: the osteotomy planner in a plain VTK render window.
 // Draw strokes on the bone, turn them into feature lines, cut along closed
 // lines, fit lattices to the pieces, see the Metro error, undo and redo,
-// save and replay sessions (JSON), export the pieces.
+// deform the pieces (bump, box, smoothing brush on adaptively refined
+// patches), save and replay sessions (JSON), export the pieces.
 #include "common/AppSupport.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
@@ -10,6 +11,7 @@
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKMetroFilter.h"
+#include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
 
 #include <vtkActor.h>
@@ -27,6 +29,7 @@
 #include <vtkIdTypeArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLookupTable.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPNGWriter.h>
@@ -52,6 +55,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <cstdio>
@@ -66,12 +70,31 @@ namespace
 {
 const char* kHelp = "d: draw on/off | 1 paint 2 nearest 3 snap 4 split | x: cut (capped) | l: lattice | m: Metro colours\n"
                     "n: pick the segment (smallest piece first) | g: move it (drag; shift+drag rotates) | r: reset its move\n"
+                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius\n"
                     "z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 struct Stroke
 {
   int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
   std::vector<std::array<double, 3>> points;
+};
+
+/// One deformation of the adaptive micro planar patches (seed 002) on a
+/// piece, in the piece's own frame (before the segment's move).
+/// - bump: eq. 1, k exp(-a d^2) along the surface normal within `radius` of
+///   the centre; k = amount, a = falloff (the tool uses ln(100) / radius^2,
+///   so the bump has fallen to 1 % of k at the radius);
+/// - box: every vertex in the cube centre +- radius moves by amount * normal
+///   (the paper's range deformation);
+/// - smooth: eq. 2 in the ball (centre, radius), `iterations` times (one dab
+///   of the smoothing brush).
+struct Deformation
+{
+  std::string tool = "bump";
+  int piece = 0;
+  std::array<double, 3> centre{ 0, 0, 0 }, normal{ 0, 0, 1 };
+  double amount = 0.0, radius = 1.0, falloff = 0.0;
+  int iterations = 3;
 };
 
 struct Session
@@ -86,7 +109,46 @@ struct Session
   /// transform, row-major 4x4 (the surgery moves the segment).
   int segment = -1;
   std::array<double, 16> segmentMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  /// Applied in order to the pieces after the cut, before the lattice.
+  std::vector<Deformation> deformations;
 };
+
+Json::Value triple(const std::array<double, 3>& v)
+{
+  Json::Value j(Json::arrayValue);
+  for (double c : v)
+    j.append(c);
+  return j;
+}
+
+bool readTriple(const Json::Value& j, std::array<double, 3>& v)
+{
+  if (!j.isArray() || j.size() != 3)
+    return false;
+  for (Json::ArrayIndex i = 0; i < 3; ++i)
+  {
+    if (!j[i].isNumeric() || !std::isfinite(j[i].asDouble()))
+      return false;
+    v[i] = j[i].asDouble();
+  }
+  return true;
+}
+
+/// The part of a session the cut depends on: strokes, cut, capping.
+std::string cutKey(const Session& s)
+{
+  std::ostringstream os;
+  os.precision(17);
+  for (const Stroke& st : s.strokes)
+  {
+    os << st.mode << ":";
+    for (const auto& p : st.points)
+      os << p[0] << "," << p[1] << "," << p[2] << ";";
+    os << "|";
+  }
+  os << s.cut << s.capping;
+  return os.str();
+}
 
 bool isIdentity(const std::array<double, 16>& m)
 {
@@ -109,6 +171,11 @@ std::string matrixText(const std::array<double, 16>& m)
     os << "\n";
   }
   return os.str();
+}
+
+const char* toolName(int tool)
+{
+  return tool == 1 ? "bump" : tool == 2 ? "box" : tool == 3 ? "smooth" : "off";
 }
 
 const char* modeName(int mode)
@@ -163,6 +230,24 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
     root["segment"]["piece"] = s.segment;
     for (double v : s.segmentMatrix)
       root["segment"]["matrix"].append(v);
+  }
+  for (const Deformation& d : s.deformations)
+  {
+    Json::Value jd;
+    jd["tool"] = d.tool;
+    jd["piece"] = d.piece;
+    jd["centre"] = triple(d.centre);
+    jd["radius"] = d.radius;
+    if (d.tool == "smooth")
+      jd["iterations"] = d.iterations;
+    else
+    {
+      jd["normal"] = triple(d.normal);
+      jd["amount"] = d.amount;
+    }
+    if (d.tool == "bump")
+      jd["falloff"] = d.falloff;
+    root["deformations"].append(jd);
   }
   std::ofstream out(path);
   if (!out)
@@ -226,7 +311,59 @@ bool loadSession(const std::string& path, Session& s, std::string& error)
     for (Json::ArrayIndex i = 0; i < 16; ++i)
       s.segmentMatrix[i] = m[i].asDouble();
   }
+  for (const auto& jd : root["deformations"])
+  {
+    Deformation d;
+    d.tool = jd["tool"].asString();
+    const std::string where = "deformation " + std::to_string(s.deformations.size()) + " in '" + path + "'";
+    if (d.tool != "bump" && d.tool != "box" && d.tool != "smooth")
+    {
+      error = where + " has the tool '" + d.tool + "' (bump, box or smooth)";
+      return false;
+    }
+    if (!jd["piece"].isInt() || jd["piece"].asInt() < 0 || !readTriple(jd["centre"], d.centre) ||
+      !jd["radius"].isNumeric() || !(jd["radius"].asDouble() > 0.0) || !std::isfinite(jd["radius"].asDouble()))
+    {
+      error = where + " needs a piece index, a centre [x, y, z] and a radius above 0";
+      return false;
+    }
+    d.piece = jd["piece"].asInt();
+    d.radius = jd["radius"].asDouble();
+    if (d.tool == "smooth")
+    {
+      d.iterations = jd.get("iterations", 3).asInt();
+      if (d.iterations < 1 || d.iterations > 100)
+      {
+        error = where + " needs 1 to 100 smoothing iterations";
+        return false;
+      }
+    }
+    else if (!readTriple(jd["normal"], d.normal) || !jd["amount"].isNumeric() ||
+      !std::isfinite(jd["amount"].asDouble()))
+    {
+      error = where + " needs a normal [x, y, z] and an amount";
+      return false;
+    }
+    else
+      d.amount = jd["amount"].asDouble();
+    if (d.tool == "bump")
+    {
+      d.falloff = jd.get("falloff", std::log(100.0) / (d.radius * d.radius)).asDouble();
+      if (!(d.falloff >= 0.0) || !std::isfinite(d.falloff))
+      {
+        error = where + " needs a falloff of 0 or more";
+        return false;
+      }
+    }
+    s.deformations.push_back(d);
+  }
   return true;
+}
+
+std::array<double, 3> pieceColour(std::size_t p)
+{
+  const double colours[4][3] = { { 0.93, 0.85, 0.65 }, { 0.6, 0.75, 0.93 }, { 0.7, 0.9, 0.7 }, { 0.95, 0.7, 0.7 } };
+  return { colours[p % 4][0], colours[p % 4][1], colours[p % 4][2] };
 }
 
 class Planner
@@ -245,11 +382,14 @@ public:
   vtkNew<vtkPolyData> strokePd;
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
-  vtkSmartPointer<vtkPolyData> surface; // after the strokes
   std::string message; ///< a problem: shown, and reported as "message:" in batch runs
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment
+  int tool = 0;                           ///< deformation tool: 0 none, 1 bump, 2 box, 3 smooth
+  double radius = 1.0;                    ///< the tool's radius (set from the bone's size)
+  vtkNew<vtkActor> preview;               ///< the piece being deformed, live
+  std::vector<double> frameMs, updateMs;  ///< per mouse move: deformation plus render, deformation alone
   std::vector<Session> undoStack, redoStack; ///< whole-session snapshots
   std::vector<std::vector<vtkSmartPointer<vtkActor>>> pieceActors;
 
@@ -314,7 +454,7 @@ public:
     renderer->AddViewProp(help);
     status->GetTextProperty()->SetFontSize(15);
     status->GetTextProperty()->SetColor(0.1, 0.1, 0.4);
-    status->SetDisplayPosition(8, 64);
+    status->SetDisplayPosition(8, 78);
     renderer->AddViewProp(status);
     scalarBar->SetTitle("Metro distance");
     scalarBar->SetNumberOfLabels(4);
@@ -326,19 +466,35 @@ public:
     strokeActor->GetProperty()->SetColor(0.9, 0.1, 0.1);
     strokeActor->GetProperty()->SetLineWidth(3);
     renderer->AddActor(strokeActor);
+    preview->SetVisibility(false);
+    preview->PickableOff();
+    renderer->AddActor(preview);
+    radius = 0.05 * bone->GetLength();
   }
 
-  /// Re-runs the plan from the bone: strokes, cut, lattices, colours.
-  void rebuild()
+  /// The strokes and the cut, kept while they do not change (the lattice,
+  /// Metro, segment and deformation keys do not redo them).
+  struct CutStage
   {
-    for (auto& a : sceneActors)
-      renderer->RemoveActor(a);
-    sceneActors.clear();
-    pieces.clear();
-    scalarBar->SetVisibility(false);
-    message.clear();
-    cutFailed = false;
-    surface = bone;
+    std::string key;
+    std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>> lines; ///< feature lines, shade
+    std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+    std::string message;
+    bool failed = false;
+  } cut;
+  /// One deformation filter per piece: it keeps the refined mesh between
+  /// updates, so a drag or a brush dab costs one deformation.
+  std::vector<vtkSmartPointer<vtkLKPatchDeformationFilter>> deformers;
+
+  void computeCut()
+  {
+    const std::string key = cutKey(session);
+    if (!cut.pieces.empty() && cut.key == key)
+      return;
+    cut = CutStage();
+    cut.key = key;
+    deformers.clear();
+    vtkSmartPointer<vtkPolyData> surface = bone;
     std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
     int failed = 0;
     for (const Stroke& st : session.strokes)
@@ -368,13 +524,13 @@ public:
       surface = next;
       auto line = vtkSmartPointer<vtkPolyData>::New();
       line->DeepCopy(f->GetFeatureLineOutput());
-      addLineActor(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);
+      cut.lines.emplace_back(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);
       if (line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5 &&
         st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
         closedLines.push_back(line);
     }
     if (failed > 0)
-      message = std::to_string(failed) + " stroke(s) missed the surface or failed (see the terminal)";
+      cut.message = std::to_string(failed) + " stroke(s) missed the surface or failed (see the terminal)";
     vtkNew<vtkPolyData> faces;
     faces->ShallowCopy(surface);
     vtkNew<vtkCellArray> none;
@@ -399,32 +555,112 @@ public:
       loops->SetPoints(lp);
       loops->SetLines(lc);
       loops->GetPointData()->AddArray(ids);
-      vtkNew<vtkLKClosedLineCutFilter> cut;
-      cut->SetInputData(faces);
-      cut->SetLinesData(loops);
-      cut->SetCapping(session.capping);
+      vtkNew<vtkLKClosedLineCutFilter> cutter;
+      cutter->SetInputData(faces);
+      cutter->SetLinesData(loops);
+      cutter->SetCapping(session.capping);
       const int before = lkapp::errorCount();
-      cut->Update();
+      cutter->Update();
       if (lkapp::errorCount() == before)
       {
-        for (int r = 0; r < cut->GetNumberOfPieces(); ++r)
-          pieces.push_back(region(cut->GetOutput(), r));
+        for (int r = 0; r < cutter->GetNumberOfPieces(); ++r)
+          cut.pieces.push_back(region(cutter->GetOutput(), r));
       }
       else
       {
-        message = "the cut failed: " + lkapp::errors();
-        cutFailed = true;
+        cut.message = "the cut failed: " + lkapp::errors();
+        cut.failed = true;
       }
     }
     else if (session.cut)
-      message = "no closed line to cut along: draw a stroke whose ends meet";
-    if (pieces.empty())
+      cut.message = "no closed line to cut along: draw a stroke whose ends meet";
+    if (cut.pieces.empty())
     {
       auto whole = vtkSmartPointer<vtkPolyData>::New();
       whole->ShallowCopy(faces);
-      pieces.push_back(whole);
+      cut.pieces.push_back(whole);
     }
-    const double colours[4][3] = { { 0.93, 0.85, 0.65 }, { 0.6, 0.75, 0.93 }, { 0.7, 0.9, 0.7 }, { 0.95, 0.7, 0.7 } };
+  }
+
+  /// The filter call for one deformation.
+  static void addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
+  {
+    const auto& c = d.centre;
+    const double r = d.radius;
+    if (d.tool == "bump")
+      f->AddFunctionalDeformation(c[0], c[1], c[2], d.amount, d.falloff, r);
+    else if (d.tool == "box")
+      f->AddRangeDeformation(c[0] - r, c[0] + r, c[1] - r, c[1] + r, c[2] - r, c[2] + r, d.amount * d.normal[0],
+        d.amount * d.normal[1], d.amount * d.normal[2]);
+    else
+      f->AddSmoothingDeformation(c[0], c[1], c[2], r, d.iterations);
+  }
+
+  /// The deformation filter of piece p (made on first use).
+  vtkLKPatchDeformationFilter* deformer(std::size_t p)
+  {
+    deformers.resize(cut.pieces.size());
+    if (!deformers[p])
+    {
+      deformers[p] = vtkSmartPointer<vtkLKPatchDeformationFilter>::New();
+      deformers[p]->SetInputData(cut.pieces[p]);
+    }
+    return deformers[p];
+  }
+
+  /// The session's deformations applied to the cut pieces, in order.
+  void applyDeformations()
+  {
+    pieces = cut.pieces;
+    std::vector<std::vector<const Deformation*>> perPiece(pieces.size());
+    for (std::size_t i = 0; i < session.deformations.size(); ++i)
+    {
+      const Deformation& d = session.deformations[i];
+      if (d.piece < static_cast<int>(pieces.size()))
+        perPiece[static_cast<std::size_t>(d.piece)].push_back(&d);
+      else
+        message = "deformation " + std::to_string(i) + " is on piece " + std::to_string(d.piece) +
+          ", which does not exist: the plan has " + std::to_string(pieces.size()) + " piece(s)";
+    }
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+    {
+      if (perPiece[p].empty())
+      {
+        if (p < deformers.size() && deformers[p])
+          deformers[p]->RemoveAllDeformations(); // undone: the next drag starts from the cut piece
+        continue;
+      }
+      vtkLKPatchDeformationFilter* f = deformer(p);
+      f->RemoveAllDeformations();
+      for (const Deformation* d : perPiece[p])
+        addTo(f, *d);
+      const int before = lkapp::errorCount();
+      f->Update(); // only what changed is redone (the filter keeps its state)
+      if (lkapp::errorCount() > before)
+      {
+        message = "cannot deform piece " + std::to_string(p) + ": " + lkapp::errors();
+        continue;
+      }
+      auto deformed = vtkSmartPointer<vtkPolyData>::New();
+      deformed->ShallowCopy(f->GetOutput());
+      pieces[p] = deformed;
+    }
+  }
+
+  /// Re-runs the plan from the bone: strokes, cut (kept while unchanged),
+  /// deformations, lattices, colours.
+  void rebuild()
+  {
+    for (auto& a : sceneActors)
+      renderer->RemoveActor(a);
+    sceneActors.clear();
+    scalarBar->SetVisibility(false);
+    computeCut();
+    message = cut.message;
+    cutFailed = cut.failed;
+    for (const auto& [line, shade] : cut.lines)
+      addLineActor(line, shade);
+    applyDeformations();
     pieceActors.assign(pieces.size(), {});
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
@@ -449,7 +685,7 @@ public:
           shown = smooth->GetOutput();
           vtkNew<vtkExtractEdges> cage;
           cage->SetInputConnection(fit->GetOutputPort());
-          addActor(cage->GetOutputPort(), nullptr, { 0.2, 0.2, 0.2 }, false);
+          addActor(cage->GetOutputPort(), nullptr, { 0.2, 0.2, 0.2 }, false)->PickableOff();
         }
       }
       if (session.metro && shown != pieces[p])
@@ -472,7 +708,7 @@ public:
         scalarBar->SetVisibility(true);
       }
       else
-        addActorData(shown, { colours[p % 4][0], colours[p % 4][1], colours[p % 4][2] }, false);
+        addActorData(shown, pieceColour(p), false);
       pieceActors[p].assign(sceneActors.begin() + static_cast<std::ptrdiff_t>(firstActor), sceneActors.end());
     }
     if (session.segment >= static_cast<int>(pieces.size()))
@@ -537,6 +773,15 @@ public:
     std::ostringstream s;
     s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
       << " | pieces: " << pieces.size() << (session.lattice ? " | lattice" : "");
+    if (tool > 0)
+    {
+      char r[32];
+      std::snprintf(r, sizeof r, "%.1f", radius);
+      s << " | DEFORM " << toolName(tool) << ", radius " << r
+        << (tool == 3 ? " (drag to brush)" : " (drag up/down)");
+    }
+    if (!session.deformations.empty())
+      s << " | deformations: " << session.deformations.size();
     if (moving)
       s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
     else if (hasSegment())
@@ -564,8 +809,42 @@ public:
   {
     std::printf("strokes: %zu\npieces: %zu\n", session.strokes.size(), pieces.size());
     for (std::size_t p = 0; p < pieces.size(); ++p)
-      std::printf("piece %zu: %lld points, %lld faces\n", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
+    {
+      std::printf("piece %zu: %lld points, %lld faces", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
         static_cast<long long>(pieces[p]->GetNumberOfPolys()));
+      if (vtkDataArray* d = pieces[p]->GetPointData()->GetArray("Displacement"))
+      {
+        double largest = 0.0;
+        for (vtkIdType i = 0; i < d->GetNumberOfTuples(); ++i)
+        {
+          const double* v = d->GetTuple3(i);
+          largest = std::max(largest, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+        }
+        std::printf(", deformed: largest displacement %.3f, refinement levels 0-%d", largest,
+          static_cast<int>(pieces[p]->GetCellData()->GetArray("Level")->GetRange()[1]));
+      }
+      std::printf("\n");
+    }
+    for (std::size_t i = 0; i < session.deformations.size(); ++i)
+    {
+      const Deformation& d = session.deformations[i];
+      std::printf("deformation %zu: %s on piece %d at (%.2f, %.2f, %.2f), radius %.2f", i, d.tool.c_str(), d.piece,
+        d.centre[0], d.centre[1], d.centre[2], d.radius);
+      if (d.tool == "smooth")
+        std::printf(", %d iterations\n", d.iterations);
+      else
+        std::printf(", amount %.3f\n", d.amount);
+    }
+    if (!frameMs.empty())
+    {
+      // What a user waits for per mouse move (printed, never asserted).
+      std::vector<double> t = frameMs, u = updateMs;
+      std::sort(t.begin(), t.end());
+      std::sort(u.begin(), u.end());
+      std::printf("deformation frames: %zu; deformation median %.1f ms, slowest %.1f ms; with render median %.1f ms, "
+                  "slowest %.1f ms\n",
+        t.size(), u[u.size() / 2], u.back(), t[t.size() / 2], t.back());
+    }
     std::printf("%s", segmentText().c_str());
     if (!message.empty())
       std::printf("message: %s\n", message.c_str());
@@ -722,8 +1001,173 @@ public:
       this->Interactor->Render();
     }
   }
+  // Deforming (seed 002's tools): the piece under the press, the
+  // deformation being dragged (or the brush's dabs), the session before it
+  // (for undo), and the world length of one pixel at the picked point.
+  int deformPiece = -1;
+  Deformation dragged;
+  std::vector<Deformation> dabs;
+  Session beforeDeform;
+  double worldPerPixel = 0.0;
+  int deformStart[2] = { 0, 0 };
+  vtkNew<vtkCellPicker> piecePicker;
+
+  /// The piece under display (x, y), with the picked point and the surface
+  /// normal there in the piece's own frame (before the segment's move); -1
+  /// when no piece is there.
+  int pickPiece(int x, int y, std::array<double, 3>& point, std::array<double, 3>& normal)
+  {
+    piecePicker->InitializePickList();
+    piecePicker->PickFromListOn();
+    piecePicker->SetTolerance(0.0005);
+    for (auto& actors : planner->pieceActors)
+      for (auto& a : actors)
+        piecePicker->AddPickList(a);
+    if (planner->preview->GetVisibility())
+      piecePicker->AddPickList(planner->preview);
+    if (!piecePicker->Pick(x, y, 0, planner->renderer) || piecePicker->GetCellId() < 0)
+      return -1;
+    vtkProp3D* hit = piecePicker->GetProp3D();
+    int piece = hit == planner->preview.GetPointer() ? deformPiece : -1;
+    for (std::size_t p = 0; p < planner->pieceActors.size() && piece < 0; ++p)
+      for (auto& a : planner->pieceActors[p])
+        if (a.GetPointer() == hit)
+          piece = static_cast<int>(p);
+    if (piece < 0)
+      return -1;
+    double w[4] = { 0, 0, 0, 1 }, n[4] = { 0, 0, 0, 0 };
+    piecePicker->GetPickPosition(w);
+    piecePicker->GetPickNormal(n);
+    if (piece == planner->session.segment)
+    {
+      vtkNew<vtkMatrix4x4> inverse;
+      vtkMatrix4x4::Invert(planner->segmentMatrix(), inverse);
+      inverse->MultiplyPoint(w, w);
+      inverse->MultiplyPoint(n, n);
+    }
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int i = 0; i < 3; ++i)
+    {
+      point[static_cast<std::size_t>(i)] = w[i];
+      normal[static_cast<std::size_t>(i)] = length > 0.0 ? n[i] / length : (i == 2 ? 1.0 : 0.0);
+    }
+    return piece;
+  }
+
+  void startDeform()
+  {
+    const int* pos = this->Interactor->GetEventPosition();
+    std::array<double, 3> c, n;
+    deformPiece = -1;
+    const int piece = pickPiece(pos[0], pos[1], c, n);
+    if (piece < 0)
+    {
+      planner->message = "the deformation tools need a press on the bone";
+      planner->updateStatus();
+      this->Interactor->Render();
+      return;
+    }
+    pressed = true;
+    deformPiece = piece;
+    beforeDeform = planner->session;
+    deformStart[0] = pos[0];
+    deformStart[1] = pos[1];
+    // One pixel, in world units, on the plane through the picked point.
+    piecePicker->GetPickPosition(centre);
+    double a[3], b[3];
+    displayToWorld(pos[0], pos[1], a);
+    displayToWorld(pos[0], pos[1] + 100, b);
+    worldPerPixel = std::sqrt(vtkMath::Distance2BetweenPoints(a, b)) / 100.0;
+    const double r = planner->radius;
+    dragged = Deformation();
+    dragged.tool = toolName(planner->tool);
+    dragged.piece = piece;
+    dragged.centre = c;
+    dragged.normal = n;
+    dragged.radius = r;
+    dragged.falloff = dragged.tool == "bump" ? std::log(100.0) / (r * r) : 0.0;
+    dabs.assign(1, dragged);
+    vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(piece));
+    Planner::addTo(f, dragged); // a bump or box of amount 0 until the mouse moves
+    // The live piece: the filter's output, shown in place of the piece's actors.
+    vtkNew<vtkPolyDataMapper> m;
+    m->SetInputConnection(f->GetOutputPort());
+    m->ScalarVisibilityOff();
+    planner->preview->SetMapper(m);
+    planner->preview->GetProperty()->SetColor(pieceColour(static_cast<std::size_t>(piece)).data());
+    planner->preview->SetUserMatrix(piece == planner->session.segment ? planner->segmentMatrix().GetPointer() : nullptr);
+    planner->preview->SetVisibility(true);
+    planner->preview->PickableOn();
+    for (auto& actor : planner->pieceActors[static_cast<std::size_t>(piece)])
+      actor->SetVisibility(false);
+    this->Interactor->Render();
+  }
+
+  void dragDeform()
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int* pos = this->Interactor->GetEventPosition();
+    vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(deformPiece));
+    if (planner->tool == 3)
+    {
+      // The brush: a new dab once the pointer has moved a third of the radius.
+      std::array<double, 3> c, n;
+      if (pickPiece(pos[0], pos[1], c, n) != deformPiece)
+        return;
+      const auto& last = dabs.back().centre;
+      const double step = std::sqrt(vtkMath::Distance2BetweenPoints(c.data(), last.data()));
+      if (step < dabs.back().radius / 3.0)
+        return;
+      Deformation dab = dabs.back();
+      dab.centre = c;
+      dab.normal = n;
+      dabs.push_back(dab);
+      Planner::addTo(f, dab);
+    }
+    else
+    {
+      // Up raises along the normal at the press, down lowers.
+      dragged.amount = (pos[1] - deformStart[1]) * worldPerPixel;
+      f->RemoveLastDeformation();
+      Planner::addTo(f, dragged);
+    }
+    f->Update();
+    const auto t1 = std::chrono::steady_clock::now();
+    this->Interactor->Render();
+    using ms = std::chrono::duration<double, std::milli>;
+    planner->updateMs.push_back(ms(t1 - t0).count());
+    planner->frameMs.push_back(ms(std::chrono::steady_clock::now() - t0).count());
+  }
+
+  void endDeform()
+  {
+    pressed = false;
+    planner->preview->SetVisibility(false);
+    planner->preview->PickableOff();
+    planner->preview->SetMapper(nullptr);
+    if (planner->tool == 3)
+      planner->session.deformations.insert(planner->session.deformations.end(), dabs.begin(), dabs.end());
+    else if (dragged.amount != 0.0)
+      planner->session.deformations.push_back(dragged);
+    if (planner->session.deformations.size() == beforeDeform.deformations.size())
+    {
+      // A click without a drag: nothing to remember.
+      planner->deformer(static_cast<std::size_t>(deformPiece))->RemoveLastDeformation();
+      for (auto& actor : planner->pieceActors[static_cast<std::size_t>(deformPiece)])
+        actor->SetVisibility(true);
+      this->Interactor->Render();
+      return;
+    }
+    planner->undoStack.push_back(beforeDeform);
+    planner->redoStack.clear();
+    planner->rebuild(); // the same list: the filter keeps its result; lattices are refitted
+    this->Interactor->Render();
+  }
+
   void OnLeftButtonDown() override
   {
+    if (planner->tool > 0)
+      return startDeform();
     if (planner->moving && planner->hasSegment())
       return startMove();
     if (!planner->drawing)
@@ -734,6 +1178,8 @@ public:
   }
   void OnMouseMove() override
   {
+    if (planner->tool > 0 && pressed)
+      return dragDeform();
     if (planner->moving && pressed)
       return drag();
     if (planner->drawing && pressed)
@@ -742,6 +1188,8 @@ public:
   }
   void OnLeftButtonUp() override
   {
+    if (planner->tool > 0 && pressed)
+      return endDeform();
     if (planner->moving && pressed)
       return endMove();
     if (!planner->drawing || !pressed)
@@ -768,6 +1216,19 @@ public:
     {
       planner->drawing = !planner->drawing;
       planner->moving = false;
+      planner->tool = 0;
+      rebuild = false;
+    }
+    else if (key == "f")
+    {
+      planner->tool = (planner->tool + 1) % 4; // bump, box, smooth, off
+      planner->drawing = false;
+      planner->moving = false;
+      rebuild = false;
+    }
+    else if (key == "bracketleft" || key == "bracketright")
+    {
+      planner->radius *= key == "bracketleft" ? 0.8 : 1.25;
       rebuild = false;
     }
     else if (key == "1" || key == "2" || key == "3" || key == "4")
@@ -812,6 +1273,7 @@ public:
       {
         planner->moving = !planner->moving;
         planner->drawing = false;
+        planner->tool = 0;
       }
     }
     else if (key == "r")
@@ -877,7 +1339,8 @@ void usage(std::ostream& os)
      << kHelp
      << "\n"
         "\n"
-        "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro, moved segment)\n"
+        "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro, moved segment,\n"
+        "                       deformations)\n"
         "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
         "  --export FOLDER      write every piece as STL, VTP and OBJ and exit\n"
         "  --session OUT        where 'w' saves the session (default planner_session.json)\n"

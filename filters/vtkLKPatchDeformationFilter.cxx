@@ -15,9 +15,48 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 vtkStandardNewMacro(vtkLKPatchDeformationFilter);
+
+/// The refined mesh kept between updates: after every deformation of
+/// `fullList` and after every one of `prefixList` (all but the last).
+class vtkLKPatchDeformationFilter::vtkInternals
+{
+public:
+  vtkPolyData* input = nullptr;
+  vtkMTimeType inputTime = 0;
+  int maxLevel = -1;
+  double tolerance = -1.0;
+  lk::TriangleMesh base;
+  std::vector<Deformation> fullList, prefixList;
+  std::unique_ptr<lk::AdaptivePatchMesh> full, prefix;
+
+  void reset()
+  {
+    input = nullptr;
+    full.reset();
+    prefix.reset();
+    fullList.clear();
+    prefixList.clear();
+  }
+  static bool startsWith(const std::vector<Deformation>& list, const std::vector<Deformation>& head)
+  {
+    return head.size() <= list.size() && std::equal(head.begin(), head.end(), list.begin());
+  }
+};
+
+vtkLKPatchDeformationFilter::vtkLKPatchDeformationFilter()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkLKPatchDeformationFilter::~vtkLKPatchDeformationFilter()
+{
+  delete this->Internals;
+}
 
 void vtkLKPatchDeformationFilter::AddFunctionalDeformation(double x, double y, double z, double k, double a, double D)
 {
@@ -44,18 +83,19 @@ void vtkLKPatchDeformationFilter::RemoveAllDeformations()
   this->Modified();
 }
 
+void vtkLKPatchDeformationFilter::RemoveLastDeformation()
+{
+  if (this->Deformations.empty())
+    return;
+  this->Deformations.pop_back();
+  this->Modified();
+}
+
 int vtkLKPatchDeformationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  lk::TriangleMesh base;
-  const std::string problem = lkvtk::toTriangleMesh(input, base);
-  if (!problem.empty())
-  {
-    vtkErrorMacro("Cannot deform: " << problem << ".");
-    return 0;
-  }
   if (!(this->Tolerance >= 0.0) || !std::isfinite(this->Tolerance))
   {
     vtkErrorMacro("Tolerance must be 0 (automatic) or a positive length, not " << this->Tolerance << ".");
@@ -64,24 +104,72 @@ int vtkLKPatchDeformationFilter::RequestData(
   double tolerance = this->Tolerance;
   if (tolerance == 0.0)
     tolerance = 1e-3 * input->GetLength();
+  vtkInternals& state = *this->Internals;
+  if (state.input != input || state.inputTime != input->GetMTime() || state.maxLevel != this->MaxLevel ||
+    state.tolerance != tolerance)
+  {
+    state.reset();
+    const std::string problem = lkvtk::toTriangleMesh(input, state.base);
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot deform: " << problem << ".");
+      return 0;
+    }
+    state.input = input;
+    state.inputTime = input->GetMTime();
+    state.maxLevel = this->MaxLevel;
+    state.tolerance = tolerance;
+  }
   try
   {
-    lk::AdaptivePatchMesh mesh(base, this->MaxLevel);
-    const std::size_t n = this->Deformations.size();
-    for (std::size_t i = 0; i < n; ++i)
+    const std::vector<Deformation>& list = this->Deformations;
+    const std::size_t n = list.size();
+    if (!state.full || state.fullList != list)
     {
-      const auto& d = this->Deformations[i];
-      const auto& p = d.p;
-      if (d.kind == 0)
-        mesh.functionalDeformation(lk::Vec3(p[0], p[1], p[2]), p[3], p[4], p[5], tolerance);
-      else if (d.kind == 1)
-        mesh.rangeDeformation(lk::Vec3(p[0], p[2], p[4]), lk::Vec3(p[1], p[3], p[5]), lk::Vec3(p[6], p[7], p[8]));
+      // Start from the longest kept state whose list begins this one.
+      std::unique_ptr<lk::AdaptivePatchMesh> work;
+      std::size_t done = 0;
+      const bool fromFull = state.full && vtkInternals::startsWith(list, state.fullList);
+      const bool fromPrefix = state.prefix && vtkInternals::startsWith(list, state.prefixList);
+      if (fromFull && (!fromPrefix || state.fullList.size() >= state.prefixList.size()))
+      {
+        done = state.fullList.size();
+        work = std::move(state.full);
+      }
+      else if (fromPrefix)
+      {
+        done = state.prefixList.size();
+        work = std::make_unique<lk::AdaptivePatchMesh>(*state.prefix);
+      }
       else
-        mesh.smoothingDeformation(lk::Vec3(p[0], p[1], p[2]), p[3], static_cast<int>(p[4]));
-      this->UpdateProgress(0.9 * static_cast<double>(i + 1) / static_cast<double>(n));
-      if (this->GetAbortExecute())
-        return 1;
+        work = std::make_unique<lk::AdaptivePatchMesh>(state.base, this->MaxLevel);
+      state.full.reset();
+      state.fullList.clear();
+      for (std::size_t i = done; i < n; ++i)
+      {
+        if (i + 1 == n && !(state.prefix && state.prefixList.size() == i && fromPrefix))
+        {
+          state.prefix = std::make_unique<lk::AdaptivePatchMesh>(*work);
+          state.prefixList.assign(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(i));
+        }
+        const auto& p = list[i].p;
+        if (list[i].kind == 0)
+          work->functionalDeformation(lk::Vec3(p[0], p[1], p[2]), p[3], p[4], p[5], tolerance);
+        else if (list[i].kind == 1)
+          work->rangeDeformation(lk::Vec3(p[0], p[2], p[4]), lk::Vec3(p[1], p[3], p[5]), lk::Vec3(p[6], p[7], p[8]));
+        else
+          work->smoothingDeformation(lk::Vec3(p[0], p[1], p[2]), p[3], static_cast<int>(p[4]));
+        this->UpdateProgress(0.9 * static_cast<double>(i + 1 - done) / static_cast<double>(n - done));
+        if (this->GetAbortExecute())
+        {
+          state.reset(); // the kept states are partly deformed
+          return 1;
+        }
+      }
+      state.full = std::move(work);
+      state.fullList = list;
     }
+    const lk::AdaptivePatchMesh& mesh = *state.full;
     const auto tris = mesh.triangles();
     const auto levels = mesh.triangleLevels();
     const auto np = static_cast<vtkIdType>(mesh.vertexCount());
@@ -119,6 +207,7 @@ int vtkLKPatchDeformationFilter::RequestData(
   }
   catch (const std::exception& e)
   {
+    state.reset();
     vtkErrorMacro("Cannot deform: " << e.what() << ".");
     return 0;
   }

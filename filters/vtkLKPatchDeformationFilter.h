@@ -1,7 +1,7 @@
 /**
  * @class   vtkLKPatchDeformationFilter
  * @brief   Deformation of adaptively refined micro planar patches (seed 002,
- *          Futagami, Mizuguchi and Morita), for scripted use.
+ *          Futagami, Mizuguchi and Morita), for scripted and interactive use.
  *
  * Input: a manifold triangle mesh (open or closed; a planar patch in the
  * paper). The deformations added to the filter are applied in order to a
@@ -21,6 +21,17 @@
  * Output: the refined, deformed triangles. Point data "Displacement" (from
  * the original surface) and "BaseNormals" (original normals); cell data
  * "Level" (refinement depth of each triangle).
+ *
+ * Interactive use. The filter keeps the refined mesh between updates, as
+ * the state after all its deformations and after all but the last. While
+ * the input, MaxLevel and Tolerance are unchanged, an update whose list
+ * starts with one of those two lists applies only the rest. So appending a
+ * deformation (a smoothing brush dab), or replacing the last one
+ * (RemoveLastDeformation then Add..., a drag that changes k every mouse
+ * move), costs one deformation, not the whole list; removing the last (an
+ * undo) costs a copy. The result is the same, to the bit, as a new filter
+ * with the same list applied from scratch (tested), so a recorded list
+ * replays what the user saw.
  */
 #ifndef vtkLKPatchDeformationFilter_h
 #define vtkLKPatchDeformationFilter_h
@@ -46,6 +57,8 @@ public:
   /// Eq. 2 inside the ball ((x, y, z), D).
   void AddSmoothingDeformation(double x, double y, double z, double D, int iterations);
   void RemoveAllDeformations();
+  /// Drops the last deformation added (nothing if there is none).
+  void RemoveLastDeformation();
   int GetNumberOfDeformations() const { return static_cast<int>(this->Deformations.size()); }
 
   ///@{
@@ -61,20 +74,23 @@ public:
   ///@}
 
 protected:
-  vtkLKPatchDeformationFilter() = default;
-  ~vtkLKPatchDeformationFilter() override = default;
+  vtkLKPatchDeformationFilter();
+  ~vtkLKPatchDeformationFilter() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   struct Deformation
   {
     int kind; ///< 0 functional, 1 range, 2 smoothing
     std::array<double, 9> p;
+    bool operator==(const Deformation& o) const { return kind == o.kind && p == o.p; }
   };
   std::vector<Deformation> Deformations;
   int MaxLevel = 4;
   double Tolerance = 0.0;
 
 private:
+  class vtkInternals;
+  vtkInternals* Internals;
   vtkLKPatchDeformationFilter(const vtkLKPatchDeformationFilter&) = delete;
   void operator=(const vtkLKPatchDeformationFilter&) = delete;
 };

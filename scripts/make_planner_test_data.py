@@ -3,9 +3,15 @@
 # tests/data/mandible_events.log (a closed circle stroke drawn with the mouse on the
 # condyle, then the cut and lattice keys, then the cut-out segment moved and
 # rotated with the mouse and the session saved; vtkInteractorEventRecorder format).
-# Run from the repository root after a build: xvfb-run -a /usr/bin/python3 scripts/make_planner_test_data.py
+# tests/data/mandible_deform_events.log: the deformation tools (seed 002) on the
+# uncut mandible: a bump dragged up on the chin, a box pushed down on the left
+# body, a smoothing brush over the bump, undo and redo, the session saved.
+# Run from the repository root after a build:
+#   xvfb-run -a /usr/bin/python3 scripts/make_planner_test_data.py [session] [events] [deform]
+# (no argument: all three).
 import json
 import sys
+parts = set(sys.argv[1:]) or {'session', 'events', 'deform'}
 sys.path.insert(0, 'build/python')
 import latticekit
 from vtkmodules.vtkCommonDataModel import vtkPlane
@@ -22,7 +28,8 @@ pts = [list(round(v, 4) for v in o.GetPoint(cell.GetPointId(k))) for k in range(
 pts.append(pts[0])
 print(o.GetNumberOfCells(), n, len(pts))
 session = {"strokes": [{"mode": "split", "points": pts}], "cut": True, "capping": True, "lattice": True, "latticeVertices": 400, "metro": True}
-json.dump(session, open('tests/data/mandible_session.json', 'w'), indent=1)
+if 'session' in parts:
+    json.dump(session, open('tests/data/mandible_session.json', 'w'), indent=1)
 
 import math, sys
 sys.path.insert(0, 'build/python')
@@ -76,4 +83,68 @@ for k in range(1, 5):
 lines.append('LeftButtonReleaseEvent 540 375 0 1 0 0 0')
 for e in ['KeyPressEvent', 'CharEvent', 'KeyReleaseEvent']:
     ev(e, 500, 375, 'w', 'w')
-open('tests/data/mandible_events.log', 'w').write('\n'.join(lines) + '\n')
+if 'events' in parts:
+    open('tests/data/mandible_events.log', 'w').write('\n'.join(lines) + '\n')
+
+# The deformation tools, on points of the bone in the planner's first view.
+def on_bone(x, y):
+    return picker.Pick(x, y, 0, ren) and picker.GetCellId() >= 0
+def nearest_hit(tx, ty):
+    for d in range(0, 200, 2):
+        for x, y in [(tx, ty - d), (tx, ty + d), (tx - d, ty), (tx + d, ty)]:
+            if all(on_bone(x + ox, y + oy) for ox in (-12, 0, 12) for oy in (-12, 0, 12)):
+                return x, y
+    raise SystemExit('no bone near %d %d' % (tx, ty))
+chin = nearest_hit(500, 230)
+body = nearest_hit(330, 380)
+print('chin', chin, 'body', body, 'bone diagonal', b.GetOutput().GetLength())
+lines = ['# StreamVersion 1.1',
+         '# The deformation tools on the uncut mandible: f (bump), drag up on the chin;',
+         '# f (box), drag down on the body; f (smooth), brush over the bump; undo, redo; f (off); save;',
+         '# then the camera turned with the mouse.']
+def key(k, x=500, y=375):
+    for e in ['KeyPressEvent', 'CharEvent', 'KeyReleaseEvent']:
+        ev(e, x, y, k, k)
+key('f')
+ev('LeftButtonPressEvent', *chin)
+for k in range(1, 9):
+    ev('MouseMoveEvent', chin[0], chin[1] + 5 * k)
+ev('LeftButtonReleaseEvent', chin[0], chin[1] + 40)
+key('f')
+ev('LeftButtonPressEvent', *body)
+for k in range(1, 4):
+    ev('MouseMoveEvent', body[0], body[1] - 5 * k)
+ev('LeftButtonReleaseEvent', body[0], body[1] - 15)
+key('f')
+ev('LeftButtonPressEvent', *chin)
+for k in range(1, 17):
+    t = 2 * math.pi * k / 16
+    ev('MouseMoveEvent', int(round(chin[0] + 10 * math.cos(t) - 10)), int(round(chin[1] + 10 * math.sin(t))))
+ev('LeftButtonReleaseEvent', *chin)
+key('z')
+key('y')
+key('f')
+key('w')
+# Tools off: the mouse turns the camera again, to show the bump from the side.
+ev('LeftButtonPressEvent', 500, 375)
+for k in range(1, 9):
+    ev('MouseMoveEvent', 500, 375 - 10 * k)
+ev('LeftButtonReleaseEvent', 500, 295)
+if 'deform' in parts:
+    open('tests/data/mandible_deform_events.log', 'w').write('\n'.join(lines) + '\n')
+
+# tests/data/mandible_segment_deform_events.log: the cut and moved segment of
+# mandible_events.log (without its save), then move mode off (g), the bump
+# tool (f) and a bump dragged up on the moved segment, which the planner
+# shows at about (300, 562) in its first view. The bump's centre goes back
+# through the segment's move into the piece's own frame.
+if 'deform' in parts:
+    base = [l for l in open('tests/data/mandible_events.log').read().splitlines() if not l.endswith(' w 1 w')]
+    lines = base[:1] + ['# mandible_events.log without the save, then a bump dragged up on the moved segment.'] + base[1:]
+    for k in ['g', 'f']:
+        key(k)
+    ev('LeftButtonPressEvent', 300, 562)
+    for k in range(1, 7):
+        ev('MouseMoveEvent', 300, 562 + 5 * k)
+    ev('LeftButtonReleaseEvent', 300, 592)
+    open('tests/data/mandible_segment_deform_events.log', 'w').write('\n'.join(lines) + '\n')

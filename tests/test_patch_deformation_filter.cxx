@@ -7,7 +7,9 @@
 #include <vtkTriangleFilter.h>
 
 #include <cmath>
+#include <array>
 #include <map>
+#include <vector>
 
 namespace
 {
@@ -112,4 +114,93 @@ TEST(PatchDeformationFilter, BadInputGivesErrors)
     deform->Update();
     EXPECT_NE(errors.messages.find("D > 0"), std::string::npos) << errors.messages;
   }
+}
+
+namespace
+{
+/// Points and triangles, compared exactly.
+void expectSameMesh(vtkPolyData* a, vtkPolyData* b)
+{
+  ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+  ASSERT_EQ(a->GetNumberOfPolys(), b->GetNumberOfPolys());
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_EQ(a->GetPoint(i)[c], b->GetPoint(i)[c]) << "point " << i;
+  vtkIdType na, nb;
+  const vtkIdType *ia, *ib;
+  a->GetPolys()->InitTraversal();
+  b->GetPolys()->InitTraversal();
+  while (a->GetPolys()->GetNextCell(na, ia) && b->GetPolys()->GetNextCell(nb, ib))
+  {
+    ASSERT_EQ(na, nb);
+    for (vtkIdType k = 0; k < na; ++k)
+      ASSERT_EQ(ia[k], ib[k]);
+  }
+}
+
+vtkSmartPointer<vtkPolyData> fromScratch(vtkPolyData* input, const std::vector<std::array<double, 3>>& bumps)
+{
+  vtkNew<vtkLKPatchDeformationFilter> f;
+  f->SetInputData(input);
+  f->SetMaxLevel(3);
+  for (const auto& b : bumps)
+    f->AddFunctionalDeformation(b[0], b[1], 0.0, b[2], 40.0, 0.3);
+  f->Update();
+  return f->GetOutput();
+}
+} // namespace
+
+// The interactive path (a drag replaces the last deformation every mouse
+// move; a brush appends; undo removes the last) gives, to the bit, what the
+// same list gives from scratch.
+TEST(PatchDeformationFilter, IncrementalUpdatesEqualFromScratch)
+{
+  auto patch = planarPatch(16);
+  vtkNew<vtkLKPatchDeformationFilter> live;
+  live->SetInputData(patch);
+  live->SetMaxLevel(3);
+  live->AddFunctionalDeformation(-0.1, 0.0, 0.0, 0.05, 40.0, 0.3);
+  live->Update();
+  // A drag: k grows from 0.02 to 0.3, then shrinks to 0.12.
+  live->AddFunctionalDeformation(0.15, 0.1, 0.0, 0.0, 40.0, 0.3);
+  for (double k : { 0.02, 0.1, 0.2, 0.3, 0.12 })
+  {
+    live->RemoveLastDeformation();
+    live->AddFunctionalDeformation(0.15, 0.1, 0.0, k, 40.0, 0.3);
+    live->Update();
+  }
+  expectSameMesh(live->GetOutput(), fromScratch(patch, { { -0.1, 0.0, 0.05 }, { 0.15, 0.1, 0.12 } }));
+  // Brush dabs appended one by one.
+  for (double x : { -0.3, -0.25, -0.2 })
+  {
+    live->AddFunctionalDeformation(x, -0.2, 0.0, 0.03, 40.0, 0.3);
+    live->Update();
+  }
+  expectSameMesh(live->GetOutput(),
+    fromScratch(patch,
+      { { -0.1, 0.0, 0.05 }, { 0.15, 0.1, 0.12 }, { -0.3, -0.2, 0.03 }, { -0.25, -0.2, 0.03 },
+        { -0.2, -0.2, 0.03 } }));
+  // Undo twice, then a new drag on the shortened list.
+  live->RemoveLastDeformation();
+  live->Update();
+  expectSameMesh(live->GetOutput(),
+    fromScratch(patch, { { -0.1, 0.0, 0.05 }, { 0.15, 0.1, 0.12 }, { -0.3, -0.2, 0.03 }, { -0.25, -0.2, 0.03 } }));
+  live->RemoveLastDeformation();
+  live->RemoveLastDeformation();
+  live->AddFunctionalDeformation(0.3, 0.3, 0.0, 0.2, 40.0, 0.3);
+  live->Update();
+  expectSameMesh(
+    live->GetOutput(), fromScratch(patch, { { -0.1, 0.0, 0.05 }, { 0.15, 0.1, 0.12 }, { 0.3, 0.3, 0.2 } }));
+  // A changed input starts again from it.
+  vtkNew<vtkPolyData> moved;
+  moved->DeepCopy(patch);
+  moved->GetPoints()->SetPoint(0, -0.5, -0.5, 0.01);
+  live->SetInputData(moved);
+  live->Update();
+  expectSameMesh(
+    live->GetOutput(), fromScratch(moved, { { -0.1, 0.0, 0.05 }, { 0.15, 0.1, 0.12 }, { 0.3, 0.3, 0.2 } }));
+  live->RemoveAllDeformations();
+  live->RemoveLastDeformation(); // nothing to remove: no error
+  live->Update();
+  expectSameMesh(live->GetOutput(), fromScratch(moved, {}));
 }

@@ -275,6 +275,11 @@ class PipelineTest(unittest.TestCase):
         self.assertAlmostEqual(out.GetBounds()[5], 0.3, places=12)  # the peak is k
         self.assertGreater(out.GetNumberOfPolys(), 512)  # refined around the bump
         self.assertEqual(deform.GetNumberOfDeformations(), 1)
+        # A drag from Python: the last deformation replaced, k now 0.1.
+        deform.RemoveLastDeformation()
+        deform.AddFunctionalDeformation(0.0, 0.0, 0.0, 0.1, 20.0, 0.4)
+        deform.Update()
+        self.assertAlmostEqual(deform.GetOutput().GetBounds()[5], 0.1, places=12)
         deform.RemoveAllDeformations()
         deform.Update()
         self.assertEqual(deform.GetOutput().GetNumberOfPolys(), 512)

@@ -1,0 +1,63 @@
+"""The planner's deformation tools (seed 002), driven headlessly by a recorded
+event stream, then the saved session replayed: the replay must give the
+same pieces (points, faces, largest displacement, refinement depth) as the
+interaction, and the screenshot must match the expected one.
+
+With SEGMENT_EVENTS (a cut, the segment moved, then a bump dragged on it),
+the bump must land on the moved segment: its largest displacement equals
+the bump's amount (eq. 1's peak), which it cannot if the press were not
+taken back through the segment's move into the piece's own frame.
+
+usage: check_planner_deformation.py PLANNER INPUT EVENTS OUTDIR EXPECTED_PNG [SEGMENT_EVENTS]
+(run under xvfb-run: the planner renders)
+"""
+import os
+import re
+import subprocess
+import sys
+
+planner, ct, events, outdir, expected = sys.argv[1:6]
+os.makedirs(outdir, exist_ok=True)
+session = os.path.join(outdir, 'deform_session.json')
+shot = os.path.join(outdir, 'deform_events.png')
+
+
+def run(args):
+    p = subprocess.run([planner, ct] + args, capture_output=True, text=True)
+    print('$ planner', ' '.join(args))
+    print(p.stdout, p.stderr, sep='')
+    if p.returncode != 0 or 'message:' in p.stdout:
+        sys.exit('error: the planner failed or reported a problem')
+    return p.stdout
+
+
+def check(condition, what):
+    if not condition:
+        sys.exit('error: ' + what)
+
+
+live = run(['--events', events, '--screenshot', shot, '--session', session])
+tools = re.findall(r'deformation \d+: (\w+) on piece \d+ .*?(?:amount (-?[\d.]+)|(\d+) iterations)', live)
+check([t[0] for t in tools[:2]] == ['bump', 'box'], 'the first two deformations are not a bump and a box: %s' % tools)
+check(float(tools[0][1]) > 0, 'the bump was dragged up: its amount must be positive')
+check(float(tools[1][1]) < 0, 'the box was dragged down: its amount must be negative')
+check(len(tools) >= 3 and all(t[0] == 'smooth' for t in tools[2:]), 'the brush left no smoothing dabs')
+pieces = re.findall(r'^piece \d+: .*$', live, re.M)
+check(len(pieces) == 1 and 'deformed: largest displacement' in pieces[0], 'piece 0 is not deformed: %s' % pieces)
+check('refinement levels 0-4' in pieces[0], 'the deformation did not refine the mesh to the bound')
+
+replay = run(['--replay', session, '--export', os.path.join(outdir, 'deform-pieces')])
+check(re.findall(r'^piece \d+: .*$', replay, re.M) == pieces, 'the replayed session differs from the interaction')
+listed = lambda text: re.findall(r'^deformation \d+: .*$', text, re.M)
+check(listed(replay) == listed(live), 'the replay lists other deformations')
+
+if len(sys.argv) > 6:
+    moved = run(['--events', sys.argv[6], '--session', os.path.join(outdir, 'segment_session.json')])
+    bump = re.search(r'^deformation 0: bump on piece 1 .* amount ([\d.]+)$', moved, re.M)
+    piece = re.search(r'^piece 1: .* largest displacement ([\d.]+)', moved, re.M)
+    check(bump and piece, 'no bump on the moved segment (piece 1)')
+    k, peak = float(bump.group(1)), float(piece.group(1))
+    check(k > 1.0 and abs(peak - k) < 0.02 * k, 'the bump on the moved segment peaks at %g, not at its amount %g' % (peak, k))
+
+compare = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'compare_images.py')
+sys.exit(subprocess.call([sys.executable, compare, expected, shot, '20']))
