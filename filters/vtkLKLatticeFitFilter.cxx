@@ -159,6 +159,7 @@ int vtkLKLatticeFitFilter::RequestData(
     {
       lk::RefinementOptions ro;
       ro.iterations = this->RefinementIterations;
+      ro.original = &mesh; // both of Metro's directions
       ro.fixed.assign(fit.lattice.points.size(), 0);
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;

@@ -23,8 +23,10 @@
  * 2. with QuadPairing, triangles paired into quads across non-feature edges
  *    in order of their QEM cost (eqs. 3.15, 3.16);
  * 3. with Refinement, lattice vertices moved by Ceres to minimise the squared
- *    distances from the input's vertices to the lattice surface, feature
- *    vertices held fixed (after the pairing when both are on).
+ *    distances in both of Metro's directions: from samples of the input
+ *    (vertices, edges, faces) to the lattice surface, and from points of the
+ *    lattice surface (nine per patch) to the input; feature vertices held
+ *    fixed (after the pairing when both are on).
  *
  * Output 0: the lattice: triangles and quads, plus one line cell per
  * surviving feature edge; cell data "FeatureEdge" (1 on those lines, 0 on

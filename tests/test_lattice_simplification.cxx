@@ -282,3 +282,70 @@ TEST(LatticeRefinement, BadInputIsRefused)
   ro.fixed.clear();
   EXPECT_THROW(lk::refineLatticeFit(lattice, { lk::Vec3(std::nan(""), 0, 0) }, ro), std::invalid_argument);
 }
+
+namespace
+{
+/// How far a lattice surface reaches beyond the unit square [0, 1]^2, and
+/// its largest |z| (sampled at 9 x 9 points per patch).
+std::pair<double, double> overhang(const lk::LatticeSurface& s)
+{
+  double out = 0.0, z = 0.0;
+  for (const auto& patch : s.patches)
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j)
+      {
+        const lk::Vec3 p = patch.evaluate(i / 8.0, j / 8.0);
+        out = std::max({ out, -p.x(), p.x() - 1.0, -p.y(), p.y() - 1.0 });
+        z = std::max(z, std::abs(p.z()));
+      }
+  return { out, z };
+}
+} // namespace
+
+// Metro is symmetric. A lattice that overhangs the original has every sample
+// of the original on its surface, so the samples' direction alone sees no
+// error; the reverse direction (surface points to the original) pulls the
+// overhang back.
+TEST(LatticeRefinement, TheReverseDirectionPullsBackAnOverhang)
+{
+  lk::TriangleMesh original; // [0, 1]^2, 10 x 10 squares, 2 triangles each
+  for (int j = 0; j <= 10; ++j)
+    for (int i = 0; i <= 10; ++i)
+      original.points.emplace_back(i / 10.0, j / 10.0, 0.0);
+  for (int j = 0; j < 10; ++j)
+    for (int i = 0; i < 10; ++i)
+    {
+      const std::int64_t a = i + 11 * j;
+      original.triangles.push_back({ a, a + 1, a + 12 });
+      original.triangles.push_back({ a, a + 12, a + 11 });
+    }
+  lk::PolygonMesh lattice; // [-0.5, 1.5]^2, 4 x 4 quads
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i)
+      lattice.points.emplace_back(-0.5 + 0.5 * i, -0.5 + 0.5 * j, 0.0);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::int64_t a = i + 5 * j;
+      lattice.faces.push_back({ a, a + 1, a + 6, a + 5 });
+    }
+  const auto before = overhang(lk::buildLatticeSurface(lattice));
+  ASSERT_GT(before.first, 0.2);
+
+  lk::PolygonMesh oneWay = lattice;
+  lk::RefinementOptions ro;
+  lk::refineLatticeFit(oneWay, original.points, ro);
+  EXPECT_EQ(oneWay.points, lattice.points); // nothing to gain on the samples' side
+
+  lk::PolygonMesh twoWay = lattice;
+  ro.original = &original;
+  ro.iterations = 6;
+  lk::refineLatticeFit(twoWay, original.points, ro);
+  const auto after = overhang(lk::buildLatticeSurface(twoWay));
+  std::printf("overhang beyond the original: %.4f -> %.4f (|z| %.1e)\n", before.first, after.first, after.second);
+  EXPECT_LT(after.first, 0.5 * before.first);
+  EXPECT_LT(after.second, 1e-9); // still the original's plane
+
+  ro.reverseWeight = -1.0;
+  EXPECT_THROW(lk::refineLatticeFit(twoWay, original.points, ro), std::invalid_argument);
+}

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 
@@ -340,6 +341,62 @@ double energy(const std::vector<Foot>& feet)
   return e;
 }
 
+/// A fixed parameter point of the surface and its closest point on the
+/// original mesh (the reverse direction of Metro).
+struct ReversePoint
+{
+  std::size_t patch;
+  double u, v;
+  Vec3 point, closest, normal; ///< normal of the original's triangle at the closest point
+  double distance;
+};
+
+std::vector<ReversePoint> reversePoints(
+  const LatticeSurface& s, const TriangleMesh& original, const ClosestPointTree& tree)
+{
+  const double at[3] = { 1.0 / 6.0, 0.5, 5.0 / 6.0 };
+  std::vector<ReversePoint> out(9 * s.patches.size());
+  auto work = [&](std::size_t begin, std::size_t end) {
+    ClosestPointTree::Hit hint;
+    bool haveHint = false;
+    for (std::size_t p = begin; p < end; ++p)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+        {
+          ReversePoint& r = out[9 * p + static_cast<std::size_t>(3 * i + j)];
+          r.patch = p;
+          r.u = at[i];
+          r.v = at[j];
+          r.point = s.patches[p].evaluate(r.u, r.v);
+          hint = haveHint ? tree.closest(r.point, hint) : tree.closest(r.point);
+          haveHint = true;
+          const Triangle& t = original.triangles[static_cast<std::size_t>(hint.face)];
+          const Vec3& a = original.points[static_cast<std::size_t>(t[0])];
+          const Vec3 n = (original.points[static_cast<std::size_t>(t[1])] - a)
+                           .cross(original.points[static_cast<std::size_t>(t[2])] - a);
+          r.closest = hint.point;
+          r.normal = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3(0, 0, 1);
+          r.distance = hint.distance;
+        }
+  };
+  const std::size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  const std::size_t chunk = (s.patches.size() + threads - 1) / threads;
+  for (std::size_t t = 0; t < threads; ++t)
+    pool.emplace_back(work, std::min(s.patches.size(), t * chunk), std::min(s.patches.size(), (t + 1) * chunk));
+  for (auto& th : pool)
+    th.join();
+  return out;
+}
+
+double energy(const std::vector<ReversePoint>& points)
+{
+  double e = 0.0;
+  for (const ReversePoint& r : points)
+    e += r.distance * r.distance;
+  return e;
+}
+
 /// n . (S0 + sum_j c_j dX_j - p): one residual, one 3-vector block per vertex.
 class PlaneResidual : public ceres::CostFunction
 {
@@ -373,6 +430,44 @@ public:
 private:
   double r0_;
   Vec3 n_;
+  std::vector<double> c_;
+};
+
+/// S0 + sum_j c_j dX_j - p: three residuals, for a sample whose foot point
+/// lies on the surface's border (the error is not along the normal there).
+class PointResidual : public ceres::CostFunction
+{
+public:
+  PointResidual(const Vec3& r0, std::vector<double> c) : r0_(r0), c_(std::move(c))
+  {
+    set_num_residuals(3);
+    for (std::size_t j = 0; j < c_.size(); ++j)
+      mutable_parameter_block_sizes()->push_back(3);
+  }
+  bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      residuals[k] = r0_[k];
+      for (std::size_t j = 0; j < c_.size(); ++j)
+        residuals[k] += c_[j] * params[j][k];
+    }
+    if (jacobians)
+    {
+      for (std::size_t j = 0; j < c_.size(); ++j)
+      {
+        if (jacobians[j])
+        {
+          for (int i = 0; i < 9; ++i)
+            jacobians[j][i] = (i % 4 == 0) ? c_[j] : 0.0;
+        }
+      }
+    }
+    return true;
+  }
+
+private:
+  Vec3 r0_;
   std::vector<double> c_;
 };
 
@@ -412,11 +507,24 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     if (!p.allFinite())
       throw std::invalid_argument("a sample of the original surface is not finite");
 
+  if (!(options.reverseWeight >= 0.0))
+    throw std::invalid_argument("the reverse weight must be 0 or more");
+
   LatticeSurface surface = buildLatticeSurface(lattice); // throws for a bad lattice
   std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution);
-  double e0 = energy(feet);
+  const bool twoWay = options.original && options.reverseWeight > 0.0;
+  std::unique_ptr<ClosestPointTree> originalTree;
+  std::vector<ReversePoint> reverse;
+  double reverseWeight = 0.0;
+  if (twoWay)
+  {
+    originalTree = std::make_unique<ClosestPointTree>(*options.original);
+    reverse = reversePoints(surface, *options.original, *originalTree);
+    reverseWeight = options.reverseWeight * static_cast<double>(samples.size()) / static_cast<double>(reverse.size());
+  }
+  double e0 = energy(feet) + reverseWeight * energy(reverse);
   RefinementReport report;
-  report.initialRms = std::sqrt(e0 / static_cast<double>(samples.size()));
+  report.initialRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   const std::size_t nv = lattice.points.size();
 
   // Levenberg-Marquardt on the outer loop: the damping falls after a step
@@ -456,8 +564,34 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
           coeffs.push_back(w);
           blocks.push_back(delta[static_cast<std::size_t>(v)].data());
         }
-        problem.AddResidualBlock(
-          new PlaneResidual(f.normal.dot(f.point - samples[s]), f.normal, std::move(coeffs)), nullptr, blocks);
+        // Point-to-plane where the error is along the normal (a foot point
+        // inside the surface); point-to-point where it is not (a foot point on
+        // the border, with the sample beyond it): the plane would not see the
+        // border's shrinkage.
+        const Vec3 e = f.point - samples[s];
+        if (e.norm() > 1e-12 && std::abs(f.normal.dot(e)) < 0.866 * e.norm())
+          problem.AddResidualBlock(new PointResidual(e, std::move(coeffs)), nullptr, blocks);
+        else
+          problem.AddResidualBlock(new PlaneResidual(f.normal.dot(e), f.normal, std::move(coeffs)), nullptr, blocks);
+      }
+      const double root = std::sqrt(reverseWeight);
+      for (const ReversePoint& r : reverse)
+      {
+        const Combo c = sampleCombo(models[r.patch], r.u, r.v);
+        if (c.empty())
+          continue;
+        std::vector<double> coeffs;
+        std::vector<double*> blocks;
+        for (const auto& [v, w] : c)
+        {
+          coeffs.push_back(root * w);
+          blocks.push_back(delta[static_cast<std::size_t>(v)].data());
+        }
+        const Vec3 e = r.point - r.closest;
+        if (e.norm() > 1e-12 && std::abs(r.normal.dot(e)) < 0.866 * e.norm())
+          problem.AddResidualBlock(new PointResidual(root * e, std::move(coeffs)), nullptr, blocks);
+        else
+          problem.AddResidualBlock(new PlaneResidual(root * r.normal.dot(e), r.normal, std::move(coeffs)), nullptr, blocks);
       }
       const double lambda = damping * weight / static_cast<double>(nv);
       for (std::size_t v = 0; v < nv; ++v)
@@ -485,11 +619,15 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       {
         LatticeSurface trial = buildLatticeSurface(lattice);
         std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution);
-        const double e = energy(trialFeet);
+        std::vector<ReversePoint> trialReverse;
+        if (twoWay)
+          trialReverse = reversePoints(trial, *options.original, *originalTree);
+        const double e = energy(trialFeet) + reverseWeight * energy(trialReverse);
         if (e < e0)
         {
           surface = std::move(trial);
           feet = std::move(trialFeet);
+          reverse = std::move(trialReverse);
           e0 = e;
           accepted = true;
         }
@@ -509,7 +647,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     if (options.progress && !options.progress(double(it + 1) / double(options.iterations)))
       break;
   }
-  report.finalRms = std::sqrt(e0 / static_cast<double>(samples.size()));
+  report.finalRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   return report;
 }
 

@@ -8,7 +8,13 @@
 /// and quads alike.
 ///
 /// Energy: E(X) = sum_s d(p_s, S_X)^2 over samples p_s of the original mesh
-/// (its vertices), S_X the lattice surface of control points X.
+/// (Metro's samples: vertices, edges, faces), S_X the lattice surface of
+/// control points X; with the original mesh given, plus the other direction,
+/// w sum_r d(S_X(patch_r, u_r, v_r), M)^2 over nine fixed parameter points of
+/// every patch, to the original mesh M. Metro is symmetric: a bulge of the
+/// surface away from the original, where no sample of the original lies, is
+/// invisible to the first sum alone. w makes the two sums weigh the same
+/// (samples / reverse points, times reverseWeight).
 ///
 /// Each outer iteration (Gauss-Newton with closest points re-found, like ICP):
 /// 1. build the surface, find every sample's foot point (patch, u, v) and the
@@ -27,7 +33,10 @@
 ///      min sum_s (n_s . (S_s + J_s dX - p_s))^2 + lambda sum_v |dX_v|^2
 ///    with Ceres (sparse normal Cholesky); the damping lambda is relative to
 ///    the mean squared residual weight, and point-to-plane residuals leave
-///    the tangential drift to it;
+///    the tangential drift to it. Where the error is not along the normal (a
+///    foot point on a border, the sample beyond it) the residual is the whole
+///    vector S_s + J_s dX - p_s instead. The reverse points give the same
+///    residuals with the original's closest point and triangle normal;
 /// 4. apply dX and rebuild; Levenberg-Marquardt on the exact energy: a step
 ///    that lowers it is kept and lambda halves (down to 1e-4), one that does
 ///    not is retried with lambda four times larger (up to four times), then
@@ -50,6 +59,10 @@ struct RefinementOptions
   double damping = 1e-2;          ///< initial lambda, relative
   std::vector<char> fixed;        ///< per lattice vertex; empty: none fixed
   int locatorResolution = 4;      ///< tessellation the closest-point search starts from
+  /// The original mesh, for the reverse direction (surface to original);
+  /// nullptr: the samples' direction only.
+  const TriangleMesh* original = nullptr;
+  double reverseWeight = 1.0;     ///< of the reverse sum against the samples' (0: off)
   /// Called with the fraction done; returning false stops after the current step.
   std::function<bool(double)> progress;
 };
