@@ -232,6 +232,19 @@ Combo sampleCombo(const PatchModel& pm, double u, double v)
   return { acc.begin(), acc.end() };
 }
 
+/// work(begin, end) over [0, count) in one chunk per thread (at most 8).
+template <class Work>
+void inChunks(std::size_t count, const Work& work)
+{
+  const std::size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  const std::size_t chunk = (count + threads - 1) / threads;
+  for (std::size_t t = 0; t < threads; ++t)
+    pool.emplace_back(work, std::min(count, t * chunk), std::min(count, (t + 1) * chunk));
+  for (auto& th : pool)
+    th.join();
+}
+
 struct Foot
 {
   std::size_t patch;
@@ -323,21 +336,17 @@ std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& s
       out[i] = { p, u, v, x, patch.normalFrom(du, dv, u, v), (q - x).norm() };
     }
   };
-  const std::size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> pool;
-  const std::size_t chunk = (samples.size() + threads - 1) / threads;
-  for (std::size_t t = 0; t < threads; ++t)
-    pool.emplace_back(work, std::min(samples.size(), t * chunk), std::min(samples.size(), (t + 1) * chunk));
-  for (auto& th : pool)
-    th.join();
+  inChunks(samples.size(), work);
   return out;
 }
 
-double energy(const std::vector<Foot>& feet)
+/// Sum of squared distances (feet or reverse points).
+template <class T>
+double energy(const std::vector<T>& points)
 {
   double e = 0.0;
-  for (const Foot& f : feet)
-    e += f.distance * f.distance;
+  for (const T& p : points)
+    e += p.distance * p.distance;
   return e;
 }
 
@@ -379,22 +388,8 @@ std::vector<ReversePoint> reversePoints(
           r.distance = hint.distance;
         }
   };
-  const std::size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> pool;
-  const std::size_t chunk = (s.patches.size() + threads - 1) / threads;
-  for (std::size_t t = 0; t < threads; ++t)
-    pool.emplace_back(work, std::min(s.patches.size(), t * chunk), std::min(s.patches.size(), (t + 1) * chunk));
-  for (auto& th : pool)
-    th.join();
+  inChunks(s.patches.size(), work);
   return out;
-}
-
-double energy(const std::vector<ReversePoint>& points)
-{
-  double e = 0.0;
-  for (const ReversePoint& r : points)
-    e += r.distance * r.distance;
-  return e;
 }
 
 /// n . (S0 + sum_j c_j dX_j - p): one residual, one 3-vector block per vertex.
