@@ -428,8 +428,8 @@ private:
   std::vector<double> c_;
 };
 
-/// S0 + sum_j c_j dX_j - p: three residuals, for a sample whose foot point
-/// lies on the surface's border (the error is not along the normal there).
+/// S0 + sum_j c_j dX_j - p: three residuals, for a point whose error is not
+/// along the normal (a foot point on a border, the point beyond it).
 class PointResidual : public ceres::CostFunction
 {
 public:
@@ -465,6 +465,30 @@ private:
   Vec3 r0_;
   std::vector<double> c_;
 };
+
+/// One distance of the energy, scaled by `scale` (the square root of its
+/// weight): e = S - p is the surface point minus its partner (sample or
+/// closest point), n the normal at the point measured against, `combo` the
+/// surface point as lattice vertices. Point-to-plane where e is along n;
+/// point-to-point where it is not (a foot point on a border with the partner
+/// beyond it: the plane would not see the border's shrinkage).
+void addDistance(ceres::Problem& problem, const Combo& combo, double scale, const Vec3& e, const Vec3& n,
+  std::vector<std::array<double, 3>>& delta)
+{
+  if (combo.empty())
+    return;
+  std::vector<double> coeffs;
+  std::vector<double*> blocks;
+  for (const auto& [v, w] : combo)
+  {
+    coeffs.push_back(scale * w);
+    blocks.push_back(delta[static_cast<std::size_t>(v)].data());
+  }
+  if (e.norm() > 1e-12 && std::abs(n.dot(e)) < 0.866 * e.norm())
+    problem.AddResidualBlock(new PointResidual(scale * e, std::move(coeffs)), nullptr, blocks);
+  else
+    problem.AddResidualBlock(new PlaneResidual(scale * n.dot(e), n, std::move(coeffs)), nullptr, blocks);
+}
 
 /// sqrt(lambda) dX.
 class Damping : public ceres::SizedCostFunction<3, 3>
@@ -538,6 +562,9 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       for (const auto& vw : combos[s])
         weight += vw.second * vw.second;
     }
+    std::vector<Combo> reverseCombos(reverse.size());
+    for (std::size_t r = 0; r < reverse.size(); ++r)
+      reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
 
     const std::vector<Vec3> x0 = lattice.points;
     bool accepted = false;
@@ -548,46 +575,10 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       po.cost_function_ownership = ceres::TAKE_OWNERSHIP;
       ceres::Problem problem(po);
       for (std::size_t s = 0; s < samples.size(); ++s)
-      {
-        const Foot& f = feet[s];
-        if (combos[s].empty())
-          continue;
-        std::vector<double> coeffs;
-        std::vector<double*> blocks;
-        for (const auto& [v, w] : combos[s])
-        {
-          coeffs.push_back(w);
-          blocks.push_back(delta[static_cast<std::size_t>(v)].data());
-        }
-        // Point-to-plane where the error is along the normal (a foot point
-        // inside the surface); point-to-point where it is not (a foot point on
-        // the border, with the sample beyond it): the plane would not see the
-        // border's shrinkage.
-        const Vec3 e = f.point - samples[s];
-        if (e.norm() > 1e-12 && std::abs(f.normal.dot(e)) < 0.866 * e.norm())
-          problem.AddResidualBlock(new PointResidual(e, std::move(coeffs)), nullptr, blocks);
-        else
-          problem.AddResidualBlock(new PlaneResidual(f.normal.dot(e), f.normal, std::move(coeffs)), nullptr, blocks);
-      }
+        addDistance(problem, combos[s], 1.0, feet[s].point - samples[s], feet[s].normal, delta);
       const double root = std::sqrt(reverseWeight);
-      for (const ReversePoint& r : reverse)
-      {
-        const Combo c = sampleCombo(models[r.patch], r.u, r.v);
-        if (c.empty())
-          continue;
-        std::vector<double> coeffs;
-        std::vector<double*> blocks;
-        for (const auto& [v, w] : c)
-        {
-          coeffs.push_back(root * w);
-          blocks.push_back(delta[static_cast<std::size_t>(v)].data());
-        }
-        const Vec3 e = r.point - r.closest;
-        if (e.norm() > 1e-12 && std::abs(r.normal.dot(e)) < 0.866 * e.norm())
-          problem.AddResidualBlock(new PointResidual(root * e, std::move(coeffs)), nullptr, blocks);
-        else
-          problem.AddResidualBlock(new PlaneResidual(root * r.normal.dot(e), r.normal, std::move(coeffs)), nullptr, blocks);
-      }
+      for (std::size_t r = 0; r < reverse.size(); ++r)
+        addDistance(problem, reverseCombos[r], root, reverse[r].point - reverse[r].closest, reverse[r].normal, delta);
       const double lambda = damping * weight / static_cast<double>(nv);
       for (std::size_t v = 0; v < nv; ++v)
       {
