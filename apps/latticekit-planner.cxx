@@ -173,9 +173,25 @@ std::string matrixText(const std::array<double, 16>& m)
   return os.str();
 }
 
+/// The planner's deformation tools, in the order `f` cycles through them.
+enum Tool
+{
+  NO_TOOL,
+  BUMP,
+  BOX,
+  SMOOTH,
+  TOOL_COUNT
+};
+
 const char* toolName(int tool)
 {
-  return tool == 1 ? "bump" : tool == 2 ? "box" : tool == 3 ? "smooth" : "off";
+  return tool == BUMP ? "bump" : tool == BOX ? "box" : tool == SMOOTH ? "smooth" : "off";
+}
+
+/// The bump tool's eq. 1 falloff a: the bump is down to 1 % of k at the radius.
+double bumpFalloff(double radius)
+{
+  return std::log(100.0) / (radius * radius);
 }
 
 const char* modeName(int mode)
@@ -348,7 +364,7 @@ bool loadSession(const std::string& path, Session& s, std::string& error)
       d.amount = jd["amount"].asDouble();
     if (d.tool == "bump")
     {
-      d.falloff = jd.get("falloff", std::log(100.0) / (d.radius * d.radius)).asDouble();
+      d.falloff = jd.get("falloff", bumpFalloff(d.radius)).asDouble();
       if (!(d.falloff >= 0.0) || !std::isfinite(d.falloff))
       {
         error = where + " needs a falloff of 0 or more";
@@ -386,7 +402,7 @@ public:
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment
-  int tool = 0;                           ///< deformation tool: 0 none, 1 bump, 2 box, 3 smooth
+  int tool = NO_TOOL;                     ///< the deformation tool the mouse uses
   double radius = 1.0;                    ///< the tool's radius (set from the bone's size)
   vtkNew<vtkActor> preview;               ///< the piece being deformed, live
   std::vector<double> frameMs, updateMs;  ///< per mouse move: deformation plus render, deformation alone
@@ -394,9 +410,11 @@ public:
   std::vector<std::vector<vtkSmartPointer<vtkActor>>> pieceActors;
 
   /// Call before a change: the session as it was goes on the undo stack.
-  void remember()
+  void remember() { remember(session); }
+  /// After a drag that changed the session live: the session before it.
+  void remember(const Session& before)
   {
-    undoStack.push_back(session);
+    undoStack.push_back(before);
     redoStack.clear();
   }
 
@@ -773,12 +791,12 @@ public:
     std::ostringstream s;
     s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
       << " | pieces: " << pieces.size() << (session.lattice ? " | lattice" : "");
-    if (tool > 0)
+    if (tool != NO_TOOL)
     {
       char r[32];
       std::snprintf(r, sizeof r, "%.1f", radius);
       s << " | DEFORM " << toolName(tool) << ", radius " << r
-        << (tool == 3 ? " (drag to brush)" : " (drag up/down)");
+        << (tool == SMOOTH ? " (drag to brush)" : " (drag up/down)");
     }
     if (!session.deformations.empty())
       s << " | deformations: " << session.deformations.size();
@@ -814,13 +832,7 @@ public:
         static_cast<long long>(pieces[p]->GetNumberOfPolys()));
       if (vtkDataArray* d = pieces[p]->GetPointData()->GetArray("Displacement"))
       {
-        double largest = 0.0;
-        for (vtkIdType i = 0; i < d->GetNumberOfTuples(); ++i)
-        {
-          const double* v = d->GetTuple3(i);
-          largest = std::max(largest, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
-        }
-        std::printf(", deformed: largest displacement %.3f, refinement levels 0-%d", largest,
+        std::printf(", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
           static_cast<int>(pieces[p]->GetCellData()->GetArray("Level")->GetRange()[1]));
       }
       std::printf("\n");
@@ -979,8 +991,7 @@ public:
   void endMove()
   {
     pressed = false;
-    planner->undoStack.push_back(beforeMove);
-    planner->redoStack.clear();
+    planner->remember(beforeMove);
     planner->session.segmentMatrix = dragMatrix;
     std::printf("%s", planner->segmentText().c_str());
     std::fflush(stdout);
@@ -1085,7 +1096,7 @@ public:
     dragged.centre = c;
     dragged.normal = n;
     dragged.radius = r;
-    dragged.falloff = dragged.tool == "bump" ? std::log(100.0) / (r * r) : 0.0;
+    dragged.falloff = planner->tool == BUMP ? bumpFalloff(r) : 0.0;
     dabs.assign(1, dragged);
     vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(piece));
     Planner::addTo(f, dragged); // a bump or box of amount 0 until the mouse moves
@@ -1108,7 +1119,7 @@ public:
     const auto t0 = std::chrono::steady_clock::now();
     const int* pos = this->Interactor->GetEventPosition();
     vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(deformPiece));
-    if (planner->tool == 3)
+    if (planner->tool == SMOOTH)
     {
       // The brush: a new dab once the pointer has moved a third of the radius.
       std::array<double, 3> c, n;
@@ -1145,7 +1156,7 @@ public:
     planner->preview->SetVisibility(false);
     planner->preview->PickableOff();
     planner->preview->SetMapper(nullptr);
-    if (planner->tool == 3)
+    if (planner->tool == SMOOTH)
       planner->session.deformations.insert(planner->session.deformations.end(), dabs.begin(), dabs.end());
     else if (dragged.amount != 0.0)
       planner->session.deformations.push_back(dragged);
@@ -1158,15 +1169,14 @@ public:
       this->Interactor->Render();
       return;
     }
-    planner->undoStack.push_back(beforeDeform);
-    planner->redoStack.clear();
+    planner->remember(beforeDeform);
     planner->rebuild(); // the same list: the filter keeps its result; lattices are refitted
     this->Interactor->Render();
   }
 
   void OnLeftButtonDown() override
   {
-    if (planner->tool > 0)
+    if (planner->tool != NO_TOOL)
       return startDeform();
     if (planner->moving && planner->hasSegment())
       return startMove();
@@ -1178,7 +1188,7 @@ public:
   }
   void OnMouseMove() override
   {
-    if (planner->tool > 0 && pressed)
+    if (planner->tool != NO_TOOL && pressed)
       return dragDeform();
     if (planner->moving && pressed)
       return drag();
@@ -1188,7 +1198,7 @@ public:
   }
   void OnLeftButtonUp() override
   {
-    if (planner->tool > 0 && pressed)
+    if (planner->tool != NO_TOOL && pressed)
       return endDeform();
     if (planner->moving && pressed)
       return endMove();
@@ -1216,12 +1226,12 @@ public:
     {
       planner->drawing = !planner->drawing;
       planner->moving = false;
-      planner->tool = 0;
+      planner->tool = NO_TOOL;
       rebuild = false;
     }
     else if (key == "f")
     {
-      planner->tool = (planner->tool + 1) % 4; // bump, box, smooth, off
+      planner->tool = (planner->tool + 1) % TOOL_COUNT; // bump, box, smooth, off
       planner->drawing = false;
       planner->moving = false;
       rebuild = false;
@@ -1273,7 +1283,7 @@ public:
       {
         planner->moving = !planner->moving;
         planner->drawing = false;
-        planner->tool = 0;
+        planner->tool = NO_TOOL;
       }
     }
     else if (key == "r")
