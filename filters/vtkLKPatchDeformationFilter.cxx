@@ -147,7 +147,9 @@ int vtkLKPatchDeformationFilter::RequestData(
       state.fullList.clear();
       for (std::size_t i = done; i < n; ++i)
       {
-        if (i + 1 == n && !(state.prefix && state.prefixList.size() == i && fromPrefix))
+        // Keep the state before the last deformation, unless the kept prefix
+        // already is that state.
+        if (i + 1 == n && !(fromPrefix && state.prefixList.size() == i))
         {
           state.prefix = std::make_unique<lk::AdaptivePatchMesh>(*work);
           state.prefixList.assign(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(i));
