@@ -163,6 +163,14 @@ int vtkLKLatticeFitFilter::RequestData(
       ro.fixed.assign(fit.lattice.points.size(), 0);
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
+      if (this->InterpolateFeatures && !fit.features.empty())
+      {
+        // Fit the surface the output describes: rounding weight 0 at the feature vertices.
+        ro.weights.vertex.assign(fit.lattice.points.size(), 1.0);
+        for (std::size_t v = 0; v < ro.fixed.size(); ++v)
+          if (ro.fixed[v])
+            ro.weights.vertex[v] = 0.0;
+      }
       ro.progress = [&](double f) {
         this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * f));
         return !this->GetAbortExecute();

@@ -4,6 +4,7 @@
 #include "latticekit/ClosestPointTree.h"
 
 #include <ceres/ceres.h>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +59,9 @@ void add(Combo& to, const Combo& c, double s)
     to.emplace_back(v, s * w);
 }
 
-Anchors buildAnchors(const PolygonMesh& m)
+/// vertexWeight: the rounding weights (empty: all 1); a weight w moves V' to
+/// V + w (V'_1 - V), still affine. Edge weights are not modelled.
+Anchors buildAnchors(const PolygonMesh& m, const std::vector<double>& vertexWeight)
 {
   const std::size_t nv = m.points.size();
   Anchors a;
@@ -103,6 +106,13 @@ Anchors buildAnchors(const PolygonMesh& m)
     {
       for (auto& [u, w] : weighted[v])
         a.vertex[v].emplace_back(u, w / areaSum[v]);
+    }
+    const double w = vertexWeight.empty() ? 1.0 : vertexWeight[v];
+    if (w != 1.0 && !a.vertex[v].empty())
+    {
+      for (auto& uw : a.vertex[v])
+        uw.second *= w;
+      a.vertex[v].emplace_back(static_cast<std::int64_t>(v), 1.0 - w);
     }
   }
   for (const auto& [e, fi] : half)
@@ -392,103 +402,111 @@ std::vector<ReversePoint> reversePoints(
   return out;
 }
 
-/// n . (S0 + sum_j c_j dX_j - p): one residual, one 3-vector block per vertex.
-class PlaneResidual : public ceres::CostFunction
+/// One distance of the energy, linearised: e = S - p is the surface point
+/// minus its partner (sample, or the original's closest point), n the normal
+/// at the point measured against, combo the surface point as lattice
+/// vertices, scale the square root of the distance's weight. Point-to-plane
+/// where e is along n: one residual scale n . (S + J dX - p). Point-to-point
+/// where it is not (a foot point on a border with the partner beyond it: the
+/// plane would not see the border's shrinkage): three, scale (S + J dX - p).
+struct Term
 {
-public:
-  PlaneResidual(double r0, const Vec3& n, std::vector<double> c) : r0_(r0), n_(n), c_(std::move(c))
-  {
-    set_num_residuals(1);
-    for (std::size_t j = 0; j < c_.size(); ++j)
-      mutable_parameter_block_sizes()->push_back(3);
-  }
-  bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override
-  {
-    double r = r0_;
-    for (std::size_t j = 0; j < c_.size(); ++j)
-      r += c_[j] * (n_[0] * params[j][0] + n_[1] * params[j][1] + n_[2] * params[j][2]);
-    residuals[0] = r;
-    if (jacobians)
+  const Combo* combo;
+  Vec3 e, n;
+  double scale;
+
+  bool point() const { return e.norm() > 1e-12 && std::abs(n.dot(e)) < 0.866 * e.norm(); }
+};
+
+/// The terms of one face's patches, compressed: sum_t |r_t + J_t dX|^2 =
+/// |c + R dX|^2 + const, [R c] the triangular factor of the QR decomposition
+/// of the stacked rows [J_t r_t] over the face's vertices. Exact for the
+/// linear step; Ceres then forms its normal equations from one block per
+/// face instead of one per sample (ten times faster on the mandible).
+struct FaceBlock
+{
+  std::vector<std::int64_t> vertices; ///< the parameter blocks, in column order
+  Eigen::MatrixXd rc;                 ///< rows x (3 vertices + 1): R, then c
+};
+
+std::vector<FaceBlock> compress(const std::vector<std::vector<Term>>& termsOfFace)
+{
+  std::vector<FaceBlock> out(termsOfFace.size());
+  inChunks(termsOfFace.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f)
     {
-      for (std::size_t j = 0; j < c_.size(); ++j)
+      const auto& terms = termsOfFace[f];
+      FaceBlock& fb = out[f];
+      Eigen::Index rows = 0;
+      for (const Term& t : terms)
       {
-        if (jacobians[j])
+        for (const auto& vw : *t.combo)
+          fb.vertices.push_back(vw.first);
+        rows += t.point() ? 3 : 1;
+      }
+      std::sort(fb.vertices.begin(), fb.vertices.end());
+      fb.vertices.erase(std::unique(fb.vertices.begin(), fb.vertices.end()), fb.vertices.end());
+      if (rows == 0 || fb.vertices.empty())
+        continue;
+      const auto cols = static_cast<Eigen::Index>(3 * fb.vertices.size());
+      Eigen::MatrixXd a = Eigen::MatrixXd::Zero(rows, cols + 1);
+      Eigen::Index row = 0;
+      for (const Term& t : terms)
+      {
+        const bool point = t.point();
+        for (const auto& [v, w] : *t.combo)
         {
+          const auto j = 3 * static_cast<Eigen::Index>(
+            std::lower_bound(fb.vertices.begin(), fb.vertices.end(), v) - fb.vertices.begin());
           for (int k = 0; k < 3; ++k)
-            jacobians[j][k] = c_[j] * n_[k];
+          {
+            if (point)
+              a(row + k, j + k) += t.scale * w;
+            else
+              a(row, j + k) += t.scale * w * t.n[k];
+          }
         }
+        if (point)
+          a.block(row, cols, 3, 1) = t.scale * t.e;
+        else
+          a(row, cols) = t.scale * t.n.dot(t.e);
+        row += point ? 3 : 1;
       }
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a);
+      fb.rc = qr.matrixQR().topRows(std::min(rows, cols + 1)).triangularView<Eigen::Upper>();
     }
-    return true;
-  }
+  });
+  return out;
+}
 
-private:
-  double r0_;
-  Vec3 n_;
-  std::vector<double> c_;
-};
-
-/// S0 + sum_j c_j dX_j - p: three residuals, for a point whose error is not
-/// along the normal (a foot point on a border, the point beyond it).
-class PointResidual : public ceres::CostFunction
+/// c + R dX: a face's compressed residuals, linear in its vertices' moves.
+class FaceResidual : public ceres::CostFunction
 {
 public:
-  PointResidual(const Vec3& r0, std::vector<double> c) : r0_(r0), c_(std::move(c))
+  explicit FaceResidual(const Eigen::MatrixXd& rc) : rc_(rc)
   {
-    set_num_residuals(3);
-    for (std::size_t j = 0; j < c_.size(); ++j)
+    set_num_residuals(static_cast<int>(rc.rows()));
+    for (Eigen::Index j = 0; j < (rc.cols() - 1) / 3; ++j)
       mutable_parameter_block_sizes()->push_back(3);
   }
   bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override
   {
-    for (int k = 0; k < 3; ++k)
+    const Eigen::Index rows = rc_.rows(), blocks = (rc_.cols() - 1) / 3;
+    Eigen::Map<Eigen::VectorXd> r(residuals, rows);
+    r = rc_.col(rc_.cols() - 1);
+    for (Eigen::Index j = 0; j < blocks; ++j)
     {
-      residuals[k] = r0_[k];
-      for (std::size_t j = 0; j < c_.size(); ++j)
-        residuals[k] += c_[j] * params[j][k];
-    }
-    if (jacobians)
-    {
-      for (std::size_t j = 0; j < c_.size(); ++j)
-      {
-        if (jacobians[j])
-        {
-          for (int i = 0; i < 9; ++i)
-            jacobians[j][i] = (i % 4 == 0) ? c_[j] : 0.0;
-        }
-      }
+      r += rc_.middleCols(3 * j, 3) * Eigen::Map<const Eigen::Vector3d>(params[j]);
+      if (jacobians && jacobians[j])
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(jacobians[j], rows, 3) =
+          rc_.middleCols(3 * j, 3);
     }
     return true;
   }
 
 private:
-  Vec3 r0_;
-  std::vector<double> c_;
+  const Eigen::MatrixXd& rc_; ///< owned by the outer iteration's FaceBlock
 };
-
-/// One distance of the energy, scaled by `scale` (the square root of its
-/// weight): e = S - p is the surface point minus its partner (sample or
-/// closest point), n the normal at the point measured against, `combo` the
-/// surface point as lattice vertices. Point-to-plane where e is along n;
-/// point-to-point where it is not (a foot point on a border with the partner
-/// beyond it: the plane would not see the border's shrinkage).
-void addDistance(ceres::Problem& problem, const Combo& combo, double scale, const Vec3& e, const Vec3& n,
-  std::vector<std::array<double, 3>>& delta)
-{
-  if (combo.empty())
-    return;
-  std::vector<double> coeffs;
-  std::vector<double*> blocks;
-  for (const auto& [v, w] : combo)
-  {
-    coeffs.push_back(scale * w);
-    blocks.push_back(delta[static_cast<std::size_t>(v)].data());
-  }
-  if (e.norm() > 1e-12 && std::abs(n.dot(e)) < 0.866 * e.norm())
-    problem.AddResidualBlock(new PointResidual(scale * e, std::move(coeffs)), nullptr, blocks);
-  else
-    problem.AddResidualBlock(new PlaneResidual(scale * n.dot(e), n, std::move(coeffs)), nullptr, blocks);
-}
 
 /// sqrt(lambda) dX.
 class Damping : public ceres::SizedCostFunction<3, 3>
@@ -529,7 +547,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   if (!(options.reverseWeight >= 0.0))
     throw std::invalid_argument("the reverse weight must be 0 or more");
 
-  LatticeSurface surface = buildLatticeSurface(lattice); // throws for a bad lattice
+  LatticeSurface surface = buildLatticeSurface(lattice, options.weights); // throws for a bad lattice
   std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution);
   const bool twoWay = options.original && options.reverseWeight > 0.0;
   std::unique_ptr<ClosestPointTree> originalTree;
@@ -552,7 +570,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   double damping = options.damping;
   for (int it = 0; it < options.iterations; ++it)
   {
-    const Anchors anchors = buildAnchors(lattice);
+    const Anchors anchors = buildAnchors(lattice, options.weights.vertex);
     const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
     std::vector<Combo> combos(samples.size());
     double weight = 0.0;
@@ -565,6 +583,15 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     std::vector<Combo> reverseCombos(reverse.size());
     for (std::size_t r = 0; r < reverse.size(); ++r)
       reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
+    std::vector<std::vector<Term>> termsOfFace(lattice.faces.size());
+    for (std::size_t s = 0; s < samples.size(); ++s)
+      termsOfFace[static_cast<std::size_t>(surface.patchFace[feet[s].patch])].push_back(
+        { &combos[s], feet[s].point - samples[s], feet[s].normal, 1.0 });
+    const double root = std::sqrt(reverseWeight);
+    for (std::size_t r = 0; r < reverse.size(); ++r)
+      termsOfFace[static_cast<std::size_t>(surface.patchFace[reverse[r].patch])].push_back(
+        { &reverseCombos[r], reverse[r].point - reverse[r].closest, reverse[r].normal, root });
+    const std::vector<FaceBlock> faceBlocks = compress(termsOfFace);
 
     const std::vector<Vec3> x0 = lattice.points;
     bool accepted = false;
@@ -574,11 +601,16 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       ceres::Problem::Options po;
       po.cost_function_ownership = ceres::TAKE_OWNERSHIP;
       ceres::Problem problem(po);
-      for (std::size_t s = 0; s < samples.size(); ++s)
-        addDistance(problem, combos[s], 1.0, feet[s].point - samples[s], feet[s].normal, delta);
-      const double root = std::sqrt(reverseWeight);
-      for (std::size_t r = 0; r < reverse.size(); ++r)
-        addDistance(problem, reverseCombos[r], root, reverse[r].point - reverse[r].closest, reverse[r].normal, delta);
+      std::vector<double*> blocks;
+      for (const FaceBlock& fb : faceBlocks)
+      {
+        if (fb.rc.rows() == 0)
+          continue;
+        blocks.clear();
+        for (const auto v : fb.vertices)
+          blocks.push_back(delta[static_cast<std::size_t>(v)].data());
+        problem.AddResidualBlock(new FaceResidual(fb.rc), nullptr, blocks);
+      }
       const double lambda = damping * weight / static_cast<double>(nv);
       for (std::size_t v = 0; v < nv; ++v)
       {
@@ -603,7 +635,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
         lattice.points[v] = x0[v] + Vec3(delta[v][0], delta[v][1], delta[v][2]);
       try
       {
-        LatticeSurface trial = buildLatticeSurface(lattice);
+        LatticeSurface trial = buildLatticeSurface(lattice, options.weights);
         std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution);
         std::vector<ReversePoint> trialReverse;
         if (twoWay)

@@ -36,14 +36,20 @@
 ///    the tangential drift to it. Where the error is not along the normal (a
 ///    foot point on a border, the sample beyond it) the residual is the whole
 ///    vector S_s + J_s dX - p_s instead. The reverse points give the same
-///    residuals with the original's closest point and triangle normal;
+///    residuals with the original's closest point and triangle normal. The
+///    residuals of one face are compressed into one block by a QR
+///    decomposition (exact for this linear step), so Ceres sees one block
+///    per face instead of one per sample;
 /// 4. apply dX and rebuild; Levenberg-Marquardt on the exact energy: a step
 ///    that lowers it is kept and lambda halves (down to 1e-4), one that does
 ///    not is retried with lambda four times larger (up to four times), then
 ///    the refinement stops.
 /// Vertices flagged fixed (locked feature vertices) do not move, so feature
-/// edges stay exactly where they were.
+/// edges stay exactly where they were. The surface fitted is the one of the
+/// given rounding weights (the fit filter gives feature vertices weight 0, so
+/// the surface passes through them).
 
+#include "latticekit/LatticeSurface.h"
 #include "latticekit/PolygonMesh.h"
 #include "latticekit/TriangleMesh.h"
 
@@ -63,6 +69,10 @@ struct RefinementOptions
   /// nullptr: the samples' direction only.
   const TriangleMesh* original = nullptr;
   double reverseWeight = 1.0;     ///< of the reverse sum against the samples' (0: off)
+  /// The rounding weights of the surface being fitted (LatticeSurface.h); the
+  /// linear model follows the vertex weights, the edge weights only the
+  /// exact energy that accepts or refuses each step.
+  LatticeWeights weights;
   /// Called with the fraction done; returning false stops after the current step.
   std::function<bool(double)> progress;
 };
