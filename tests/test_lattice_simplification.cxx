@@ -223,6 +223,7 @@ TEST(LatticeSimplification, BadInputIsRefusedWithTheReason)
 }
 
 #include "latticekit/LatticeRefinement.h"
+#include "latticekit/LatticeSurfaceLocator.h"
 #include "latticekit/QuadPairing.h"
 
 TEST(LatticeRefinement, MovesTheSurfaceOntoTheSamples)
@@ -382,4 +383,46 @@ TEST(LatticeRefinement, FitsTheSurfaceOfTheGivenRoundingWeights)
     before.first, after.first, wrong.first);
   EXPECT_LT(after.first, 0.5 * before.first);
   EXPECT_LT(after.first, 0.8 * wrong.first);
+}
+
+TEST(LatticeRefinement, TheTailPenaltyPullsInTheLargestError)
+{
+  // A sphere with one sharp spike (a vertex 0.6 out), like the tip that sets
+  // Metro's max on the mandible: the squared sum alone leaves the spike far
+  // from the surface; the tail penalty pulls it in.
+  const double radius = 10.0;
+  lk::TriangleMesh sphere = lktest::icosphere(4, radius);
+  lk::SimplificationOptions o;
+  o.targetVertices = 200;
+  // The lattice of the smooth sphere, so no lattice vertex sits on the spike.
+  const lk::PolygonMesh start = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
+  const std::size_t spike = 17;
+  sphere.points[spike] *= (radius + 0.6) / radius;
+  auto fitted = [&](double tailWeight) {
+    lk::PolygonMesh lattice = start;
+    lk::RefinementOptions ro;
+    ro.tailWeight = tailWeight;
+    lk::refineLatticeFit(lattice, sphere.points, ro);
+    const lk::LatticeSurface s = lk::buildLatticeSurface(lattice);
+    const lk::LatticeSurfaceLocator locator(s);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < sphere.points.size(); ++i)
+      if (i != spike)
+        sum += locator.closest(sphere.points[i]).distance;
+    return std::make_pair(locator.closest(sphere.points[spike]).distance,
+      sum / static_cast<double>(sphere.points.size() - 1));
+  };
+  const auto plain = fitted(0.0), tail = fitted(100.0);
+  std::printf("spike distance %.4f -> %.4f with the tail penalty; mean elsewhere %.5f -> %.5f\n", plain.first,
+    tail.first, plain.second, tail.second);
+  EXPECT_LT(tail.first, 0.8 * plain.first);
+  EXPECT_LT(tail.second, 1.5 * plain.second); // the spike drags its neighbourhood (+28 % here; +1 % on the mandible)
+
+  lk::PolygonMesh lattice = start;
+  lk::RefinementOptions bad;
+  bad.tailWeight = -1.0;
+  EXPECT_THROW(lk::refineLatticeFit(lattice, sphere.points, bad), std::invalid_argument);
+  bad.tailWeight = 1.0;
+  bad.tailThreshold = 0.0;
+  EXPECT_THROW(lk::refineLatticeFit(lattice, sphere.points, bad), std::invalid_argument);
 }

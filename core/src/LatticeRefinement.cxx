@@ -546,6 +546,8 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
 
   if (!(options.reverseWeight >= 0.0))
     throw std::invalid_argument("the reverse weight must be 0 or more");
+  if (!(options.tailWeight >= 0.0) || !(options.tailThreshold > 0.0))
+    throw std::invalid_argument("the tail weight must be 0 or more and its threshold above 0");
 
   LatticeSurface surface = buildLatticeSurface(lattice, options.weights); // throws for a bad lattice
   std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution);
@@ -559,7 +561,20 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     reverse = reversePoints(surface, *options.original, *originalTree);
     reverseWeight = options.reverseWeight * static_cast<double>(samples.size()) / static_cast<double>(reverse.size());
   }
-  double e0 = energy(feet) + reverseWeight * energy(reverse);
+  // The tail penalty: mu sum max(0, d - tau)^2, over both directions' points.
+  const double mu = options.tailWeight;
+  const double tau = options.tailThreshold * std::sqrt(energy(feet) / static_cast<double>(samples.size()));
+  auto tail = [&](const std::vector<Foot>& fs, const std::vector<ReversePoint>& rs) {
+    double h = 0.0, hr = 0.0;
+    for (const Foot& f : fs)
+      if (f.distance > tau)
+        h += (f.distance - tau) * (f.distance - tau);
+    for (const ReversePoint& r : rs)
+      if (r.distance > tau)
+        hr += (r.distance - tau) * (r.distance - tau);
+    return mu * (h + reverseWeight * hr);
+  };
+  double e0 = energy(feet) + reverseWeight * energy(reverse) + tail(feet, reverse);
   RefinementReport report;
   report.initialRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   const std::size_t nv = lattice.points.size();
@@ -591,6 +606,17 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     for (std::size_t r = 0; r < reverse.size(); ++r)
       termsOfFace[static_cast<std::size_t>(surface.patchFace[reverse[r].patch])].push_back(
         { &reverseCombos[r], reverse[r].point - reverse[r].closest, reverse[r].normal, root });
+    if (mu > 0.0)
+      for (std::size_t s = 0; s < samples.size(); ++s)
+        if (feet[s].distance > tau)
+          termsOfFace[static_cast<std::size_t>(surface.patchFace[feet[s].patch])].push_back({ &combos[s],
+            (feet[s].point - samples[s]) * ((feet[s].distance - tau) / feet[s].distance), feet[s].normal, std::sqrt(mu) });
+    if (mu > 0.0)
+      for (std::size_t r = 0; r < reverse.size(); ++r)
+        if (reverse[r].distance > tau)
+          termsOfFace[static_cast<std::size_t>(surface.patchFace[reverse[r].patch])].push_back({ &reverseCombos[r],
+            (reverse[r].point - reverse[r].closest) * ((reverse[r].distance - tau) / reverse[r].distance),
+            reverse[r].normal, std::sqrt(mu * reverseWeight) });
     const std::vector<FaceBlock> faceBlocks = compress(termsOfFace);
 
     const std::vector<Vec3> x0 = lattice.points;
@@ -640,7 +666,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
         std::vector<ReversePoint> trialReverse;
         if (twoWay)
           trialReverse = reversePoints(trial, *options.original, *originalTree);
-        const double e = energy(trialFeet) + reverseWeight * energy(trialReverse);
+        const double e = energy(trialFeet) + reverseWeight * energy(trialReverse) + tail(trialFeet, trialReverse);
         if (e < e0)
         {
           surface = std::move(trial);

@@ -44,6 +44,9 @@
 ///    that lowers it is kept and lambda halves (down to 1e-4), one that does
 ///    not is retried with lambda four times larger (up to four times), then
 ///    the refinement stops.
+/// The energy also carries a tail penalty, mu sum max(0, d - tau)^2 over both
+/// directions' points, a soft bound on the largest distance (see
+/// RefinementOptions::tailWeight); its residuals join the same blocks.
 /// Vertices flagged fixed (locked feature vertices) do not move, so feature
 /// edges stay exactly where they were. The surface fitted is the one of the
 /// given rounding weights (the fit filter gives feature vertices weight 0, so
@@ -69,6 +72,12 @@ struct RefinementOptions
   /// nullptr: the samples' direction only.
   const TriangleMesh* original = nullptr;
   double reverseWeight = 1.0;     ///< of the reverse sum against the samples' (0: off)
+  /// The tail penalty mu sum max(0, d - tau)^2 (both directions, the reverse
+  /// points with their weight): Metro's max is one point, which the squared
+  /// sum trades for the mean. tau = tailThreshold x the samples' RMS distance
+  /// before the refinement; mu = tailWeight (0: off).
+  double tailWeight = 100.0;
+  double tailThreshold = 4.0;
   /// The rounding weights of the surface being fitted (LatticeSurface.h); the
   /// linear model follows the vertex weights, the edge weights only the
   /// exact energy that accepts or refuses each step.
