@@ -275,15 +275,16 @@ void table(const std::string& title, vtkPolyData* original, vtkPolyData* feature
   auto c = cgalDecimate(original, vertices, &tc);
   print(flatRow("CGAL Garland-Heckbert (flat)", c, original, tc));
   {
-    // Not an anchor but a floor: a smooth surface through every input vertex
-    // (interpolating Butterfly subdivision, 2 levels) against the input's
-    // own facets. No smooth surface fitted to the facets does much better.
+    // Not an anchor but a reference: a smooth surface through every input
+    // vertex (interpolating Butterfly subdivision, 2 levels) against the
+    // input's own facets. It is not a floor: a lattice fitted to the facets
+    // with all the input's vertices reaches 0.0040 % mean on mandible 1.
     vtkNew<vtkButterflySubdivisionFilter> smooth;
     smooth->SetInputData(original);
     smooth->SetNumberOfSubdivisions(2);
     const auto t0 = Clock::now();
     smooth->Update();
-    print(flatRow("floor: Butterfly through all input", smooth->GetOutput(), original, seconds(t0)));
+    print(flatRow("Butterfly through all input", smooth->GetOutput(), original, seconds(t0)));
   }
   print(latticeRow("lattice, no features", original, nullptr, vertices, false, false, false, features));
   print(latticeRow("lattice, refined", original, nullptr, vertices, false, true, false, features));
