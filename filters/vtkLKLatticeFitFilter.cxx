@@ -49,6 +49,16 @@ struct Fit
   std::size_t quads = 0;
   lk::RefinementReport refinement;
 };
+
+/// The rounding weight of every lattice vertex with InterpolateFeatures: 0 at
+/// the ends of feature edges (the surface passes through them), 1 elsewhere.
+std::vector<double> featureVertexWeights(const Fit& fit)
+{
+  std::vector<double> w(fit.lattice.points.size(), 1.0);
+  for (const auto& e : fit.features)
+    w[static_cast<std::size_t>(e.first)] = w[static_cast<std::size_t>(e.second)] = 0.0;
+  return w;
+}
 } // namespace
 
 vtkLKLatticeFitFilter::vtkLKLatticeFitFilter()
@@ -164,13 +174,7 @@ int vtkLKLatticeFitFilter::RequestData(
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
       if (this->InterpolateFeatures && !fit.features.empty())
-      {
-        // Fit the surface the output describes: rounding weight 0 at the feature vertices.
-        ro.weights.vertex.assign(fit.lattice.points.size(), 1.0);
-        for (std::size_t v = 0; v < ro.fixed.size(); ++v)
-          if (ro.fixed[v])
-            ro.weights.vertex[v] = 0.0;
-      }
+        ro.weights.vertex = featureVertexWeights(fit); // fit the surface the output describes
       ro.progress = [&](double f) {
         this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * f));
         return !this->GetAbortExecute();
@@ -224,13 +228,10 @@ int vtkLKLatticeFitFilter::RequestData(
       // Vertex weight 0: the lattice surface passes through the feature vertices.
       vtkNew<vtkDoubleArray> vw;
       vw->SetName("RoundingWeight");
-      vw->SetNumberOfTuples(static_cast<vtkIdType>(fit.lattice.points.size()));
-      vw->Fill(1.0);
-      for (const auto& e : fit.features)
-      {
-        vw->SetValue(static_cast<vtkIdType>(e.first), 0.0);
-        vw->SetValue(static_cast<vtkIdType>(e.second), 0.0);
-      }
+      const std::vector<double> weights = featureVertexWeights(fit);
+      vw->SetNumberOfTuples(static_cast<vtkIdType>(weights.size()));
+      for (std::size_t v = 0; v < weights.size(); ++v)
+        vw->SetValue(static_cast<vtkIdType>(v), weights[v]);
       pd->GetPointData()->AddArray(vw);
     }
   };

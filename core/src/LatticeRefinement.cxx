@@ -360,6 +360,17 @@ double energy(const std::vector<T>& points)
   return e;
 }
 
+/// Sum of squared excesses max(0, d - tau)^2 (the tail penalty, unweighted).
+template <class T>
+double tailEnergy(const std::vector<T>& points, double tau)
+{
+  double e = 0.0;
+  for (const T& p : points)
+    if (p.distance > tau)
+      e += (p.distance - tau) * (p.distance - tau);
+  return e;
+}
+
 /// A fixed parameter point of the surface and its closest point on the
 /// original mesh (the reverse direction of Metro).
 struct ReversePoint
@@ -564,17 +575,10 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   // The tail penalty: mu sum max(0, d - tau)^2, over both directions' points.
   const double mu = options.tailWeight;
   const double tau = options.tailThreshold * std::sqrt(energy(feet) / static_cast<double>(samples.size()));
-  auto tail = [&](const std::vector<Foot>& fs, const std::vector<ReversePoint>& rs) {
-    double h = 0.0, hr = 0.0;
-    for (const Foot& f : fs)
-      if (f.distance > tau)
-        h += (f.distance - tau) * (f.distance - tau);
-    for (const ReversePoint& r : rs)
-      if (r.distance > tau)
-        hr += (r.distance - tau) * (r.distance - tau);
-    return mu * (h + reverseWeight * hr);
+  auto objective = [&](const std::vector<Foot>& fs, const std::vector<ReversePoint>& rs) {
+    return energy(fs) + reverseWeight * energy(rs) + mu * (tailEnergy(fs, tau) + reverseWeight * tailEnergy(rs, tau));
   };
-  double e0 = energy(feet) + reverseWeight * energy(reverse) + tail(feet, reverse);
+  double e0 = objective(feet, reverse);
   RefinementReport report;
   report.initialRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   const std::size_t nv = lattice.points.size();
@@ -598,25 +602,19 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     std::vector<Combo> reverseCombos(reverse.size());
     for (std::size_t r = 0; r < reverse.size(); ++r)
       reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
+    // Each distance d = |e| with its weight, and its tail residual where d > tau.
     std::vector<std::vector<Term>> termsOfFace(lattice.faces.size());
+    auto addDistance = [&](std::size_t patch, const Combo& combo, const Vec3& e, const Vec3& n, double d, double w) {
+      auto& terms = termsOfFace[static_cast<std::size_t>(surface.patchFace[patch])];
+      terms.push_back({ &combo, e, n, std::sqrt(w) });
+      if (mu > 0.0 && d > tau)
+        terms.push_back({ &combo, e * ((d - tau) / d), n, std::sqrt(mu * w) });
+    };
     for (std::size_t s = 0; s < samples.size(); ++s)
-      termsOfFace[static_cast<std::size_t>(surface.patchFace[feet[s].patch])].push_back(
-        { &combos[s], feet[s].point - samples[s], feet[s].normal, 1.0 });
-    const double root = std::sqrt(reverseWeight);
+      addDistance(feet[s].patch, combos[s], feet[s].point - samples[s], feet[s].normal, feet[s].distance, 1.0);
     for (std::size_t r = 0; r < reverse.size(); ++r)
-      termsOfFace[static_cast<std::size_t>(surface.patchFace[reverse[r].patch])].push_back(
-        { &reverseCombos[r], reverse[r].point - reverse[r].closest, reverse[r].normal, root });
-    if (mu > 0.0)
-      for (std::size_t s = 0; s < samples.size(); ++s)
-        if (feet[s].distance > tau)
-          termsOfFace[static_cast<std::size_t>(surface.patchFace[feet[s].patch])].push_back({ &combos[s],
-            (feet[s].point - samples[s]) * ((feet[s].distance - tau) / feet[s].distance), feet[s].normal, std::sqrt(mu) });
-    if (mu > 0.0)
-      for (std::size_t r = 0; r < reverse.size(); ++r)
-        if (reverse[r].distance > tau)
-          termsOfFace[static_cast<std::size_t>(surface.patchFace[reverse[r].patch])].push_back({ &reverseCombos[r],
-            (reverse[r].point - reverse[r].closest) * ((reverse[r].distance - tau) / reverse[r].distance),
-            reverse[r].normal, std::sqrt(mu * reverseWeight) });
+      addDistance(reverse[r].patch, reverseCombos[r], reverse[r].point - reverse[r].closest, reverse[r].normal,
+        reverse[r].distance, reverseWeight);
     const std::vector<FaceBlock> faceBlocks = compress(termsOfFace);
 
     const std::vector<Vec3> x0 = lattice.points;
@@ -666,7 +664,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
         std::vector<ReversePoint> trialReverse;
         if (twoWay)
           trialReverse = reversePoints(trial, *options.original, *originalTree);
-        const double e = energy(trialFeet) + reverseWeight * energy(trialReverse) + tail(trialFeet, trialReverse);
+        const double e = objective(trialFeet, trialReverse);
         if (e < e0)
         {
           surface = std::move(trial);
