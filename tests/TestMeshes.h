@@ -2,17 +2,29 @@
 /// \file TestMeshes.h
 /// Small exact meshes for the core tests.
 
+#include "latticekit/LatticeSimplification.h"
 #include "latticekit/PolygonMesh.h"
 #include "latticekit/TriangleMesh.h"
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <utility>
 
 namespace lktest
 {
 
 /// A triangle mesh as a polygon mesh (a triangle lattice).
+/// Every edge of a triangle mesh, once, as (smaller id, larger id).
+inline std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
+{
+  std::set<lk::EdgeKey> e;
+  for (const auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i)
+      e.insert(lk::edgeKey(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]));
+  return e;
+}
+
 inline lk::PolygonMesh asPolygonMesh(const lk::TriangleMesh& m)
 {
   lk::PolygonMesh p;

@@ -9,15 +9,6 @@
 
 namespace
 {
-std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
-{
-  std::set<lk::EdgeKey> e;
-  for (const auto& t : m.triangles)
-    for (int i = 0; i < 3; ++i)
-      e.insert(lk::edgeKey(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]));
-  return e;
-}
-
 const std::vector<lk::Vec3> kStroke = { { 0.12, 0.2, 0.0 }, { 0.5, 0.45, 0.0 }, { 0.9, 0.62, 0.0 } };
 } // namespace
 
@@ -25,7 +16,7 @@ TEST(StrokeFeatureLine, NearestEdgesGiveAConnectedSimpleEdgePath)
 {
   const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
   const auto r = lk::strokeToFeatureLine(grid, kStroke, {});
-  const auto edges = edgesOf(grid);
+  const auto edges = lktest::edgesOf(grid);
   ASSERT_GT(r.line.size(), 10u);
   EXPECT_FALSE(r.closed);
   std::set<std::int64_t> seen;
@@ -119,7 +110,7 @@ TEST(StrokeFeatureLine, ClosedStrokeCutsTheSphere)
   const auto r = lk::strokeToFeatureLine(sphere, stroke, {});
   ASSERT_TRUE(r.closed);
   EXPECT_EQ(r.line.front(), r.line.back());
-  const auto edges = edgesOf(sphere);
+  const auto edges = lktest::edgesOf(sphere);
   std::set<std::int64_t> seen;
   for (std::size_t i = 0; i + 1 < r.line.size(); ++i)
   {
@@ -158,7 +149,7 @@ TEST(StrokeFeatureLine, SplitAddsEdgesThatLieOnTheStroke)
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
   EXPECT_NEAR(lk::surfaceArea(r.mesh), 1.0, 1e-12);
   EXPECT_GT(r.mesh.points.size(), grid.points.size() + 20);
-  const auto edges = edgesOf(r.mesh);
+  const auto edges = lktest::edgesOf(r.mesh);
   const lk::Vec3 d = (straight[1] - straight[0]).normalized();
   ASSERT_GT(r.line.size(), 20u);
   for (std::size_t i = 0; i < r.line.size(); ++i)

@@ -11,18 +11,9 @@
 
 namespace
 {
-std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
-{
-  std::set<lk::EdgeKey> e;
-  for (const auto& t : m.triangles)
-    for (int i = 0; i < 3; ++i)
-      e.insert(lk::edgeKey(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]));
-  return e;
-}
-
 void expectConnectedLine(const lk::TriangleMesh& m, const std::vector<std::int64_t>& line)
 {
-  const auto edges = edgesOf(m);
+  const auto edges = lktest::edgesOf(m);
   for (std::size_t i = 0; i + 1 < line.size(); ++i)
     EXPECT_TRUE(edges.count(lk::edgeKey(line[i], line[i + 1]))) << "line vertices " << i << " and " << i + 1;
 }
