@@ -40,6 +40,8 @@ void usage(std::ostream& os)
         "  --quads                pair triangles into quads where the pair is near-rectangular\n"
         "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
         "  --refine-iterations N  outer iterations of the refinement (default 4)\n"
+        "  --refine-tail MU       tail penalty of the refinement: a soft bound on the max\n"
+        "                         error, paid for in mean (default 0: off; try 100)\n"
         "  --surface OUT          also write the lattice surface (.vtp/.vtk/.stl/.ply/.obj/.gltf)\n"
         "  --vertex-map OUT       write MESH with LatticeFaceId, LatticeVertexId, Distance\n"
         "  --resolution N         tessellation of the surface and of the error (default 8)\n"
@@ -53,7 +55,7 @@ int main(int argc, char* argv[])
 {
   std::string input, output, featuresIn, surfaceOut, mapOut;
   long vertices = 0, iterations = 4, resolution = 8;
-  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0;
+  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0, tail = 0.0;
   bool lock = false, flat = false, quads = false, refine = false, quiet = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -83,6 +85,8 @@ int main(int argc, char* argv[])
       refine = true;
     else if (a == "--refine-iterations")
       iterations = args.integer(a, 1, 100, "an integer from 1 to 100");
+    else if (a == "--refine-tail")
+      tail = args.number(a, 0.0, 1e300, "a number of at least 0");
     else if (a == "--surface")
       surfaceOut = args.value(a);
     else if (a == "--vertex-map")
@@ -138,6 +142,7 @@ int main(int argc, char* argv[])
   fit->SetRoundedSurfaceQuadrics(!flat);
   fit->SetQuadPairing(quads);
   fit->SetRefinement(refine);
+  fit->SetRefinementTailWeight(tail);
   fit->SetRefinementIterations(static_cast<int>(iterations));
   fit->SetErrorResolution(static_cast<int>(resolution));
   {

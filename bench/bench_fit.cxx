@@ -12,6 +12,9 @@
 //
 // usage: bench_fit SAMPLE_DATA_DIR [--quick | --head]
 //   --quick: the first mandible only; --head: the head and the speed test only
+// With BENCH_FIT_SAVE=DIR in the environment, the three input meshes and the
+// head's feature lines are written there (.vtp), to rerun single rows with
+// latticekit-fit.
 #include "latticekit/LatticeSimplification.h"
 #include "latticekit/EdgePath.h"
 #include "vtkLKBoneSurfaceFilter.h"
@@ -41,8 +44,10 @@
 #include <vtkButterflySubdivisionFilter.h>
 #include <vtkQuadricDecimation.h>
 #include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -262,8 +267,27 @@ std::vector<std::vector<lk::Vec3>> readStrokes(const std::string& file)
   return strokes;
 }
 
+/// Writes a mesh to $BENCH_FIT_SAVE/NAME.vtp (spaces as '_') when that is set.
+void save(vtkPolyData* mesh, std::string name)
+{
+  const char* dir = std::getenv("BENCH_FIT_SAVE");
+  if (!dir || !*dir)
+    return;
+  for (char& c : name)
+    if (c == ' ' || c == '(' || c == ')' || c == ',')
+      c = '_';
+  vtkNew<vtkXMLPolyDataWriter> w;
+  w->SetInputData(mesh);
+  w->SetFileName((std::string(dir) + "/" + name + ".vtp").c_str());
+  if (!w->Write())
+    std::fprintf(stderr, "cannot write %s\n", w->GetFileName());
+}
+
 void table(const std::string& title, vtkPolyData* original, vtkPolyData* features, vtkIdType vertices)
 {
+  save(original, title);
+  if (features)
+    save(features, title + " features");
   std::printf("\n%s: %lld vertices, %lld triangles; lattices of %lld vertices\n", title.c_str(),
     static_cast<long long>(original->GetNumberOfPoints()), static_cast<long long>(original->GetNumberOfPolys()),
     static_cast<long long>(vertices));

@@ -48,6 +48,7 @@ struct Fit
   std::vector<std::int64_t> collapsedInto;
   std::size_t quads = 0;
   lk::RefinementReport refinement;
+  std::vector<double> vertexWeights; ///< rounding weights of the surface; empty: all 1
 };
 
 /// The rounding weight of every lattice vertex with InterpolateFeatures: 0 at
@@ -98,6 +99,11 @@ int vtkLKLatticeFitFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* vertexMap = vtkPolyData::GetData(outputVector, 1);
 
+  if (!(this->RefinementTailWeight >= 0.0) || !(this->RefinementTailThreshold > 0.0))
+  {
+    vtkErrorMacro("Cannot fit a lattice: the refinement's tail weight must be 0 or more and its threshold above 0.");
+    return 0;
+  }
   lk::TriangleMesh mesh;
   std::string problem = lkvtk::toTriangleMesh(input, mesh);
   if (!problem.empty())
@@ -165,16 +171,20 @@ int vtkLKLatticeFitFilter::RequestData(
       for (const auto& t : r.mesh.triangles)
         fit.lattice.faces.push_back({ t[0], t[1], t[2] });
     }
+    fit.vertexWeights.clear();
+    if (this->InterpolateFeatures && !fit.features.empty())
+      fit.vertexWeights = featureVertexWeights(fit);
     if (refine)
     {
       lk::RefinementOptions ro;
       ro.iterations = this->RefinementIterations;
+      ro.tailWeight = this->RefinementTailWeight;
+      ro.tailThreshold = this->RefinementTailThreshold;
       ro.original = &mesh; // both of Metro's directions
       ro.fixed.assign(fit.lattice.points.size(), 0);
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
-      if (this->InterpolateFeatures && !fit.features.empty())
-        ro.weights.vertex = featureVertexWeights(fit); // fit the surface the output describes
+      ro.weights.vertex = fit.vertexWeights; // fit the surface the output describes
       ro.progress = [&](double f) {
         this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * f));
         return !this->GetAbortExecute();
@@ -185,8 +195,7 @@ int vtkLKLatticeFitFilter::RequestData(
   };
 
   // The lattice as polydata: faces, then a line per feature edge.
-  const bool interpolate = this->InterpolateFeatures;
-  auto toPolyData = [interpolate](const Fit& fit, vtkPolyData* pd) {
+  auto toPolyData = [](const Fit& fit, vtkPolyData* pd) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     for (const auto& p : fit.lattice.points)
@@ -223,12 +232,12 @@ int vtkLKLatticeFitFilter::RequestData(
     }
     pd->GetCellData()->AddArray(flag);
     pd->GetCellData()->AddArray(weight);
-    if (interpolate && !fit.features.empty())
+    if (!fit.vertexWeights.empty())
     {
       // Vertex weight 0: the lattice surface passes through the feature vertices.
       vtkNew<vtkDoubleArray> vw;
       vw->SetName("RoundingWeight");
-      const std::vector<double> weights = featureVertexWeights(fit);
+      const std::vector<double>& weights = fit.vertexWeights;
       vw->SetNumberOfTuples(static_cast<vtkIdType>(weights.size()));
       for (std::size_t v = 0; v < weights.size(); ++v)
         vw->SetValue(static_cast<vtkIdType>(v), weights[v]);
@@ -398,5 +407,7 @@ void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RoundedSurfaceQuadrics: " << this->RoundedSurfaceQuadrics << "\n";
   os << indent << "QuadPairing: " << this->QuadPairing << "\n";
   os << indent << "Refinement: " << this->Refinement << " (" << this->RefinementIterations << " iterations)\n";
+  os << indent << "RefinementTailWeight: " << this->RefinementTailWeight << " (threshold "
+     << this->RefinementTailThreshold << ")\n";
   os << indent << "ComputeError: " << this->ComputeError << " (resolution " << this->ErrorResolution << ")\n";
 }

@@ -208,6 +208,19 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     expectError(fit, "next to a feature");
   }
   {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetTargetNumberOfVertices(500);
+    fit->SetRefinement(true);
+    fit->SetRefinementTailWeight(-1.0);
+    expectError(fit, "tail weight");
+    vtkNew<vtkLKLatticeFitFilter> fit2;
+    fit2->SetInputData(bone);
+    fit2->SetTargetNumberOfVertices(500);
+    fit2->SetRefinementTailThreshold(0.0);
+    expectError(fit2, "threshold above 0");
+  }
+  {
     vtkNew<vtkPolyData> lines;
     vtkNew<vtkPoints> pts;
     pts->InsertNextPoint(0, 0, 0);
