@@ -39,7 +39,7 @@ void usage(std::ostream& os)
         "  --flat-quadrics        plain Garland-Heckbert placement (for comparison)\n"
         "  --quads                pair triangles into quads where the pair is near-rectangular\n"
         "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
-        "  --refine-iterations N  outer iterations of the refinement (default 4)\n"
+        "  --refine-iterations N  outer iterations of the refinement (default 8)\n"
         "  --refine-tail MU       tail penalty of the refinement: a soft bound on the max\n"
         "                         error, paid for in mean (default 0: off; try 100)\n"
         "  --surface OUT          also write the lattice surface (.vtp/.vtk/.stl/.ply/.obj/.gltf)\n"
@@ -54,7 +54,7 @@ void usage(std::ostream& os)
 int main(int argc, char* argv[])
 {
   std::string input, output, featuresIn, surfaceOut, mapOut;
-  long vertices = 0, iterations = 4, resolution = 8;
+  long vertices = 0, iterations = 8, resolution = 8;
   double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0, tail = 0.0;
   bool lock = false, flat = false, quads = false, refine = false, quiet = false;
   lkapp::Arguments args(argc, argv, usage);

@@ -270,7 +270,9 @@ TEST(LatticeRefinement, WinsBackTheAccuracyQuadPairingLoses)
   std::printf("%zu quads: mean |r - 10| refined triangles %.5f, quads %.5f before and %.5f after refinement\n",
     paired.quads, eTri.first, eQuadBefore.first, eQuad.first);
   EXPECT_LT(eQuad.first, eQuadBefore.first);
-  EXPECT_LT(eQuad.first, 1.5 * eTri.first);
+  // At least 90 % of what the pairing lost against the refined triangles is
+  // won back (at 0.001 of the radius a ratio of the two would measure noise).
+  EXPECT_LT(eQuad.first - eTri.first, 0.1 * (eQuadBefore.first - eTri.first));
 }
 
 TEST(LatticeRefinement, BadInputIsRefused)

@@ -64,7 +64,7 @@ namespace lk
 
 struct RefinementOptions
 {
-  int iterations = 4;
+  int iterations = 8;
   double damping = 1e-2;          ///< initial lambda, relative
   std::vector<char> fixed;        ///< per lattice vertex; empty: none fixed
   int locatorResolution = 4;      ///< tessellation the closest-point search starts from
