@@ -44,7 +44,7 @@ AdaptivePatchMesh::AdaptivePatchMesh(const TriangleMesh& mesh, int maxLevel)
     for (int c = 0; c < 3; ++c)
       normal_[tri[c]] += n;
     Tri node;
-    node.v = { { tri[0], tri[1], tri[2] } };
+    node.v = { { static_cast<int>(tri[0]), static_cast<int>(tri[1]), static_cast<int>(tri[2]) } }; // < np, checked above
     tris_.push_back(node);
     addEdges(static_cast<int>(t));
   }

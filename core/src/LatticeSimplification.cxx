@@ -258,11 +258,7 @@ bool placeAndCost(const State& s, VD v0, VD v1, Vec3& x, double& cost)
 
 double minAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
-  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
-    const Vec3 u = q - p, v = r - p;
-    return std::atan2(u.cross(v).norm(), u.dot(v));
-  };
-  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
+  return std::min({ angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b) });
 }
 
 /// Refuses collapses that turn a triangle too far (or flip it) or create a sliver.

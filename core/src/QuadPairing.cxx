@@ -13,13 +13,6 @@ namespace
 {
 constexpr double kPi = 3.14159265358979323846;
 
-/// Angle at p between q and r.
-double angleAt(const Vec3& p, const Vec3& q, const Vec3& r)
-{
-  const Vec3 a = q - p, b = r - p;
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
-
 struct Candidate
 {
   double cost;

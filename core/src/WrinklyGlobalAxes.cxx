@@ -25,8 +25,7 @@ struct Fan
 
 double cornerAngle(const WrinklyControlMesh& m, int v, int a, int b)
 {
-  const Vec3 x = m.points[a] - m.points[v], y = m.points[b] - m.points[v];
-  return std::atan2(x.cross(y).norm(), x.dot(y));
+  return angleAt(m.points[v], m.points[a], m.points[b]);
 }
 
 } // namespace

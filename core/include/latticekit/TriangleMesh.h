@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -54,6 +55,14 @@ inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, 
     return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
   const double denom = 1.0 / (va + vb + vc);
   return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+/// The angle at p between the directions to q and to r, in [0, pi]
+/// (atan2 of |u x v| and u . v: accurate near 0 and pi, unlike acos).
+inline double angleAt(const Vec3& p, const Vec3& q, const Vec3& r)
+{
+  const Vec3 u = q - p, v = r - p;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
 }
 
 /// Axis-aligned box.
