@@ -48,13 +48,15 @@ struct Fit
   std::vector<std::int64_t> collapsedInto;
   std::size_t quads = 0;
   lk::RefinementReport refinement;
-  std::vector<double> vertexWeights; ///< rounding weights of the surface; empty: all 1
 };
 
-/// The rounding weight of every lattice vertex with InterpolateFeatures: 0 at
-/// the ends of feature edges (the surface passes through them), 1 elsewhere.
-std::vector<double> featureVertexWeights(const Fit& fit)
+/// The rounding weights of the lattice surface's vertices: with
+/// `interpolateFeatures`, 0 at the ends of feature edges (the surface passes
+/// through them) and 1 elsewhere; otherwise empty (all 1).
+std::vector<double> surfaceVertexWeights(const Fit& fit, bool interpolateFeatures)
 {
+  if (!interpolateFeatures || fit.features.empty())
+    return {};
   std::vector<double> w(fit.lattice.points.size(), 1.0);
   for (const auto& e : fit.features)
     w[static_cast<std::size_t>(e.first)] = w[static_cast<std::size_t>(e.second)] = 0.0;
@@ -99,10 +101,18 @@ int vtkLKLatticeFitFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* vertexMap = vtkPolyData::GetData(outputVector, 1);
 
-  if (!(this->RefinementTailWeight >= 0.0) || !(this->RefinementTailThreshold > 0.0))
   {
-    vtkErrorMacro("Cannot fit a lattice: the refinement's tail weight must be 0 or more and its threshold above 0.");
-    return 0;
+    // The refinement's own checks, before the simplification's work.
+    lk::RefinementOptions check;
+    check.iterations = this->RefinementIterations;
+    check.tailWeight = this->RefinementTailWeight;
+    check.tailThreshold = this->RefinementTailThreshold;
+    const std::string problem = lk::refinementOptionsProblem(check);
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot fit a lattice: " << problem << ".");
+      return 0;
+    }
   }
   lk::TriangleMesh mesh;
   std::string problem = lkvtk::toTriangleMesh(input, mesh);
@@ -171,9 +181,6 @@ int vtkLKLatticeFitFilter::RequestData(
       for (const auto& t : r.mesh.triangles)
         fit.lattice.faces.push_back({ t[0], t[1], t[2] });
     }
-    fit.vertexWeights.clear();
-    if (this->InterpolateFeatures && !fit.features.empty())
-      fit.vertexWeights = featureVertexWeights(fit);
     if (refine)
     {
       lk::RefinementOptions ro;
@@ -184,7 +191,7 @@ int vtkLKLatticeFitFilter::RequestData(
       ro.fixed.assign(fit.lattice.points.size(), 0);
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
-      ro.weights.vertex = fit.vertexWeights; // fit the surface the output describes
+      ro.weights.vertex = surfaceVertexWeights(fit, this->InterpolateFeatures); // the surface the output describes
       ro.progress = [&](double f) {
         this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * f));
         return !this->GetAbortExecute();
@@ -195,7 +202,8 @@ int vtkLKLatticeFitFilter::RequestData(
   };
 
   // The lattice as polydata: faces, then a line per feature edge.
-  auto toPolyData = [](const Fit& fit, vtkPolyData* pd) {
+  const bool interpolate = this->InterpolateFeatures;
+  auto toPolyData = [interpolate](const Fit& fit, vtkPolyData* pd) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     for (const auto& p : fit.lattice.points)
@@ -232,12 +240,12 @@ int vtkLKLatticeFitFilter::RequestData(
     }
     pd->GetCellData()->AddArray(flag);
     pd->GetCellData()->AddArray(weight);
-    if (!fit.vertexWeights.empty())
+    const std::vector<double> weights = surfaceVertexWeights(fit, interpolate);
+    if (!weights.empty())
     {
       // Vertex weight 0: the lattice surface passes through the feature vertices.
       vtkNew<vtkDoubleArray> vw;
       vw->SetName("RoundingWeight");
-      const std::vector<double>& weights = fit.vertexWeights;
       vw->SetNumberOfTuples(static_cast<vtkIdType>(weights.size()));
       for (std::size_t v = 0; v < weights.size(); ++v)
         vw->SetValue(static_cast<vtkIdType>(v), weights[v]);

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace lk
@@ -542,6 +543,17 @@ private:
 
 } // namespace
 
+std::string refinementOptionsProblem(const RefinementOptions& options)
+{
+  if (options.iterations < 1)
+    return "the refinement needs at least one iteration";
+  if (!(options.reverseWeight >= 0.0))
+    return "the reverse weight must be 0 or more";
+  if (!(options.tailWeight >= 0.0) || !(options.tailThreshold > 0.0))
+    return "the tail weight must be 0 or more and its threshold above 0";
+  return {};
+}
+
 RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>& samples,
   const RefinementOptions& options)
 {
@@ -549,16 +561,12 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     throw std::invalid_argument("the refinement needs samples of the original surface");
   if (!options.fixed.empty() && options.fixed.size() != lattice.points.size())
     throw std::invalid_argument("the fixed-vertex flags must be one per lattice vertex");
-  if (options.iterations < 1)
-    throw std::invalid_argument("the refinement needs at least one iteration");
+  const std::string problem = refinementOptionsProblem(options);
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
   for (const Vec3& p : samples)
     if (!p.allFinite())
       throw std::invalid_argument("a sample of the original surface is not finite");
-
-  if (!(options.reverseWeight >= 0.0))
-    throw std::invalid_argument("the reverse weight must be 0 or more");
-  if (!(options.tailWeight >= 0.0) || !(options.tailThreshold > 0.0))
-    throw std::invalid_argument("the tail weight must be 0 or more and its threshold above 0");
 
   LatticeSurface surface = buildLatticeSurface(lattice, options.weights); // throws for a bad lattice
   std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution);

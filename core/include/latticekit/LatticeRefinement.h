@@ -57,6 +57,7 @@
 #include "latticekit/TriangleMesh.h"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace lk
@@ -75,9 +76,9 @@ struct RefinementOptions
   /// The tail penalty mu sum max(0, d - tau)^2 (both directions, the reverse
   /// points with their weight): Metro's max is one point, which the squared
   /// sum trades for the mean. tau = tailThreshold x the samples' RMS distance
-  /// before the refinement; mu = tailWeight (0: off, the default: on the
-  /// mandibles 100 brings the max below the flat meshes' at +1 % mean, but
-  /// on the head skin it costs 12 % mean; see NOTES, issue 4).
+  /// before the refinement; mu = tailWeight (0: off, the default: it lowers
+  /// the max on the first TCIA mandible but not on the second, and costs the
+  /// head skin mean at 100; see NOTES, issue 4).
   double tailWeight = 0.0;
   double tailThreshold = 4.0;
   /// The rounding weights of the surface being fitted (LatticeSurface.h); the
@@ -94,6 +95,12 @@ struct RefinementReport
   double finalRms = 0.0;   ///< and after
   int iterations = 0;      ///< outer iterations that lowered the energy
 };
+
+/// Why `options` cannot drive a refinement, or "" when they can: the checks
+/// that need neither the lattice nor the samples (iterations, reverse weight,
+/// tail penalty). refineLatticeFit makes them too; a caller can make them
+/// before the work that comes first.
+std::string refinementOptionsProblem(const RefinementOptions& options);
 
 /// Moves the points of `lattice` in place. `samples` are points of the
 /// original surface (its vertices). Throws std::invalid_argument for a lattice
