@@ -14,7 +14,6 @@
 namespace lktest
 {
 
-/// A triangle mesh as a polygon mesh (a triangle lattice).
 /// Every edge of a triangle mesh, once, as (smaller id, larger id).
 inline std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
 {
@@ -25,6 +24,7 @@ inline std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
   return e;
 }
 
+/// A triangle mesh as a polygon mesh (a triangle lattice).
 inline lk::PolygonMesh asPolygonMesh(const lk::TriangleMesh& m)
 {
   lk::PolygonMesh p;

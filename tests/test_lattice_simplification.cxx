@@ -311,17 +311,7 @@ std::pair<double, double> overhang(const lk::LatticeSurface& s)
 // overhang back.
 TEST(LatticeRefinement, TheReverseDirectionPullsBackAnOverhang)
 {
-  lk::TriangleMesh original; // [0, 1]^2, 10 x 10 squares, 2 triangles each
-  for (int j = 0; j <= 10; ++j)
-    for (int i = 0; i <= 10; ++i)
-      original.points.emplace_back(i / 10.0, j / 10.0, 0.0);
-  for (int j = 0; j < 10; ++j)
-    for (int i = 0; i < 10; ++i)
-    {
-      const std::int64_t a = i + 11 * j;
-      original.triangles.push_back({ a, a + 1, a + 12 });
-      original.triangles.push_back({ a, a + 12, a + 11 });
-    }
+  const lk::TriangleMesh original = lktest::grid(10, 1.0, 0.0); // [0, 1]^2, 10 x 10 squares
   lk::PolygonMesh lattice; // [-0.5, 1.5]^2, 4 x 4 quads
   for (int j = 0; j <= 4; ++j)
     for (int i = 0; i <= 4; ++i)
