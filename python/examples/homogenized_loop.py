@@ -10,11 +10,10 @@ face (default weight 6). The control mesh is drawn as a wire cage.
 import sys
 
 import latticekit
-from latticekit.rendering import save_png
+from latticekit.rendering import edge_actor, save_png
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
@@ -91,15 +90,7 @@ def main(argv):
         a.SetMapper(m)
         a.GetProperty().SetColor(0.55, 0.7, 0.9)
         ren.AddActor(a)
-        edges = vtkExtractEdges()
-        edges.SetInputData(mesh)
-        em = vtkPolyDataMapper()
-        em.SetInputConnection(edges.GetOutputPort())
-        em.ScalarVisibilityOff()
-        ea = vtkActor()
-        ea.SetMapper(em)
-        ea.GetProperty().SetColor(0.1, 0.1, 0.1)
-        ren.AddActor(ea)
+        ren.AddActor(edge_actor(mesh))
         cam = ren.GetActiveCamera()
         cam.SetPosition(2.6, -1.8, 2.2)
         cam.SetFocalPoint(0.5, 0.5, 0.5)

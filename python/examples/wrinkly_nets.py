@@ -11,9 +11,8 @@ the IST (K = 0, the paper's "interpolation surface"), with the control mesh.
 import sys
 
 import latticekit
-from latticekit.rendering import save_png
+from latticekit.rendering import edge_actor, save_png
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
@@ -66,15 +65,7 @@ def main(argv):
             a.SetMapper(m)
             ren.AddActor(a)
             if row == 1:
-                edges = vtkExtractEdges()
-                edges.SetInputConnection(source.GetOutputPort())
-                em = vtkPolyDataMapper()
-                em.SetInputConnection(edges.GetOutputPort())
-                em.ScalarVisibilityOff()
-                ea = vtkActor()
-                ea.SetMapper(em)
-                ea.GetProperty().SetColor(0.1, 0.1, 0.1)
-                ren.AddActor(ea)
+                ren.AddActor(edge_actor(source.GetOutputPort()))
             cam = ren.GetActiveCamera()
             cam.SetPosition(0.4, -1.0, 1.1)
             cam.SetFocalPoint(0, 0, 0)
