@@ -60,20 +60,20 @@ vtkLKPatchDeformationFilter::~vtkLKPatchDeformationFilter()
 
 void vtkLKPatchDeformationFilter::AddFunctionalDeformation(double x, double y, double z, double k, double a, double D)
 {
-  this->Deformations.push_back({ 0, { { x, y, z, k, a, D, 0, 0, 0 } } });
+  this->Deformations.push_back({ Deformation::Functional, { { x, y, z, k, a, D, 0, 0, 0 } } });
   this->Modified();
 }
 
 void vtkLKPatchDeformationFilter::AddRangeDeformation(double xmin, double xmax, double ymin, double ymax,
   double zmin, double zmax, double dx, double dy, double dz)
 {
-  this->Deformations.push_back({ 1, { { xmin, xmax, ymin, ymax, zmin, zmax, dx, dy, dz } } });
+  this->Deformations.push_back({ Deformation::Range, { { xmin, xmax, ymin, ymax, zmin, zmax, dx, dy, dz } } });
   this->Modified();
 }
 
 void vtkLKPatchDeformationFilter::AddSmoothingDeformation(double x, double y, double z, double D, int iterations)
 {
-  this->Deformations.push_back({ 2, { { x, y, z, D, static_cast<double>(iterations), 0, 0, 0, 0 } } });
+  this->Deformations.push_back({ Deformation::Smoothing, { { x, y, z, D, static_cast<double>(iterations), 0, 0, 0, 0 } } });
   this->Modified();
 }
 
@@ -155,9 +155,9 @@ int vtkLKPatchDeformationFilter::RequestData(
           state.prefixList.assign(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(i));
         }
         const auto& p = list[i].p;
-        if (list[i].kind == 0)
+        if (list[i].kind == Deformation::Functional)
           work->functionalDeformation(lk::Vec3(p[0], p[1], p[2]), p[3], p[4], p[5], tolerance);
-        else if (list[i].kind == 1)
+        else if (list[i].kind == Deformation::Range)
           work->rangeDeformation(lk::Vec3(p[0], p[2], p[4]), lk::Vec3(p[1], p[3], p[5]), lk::Vec3(p[6], p[7], p[8]));
         else
           work->smoothingDeformation(lk::Vec3(p[0], p[1], p[2]), p[3], static_cast<int>(p[4]));

@@ -80,7 +80,13 @@ protected:
 
   struct Deformation
   {
-    int kind; ///< 0 functional, 1 range, 2 smoothing
+    enum Kind
+    {
+      Functional, ///< p: x, y, z, k, a, D
+      Range,      ///< p: xmin, xmax, ymin, ymax, zmin, zmax, dx, dy, dz
+      Smoothing   ///< p: x, y, z, D, iterations
+    };
+    Kind kind;
     std::array<double, 9> p;
     bool operator==(const Deformation& o) const { return kind == o.kind && p == o.p; }
   };
