@@ -136,6 +136,7 @@ void clearErrors()
 ProgressBar::ProgressBar(vtkAlgorithm* algorithm, const std::string& label, bool enabled)
   : label_(label)
   , enabled_(enabled)
+  , errorsAtStart_(errorCount())
   , algorithm_(algorithm)
 {
   if (!enabled_ || !algorithm_)
@@ -166,6 +167,11 @@ void ProgressBar::update(double fraction)
   {
     return;
   }
+  if (errorCount() > errorsAtStart_)
+  {
+    finished_ = true; // the error message has ended the bar's line
+    return;
+  }
   const int percent = static_cast<int>(std::lround(100.0 * std::clamp(fraction, 0.0, 1.0)));
   if (!isatty(2))
   {
@@ -192,7 +198,7 @@ void ProgressBar::update(double fraction)
 
 void ProgressBar::finish()
 {
-  if (enabled_ && !finished_)
+  if (enabled_ && !finished_ && errorCount() == errorsAtStart_)
   {
     update(1.0);
     std::cerr << std::endl;
@@ -202,6 +208,11 @@ void ProgressBar::finish()
 
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& error)
 {
+  if (vtksys::SystemTools::FileIsDirectory(path))
+  {
+    error = "cannot read '" + path + "': it is a folder, not a mesh file";
+    return nullptr;
+  }
   if (!vtksys::SystemTools::FileExists(path, true))
   {
     error = "cannot open '" + path + "': no such file";

@@ -27,18 +27,22 @@ std::string errors();
 void clearErrors();
 
 /// A progress bar on standard error, driven by an algorithm's ProgressEvent.
+/// It stops where it is at the first VTK error (the error's line ends it), so
+/// a failed run never shows 100 %.
 class ProgressBar
 {
 public:
   ProgressBar(vtkAlgorithm* algorithm, const std::string& label, bool enabled = true);
   ~ProgressBar();
   void update(double fraction);
+  /// Draws 100 % and ends the line, unless an error stopped the bar.
   void finish();
 
 private:
   std::string label_;
   bool enabled_;
   bool finished_ = false;
+  int errorsAtStart_ = 0;
   int lastDrawn_ = -1;
   vtkAlgorithm* algorithm_;
   unsigned long tag_ = 0;
