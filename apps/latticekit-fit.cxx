@@ -41,7 +41,11 @@ void usage(std::ostream& os)
         "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
         "  --refine-iterations N  outer iterations of the refinement (default 8)\n"
         "  --refine-tail MU       tail penalty of the refinement: a soft bound on the max\n"
-        "                         error, paid for in mean (default 0: off; try 100)\n"
+        "                         error, paid for in mean (default 0: off; 10 with --refine-max)\n"
+        "  --refine-max K         spend K of the lattice vertices on the largest distances:\n"
+        "                         split the edges nearest to the farthest samples, then a\n"
+        "                         second refinement pass with the tail penalty (implies\n"
+        "                         --refine; try 1 % of the vertices)\n"
         "  --surface OUT          also write the lattice surface (.vtp/.vtk/.stl/.ply/.obj/.gltf)\n"
         "  --vertex-map OUT       write MESH with LatticeFaceId, LatticeVertexId, Distance\n"
         "  --resolution N         tessellation of the surface and of the error (default 8)\n"
@@ -54,8 +58,8 @@ void usage(std::ostream& os)
 int main(int argc, char* argv[])
 {
   std::string input, output, featuresIn, surfaceOut, mapOut;
-  long vertices = 0, iterations = 8, resolution = 8;
-  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0, tail = 0.0;
+  long vertices = 0, iterations = 8, resolution = 8, insertions = 0;
+  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0, tail = -1.0; // tail < 0: not given
   bool lock = false, flat = false, quads = false, refine = false, quiet = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -87,6 +91,11 @@ int main(int argc, char* argv[])
       iterations = args.integer(a, 1, 100, "an integer from 1 to 100");
     else if (a == "--refine-tail")
       tail = args.number(a, 0.0, 1e300, "a number of at least 0");
+    else if (a == "--refine-max")
+    {
+      insertions = args.integer(a, 1, 1000000, "an integer of at least 1");
+      refine = true;
+    }
     else if (a == "--surface")
       surfaceOut = args.value(a);
     else if (a == "--vertex-map")
@@ -142,7 +151,8 @@ int main(int argc, char* argv[])
   fit->SetRoundedSurfaceQuadrics(!flat);
   fit->SetQuadPairing(quads);
   fit->SetRefinement(refine);
-  fit->SetRefinementTailWeight(tail);
+  fit->SetRefinementTailWeight(tail >= 0.0 ? tail : (insertions > 0 ? 10.0 : 0.0));
+  fit->SetRefinementInsertions(static_cast<int>(insertions));
   fit->SetRefinementIterations(static_cast<int>(iterations));
   fit->SetErrorResolution(static_cast<int>(resolution));
   {
@@ -187,9 +197,14 @@ int main(int argc, char* argv[])
     std::printf(", surface %lld (%s)", surfaceBytes, surfaceOut.c_str());
   std::printf("\n");
   if (refine)
-    std::printf("refinement       RMS distance %.4g -> %.4g in %.0f iterations\n",
+  {
+    std::printf("refinement       RMS distance %.4g -> %.4g in %.0f iterations",
       lkapp::fieldValue(lattice, "RefinementInitialRMS"), lkapp::fieldValue(lattice, "RefinementFinalRMS"),
       lkapp::fieldValue(lattice, "RefinementIterations"));
+    if (insertions > 0)
+      std::printf("; %.0f vertices inserted at the largest distances", lkapp::fieldValue(lattice, "RefinementInsertions"));
+    std::printf("\n");
+  }
   std::printf("Metro error      max %.4f %%, mean %.4f %%, RMS %.4f %% of the bounding-box diagonal (%.4g)\n",
     lkapp::fieldValue(lattice, "Hausdorff_MaxPercent"), lkapp::fieldValue(lattice, "Hausdorff_MeanPercent"),
     lkapp::fieldValue(lattice, "Hausdorff_RMSPercent"), lkapp::fieldValue(lattice, "BoundingBoxDiagonal"));

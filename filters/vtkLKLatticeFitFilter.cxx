@@ -48,6 +48,8 @@ struct Fit
   std::vector<std::int64_t> collapsedInto;
   std::size_t quads = 0;
   lk::RefinementReport refinement;
+  int insertions = 0;
+  std::size_t target = 0; ///< the vertex count asked for
 };
 
 /// The rounding weights of the lattice surface's vertices: with
@@ -156,7 +158,9 @@ int vtkLKLatticeFitFilter::RequestData(
   auto fitAt = [&](std::size_t target, double p0, double p1, Fit& fit) -> bool {
     const bool refine = this->Refinement;
     const double split = refine ? 0.5 : 0.95;
-    so.targetVertices = target;
+    const int insertions = refine ? this->RefinementInsertions : 0;
+    so.targetVertices = target - static_cast<std::size_t>(insertions);
+    fit.target = target;
     so.progress = [&](double f) {
       this->UpdateProgress(p0 + (p1 - p0) * split * f);
       return !this->GetAbortExecute();
@@ -192,11 +196,32 @@ int vtkLKLatticeFitFilter::RequestData(
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
       ro.weights.vertex = surfaceVertexWeights(fit, this->InterpolateFeatures); // the surface the output describes
+      // With insertions: a first pass without the tail penalty, the new
+      // vertices, then a second pass of half the iterations with it.
+      const double firstShare = insertions > 0 ? 2.0 / 3.0 : 1.0;
+      if (insertions > 0)
+        ro.tailWeight = 0.0;
       ro.progress = [&](double f) {
-        this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * f));
+        this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * firstShare * f));
         return !this->GetAbortExecute();
       };
       fit.refinement = lk::refineLatticeFit(fit.lattice, samples, ro);
+      fit.insertions = 0;
+      if (insertions > 0 && !this->GetAbortExecute())
+      {
+        std::vector<lk::EdgeKey> keep(fit.features.begin(), fit.features.end());
+        fit.insertions =
+          lk::insertVerticesAtLargestDistances(fit.lattice, samples, insertions, keep, ro.weights, ro.fixed);
+        ro.iterations = std::max(1, this->RefinementIterations / 2);
+        ro.tailWeight = this->RefinementTailWeight;
+        ro.progress = [&](double f) {
+          this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * (firstShare + (1.0 - firstShare) * f)));
+          return !this->GetAbortExecute();
+        };
+        const lk::RefinementReport second = lk::refineLatticeFit(fit.lattice, samples, ro);
+        fit.refinement.finalRms = second.finalRms;
+        fit.refinement.iterations += second.iterations;
+      }
     }
     return !this->GetAbortExecute();
   };
@@ -287,6 +312,12 @@ int vtkLKLatticeFitFilter::RequestData(
           << target << " vertices is not below the input's " << inputVertices << " vertices.");
         return 0;
       }
+      if (this->Refinement && target - this->RefinementInsertions < 4)
+      {
+        vtkErrorMacro("Cannot fit a lattice: " << this->RefinementInsertions << " insertions leave fewer than 4 of the "
+                                               << target << " vertices to the simplification.");
+        return 0;
+      }
       if (!fitAt(static_cast<std::size_t>(target), 0.0, 0.9, fit))
       {
         vtkWarningMacro("Aborted.");
@@ -296,7 +327,14 @@ int vtkLKLatticeFitFilter::RequestData(
     else
     {
       // Bisection on the vertex count: the fewest vertices within the bound.
-      std::size_t lo = 4, hi = static_cast<std::size_t>(inputVertices) - 1;
+      std::size_t lo = 4 + static_cast<std::size_t>(this->Refinement ? this->RefinementInsertions : 0),
+                  hi = static_cast<std::size_t>(inputVertices) - 1;
+      if (lo > hi)
+      {
+        vtkErrorMacro("Cannot fit a lattice: " << this->RefinementInsertions << " insertions leave fewer than 4 of the "
+                                               << hi << " vertices to the simplification.");
+        return 0;
+      }
       bool found = false;
       Fit trial;
       vtkNew<vtkPolyData> pd;
@@ -323,7 +361,7 @@ int vtkLKLatticeFitFilter::RequestData(
           lo = mid + 1;
         ++step;
       }
-      if (!found || fit.lattice.points.size() != hi)
+      if (!found || fit.target != hi)
       {
         if (!fitAt(hi, 0.85, 0.9, fit))
           return 1;
@@ -347,6 +385,7 @@ int vtkLKLatticeFitFilter::RequestData(
     addValue(fd, "RefinementInitialRMS", fit.refinement.initialRms);
     addValue(fd, "RefinementFinalRMS", fit.refinement.finalRms);
     addValue(fd, "RefinementIterations", fit.refinement.iterations);
+    addValue(fd, "RefinementInsertions", fit.insertions);
   }
 
   vertexMap->ShallowCopy(input);
@@ -417,5 +456,6 @@ void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Refinement: " << this->Refinement << " (" << this->RefinementIterations << " iterations)\n";
   os << indent << "RefinementTailWeight: " << this->RefinementTailWeight << " (threshold "
      << this->RefinementTailThreshold << ")\n";
+  os << indent << "RefinementInsertions: " << this->RefinementInsertions << "\n";
   os << indent << "ComputeError: " << this->ComputeError << " (resolution " << this->ErrorResolution << ")\n";
 }

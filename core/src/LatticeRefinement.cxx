@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -699,6 +701,130 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   }
   report.finalRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   return report;
+}
+
+} // namespace lk
+
+namespace lk
+{
+
+int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec3>& samples, int count,
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& keep, LatticeWeights& weights,
+  std::vector<char>& fixed, int locatorResolution)
+{
+  if (count <= 0)
+    return 0;
+  if (samples.empty())
+    throw std::invalid_argument("the insertions need samples of the original surface");
+  if (!fixed.empty() && fixed.size() != lattice.points.size())
+    throw std::invalid_argument("the fixed-vertex flags must be one per lattice vertex");
+  const LatticeSurface surface = buildLatticeSurface(lattice, weights); // throws for a bad lattice
+  const std::vector<Foot> feet = footPoints(surface, samples, locatorResolution);
+
+  using Edge = std::pair<std::int64_t, std::int64_t>;
+  auto key = [](std::int64_t a, std::int64_t b) { return a < b ? Edge(a, b) : Edge(b, a); };
+  std::set<Edge> kept;
+  for (const auto& e : keep)
+    kept.insert(key(e.first, e.second));
+  for (const auto& ew : weights.edge)
+    kept.insert(key(ew.first.first, ew.first.second));
+  // Directed edge -> its face; and the mean edge length.
+  std::map<Edge, std::size_t> faceOf;
+  double length = 0.0;
+  std::size_t edges = 0;
+  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+  {
+    const auto& face = lattice.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto a = face[i], b = face[(i + 1) % face.size()];
+      faceOf[{ a, b }] = f;
+      length += (lattice.points[static_cast<std::size_t>(a)] - lattice.points[static_cast<std::size_t>(b)]).norm();
+      ++edges;
+    }
+  }
+  const double spacing = 2.0 * length / static_cast<double>(std::max<std::size_t>(1, edges));
+
+  std::vector<std::size_t> order(samples.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    return feet[x].distance > feet[y].distance || (feet[x].distance == feet[y].distance && x < y);
+  });
+  std::vector<Vec3> chosen;
+  std::set<std::size_t> used; // faces split already (their foot points are stale)
+  int inserted = 0;
+  for (const std::size_t s : order)
+  {
+    if (inserted == count)
+      break;
+    const auto f = static_cast<std::size_t>(surface.patchFace[feet[s].patch]);
+    if (used.count(f) || lattice.faces[f].size() != 3)
+      continue;
+    bool apart = true;
+    for (const Vec3& c : chosen)
+      apart = apart && (c - samples[s]).norm() >= spacing;
+    if (!apart)
+      continue;
+    // The splittable edge of f whose midpoint is nearest to the sample.
+    const std::vector<std::int64_t> face = lattice.faces[f];
+    std::size_t best = 3, g = 0;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+      const auto a = face[i], b = face[(i + 1) % 3];
+      const auto twin = faceOf.find({ b, a });
+      if (kept.count(key(a, b)) || twin == faceOf.end() || used.count(twin->second) ||
+        lattice.faces[twin->second].size() != 3)
+        continue;
+      const Vec3 mid = 0.5 * (lattice.points[static_cast<std::size_t>(a)] + lattice.points[static_cast<std::size_t>(b)]);
+      const double d = (mid - samples[s]).squaredNorm();
+      if (d < bestDistance)
+      {
+        bestDistance = d;
+        best = i;
+        g = twin->second;
+      }
+    }
+    if (best == 3)
+      continue;
+    const std::int64_t a = face[best], b = face[(best + 1) % 3], c = face[(best + 2) % 3];
+    const auto& other = lattice.faces[g];
+    std::int64_t d = -1;
+    for (std::size_t j = 0; j < 3; ++j)
+      if (other[j] != a && other[j] != b)
+        d = other[j];
+    // (a, b, c) and (b, a, d) become (a, m, c), (m, b, c), (b, m, d), (m, a, d).
+    const auto m = static_cast<std::int64_t>(lattice.points.size());
+    lattice.points.push_back(0.5 * (lattice.points[static_cast<std::size_t>(a)] + lattice.points[static_cast<std::size_t>(b)]));
+    if (!weights.vertex.empty())
+      weights.vertex.push_back(1.0);
+    if (!fixed.empty())
+      fixed.push_back(0);
+    const std::size_t f2 = lattice.faces.size(), g2 = f2 + 1;
+    lattice.faces[f] = { a, m, c };
+    lattice.faces[g] = { b, m, d };
+    lattice.faces.push_back({ m, b, c });
+    lattice.faces.push_back({ m, a, d });
+    faceOf.erase({ a, b });
+    faceOf.erase({ b, a });
+    faceOf[{ a, m }] = f;
+    faceOf[{ m, c }] = f;
+    faceOf[{ c, a }] = f;
+    faceOf[{ b, m }] = g;
+    faceOf[{ m, d }] = g;
+    faceOf[{ d, b }] = g;
+    faceOf[{ m, b }] = f2;
+    faceOf[{ b, c }] = f2;
+    faceOf[{ c, m }] = f2;
+    faceOf[{ m, a }] = g2;
+    faceOf[{ a, d }] = g2;
+    faceOf[{ d, m }] = g2;
+    used.insert({ f, g, f2, g2 });
+    chosen.push_back(samples[s]);
+    ++inserted;
+  }
+  return inserted;
 }
 
 } // namespace lk

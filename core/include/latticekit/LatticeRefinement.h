@@ -108,4 +108,21 @@ std::string refinementOptionsProblem(const RefinementOptions& options);
 RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>& samples,
   const RefinementOptions& options);
 
+/// Vertices for the largest distances (beyond the paper). Metro's max is one
+/// point, typically where the original has a detail narrower than the lattice
+/// spacing (a thin process, a concave slice step), which a G1 surface rounds
+/// off and a flat mesh can put a vertex on. Each of the `count` samples
+/// farthest from the lattice surface (each in a different face, none closer
+/// than twice the mean lattice edge length to another) gets a new lattice
+/// vertex: the edge of its foot point's triangle nearest to it is split at
+/// its midpoint. Never split: edges in `keep` (features), edges with a
+/// rounding weight, border edges and edges of quads. A refinement with the
+/// tail penalty then spends the new vertices on those places (the fit filter's
+/// RefinementInsertions). `weights.vertex` and `fixed`, when not empty, grow
+/// by 1 and 0 per new vertex. Returns the vertices inserted: fewer than
+/// `count` where no edge qualifies.
+int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec3>& samples, int count,
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& keep, LatticeWeights& weights,
+  std::vector<char>& fixed, int locatorResolution = 4);
+
 } // namespace lk
