@@ -377,19 +377,38 @@ TEST(LatticeRefinement, FitsTheSurfaceOfTheGivenRoundingWeights)
   EXPECT_LT(after.first, 0.8 * wrong.first);
 }
 
+namespace
+{
+/// A sphere of radius 10 (icosphere, 2,562 vertices) with vertex 17 moved
+/// `height` out, and the 200-vertex lattice of the smooth sphere, so no
+/// lattice vertex sits on the spike.
+struct SpikeSphere
+{
+  static constexpr std::size_t spike = 17;
+  lk::TriangleMesh sphere;
+  lk::PolygonMesh start;
+
+  explicit SpikeSphere(double height)
+  {
+    const double radius = 10.0;
+    sphere = lktest::icosphere(4, radius);
+    lk::SimplificationOptions o;
+    o.targetVertices = 200;
+    start = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
+    sphere.points[spike] *= (radius + height) / radius;
+  }
+};
+} // namespace
+
 TEST(LatticeRefinement, TheTailPenaltyPullsInTheLargestError)
 {
   // A sphere with one sharp spike (a vertex 0.6 out), like the tip that sets
   // Metro's max on the mandible: the squared sum alone leaves the spike far
   // from the surface; the tail penalty pulls it in.
-  const double radius = 10.0;
-  lk::TriangleMesh sphere = lktest::icosphere(4, radius);
-  lk::SimplificationOptions o;
-  o.targetVertices = 200;
-  // The lattice of the smooth sphere, so no lattice vertex sits on the spike.
-  const lk::PolygonMesh start = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
-  const std::size_t spike = 17;
-  sphere.points[spike] *= (radius + 0.6) / radius;
+  const SpikeSphere s(0.6);
+  const lk::TriangleMesh& sphere = s.sphere;
+  const lk::PolygonMesh& start = s.start;
+  const std::size_t spike = SpikeSphere::spike;
   auto fitted = [&](double tailWeight) {
     lk::PolygonMesh lattice = start;
     lk::RefinementOptions ro;
@@ -427,13 +446,10 @@ TEST(LatticeRefinement, AVertexInsertedAtTheLargestDistanceTakesTheSpike)
   // surface far closer to the spike than the tail penalty alone can with the
   // vertices it has (0.020 against 0.366; with 8 or 16 iterations 0.175
   // against 0.269, 0.116 against 0.233).
-  const double radius = 10.0;
-  lk::TriangleMesh sphere = lktest::icosphere(4, radius);
-  lk::SimplificationOptions o;
-  o.targetVertices = 200;
-  const lk::PolygonMesh start = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
-  const std::size_t spike = 17;
-  sphere.points[spike] *= (radius + 2.0) / radius;
+  const SpikeSphere spiked(2.0);
+  const lk::TriangleMesh& sphere = spiked.sphere;
+  const lk::PolygonMesh& start = spiked.start;
+  const std::size_t spike = SpikeSphere::spike;
   auto spikeDistance = [&](const lk::PolygonMesh& lattice) {
     const lk::LatticeSurface s = lk::buildLatticeSurface(lattice);
     return lk::LatticeSurfaceLocator(s).closest(sphere.points[spike]).distance;
