@@ -211,7 +211,8 @@ int vtkLKLatticeFitFilter::RequestData(
       {
         std::vector<lk::EdgeKey> keep(fit.features.begin(), fit.features.end());
         fit.insertions =
-          lk::insertVerticesAtLargestDistances(fit.lattice, samples, insertions, keep, ro.weights, ro.fixed);
+          lk::insertVerticesAtLargestDistances(
+          fit.lattice, samples, insertions, keep, ro.weights, ro.fixed, ro.locatorResolution);
         ro.iterations = std::max(1, this->RefinementIterations / 2);
         ro.tailWeight = this->RefinementTailWeight;
         ro.progress = [&](double f) {

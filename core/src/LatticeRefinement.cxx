@@ -2,6 +2,7 @@
 
 #include "latticekit/LatticeSurface.h"
 #include "latticekit/ClosestPointTree.h"
+#include "latticekit/LatticeSimplification.h"
 
 #include <ceres/ceres.h>
 #include <Eigen/QR>
@@ -703,11 +704,6 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   return report;
 }
 
-} // namespace lk
-
-namespace lk
-{
-
 int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec3>& samples, int count,
   const std::vector<std::pair<std::int64_t, std::int64_t>>& keep, LatticeWeights& weights,
   std::vector<char>& fixed, int locatorResolution)
@@ -721,27 +717,28 @@ int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec
   const LatticeSurface surface = buildLatticeSurface(lattice, weights); // throws for a bad lattice
   const std::vector<Foot> feet = footPoints(surface, samples, locatorResolution);
 
-  using Edge = std::pair<std::int64_t, std::int64_t>;
-  auto key = [](std::int64_t a, std::int64_t b) { return a < b ? Edge(a, b) : Edge(b, a); };
-  std::set<Edge> kept;
+  std::set<EdgeKey> kept;
   for (const auto& e : keep)
-    kept.insert(key(e.first, e.second));
+    kept.insert(edgeKey(e.first, e.second));
   for (const auto& ew : weights.edge)
-    kept.insert(key(ew.first.first, ew.first.second));
+    kept.insert(edgeKey(ew.first.first, ew.first.second));
   // Directed edge -> its face; and the mean edge length.
-  std::map<Edge, std::size_t> faceOf;
+  std::map<EdgeKey, std::size_t> faceOf;
+  auto index = [&](std::size_t f) {
+    const auto& face = lattice.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i)
+      faceOf[{ face[i], face[(i + 1) % face.size()] }] = f;
+  };
   double length = 0.0;
   std::size_t edges = 0;
   for (std::size_t f = 0; f < lattice.faces.size(); ++f)
   {
+    index(f);
     const auto& face = lattice.faces[f];
     for (std::size_t i = 0; i < face.size(); ++i)
-    {
-      const auto a = face[i], b = face[(i + 1) % face.size()];
-      faceOf[{ a, b }] = f;
-      length += (lattice.points[static_cast<std::size_t>(a)] - lattice.points[static_cast<std::size_t>(b)]).norm();
-      ++edges;
-    }
+      length += (lattice.points[static_cast<std::size_t>(face[i])] -
+        lattice.points[static_cast<std::size_t>(face[(i + 1) % face.size()])]).norm();
+    edges += face.size();
   }
   const double spacing = 2.0 * length / static_cast<double>(std::max<std::size_t>(1, edges));
 
@@ -774,7 +771,7 @@ int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec
     {
       const auto a = face[i], b = face[(i + 1) % 3];
       const auto twin = faceOf.find({ b, a });
-      if (kept.count(key(a, b)) || twin == faceOf.end() || used.count(twin->second) ||
+      if (kept.count(edgeKey(a, b)) || twin == faceOf.end() || used.count(twin->second) ||
         lattice.faces[twin->second].size() != 3)
         continue;
       const Vec3 mid = 0.5 * (lattice.points[static_cast<std::size_t>(a)] + lattice.points[static_cast<std::size_t>(b)]);
@@ -808,18 +805,8 @@ int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec
     lattice.faces.push_back({ m, a, d });
     faceOf.erase({ a, b });
     faceOf.erase({ b, a });
-    faceOf[{ a, m }] = f;
-    faceOf[{ m, c }] = f;
-    faceOf[{ c, a }] = f;
-    faceOf[{ b, m }] = g;
-    faceOf[{ m, d }] = g;
-    faceOf[{ d, b }] = g;
-    faceOf[{ m, b }] = f2;
-    faceOf[{ b, c }] = f2;
-    faceOf[{ c, m }] = f2;
-    faceOf[{ m, a }] = g2;
-    faceOf[{ a, d }] = g2;
-    faceOf[{ d, m }] = g2;
+    for (const std::size_t changed : { f, g, f2, g2 })
+      index(changed);
     used.insert({ f, g, f2, g2 });
     chosen.push_back(samples[s]);
     ++inserted;
