@@ -37,6 +37,9 @@ void usage(std::ostream& os)
         "  --no-label-map     never treat the input as a label map\n"
         "  --series I         DICOM: read series I of the folder (0 = largest, the default)\n"
         "  --slice-spacing H  DICOM: resampled slice spacing in mm (default: smallest gap)\n"
+        "  --fill-cavities    fill enclosed air (in 3D or within a slice) first: the outer\n"
+        "                     surface only, e.g. the skin at --iso -400 without sinuses,\n"
+        "                     airway and mouth\n"
         "  --no-repair        skip the manifold repair\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
@@ -51,7 +54,7 @@ int main(int argc, char* argv[])
   double sliceSpacing = 0.0;
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
   int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
-  bool repair = true, quiet = false;
+  bool repair = true, quiet = false, fillCavities = false;
   lkapp::Arguments args(argc, argv, usage);
   const double inf = std::numeric_limits<double>::max();
   std::string a;
@@ -82,6 +85,8 @@ int main(int argc, char* argv[])
       series = args.integer(a, 0, std::numeric_limits<long>::max(), "an integer >= 0");
     else if (a == "--slice-spacing")
       sliceSpacing = args.number(a, std::numeric_limits<double>::min(), inf, "a positive number");
+    else if (a == "--fill-cavities")
+      fillCavities = true;
     else if (a == "--no-repair")
       repair = false;
     else if (a == "-q" || a == "--quiet")
@@ -124,6 +129,7 @@ int main(int argc, char* argv[])
   surface->SetSeedPoint(seed);
   surface->SetLabelMapMode(labelMode);
   surface->SetRepair(repair);
+  surface->SetFillCavities(fillCavities);
   {
     lkapp::ProgressBar bar(surface, "surface", !quiet);
     surface->Update();

@@ -2,6 +2,9 @@
 
 #include "vtkLKMeshRepairFilter.h"
 
+#include "latticekit/CavityFill.h"
+
+
 #include <vtkCallbackCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -25,6 +28,7 @@
 #include <vtkWindowedSincPolyDataFilter.h>
 
 #include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkLKBoneSurfaceFilter);
 
@@ -116,6 +120,7 @@ void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "ImageSmoothing: " << this->ImageSmoothing << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "FillCavities: " << this->FillCavities << "\n";
   os << indent << "ExtractionMode: " << this->ExtractionMode << "\n";
   os << indent << "SeedPoint: " << this->SeedPoint[0] << " " << this->SeedPoint[1] << " "
      << this->SeedPoint[2] << "\n";
@@ -207,6 +212,25 @@ int vtkLKBoneSurfaceFilter::RequestData(
   if (this->GetAbortExecute())
   {
     return 1;
+  }
+
+  if (this->FillCavities)
+  {
+    // Enclosed low voxels take the largest value: only the outer surface remains.
+    vtkNew<vtkImageData> filled;
+    filled->DeepCopy(smoothed);
+    vtkDataArray* scalars = filled->GetPointData()->GetScalars();
+    const vtkIdType n = scalars->GetNumberOfTuples();
+    std::vector<char> low(static_cast<std::size_t>(n));
+    for (vtkIdType v = 0; v < n; ++v)
+      low[static_cast<std::size_t>(v)] = scalars->GetComponent(v, 0) < this->EffectiveIsoValue;
+    const std::vector<char> enclosed = lk::enclosedBackground(low, dims[0], dims[1], dims[2], true);
+    const double top = scalars->GetRange(0)[1];
+    for (vtkIdType v = 0; v < n; ++v)
+      if (enclosed[static_cast<std::size_t>(v)])
+        scalars->SetComponent(v, 0, top);
+    scalars->Modified();
+    smoothed = filled;
   }
 
   vtkNew<vtkFlyingEdges3D> contour;
