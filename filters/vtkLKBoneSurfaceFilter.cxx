@@ -4,7 +4,6 @@
 
 #include "latticekit/CavityFill.h"
 
-
 #include <vtkCallbackCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
