@@ -509,6 +509,85 @@ TEST(LatticeSurface, NoPatchFoldsInside)
   }
 }
 
+TEST(LatticeSurface, CrumpledLatticeStaysNearItsControlPoints)
+{
+  // Three vertex stars of a 1,000-vertex lattice fitted to the bundled CT
+  // head's -400 HU surface (genus 253, crumpled at that size), coordinates in
+  // mm around the centre of face { 3, 14, 35 }, rounded to 0.01. Vertices 9
+  // and 41 coincide: the stars pinch there and the copy keeps them a
+  // manifold. The three stars hold every face that face's patches depend on.
+  // Its edge-curve midpoint lies almost along its own normal from the face
+  // centre, so the plain projection left the inner curve a start tangent 2 %
+  // of its length; the cross-boundary derivative fitted to it blew up and the
+  // patches grew a spike 42 mm out of the lattice's bounding box (diagonal
+  // 108 mm). The inner curves' tangents now have a floor, like the edge curves'.
+  const double points[][3] = {
+    { 2.93, -6.6, 31.06 }, { 2.25, -35.39, 51.27 }, { -0.82, -1.15, 28.48 }, { -7.48, -8.53, 6.4 },
+    { 0.33, -4.07, 31.19 }, { 1.23, -2.55, 34.54 }, { -2.13, -2.16, 27.35 }, { -12.85, -11.35, 14.72 },
+    { -8.08, -12.71, 7.96 }, { -13.21, -9.5, 2.26 }, { 6.08, -8.21, 36.54 }, { -6.67, -4.6, 34.86 },
+    { -7, -14.02, 33.89 }, { -13.79, 0.44, 15.57 }, { -11.7, 5.37, 19.38 }, { -11.32, -1.34, 31.66 },
+    { -10.28, 4.33, 11.88 }, { -15.51, 3.44, 26 }, { -10.49, -6.13, 2.67 }, { -2.63, 6.16, 24.77 },
+    { -7.2, 10.45, 28.85 }, { -3.05, 5.45, 33.54 }, { -13.36, -2.03, 6.93 }, { -0.98, 5.42, 29.24 },
+    { 4.45, 3.37, 32.92 }, { -13.8, 13.22, 16.64 }, { -6.56, 6.5, 38.41 }, { 3.84, 2.09, 39.53 },
+    { -11.85, 11.79, 20.04 }, { -8.44, 5.26, 17.81 }, { -9.68, 10.8, 23.02 }, { -14.5, 6.79, 10.43 },
+    { -19.14, -1.7, -6.76 }, { -12.9, 8.62, 19.96 }, { -20.41, 2.46, -30.52 }, { 19.18, 3.17, -25.78 },
+    { -20.71, -12.79, -8.51 }, { -6.84, -2.51, -1.3 }, { -16.59, 0.08, -13.51 }, { -9.66, -3.2, -13.15 },
+    { -8.72, 23.31, 14.22 }, { -13.21, -9.5, 2.26 }
+  };
+  const int faces[][3] = {
+    { 35, 34, 36 }, { 34, 35, 39 }, { 35, 38, 39 }, { 35, 32, 38 }, { 40, 32, 35 }, { 9, 35, 36 },
+    { 35, 37, 40 }, { 35, 18, 37 }, { 22, 18, 35 }, { 13, 3, 41 }, { 9, 12, 35 }, { 3, 35, 12 },
+    { 3, 14, 35 }, { 14, 22, 35 }, { 41, 3, 0 }, { 13, 16, 3 }, { 7, 3, 17 }, { 17, 3, 16 },
+    { 22, 14, 33 }, { 14, 30, 31 }, { 31, 33, 14 }, { 8, 3, 15 }, { 3, 8, 1 }, { 3, 7, 15 },
+    { 30, 14, 29 }, { 25, 29, 14 }, { 0, 3, 2 }, { 12, 2, 3 }, { 14, 3, 1 }, { 25, 14, 28 },
+    { 14, 19, 28 }, { 14, 23, 19 }, { 20, 14, 1 }, { 14, 20, 21 }, { 6, 14, 5 }, { 14, 4, 5 },
+    { 23, 14, 27 }, { 11, 4, 14 }, { 14, 26, 11 }, { 10, 26, 14 }, { 14, 21, 10 }, { 14, 6, 24 },
+    { 14, 24, 27 }
+  };
+  lk::PolygonMesh m;
+  for (const auto& p : points)
+  {
+    m.points.emplace_back(p[0], p[1], p[2]);
+  }
+  for (const auto& f : faces)
+  {
+    m.faces.push_back({ f[0], f[1], f[2] });
+  }
+  lk::Vec3 lo = m.points[0], hi = m.points[0];
+  for (const lk::Vec3& p : m.points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double diagonal = (hi - lo).norm();
+  const lk::LatticeSurface s = build(m);
+  double beyond = 0.0;
+  for (const auto& patch : s.patches)
+  {
+    for (int i = 0; i <= 16; ++i)
+    {
+      for (int j = 0; j <= 16; ++j)
+      {
+        const lk::Vec3 x = patch.evaluate(i / 16.0, j / 16.0);
+        beyond = std::max({ beyond, (lo - x).maxCoeff(), (x - hi).maxCoeff() });
+      }
+    }
+  }
+  std::printf("beyond the lattice's bounding box: %.3f mm (diagonal %.1f mm)\n", beyond, diagonal);
+  EXPECT_LT(beyond, 0.02 * diagonal);
+  // Tangent planes still agree along every curve (G1), but this crumpled
+  // region turns some patches over (normals opposite across a curve), as the
+  // lattice itself folds there: compare the planes, not the orientations.
+  double gap = 0.0, planeAngle = 0.0;
+  forEachCoincidentPair(sideSamples(s), diagonal, [&](const Sample& x, const Sample& y) {
+    gap = std::max(gap, (x.p - y.p).norm());
+    planeAngle = std::max(planeAngle, std::min(normalAngle(x, y), M_PI - normalAngle(x, y)));
+  });
+  std::printf("gap %.2e, worst angle between tangent planes %.2e rad\n", gap, planeAngle);
+  EXPECT_LT(gap, 1e-9 * diagonal);
+  EXPECT_LT(planeAngle, 1e-6);
+}
+
 TEST(LatticeWeights, EdgeWeightsTightenTheRoundingContinuouslyAndStayG1)
 {
   // Octahedron: edge (0, 2) with falling weights. Its curve's midpoint moves

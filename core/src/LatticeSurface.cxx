@@ -598,8 +598,17 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       {
         nm = -nm;
       }
+      // The inner curve's end tangents get the edge curves' floor (a sixth of
+      // the chord): on a crumpled lattice the centre can lie almost along the
+      // midpoint's normal, and a plain projection then leaves a start tangent
+      // a few % of the chord long. The cross-boundary derivative fitted to
+      // such a short tangent (crossDerivative) grows without bound, and the
+      // patches beside it spike far out of the lattice.
       Curve c;
-      c.X = { M, M + projectOnPlane((centre - M) / 3.0, nm), centre + projectOnPlane((M - centre) / 3.0, nc), centre };
+      const Vec3 toCentre = centre - M;
+      const double floor = toCentre.norm() / 6.0;
+      c.X = { M, M + tangentInPlane(toCentre / 3.0, nm, toCentre, floor),
+        centre + tangentInPlane(-toCentre / 3.0, nc, -toCentre, floor), centre };
       c.b0 = nm.cross(unit(c.X[1] - c.X[0], "an inner curve has no tangent at its midpoint end"));
       c.b1 = nc.cross(unit(c.X[3] - c.X[2], "an inner curve has no tangent at the face centre"));
       inner[i] = c;
