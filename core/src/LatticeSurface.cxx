@@ -22,12 +22,25 @@ struct Curve
   Vec3 b0, b1;
 
   Curve reversed() const { return { { X[3], X[2], X[1], X[0] }, b1, b0 }; }
-  /// The halves at t = 1/2 (de Casteljau); b is restricted with the curve.
-  std::pair<Curve, Curve> split() const
+  /// The halves at t = 1/2 (de Casteljau); b is restricted with the curve:
+  /// the midpoint's b is the mean of the ends'. With `floorMid`, a mean
+  /// shorter than half the ends' mean length is lengthened to that: where
+  /// the tangent planes at the ends are turned against each other (b0 and b1
+  /// more than 120 degrees apart, on a crumpled lattice) the mean is nearly
+  /// zero, the k(t) fitted to it grows without bound and the patches spike.
+  /// The direction, hence the midpoint's tangent plane, is unchanged, and
+  /// both faces of the edge split it alike, so G1 holds; an edge beside a
+  /// quad must not use it (the quad's patch uses the whole curve's linear b).
+  std::pair<Curve, Curve> split(bool floorMid) const
   {
     const Vec3 a = 0.5 * (X[0] + X[1]), b = 0.5 * (X[1] + X[2]), c = 0.5 * (X[2] + X[3]);
     const Vec3 d = 0.5 * (a + b), e = 0.5 * (b + c), m = 0.5 * (d + e);
-    const Vec3 bm = 0.5 * (b0 + b1);
+    Vec3 bm = 0.5 * (b0 + b1);
+    const double floor = 0.25 * (b0.norm() + b1.norm());
+    if (floorMid && bm.norm() > 0.0 && bm.norm() < floor)
+    {
+      bm *= floor / bm.norm();
+    }
     return { Curve{ { X[0], a, d, m }, b0, bm }, Curve{ { m, e, c, X[3] }, bm, b1 } };
   }
 };
@@ -567,7 +580,13 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
     for (std::size_t i = 0; i < n; ++i)
     {
       // The edge's own direction decides the midpoint data, so both faces agree.
-      const auto halves = sideCurve(face[i], face[(i + 1) % n], f).split();
+      const Key key{ std::min(face[i], face[(i + 1) % n]), std::max(face[i], face[(i + 1) % n]) };
+      bool quadBeside = false;
+      for (const auto& [g, corner] : edgeFaces.at(key))
+      {
+        quadBeside = quadBeside || lattice.faces[g].size() == 4;
+      }
+      const auto halves = sideCurve(face[i], face[(i + 1) % n], f).split(!quadBeside);
       firstHalf[i] = halves.first;   // V_i -> M_i
       secondHalf[i] = halves.second; // M_i -> V_{i+1}
     }
