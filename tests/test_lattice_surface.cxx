@@ -527,7 +527,8 @@ lk::PolygonMesh triangleLattice(const double (&points)[P][3], const int (&faces)
 }
 
 /// Three vertex stars of the 1,000-vertex lattice fitted to the bundled CT
-/// head's -400 HU surface (genus 253, crumpled at that size), coordinates in
+/// head's -400 HU surface (genus 253, crumpled at that size) or of a refined
+/// lattice of its outer skin (bench_fit's models), coordinates in
 /// mm around one face's centre, rounded to 0.01. The stars of a face's three
 /// vertices hold every lattice face its patches depend on, so those patches
 /// are the full lattice's. Where the stars pinch, the pinched vertex has a
@@ -593,11 +594,31 @@ lk::PolygonMesh crumpledStarsTwistedEdge()
   return triangleLattice(points, faces);
 }
 
+/// The same from the outer skin's refined 2,000-vertex lattice, face
+/// { 3, 6, 5 }: eq. 2.2 gave an edge curve end tangents longer than its
+/// chord, the curve all but stopped at its midpoint (C'(1/2) nearly zero),
+/// and a split patch fitted to it reached 4.6 times its corners'
+/// extent.
+lk::PolygonMesh crumpledStarsLongTangents()
+{
+  const double points[][3] = {
+    { -15.91, 15.84, -9.96 }, { -16.37, 19.24, -5.96 }, { -6.11, 4.56, -10.2 }, { -2.6, 2.21, -0.65 },
+    { -4.58, 10.68, 2.77 }, { -4.48, 3.99, -2.41 }, { 7.08, -6.2, 3.07 }, { 6.41, -6.93, -3.8 },
+    { -1.56, 8.19, 2.56 }, { 4.51, 0.14, 6.17 }, { 15.76, -12.44, -0.83 }, { 8.25, -3.72, 7.73 },
+    { 16.63, -10.14, 8.27 }
+  };
+  const int faces[][3] = {
+    { 2, 3, 0 }, { 2, 7, 3 }, { 1, 0, 3 }, { 6, 7, 10 }, { 4, 1, 3 }, { 6, 3, 7 }, { 3, 6, 5 },
+    { 3, 5, 4 }, { 5, 8, 4 }, { 10, 12, 6 }, { 8, 5, 9 }, { 12, 11, 6 }, { 6, 11, 5 }, { 11, 9, 5 }
+  };
+  return triangleLattice(points, faces);
+}
+
 TEST(LatticeSurface, CrumpledLatticesStayNearTheirControlPoints)
 {
   for (const auto& [name, m] : { std::pair<std::string, lk::PolygonMesh>{ "short inner tangent",
                                    crumpledStarsShortInnerTangent() },
-         { "twisted edge", crumpledStarsTwistedEdge() } })
+         { "twisted edge", crumpledStarsTwistedEdge() }, { "long tangents", crumpledStarsLongTangents() } })
   {
     const lk::LatticeSurface s = build(m);
     // How far each patch reaches from its corners' centre, against the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <map>
 #include <stdexcept>
@@ -51,13 +52,20 @@ Vec3 projectOnPlane(const Vec3& v, const Vec3& n)
 }
 
 /// The direction of t projected into the plane, with t's own length but at
-/// least minLength (direction of the projected chord when t vanishes). A
-/// plain projection can leave a tangent that points mostly along the normal
-/// nearly zero long, and eq. 2.2 itself gives an almost zero tangent where two
-/// large faces dominate a vertex (Q is then nearly V'). Such tangents distort
-/// the patches beside them until they fold. On a regular grid eq. 2.2 gives a
-/// third of the chord, so the floor (a sixth) leaves it alone.
-Vec3 tangentInPlane(const Vec3& t, const Vec3& n, const Vec3& chord, double minLength)
+/// least minLength (direction of the projected chord when t vanishes) and at
+/// most maxLength. A plain projection can leave a tangent that points mostly
+/// along the normal nearly zero long, and eq. 2.2 itself gives an almost zero
+/// tangent where two large faces dominate a vertex (Q is then nearly V').
+/// Such tangents distort the patches beside them until they fold. On a
+/// crumpled lattice eq. 2.2 can also give tangents longer than the chord; two
+/// of them along the chord stop the curve at its midpoint (C'(1/2) =
+/// 3/4 (2 chord + t1 - t0) vanishes), and the split patches, whose
+/// cross-boundary derivative is fitted to C'(1/2), spike. The edge curves
+/// cap their tangents at 3/4 of the chord, which keeps |C'(1/2)| at least
+/// 3/8 of it. On a regular grid eq. 2.2 gives a third of the chord, so the
+/// floor (a sixth) and the cap leave it alone.
+Vec3 tangentInPlane(const Vec3& t, const Vec3& n, const Vec3& chord, double minLength,
+  double maxLength = std::numeric_limits<double>::infinity())
 {
   Vec3 p = projectOnPlane(t, n);
   double len = p.norm();
@@ -70,7 +78,7 @@ Vec3 tangentInPlane(const Vec3& t, const Vec3& n, const Vec3& chord, double minL
   {
     return p;
   }
-  return p * (std::max(t.norm(), minLength) / len);
+  return p * (std::clamp(t.norm(), minLength, std::max(minLength, maxLength)) / len);
 }
 
 Vec3 unit(const Vec3& v, const char* what)
@@ -432,7 +440,8 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       const double w = edgeWeight(key);
       Q = w * Q + (1.0 - w) * (2.0 * P[static_cast<std::size_t>(v)] + P[static_cast<std::size_t>(x)]) / 3.0;
       const Vec3 chord = s.roundedPoints[static_cast<std::size_t>(x)] - V;
-      tangentAt[{ v, x }] = tangentInPlane((4.0 * Q - V) / 3.0 - V, normalAt(v, besides[0].first), chord, chord.norm() / 6.0);
+      tangentAt[{ v, x }] = tangentInPlane((4.0 * Q - V) / 3.0 - V, normalAt(v, besides[0].first), chord, chord.norm() / 6.0,
+        0.75 * chord.norm());
     }
   }
   // At a smooth interior vertex of a folded-back fan (decimated lattices have
