@@ -37,10 +37,10 @@ struct Curve
     const Vec3 a = 0.5 * (X[0] + X[1]), b = 0.5 * (X[1] + X[2]), c = 0.5 * (X[2] + X[3]);
     const Vec3 d = 0.5 * (a + b), e = 0.5 * (b + c), m = 0.5 * (d + e);
     Vec3 bm = 0.5 * (b0 + b1);
-    const double floor = 0.25 * (b0.norm() + b1.norm());
-    if (floorMid && bm.norm() > 0.0 && bm.norm() < floor)
+    const double shortest = 0.25 * (b0.norm() + b1.norm());
+    if (floorMid && bm.norm() > 0.0 && bm.norm() < shortest)
     {
-      bm *= floor / bm.norm();
+      bm *= shortest / bm.norm();
     }
     return { Curve{ { X[0], a, d, m }, b0, bm }, Curve{ { m, e, c, X[3] }, bm, b1 } };
   }
@@ -634,9 +634,9 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       // patches beside it spike far out of the lattice.
       Curve c;
       const Vec3 toCentre = centre - M;
-      const double floor = toCentre.norm() / 6.0;
-      c.X = { M, M + tangentInPlane(toCentre / 3.0, nm, toCentre, floor),
-        centre + tangentInPlane(-toCentre / 3.0, nc, -toCentre, floor), centre };
+      const double shortest = toCentre.norm() / 6.0;
+      c.X = { M, M + tangentInPlane(toCentre / 3.0, nm, toCentre, shortest),
+        centre + tangentInPlane(-toCentre / 3.0, nc, -toCentre, shortest), centre };
       c.b0 = nm.cross(unit(c.X[1] - c.X[0], "an inner curve has no tangent at its midpoint end"));
       c.b1 = nc.cross(unit(c.X[3] - c.X[2], "an inner curve has no tangent at the face centre"));
       inner[i] = c;

@@ -21,15 +21,22 @@
 ///    area-weighted face normal; every P1' is projected into it, so all curve
 ///    tangents at the vertex are coplanar, as G1 needs at extraordinary
 ///    vertices. The projection keeps the tangent's length, and no tangent is
-///    shorter than a sixth of its edge's chord (on a regular grid eq. 2.2
-///    gives a third): at a vertex where two large faces dominate, eq. 2.2
-///    gives an almost zero tangent, and the patches beside it fold.
+///    shorter than a sixth of its edge's chord or longer than 3/4 of it (on a
+///    regular grid eq. 2.2 gives a third): at a vertex where two large faces
+///    dominate, eq. 2.2 gives an almost zero tangent, and the patches beside
+///    it fold; on a crumpled lattice it can give tangents so long that the
+///    curve stops at its midpoint (the bound keeps |C'(1/2)| >= 3/8 chord).
 /// 5. Quads take one Gregory patch. Other faces (triangles, pentagons, ...)
 ///    take n quad patches meeting at the face centre (the mean of the face's
 ///    Doo-Sabin points): each edge curve is split at t = 1/2 (de Casteljau) and
 ///    an inner curve runs from that midpoint to the centre, its end tangents
-///    projected into the tangent planes there (at the centre: the face's
-///    plane; at the midpoint: the plane of the edge's b(1/2) and C'(1/2)).
+///    projected into the tangent planes there (at the centre: the plane of
+///    the edge-curve midpoints; at the midpoint: the plane of the edge's
+///    b(1/2) and C'(1/2)), with the same floor of a sixth of the chord.
+///    Where b0 and b1 are more than 120 degrees apart (tangent planes turned
+///    against each other on a crumpled lattice), b(1/2) is lengthened to half
+///    their mean length, its direction kept, unless a quad lies beside the
+///    edge (see step 6: a short b(1/2) makes k(t) blow up).
 /// 6. Interior Gregory points, Chiyokura and Kimura's basis-patch method:
 ///    every curve C carries a vector function b(t) = (1-t) b0 + t b1, with b0,
 ///    b1 in the end tangent planes and perpendicular to the curve. The
