@@ -510,115 +510,12 @@ TEST(LatticeSurface, NoPatchFoldsInside)
   }
 }
 
-/// A lattice of triangles from point and face arrays.
-template <std::size_t P, std::size_t F>
-lk::PolygonMesh triangleLattice(const double (&points)[P][3], const int (&faces)[F][3])
-{
-  lk::PolygonMesh m;
-  for (const auto& p : points)
-  {
-    m.points.emplace_back(p[0], p[1], p[2]);
-  }
-  for (const auto& f : faces)
-  {
-    m.faces.push_back({ f[0], f[1], f[2] });
-  }
-  return m;
-}
-
-/// Three vertex stars of the 1,000-vertex lattice fitted to the bundled CT
-/// head's -400 HU surface (genus 253, crumpled at that size) or of a refined
-/// lattice of its outer skin (bench_fit's models), coordinates in
-/// mm around one face's centre, rounded to 0.01. The stars of a face's three
-/// vertices hold every lattice face its patches depend on, so those patches
-/// are the full lattice's. Where the stars pinch, the pinched vertex has a
-/// copy (same coordinates) to keep them a manifold.
-/// Face { 3, 14, 35 }: the centre lies almost along an edge-curve midpoint's
-/// normal, and the plain projection left the inner curve a start tangent 2 %
-/// of its length: the cross-boundary derivative fitted to it put a Gregory
-/// interior point 663 mm out, and the surface 42 mm outside the stars'
-/// bounding box (diagonal 108 mm). Vertices 9 and 41 coincide.
-lk::PolygonMesh crumpledStarsShortInnerTangent()
-{
-  const double points[][3] = {
-    { 2.93, -6.6, 31.06 }, { 2.25, -35.39, 51.27 }, { -0.82, -1.15, 28.48 }, { -7.48, -8.53, 6.4 },
-    { 0.33, -4.07, 31.19 }, { 1.23, -2.55, 34.54 }, { -2.13, -2.16, 27.35 }, { -12.85, -11.35, 14.72 },
-    { -8.08, -12.71, 7.96 }, { -13.21, -9.5, 2.26 }, { 6.08, -8.21, 36.54 }, { -6.67, -4.6, 34.86 },
-    { -7, -14.02, 33.89 }, { -13.79, 0.44, 15.57 }, { -11.7, 5.37, 19.38 }, { -11.32, -1.34, 31.66 },
-    { -10.28, 4.33, 11.88 }, { -15.51, 3.44, 26 }, { -10.49, -6.13, 2.67 }, { -2.63, 6.16, 24.77 },
-    { -7.2, 10.45, 28.85 }, { -3.05, 5.45, 33.54 }, { -13.36, -2.03, 6.93 }, { -0.98, 5.42, 29.24 },
-    { 4.45, 3.37, 32.92 }, { -13.8, 13.22, 16.64 }, { -6.56, 6.5, 38.41 }, { 3.84, 2.09, 39.53 },
-    { -11.85, 11.79, 20.04 }, { -8.44, 5.26, 17.81 }, { -9.68, 10.8, 23.02 }, { -14.5, 6.79, 10.43 },
-    { -19.14, -1.7, -6.76 }, { -12.9, 8.62, 19.96 }, { -20.41, 2.46, -30.52 }, { 19.18, 3.17, -25.78 },
-    { -20.71, -12.79, -8.51 }, { -6.84, -2.51, -1.3 }, { -16.59, 0.08, -13.51 }, { -9.66, -3.2, -13.15 },
-    { -8.72, 23.31, 14.22 }, { -13.21, -9.5, 2.26 }
-  };
-  const int faces[][3] = {
-    { 35, 34, 36 }, { 34, 35, 39 }, { 35, 38, 39 }, { 35, 32, 38 }, { 40, 32, 35 }, { 9, 35, 36 },
-    { 35, 37, 40 }, { 35, 18, 37 }, { 22, 18, 35 }, { 13, 3, 41 }, { 9, 12, 35 }, { 3, 35, 12 },
-    { 3, 14, 35 }, { 14, 22, 35 }, { 41, 3, 0 }, { 13, 16, 3 }, { 7, 3, 17 }, { 17, 3, 16 },
-    { 22, 14, 33 }, { 14, 30, 31 }, { 31, 33, 14 }, { 8, 3, 15 }, { 3, 8, 1 }, { 3, 7, 15 },
-    { 30, 14, 29 }, { 25, 29, 14 }, { 0, 3, 2 }, { 12, 2, 3 }, { 14, 3, 1 }, { 25, 14, 28 },
-    { 14, 19, 28 }, { 14, 23, 19 }, { 20, 14, 1 }, { 14, 20, 21 }, { 6, 14, 5 }, { 14, 4, 5 },
-    { 23, 14, 27 }, { 11, 4, 14 }, { 14, 26, 11 }, { 10, 26, 14 }, { 14, 21, 10 }, { 14, 6, 24 },
-    { 14, 24, 27 }
-  };
-  return triangleLattice(points, faces);
-}
-
-/// Face { 20, 1, 0 } (vertex 20 has 30 neighbours): the tangent planes at the
-/// ends of one of its edges are turned against each other, so the mean of the
-/// ends' basis vectors b, the edge midpoint's, is nearly zero, and a patch
-/// reached 3.2 times its corners' extent. Vertices 25 and 32 coincide.
-lk::PolygonMesh crumpledStarsTwistedEdge()
-{
-  const double points[][3] = {
-    { 0.58, 9.85, 3.3 }, { 2.96, -0.17, 7.59 }, { -1.52, 3.28, -2.66 }, { 2.36, -40.04, -1.36 },
-    { -36.12, -38.82, 8.9 }, { 0.74, -20.29, -20.77 }, { 3.36, -35.84, -0.09 }, { 5.88, -23.63, 5.2 },
-    { 10.51, -28.3, -12.15 }, { -0.54, -35.51, 0.25 }, { 3.88, -23.46, 0.26 }, { -5.25, -10.84, 19.33 },
-    { 7.36, -23.95, -11.31 }, { 0.59, -22.29, 6.5 }, { 1.37, -19.68, 3.69 }, { 4.32, -9.36, 7.44 },
-    { 7.96, -14.87, -11.92 }, { 0.48, -17.44, 4.36 }, { 0.67, -25.62, 8.98 }, { 8.06, -15.26, 4.4 },
-    { -3.54, -9.68, -10.89 }, { 0.96, -22.45, 3.85 }, { 6.08, -14.84, -14.1 }, { 6.64, 0.06, 16.49 },
-    { 9.54, -11.5, -10.44 }, { -22.12, -6.92, 20.38 }, { -0.02, -9.93, -10.25 }, { 2.74, -11.19, -6.31 },
-    { 7.46, -8.99, 9.81 }, { 21.07, 22.46, 6.11 }, { 3.44, -5.05, -4.56 }, { -1.04, -8.16, -12.05 },
-    { -22.12, -6.92, 20.38 }
-  };
-  const int faces[][3] = {
-    { 20, 5, 12 }, { 22, 20, 8 }, { 20, 12, 8 }, { 20, 24, 31 }, { 20, 31, 26 }, { 20, 9, 5 },
-    { 20, 16, 24 }, { 27, 20, 30 }, { 26, 30, 20 }, { 20, 22, 16 }, { 29, 20, 27 }, { 20, 29, 2 },
-    { 29, 0, 2 }, { 4, 9, 20 }, { 6, 20, 7 }, { 20, 10, 7 }, { 4, 20, 11 }, { 20, 13, 10 }, { 20, 14, 13 },
-    { 20, 25, 17 }, { 20, 6, 3 }, { 20, 17, 21 }, { 21, 19, 20 }, { 14, 20, 19 }, { 20, 2, 1 },
-    { 23, 2, 0 }, { 20, 1, 0 }, { 18, 20, 3 }, { 20, 18, 11 }, { 25, 20, 0 }, { 1, 23, 0 }, { 32, 1, 15 },
-    { 1, 28, 15 }, { 1, 2, 28 }, { 1, 32, 23 }, { 0, 29, 25 }
-  };
-  return triangleLattice(points, faces);
-}
-
-/// The same from the outer skin's refined 2,000-vertex lattice, face
-/// { 3, 6, 5 }: eq. 2.2 gave an edge curve end tangents longer than its
-/// chord, the curve all but stopped at its midpoint (C'(1/2) nearly zero),
-/// and a split patch fitted to it reached 4.6 times its corners'
-/// extent.
-lk::PolygonMesh crumpledStarsLongTangents()
-{
-  const double points[][3] = {
-    { -15.91, 15.84, -9.96 }, { -16.37, 19.24, -5.96 }, { -6.11, 4.56, -10.2 }, { -2.6, 2.21, -0.65 },
-    { -4.58, 10.68, 2.77 }, { -4.48, 3.99, -2.41 }, { 7.08, -6.2, 3.07 }, { 6.41, -6.93, -3.8 },
-    { -1.56, 8.19, 2.56 }, { 4.51, 0.14, 6.17 }, { 15.76, -12.44, -0.83 }, { 8.25, -3.72, 7.73 },
-    { 16.63, -10.14, 8.27 }
-  };
-  const int faces[][3] = {
-    { 2, 3, 0 }, { 2, 7, 3 }, { 1, 0, 3 }, { 6, 7, 10 }, { 4, 1, 3 }, { 6, 3, 7 }, { 3, 6, 5 },
-    { 3, 5, 4 }, { 5, 8, 4 }, { 10, 12, 6 }, { 8, 5, 9 }, { 12, 11, 6 }, { 6, 11, 5 }, { 11, 9, 5 }
-  };
-  return triangleLattice(points, faces);
-}
-
 TEST(LatticeSurface, CrumpledLatticesStayNearTheirControlPoints)
 {
   for (const auto& [name, m] : { std::pair<std::string, lk::PolygonMesh>{ "short inner tangent",
-                                   crumpledStarsShortInnerTangent() },
-         { "twisted edge", crumpledStarsTwistedEdge() }, { "long tangents", crumpledStarsLongTangents() } })
+                                   lktest::crumpledStarsShortInnerTangent() },
+         { "twisted edge", lktest::crumpledStarsTwistedEdge() },
+         { "long tangents", lktest::crumpledStarsLongTangents() } })
   {
     const lk::LatticeSurface s = build(m);
     // How far each patch reaches from its corners' centre, against the
