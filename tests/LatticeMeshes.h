@@ -252,4 +252,28 @@ inline lk::PolygonMesh crumpledStarsLongTangents()
   return triangleLattice(points, faces);
 }
 
+/// The 1,000-vertex head lattice again, refined with the bounds above, face
+/// { 19, 5, 6 }: at one edge's midpoint the mean of the ends' b was nearly
+/// along C'(1/2) (the fit's basis almost degenerate, k = 2,820), and a patch
+/// reached 9.2 times its corners' extent. Vertices 21, 22 and 23 are copies of
+/// 0, 11 and 18.
+inline lk::PolygonMesh crumpledStarsMidpointBasisAlongTheCurve()
+{
+  const double points[][3] = {
+    { -7.19, -2.53, -2.75 }, { -3.28, -4.89, -3.36 }, { -1.71, -2.48, -4.25 }, { 1.13, -2.15, -6.33 },
+    { 0.14, -2.91, -6.52 }, { -1.31, -0.73, -1.64 }, { -2.48, -2.35, 1.02 }, { 0.29, -2.57, -3.96 },
+    { -2.05, 2.49, -1.33 }, { -3.93, 0.34, 0.79 }, { -0.42, -3.53, 0.58 }, { -3.14, -2.58, -2.67 },
+    { -19.93, 36.5, -0.57 }, { -4.29, 0.72, 1.7 }, { -1.31, 1.99, -3.64 }, { 0.55, -1.46, -1.22 },
+    { -1.79, -0.58, -0.41 }, { -2.66, -3.09, -2.18 }, { -4.88, 0.62, 1.02 }, { 3.78, 3.08, 0.62 },
+    { 11.12, 6.14, -7.83 }, { -7.19, -2.53, -2.75 }, { -3.14, -2.58, -2.67 }, { -4.88, 0.62, 1.02 }
+  };
+  const int faces[][3] = {
+    { 1, 5, 2 }, { 5, 15, 2 }, { 12, 20, 19 }, { 5, 4, 0 }, { 5, 1, 4 }, { 10, 17, 5 }, { 11, 21, 6 },
+    { 12, 6, 21 }, { 8, 5, 0 }, { 5, 9, 3 }, { 7, 5, 3 }, { 5, 7, 16 }, { 16, 10, 5 }, { 8, 11, 6 },
+    { 19, 20, 18 }, { 17, 15, 5 }, { 5, 8, 6 }, { 5, 13, 14 }, { 23, 5, 14 }, { 9, 5, 23 }, { 19, 22, 13 },
+    { 19, 13, 5 }, { 19, 18, 22 }, { 12, 19, 6 }, { 19, 5, 6 }
+  };
+  return triangleLattice(points, faces);
+}
+
 } // namespace lktest

@@ -515,7 +515,8 @@ TEST(LatticeSurface, CrumpledLatticesStayNearTheirControlPoints)
   for (const auto& [name, m] : { std::pair<std::string, lk::PolygonMesh>{ "short inner tangent",
                                    lktest::crumpledStarsShortInnerTangent() },
          { "twisted edge", lktest::crumpledStarsTwistedEdge() },
-         { "long tangents", lktest::crumpledStarsLongTangents() } })
+         { "long tangents", lktest::crumpledStarsLongTangents() },
+         { "b along the curve", lktest::crumpledStarsMidpointBasisAlongTheCurve() } })
   {
     const lk::LatticeSurface s = build(m);
     // How far each patch reaches from its corners' centre, against the

@@ -24,23 +24,41 @@ struct Curve
 
   Curve reversed() const { return { { X[3], X[2], X[1], X[0] }, b1, b0 }; }
   /// The halves at t = 1/2 (de Casteljau); b is restricted with the curve:
-  /// the midpoint's b is the mean of the ends'. With `floorMid`, a mean
-  /// shorter than half the ends' mean length is lengthened to that: where
-  /// the tangent planes at the ends are turned against each other (b0 and b1
-  /// more than 120 degrees apart, on a crumpled lattice) the mean is nearly
-  /// zero, the k(t) fitted to it grows without bound and the patches spike.
-  /// The direction, hence the midpoint's tangent plane, is unchanged, and
-  /// both faces of the edge split it alike, so G1 holds; an edge beside a
-  /// quad must not use it (the quad's patch uses the whole curve's linear b).
-  std::pair<Curve, Curve> split(bool floorMid) const
+  /// the midpoint's b is the mean of the ends'. The split patches fit their
+  /// cross-boundary derivative at the midpoint to that b and C'(1/2), and on
+  /// a crumpled lattice the two can be nearly parallel, or the mean nearly
+  /// zero (the tangent planes at the ends turned against each other); the
+  /// fitted k, h then grow without bound and the patches spike. With
+  /// `conditionMid`, b's component along C'(1/2) is cut until b is at least
+  /// 10 degrees from it, and b is lengthened to at least half the ends' mean
+  /// length. Either change keeps b in the plane of the mean and C'(1/2), the
+  /// midpoint's tangent plane, and both faces of the edge split it alike, so
+  /// G1 holds; an edge beside a quad must not use it (the quad's patch uses
+  /// the whole curve's linear b).
+  std::pair<Curve, Curve> split(bool conditionMid) const
   {
     const Vec3 a = 0.5 * (X[0] + X[1]), b = 0.5 * (X[1] + X[2]), c = 0.5 * (X[2] + X[3]);
     const Vec3 d = 0.5 * (a + b), e = 0.5 * (b + c), m = 0.5 * (d + e);
     Vec3 bm = 0.5 * (b0 + b1);
-    const double shortest = 0.25 * (b0.norm() + b1.norm());
-    if (floorMid && bm.norm() > 0.0 && bm.norm() < shortest)
+    if (conditionMid)
     {
-      bm *= shortest / bm.norm();
+      const Vec3 tangent = e - d; // along C'(1/2)
+      if (tangent.norm() > 0.0)
+      {
+        const Vec3 t = tangent.normalized();
+        const double along = bm.dot(t);
+        const Vec3 across = bm - along * t;
+        const double most = across.norm() / std::tan(10.0 * M_PI / 180.0);
+        if (std::abs(along) > most)
+        {
+          bm = across + std::copysign(most, along) * t;
+        }
+      }
+      const double shortest = 0.25 * (b0.norm() + b1.norm());
+      if (bm.norm() > 0.0 && bm.norm() < shortest)
+      {
+        bm *= shortest / bm.norm();
+      }
     }
     return { Curve{ { X[0], a, d, m }, b0, bm }, Curve{ { m, e, c, X[3] }, bm, b1 } };
   }

@@ -33,10 +33,10 @@
 ///    projected into the tangent planes there (at the centre: the plane of
 ///    the edge-curve midpoints; at the midpoint: the plane of the edge's
 ///    b(1/2) and C'(1/2)), with the same floor of a sixth of the chord.
-///    Where b0 and b1 are more than 120 degrees apart (tangent planes turned
-///    against each other on a crumpled lattice), b(1/2) is lengthened to half
-///    their mean length, its direction kept, unless a quad lies beside the
-///    edge (see step 6: a short b(1/2) makes k(t) blow up).
+///    Unless a quad lies beside the edge, b(1/2) is kept at least 10 degrees
+///    from C'(1/2) and at least half as long as b0 and b1 on average, within
+///    the midpoint's tangent plane (on a crumpled lattice b(1/2) can be nearly
+///    zero or nearly along the curve; see step 6: k(t), h(t) then blow up).
 /// 6. Interior Gregory points, Chiyokura and Kimura's basis-patch method:
 ///    every curve C carries a vector function b(t) = (1-t) b0 + t b1, with b0,
 ///    b1 in the end tangent planes and perpendicular to the curve. The
