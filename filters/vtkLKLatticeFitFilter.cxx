@@ -324,6 +324,12 @@ int vtkLKLatticeFitFilter::RequestData(
         vtkWarningMacro("Aborted.");
         return 1;
       }
+      if (fit.lattice.points.size() > static_cast<std::size_t>(target))
+      {
+        vtkWarningMacro("The lattice has " << fit.lattice.points.size() << " vertices, more than the target of " << target
+                                           << ": every further collapse would break the manifold or its topology,"
+                                              " flip or fold a face, make a sliver or remove a locked feature edge.");
+      }
     }
     else
     {

@@ -355,6 +355,53 @@ TEST(LatticeFitFilter, OpenMeshIsFittedWithItsBorder)
   EXPECT_LT(field(fit->GetOutput(), "Hausdorff_MeanPercent"), 0.1);
 }
 
+TEST(LatticeFitFilter, UnreachableTargetIsAWarning)
+{
+  // A torus cannot be simplified to 5 vertices without changing its
+  // topology: the lattice stops above the target, and the filter says so.
+  const int nu = 16, nv = 8;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      const double u = 2.0 * M_PI * i / nu, v = 2.0 * M_PI * j / nv;
+      points->InsertNextPoint((3.0 + std::cos(v)) * std::cos(u), (3.0 + std::cos(v)) * std::sin(u), std::sin(v));
+      const vtkIdType a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
+                      d = i * nv + (j + 1) % nv;
+      const vtkIdType t0[3] = { a, b, c }, t1[3] = { a, c, d };
+      triangles->InsertNextCell(3, t0);
+      triangles->InsertNextCell(3, t1);
+    }
+  }
+  vtkNew<vtkPolyData> torus;
+  torus->SetPoints(points);
+  torus->SetPolys(triangles);
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(torus);
+  fit->SetTargetNumberOfVertices(5);
+  lktest::ErrorRecorder messages(fit);
+  fit->Update();
+  EXPECT_EQ(messages.errors, 0) << messages.messages;
+  EXPECT_EQ(messages.warnings, 1);
+  EXPECT_NE(messages.warningMessages.find("more than the target of 5"), std::string::npos) << messages.warningMessages;
+  vtkPolyData* lattice = fit->GetOutput();
+  EXPECT_GT(lattice->GetNumberOfPoints(), 5);
+  // Still a torus: V - E + F = 0.
+  const auto edges = latticeEdges(lattice);
+  EXPECT_EQ(lattice->GetNumberOfPoints() - static_cast<vtkIdType>(edges.size()) + lattice->GetNumberOfPolys(), 0);
+
+  // A target it reaches gives no warning.
+  vtkNew<vtkLKLatticeFitFilter> reachable;
+  reachable->SetInputData(torus);
+  reachable->SetTargetNumberOfVertices(60);
+  lktest::ErrorRecorder none(reachable);
+  reachable->Update();
+  EXPECT_EQ(none.errors + none.warnings, 0) << none.messages << none.warningMessages;
+  EXPECT_EQ(reachable->GetOutput()->GetNumberOfPoints(), 60);
+}
+
 TEST(QuadPairingFilter, PairsAndKeepsLineCells)
 {
   auto bone = lktest::tciaMandible();
