@@ -72,8 +72,8 @@ public:
   /// Lattice vertices to keep. 0 (default) uses TargetReduction. Where every
   /// further collapse would change the topology, break the manifold, flip or
   /// fold a face, make a sliver or remove a locked feature edge, the lattice
-  /// keeps more vertices than the target, with a warning (a torus stops near
-  /// 9; a surface of genus g needs more vertices as g grows).
+  /// keeps more vertices than the target, with a warning (a 16 x 8 torus
+  /// stops at 9 or 10; the more handles, the more vertices).
   vtkSetClampMacro(TargetNumberOfVertices, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(TargetNumberOfVertices, vtkIdType);
   ///@}

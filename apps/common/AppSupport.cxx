@@ -90,10 +90,10 @@ public:
   }
   void DisplayWarningText(const char* text) override
   {
-    if (!g_quiet)
-    {
-      std::cerr << "\nwarning: " << cleanMessage(text) << std::endl;
-    }
+    // Also with --quiet, which silences the progress bar only: a warning
+    // says something about the result (a lattice above its target vertex
+    // count, a volume without orientation) that a script must not lose.
+    std::cerr << "\nwarning: " << cleanMessage(text) << std::endl;
   }
   void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
   void DisplayDebugText(const char*) override {}

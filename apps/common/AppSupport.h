@@ -18,7 +18,8 @@ namespace lkapp
 {
 
 /// Routes VTK's messages: errors are collected and printed as "error: ...",
-/// warnings as "warning: ...", pipeline noise is dropped. Call once in main.
+/// warnings as "warning: ..." (quiet or not), pipeline noise is dropped;
+/// quiet drops VTK's plain text output. Call once in main.
 void installMessageHandler(bool quiet = false);
 /// Number of VTK errors since the last call to clearErrors().
 int errorCount();
