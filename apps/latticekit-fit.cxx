@@ -40,12 +40,13 @@ void usage(std::ostream& os)
         "  --quads                pair triangles into quads where the pair is near-rectangular\n"
         "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
         "  --refine-iterations N  outer iterations of the refinement (default 8)\n"
-        "  --refine-tail MU       tail penalty of the refinement: a soft bound on the max\n"
-        "                         error, paid for in mean (default 0: off; 10 with --refine-max)\n"
         "  --refine-max K         spend K of the lattice vertices on the largest distances:\n"
         "                         split the edges nearest to the farthest samples, then a\n"
         "                         second refinement pass with the tail penalty (implies\n"
-        "                         --refine; try 1 % of the vertices)\n"
+        "                         --refine; default 1 per 100 vertices; 0: none)\n"
+        "  --refine-tail MU       tail penalty of the refinement: a soft bound on the max\n"
+        "                         error, paid for in mean; in the pass after the insertions,\n"
+        "                         or with --refine-max 0 in the only pass (default 10; 0: off)\n"
         "  --surface OUT          also write the lattice surface (.vtp/.vtk/.stl/.ply/.obj/.gltf)\n"
         "  --vertex-map OUT       write MESH with LatticeFaceId, LatticeVertexId, Distance\n"
         "  --resolution N         tessellation of the surface and of the error (default 8)\n"
@@ -58,8 +59,8 @@ void usage(std::ostream& os)
 int main(int argc, char* argv[])
 {
   std::string input, output, featuresIn, surfaceOut, mapOut;
-  long vertices = 0, iterations = 8, resolution = 8, insertions = 0;
-  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0, tail = -1.0; // tail < 0: not given
+  long vertices = 0, iterations = 8, resolution = 8, insertions = -1; // -1: 1 per 100 vertices
+  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0, tail = 10.0;
   bool lock = false, flat = false, quads = false, refine = false, quiet = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -93,7 +94,7 @@ int main(int argc, char* argv[])
       tail = args.number(a, 0.0, 1e300, "a number of at least 0");
     else if (a == "--refine-max")
     {
-      insertions = args.integer(a, 1, 1000000, "an integer of at least 1");
+      insertions = args.integer(a, 0, 1000000, "an integer of at least 0");
       refine = true;
     }
     else if (a == "--surface")
@@ -151,7 +152,7 @@ int main(int argc, char* argv[])
   fit->SetRoundedSurfaceQuadrics(!flat);
   fit->SetQuadPairing(quads);
   fit->SetRefinement(refine);
-  fit->SetRefinementTailWeight(tail >= 0.0 ? tail : (insertions > 0 ? 10.0 : 0.0));
+  fit->SetRefinementTailWeight(tail);
   fit->SetRefinementInsertions(static_cast<int>(insertions));
   fit->SetRefinementIterations(static_cast<int>(iterations));
   fit->SetErrorResolution(static_cast<int>(resolution));
@@ -201,8 +202,9 @@ int main(int argc, char* argv[])
     std::printf("refinement       RMS distance %.4g -> %.4g in %.0f iterations",
       lkapp::fieldValue(lattice, "RefinementInitialRMS"), lkapp::fieldValue(lattice, "RefinementFinalRMS"),
       lkapp::fieldValue(lattice, "RefinementIterations"));
-    if (insertions > 0)
-      std::printf("; %.0f vertices inserted at the largest distances", lkapp::fieldValue(lattice, "RefinementInsertions"));
+    const double inserted = lkapp::fieldValue(lattice, "RefinementInsertions");
+    if (inserted > 0)
+      std::printf("; %.0f vertices inserted at the largest distances", inserted);
     std::printf("\n");
   }
   std::printf("Metro error      max %.4f %%, mean %.4f %%, RMS %.4f %% of the bounding-box diagonal (%.4g)\n",

@@ -95,6 +95,11 @@ int vtkLKLatticeFitFilter::FillInputPortInformation(int port, vtkInformation* in
   return 1;
 }
 
+int vtkLKLatticeFitFilter::InsertionsFor(std::size_t target) const
+{
+  return this->RefinementInsertions >= 0 ? this->RefinementInsertions : static_cast<int>(target / 100);
+}
+
 int vtkLKLatticeFitFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -158,7 +163,7 @@ int vtkLKLatticeFitFilter::RequestData(
   auto fitAt = [&](std::size_t target, double p0, double p1, Fit& fit) -> bool {
     const bool refine = this->Refinement;
     const double split = refine ? 0.5 : 0.95;
-    const int insertions = refine ? this->RefinementInsertions : 0;
+    const int insertions = refine ? this->InsertionsFor(target) : 0;
     so.targetVertices = target - static_cast<std::size_t>(insertions);
     fit.target = target;
     so.progress = [&](double f) {
@@ -313,10 +318,11 @@ int vtkLKLatticeFitFilter::RequestData(
           << target << " vertices is not below the input's " << inputVertices << " vertices.");
         return 0;
       }
-      if (this->Refinement && target - this->RefinementInsertions < 4)
+      if (this->Refinement && target - this->InsertionsFor(static_cast<std::size_t>(target)) < 4)
       {
-        vtkErrorMacro("Cannot fit a lattice: " << this->RefinementInsertions << " insertions leave fewer than 4 of the "
-                                               << target << " vertices to the simplification.");
+        vtkErrorMacro("Cannot fit a lattice: " << this->InsertionsFor(static_cast<std::size_t>(target))
+                                               << " insertions leave fewer than 4 of the " << target
+                                               << " vertices to the simplification.");
         return 0;
       }
       if (!fitAt(static_cast<std::size_t>(target), 0.0, 0.9, fit))
@@ -334,7 +340,7 @@ int vtkLKLatticeFitFilter::RequestData(
     else
     {
       // Bisection on the vertex count: the fewest vertices within the bound.
-      std::size_t lo = 4 + static_cast<std::size_t>(this->Refinement ? this->RefinementInsertions : 0),
+      std::size_t lo = 4 + static_cast<std::size_t>(this->Refinement ? std::max(0, this->RefinementInsertions) : 0),
                   hi = static_cast<std::size_t>(inputVertices) - 1;
       if (lo > hi)
       {
@@ -463,6 +469,7 @@ void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Refinement: " << this->Refinement << " (" << this->RefinementIterations << " iterations)\n";
   os << indent << "RefinementTailWeight: " << this->RefinementTailWeight << " (threshold "
      << this->RefinementTailThreshold << ")\n";
-  os << indent << "RefinementInsertions: " << this->RefinementInsertions << "\n";
+  os << indent << "RefinementInsertions: " << this->RefinementInsertions
+     << (this->RefinementInsertions < 0 ? " (1 per 100 target vertices)" : "") << "\n";
   os << indent << "ComputeError: " << this->ComputeError << " (resolution " << this->ErrorResolution << ")\n";
 }
