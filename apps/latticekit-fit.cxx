@@ -43,7 +43,8 @@ void usage(std::ostream& os)
         "  --refine-max K         spend K of the lattice vertices on the largest distances:\n"
         "                         split the edges nearest to the farthest samples, then a\n"
         "                         second refinement pass with the tail penalty (implies\n"
-        "                         --refine; default 1 per 100 vertices; 0: none)\n"
+        "                         --refine; default 1 per 100 vertices; 0: none; undone\n"
+        "                         when they do not lower the largest distance)\n"
         "  --refine-tail MU       tail penalty of the refinement: a soft bound on the max\n"
         "                         error, paid for in mean; in the pass after the insertions,\n"
         "                         or with --refine-max 0 in the only pass (default 10; 0: off)\n"
@@ -203,8 +204,11 @@ int main(int argc, char* argv[])
       lkapp::fieldValue(lattice, "RefinementInitialRMS"), lkapp::fieldValue(lattice, "RefinementFinalRMS"),
       lkapp::fieldValue(lattice, "RefinementIterations"));
     const double inserted = lkapp::fieldValue(lattice, "RefinementInsertions");
+    const double refused = lkapp::fieldValue(lattice, "RefinementInsertionsRefused");
     if (inserted > 0)
       std::printf("; %.0f vertices inserted at the largest distances", inserted);
+    else if (refused > 0)
+      std::printf("; %.0f insertions at the largest distances tried and undone (no lower max)", refused);
     std::printf("\n");
   }
   std::printf("Metro error      max %.4f %%, mean %.4f %%, RMS %.4f %% of the bounding-box diagonal (%.4g)\n",

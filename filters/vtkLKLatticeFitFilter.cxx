@@ -49,8 +49,15 @@ struct Fit
   std::size_t quads = 0;
   lk::RefinementReport refinement;
   int insertions = 0;
-  std::size_t target = 0; ///< the vertex count asked for
+  bool insertionsHelped = false; ///< they lowered the largest distance, the mean within the tolerance
+  int insertionsRefused = 0;     ///< insertions tried and undone (the fit redone without them)
+  std::size_t target = 0;        ///< the vertex count asked for
 };
+
+/// The insertions at the largest distances are kept when the largest distance
+/// falls and the mean rises by at most this factor (both over the
+/// refinement's samples and surface points, against the pass before them).
+constexpr double insertionMeanTolerance = 1.02;
 
 /// The rounding weights of the lattice surface's vertices: with
 /// `interpolateFeatures`, 0 at the ends of feature edges (the surface passes
@@ -159,13 +166,15 @@ int vtkLKLatticeFitFilter::RequestData(
   }
   const bool searching = this->MaximumError > 0.0;
 
-  // One fit at a vertex count; progress runs over [p0, p1].
-  auto fitAt = [&](std::size_t target, double p0, double p1, Fit& fit) -> bool {
+  // One fit at a vertex count with a given number of insertions; progress
+  // runs over [p0, p1].
+  auto fitWith = [&](std::size_t target, int insertions, double tailWeight, double p0, double p1, Fit& fit) -> bool {
     const bool refine = this->Refinement;
     const double split = refine ? 0.5 : 0.95;
-    const int insertions = refine ? this->InsertionsFor(target) : 0;
     so.targetVertices = target - static_cast<std::size_t>(insertions);
     fit.target = target;
+    fit.insertionsHelped = false;
+    fit.insertionsRefused = 0;
     so.progress = [&](double f) {
       this->UpdateProgress(p0 + (p1 - p0) * split * f);
       return !this->GetAbortExecute();
@@ -190,11 +199,12 @@ int vtkLKLatticeFitFilter::RequestData(
       for (const auto& t : r.mesh.triangles)
         fit.lattice.faces.push_back({ t[0], t[1], t[2] });
     }
+    fit.insertions = 0;
     if (refine)
     {
       lk::RefinementOptions ro;
       ro.iterations = this->RefinementIterations;
-      ro.tailWeight = this->RefinementTailWeight;
+      ro.tailWeight = tailWeight;
       ro.tailThreshold = this->RefinementTailThreshold;
       ro.original = &mesh; // both of Metro's directions
       ro.fixed.assign(fit.lattice.points.size(), 0);
@@ -211,7 +221,6 @@ int vtkLKLatticeFitFilter::RequestData(
         return !this->GetAbortExecute();
       };
       fit.refinement = lk::refineLatticeFit(fit.lattice, samples, ro);
-      fit.insertions = 0;
       if (insertions > 0 && !this->GetAbortExecute())
       {
         std::vector<lk::EdgeKey> keep(fit.features.begin(), fit.features.end());
@@ -219,17 +228,47 @@ int vtkLKLatticeFitFilter::RequestData(
           lk::insertVerticesAtLargestDistances(
           fit.lattice, samples, insertions, keep, ro.weights, ro.fixed, ro.locatorResolution);
         ro.iterations = std::max(1, this->RefinementIterations / 2);
-        ro.tailWeight = this->RefinementTailWeight;
+        ro.tailWeight = tailWeight;
         ro.progress = [&](double f) {
           this->UpdateProgress(p0 + (p1 - p0) * (split + (0.95 - split) * (firstShare + (1.0 - firstShare) * f)));
           return !this->GetAbortExecute();
         };
+        const lk::RefinementReport first = fit.refinement;
         const lk::RefinementReport second = lk::refineLatticeFit(fit.lattice, samples, ro);
         fit.refinement.finalRms = second.finalRms;
+        fit.refinement.finalMean = second.finalMean;
+        fit.refinement.finalMax = second.finalMax;
         fit.refinement.iterations += second.iterations;
+        // The insertions are there to lower the largest distance at (nearly)
+        // the same mean; where they do not (the new vertices chase an
+        // artefact, the second pass bulges), they are refused.
+        fit.insertionsHelped =
+          second.finalMax < first.finalMax && second.finalMean <= insertionMeanTolerance * first.finalMean;
       }
     }
     return !this->GetAbortExecute();
+  };
+  // One fit at a vertex count: with the insertions when they help, else
+  // again without them (the simplification to the whole target, one
+  // refinement pass without the tail penalty).
+  auto fitAt = [&](std::size_t target, double p0, double p1, Fit& fit) -> bool {
+    const int insertions = this->Refinement ? this->InsertionsFor(target) : 0;
+    // The tail penalty acts after the insertions; in a single pass only when
+    // the insertions are off (RefinementInsertions 0).
+    if (insertions == 0)
+      return fitWith(target, 0, this->RefinementInsertions == 0 ? this->RefinementTailWeight : 0.0, p0, p1, fit);
+    const double pm = p0 + 0.7 * (p1 - p0);
+    if (!fitWith(target, insertions, this->RefinementTailWeight, p0, pm, fit))
+      return false;
+    if (fit.insertionsHelped)
+    {
+      this->UpdateProgress(p1);
+      return true;
+    }
+    const int refused = insertions;
+    const bool done = fitWith(target, 0, 0.0, pm, p1, fit);
+    fit.insertionsRefused = refused;
+    return done;
   };
 
   // The lattice as polydata: faces, then a line per feature edge.
@@ -399,6 +438,7 @@ int vtkLKLatticeFitFilter::RequestData(
     addValue(fd, "RefinementFinalRMS", fit.refinement.finalRms);
     addValue(fd, "RefinementIterations", fit.refinement.iterations);
     addValue(fd, "RefinementInsertions", fit.insertions);
+    addValue(fd, "RefinementInsertionsRefused", fit.insertionsRefused);
   }
 
   vertexMap->ShallowCopy(input);

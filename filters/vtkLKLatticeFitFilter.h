@@ -42,7 +42,8 @@
  * BoundingBoxDiagonal), DisplayPolygons (triangles of the tessellation at
  * ErrorResolution), ControlVertices, Triangles, Quads, FeatureEdges, and with
  * Refinement RefinementInitialRMS, RefinementFinalRMS, RefinementIterations
- * (both passes) and RefinementInsertions (the vertices inserted).
+ * (both passes), RefinementInsertions (the vertices inserted) and
+ * RefinementInsertionsRefused (tried and undone, see RefinementInsertions).
  *
  * Output 1: the input mesh with point data "LatticeFaceId" (the lattice face
  * each input vertex projects onto: the face of its closest point on the
@@ -194,8 +195,14 @@ public:
   /// reachable. At 2,000 vertices the default lowers the max of the two TCIA
   /// mandibles from 0.19-0.20 to 0.12-0.15 % of the diagonal, below
   /// vtkQuadricDecimation's and CGAL's, at the same mean; on the CT head it
-  /// costs up to 2 % of the mean (NOTES.md, issue 4). A count must leave at
-  /// least 4 vertices for the simplification.
+  /// costs up to 2 % of the mean (NOTES.md, issue 4). The insertions are
+  /// kept only when, over the refinement's samples and surface points, the
+  /// largest distance falls and the mean rises by at most 2 % against the
+  /// pass before them. Otherwise (the new vertices chase an artefact, the
+  /// second pass bulges) the fit is redone without them: the simplification
+  /// to the whole target and one pass without the tail penalty; field data
+  /// RefinementInsertionsRefused then says how many were tried. A count must
+  /// leave at least 4 vertices for the simplification.
   vtkSetClampMacro(RefinementInsertions, int, -1, VTK_INT_MAX);
   vtkGetMacro(RefinementInsertions, int);
   ///@}

@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 
 namespace lk
 {
@@ -701,6 +702,18 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       break;
   }
   report.finalRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
+  auto meanAndMax = [](const auto& points) {
+    double sum = 0.0, largest = 0.0;
+    for (const auto& p : points)
+    {
+      sum += p.distance;
+      largest = std::max(largest, p.distance);
+    }
+    return std::make_pair(points.empty() ? 0.0 : sum / static_cast<double>(points.size()), largest);
+  };
+  const auto forward = meanAndMax(feet), backward = meanAndMax(reverse);
+  report.finalMean = reverse.empty() ? forward.first : 0.5 * (forward.first + backward.first);
+  report.finalMax = std::max(forward.second, backward.second);
   return report;
 }
 

@@ -93,6 +93,11 @@ struct RefinementReport
 {
   double initialRms = 0.0; ///< sqrt(E / samples) before
   double finalRms = 0.0;   ///< and after
+  /// After: the mean distance (the two directions' means averaged when the
+  /// original is given) and the largest, over the samples and the surface's
+  /// reverse points; a cheap stand-in for Metro's mean and max.
+  double finalMean = 0.0;
+  double finalMax = 0.0;
   int iterations = 0;      ///< outer iterations that lowered the energy
 };
 
