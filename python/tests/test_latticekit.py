@@ -142,6 +142,33 @@ class PipelineTest(unittest.TestCase):
         # The surface of the lattice comes out of the same pipeline.
         self.assertGreater(surface.GetOutput().GetNumberOfPolys(), 10 * lattice.GetNumberOfPolys())
 
+    def test_lattice_fit_with_refinement(self):
+        import latticekit
+
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(MANDIBLE)
+        bone = latticekit.vtkLKBoneSurfaceFilter()
+        bone.SetInputConnection(reader.GetOutputPort())
+        plain = latticekit.vtkLKLatticeFitFilter()
+        plain.SetInputConnection(bone.GetOutputPort())
+        plain.SetTargetNumberOfVertices(400)
+        plain.Update()
+        fit = latticekit.vtkLKLatticeFitFilter()
+        fit.SetInputConnection(bone.GetOutputPort())
+        fit.SetTargetNumberOfVertices(400)
+        fit.RefinementOn()
+        fit.SetRefinementIterations(4)
+        self.assertEqual(fit.GetRefinementInsertions(), -1)  # 1 per 100 vertices
+        fit.Update()
+        fd, plain_fd = fit.GetOutput().GetFieldData(), plain.GetOutput().GetFieldData()
+        self.assertEqual(fit.GetOutput().GetNumberOfPoints(), 400)
+        # 4 insertions, kept or (where they do not lower the max) undone.
+        tried = fd.GetArray("RefinementInsertions").GetValue(0) + fd.GetArray("RefinementInsertionsRefused").GetValue(0)
+        self.assertEqual(tried, 4)
+        self.assertLess(fd.GetArray("RefinementFinalRMS").GetValue(0), fd.GetArray("RefinementInitialRMS").GetValue(0))
+        self.assertLess(fd.GetArray("Hausdorff_MeanPercent").GetValue(0),
+                        0.8 * plain_fd.GetArray("Hausdorff_MeanPercent").GetValue(0))
+
     def test_homogenized_loop_from_python(self):
         import latticekit
         from vtkmodules.vtkCommonCore import vtkDoubleArray
