@@ -241,9 +241,11 @@ int vtkLKLatticeFitFilter::RequestData(
         fit.refinement.iterations += second.iterations;
         // The insertions are there to lower the largest distance at (nearly)
         // the same mean; where they do not (the new vertices chase an
-        // artefact, the second pass bulges), they are refused.
-        fit.insertionsHelped =
-          second.finalMax < first.finalMax && second.finalMean <= insertionMeanTolerance * first.finalMean;
+        // artefact, the second pass bulges), they are refused, and so are
+        // fewer than asked (too few edges to split), which would leave the
+        // lattice below its target.
+        fit.insertionsHelped = fit.insertions == insertions && second.finalMax < first.finalMax &&
+          second.finalMean <= insertionMeanTolerance * first.finalMean;
       }
     }
     return !this->GetAbortExecute();
@@ -265,9 +267,8 @@ int vtkLKLatticeFitFilter::RequestData(
       this->UpdateProgress(p1);
       return true;
     }
-    const int refused = insertions;
     const bool done = fitWith(target, 0, 0.0, pm, p1, fit);
-    fit.insertionsRefused = refused;
+    fit.insertionsRefused = insertions;
     return done;
   };
 

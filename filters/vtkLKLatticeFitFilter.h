@@ -170,8 +170,9 @@ public:
   /// distance before the refinement (LatticeRefinement.h). It is a soft bound
   /// on the Hausdorff (max) error, paid for in mean error. Default 10. With
   /// insertions (RefinementInsertions) it acts only in the pass after them,
-  /// where the new vertices can answer it; without, in the only pass. There it
-  /// is not reliable: on the first TCIA mandible at 2,000 vertices 100 lowered
+  /// where the new vertices can answer it; with RefinementInsertions 0, in the
+  /// refinement's only pass (none when the default count is 0, below 100
+  /// target vertices). In a single pass it is not reliable: on the first TCIA mandible at 2,000 vertices 100 lowered
   /// the max from 0.20 to 0.13 % of the diagonal at +1 % mean, but at 1,000
   /// vertices it raised it (NOTES.md, issue 4). 0 turns it off. Negative
   /// weights and thresholds <= 0 are an error.
@@ -198,8 +199,10 @@ public:
   /// costs up to 2 % of the mean (NOTES.md, issue 4). The insertions are
   /// kept only when, over the refinement's samples and surface points, the
   /// largest distance falls and the mean rises by at most 2 % against the
-  /// pass before them. Otherwise (the new vertices chase an artefact, the
-  /// second pass bulges) the fit is redone without them: the simplification
+  /// pass before them, and when all of them found an edge to split. Otherwise
+  /// (the new vertices chase an artefact, the second pass bulges; too few
+  /// edges qualify, which would leave the lattice below its target) the fit
+  /// is redone without them: the simplification
   /// to the whole target and one pass without the tail penalty; field data
   /// RefinementInsertionsRefused then says how many were tried. A count must
   /// leave at least 4 vertices for the simplification.
