@@ -380,12 +380,18 @@ int vtkLKLatticeFitFilter::RequestData(
     else
     {
       // Bisection on the vertex count: the fewest vertices within the bound.
-      std::size_t lo = 4 + static_cast<std::size_t>(this->Refinement ? std::max(0, this->RefinementInsertions) : 0),
-                  hi = static_cast<std::size_t>(inputVertices) - 1;
+      // A set count of insertions raises the floor; the default's (1 per 100)
+      // never leaves fewer than 4.
+      const int setInsertions = this->Refinement ? std::max(0, this->RefinementInsertions) : 0;
+      std::size_t lo = 4 + static_cast<std::size_t>(setInsertions), hi = static_cast<std::size_t>(inputVertices) - 1;
       if (lo > hi)
       {
-        vtkErrorMacro("Cannot fit a lattice: " << this->RefinementInsertions << " insertions leave fewer than 4 of the "
-                                               << hi << " vertices to the simplification.");
+        if (setInsertions > 0)
+          vtkErrorMacro("Cannot fit a lattice: " << setInsertions << " insertions leave fewer than 4 of the " << hi
+                                                 << " vertices to the simplification.");
+        else
+          vtkErrorMacro("Cannot fit a lattice: the input's " << inputVertices
+                                                             << " vertices are too few for a lattice below them.");
         return 0;
       }
       bool found = false;
