@@ -30,7 +30,10 @@ void usage(std::ostream& os)
         "  --vertices N           lattice vertices (default: 10 % of the input's)\n"
         "  --ratio R              keep this fraction of the vertices instead (0 < R < 1)\n"
         "  --max-error E          fewest vertices whose surface stays within E % of the\n"
-        "                         bounding-box diagonal (Hausdorff), found by bisection\n"
+        "                         bounding-box diagonal (Hausdorff), searched over fitted\n"
+        "                         and measured counts\n"
+        "  --count-tolerance T    with --max-error: fewest to within this fraction of the\n"
+        "                         count (default 0.01; 0: exact; larger saves fits)\n"
         "  --features LINES       polylines along mesh edges (.vtp/.vtk; point data MeshPointId,\n"
         "                         or points equal to mesh points)\n"
         "  --feature-weight K     k of eq. 3.14 on feature edges (default 1000)\n"
@@ -61,7 +64,7 @@ int main(int argc, char* argv[])
 {
   std::string input, output, featuresIn, surfaceOut, mapOut;
   long vertices = 0, iterations = 8, resolution = 8, insertions = -1; // -1: 1 per 100 vertices
-  double ratio = 0.0, maxError = 0.0, k = 1000.0, kn = 100.0, tail = 10.0;
+  double ratio = 0.0, maxError = 0.0, countTolerance = 0.01, k = 1000.0, kn = 100.0, tail = 10.0;
   bool lock = false, flat = false, quads = false, refine = false, quiet = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -75,6 +78,8 @@ int main(int argc, char* argv[])
       ratio = args.number(a, 1e-9, 1.0 - 1e-9, "a number between 0 and 1");
     else if (a == "--max-error")
       maxError = args.number(a, 1e-9, 100.0, "a percentage above 0");
+    else if (a == "--count-tolerance")
+      countTolerance = args.number(a, 0.0, 1.0, "a number from 0 to 1");
     else if (a == "--features")
       featuresIn = args.value(a);
     else if (a == "--feature-weight")
@@ -147,6 +152,7 @@ int main(int argc, char* argv[])
   else if (ratio > 0.0)
     fit->SetTargetReduction(1.0 - ratio);
   fit->SetMaximumError(maxError);
+  fit->SetMaximumErrorCountTolerance(countTolerance);
   fit->SetFeatureWeight(k);
   fit->SetFeatureNeighbourWeight(kn);
   fit->SetLockFeatures(lock);
@@ -193,6 +199,15 @@ int main(int argc, char* argv[])
   std::printf("lattice          %.0f control vertices; faces: %.0f triangles, %.0f quads; %.0f feature edges\n",
     lkapp::fieldValue(lattice, "ControlVertices"), lkapp::fieldValue(lattice, "Triangles"), lkapp::fieldValue(lattice, "Quads"),
     lkapp::fieldValue(lattice, "FeatureEdges"));
+  if (maxError > 0.0)
+  {
+    std::printf("error bound      %g %% of the bounding-box diagonal: %.0f fits measured (vertices: max %%)",
+      maxError, lkapp::fieldValue(lattice, "ErrorBoundTrials"));
+    if (vtkDataArray* trials = lattice->GetFieldData()->GetArray("ErrorBoundTrialCountAndError"))
+      for (vtkIdType i = 0; i < trials->GetNumberOfTuples(); ++i)
+        std::printf("%s %.0f: %.4f", i ? "," : "", trials->GetComponent(i, 0), trials->GetComponent(i, 1));
+    std::printf("\n");
+  }
   std::printf("display polygons %.0f (resolution %ld)\n", lkapp::fieldValue(lattice, "DisplayPolygons"), resolution);
   std::printf("bytes on disk    lattice %lld (%s)", lkapp::fileBytes(output), output.c_str());
   if (surfaceBytes >= 0)

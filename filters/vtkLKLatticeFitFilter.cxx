@@ -1,6 +1,7 @@
 #include "vtkLKLatticeFitFilter.h"
 
 #include "latticekit/ClosestPointTree.h"
+#include "latticekit/ErrorBoundSearch.h"
 #include "latticekit/LatticeRefinement.h"
 #include "latticekit/LatticeSimplification.h"
 #include "latticekit/QuadPairing.h"
@@ -26,6 +27,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -345,6 +347,7 @@ int vtkLKLatticeFitFilter::RequestData(
   };
 
   Fit fit;
+  std::vector<std::pair<std::size_t, double>> errorBoundTrials;
   try
   {
     if (!searching)
@@ -379,7 +382,7 @@ int vtkLKLatticeFitFilter::RequestData(
     }
     else
     {
-      // Bisection on the vertex count: the fewest vertices within the bound.
+      // The fewest vertices within the bound, searched over the count.
       // A set count of insertions raises the floor; the default's (1 per 100)
       // never leaves fewer than 4.
       const int setInsertions = this->Refinement ? std::max(0, this->RefinementInsertions) : 0;
@@ -394,36 +397,51 @@ int vtkLKLatticeFitFilter::RequestData(
                                                              << " vertices are too few for a lattice below them.");
         return 0;
       }
-      bool found = false;
+      // Each trial is a whole fit and a Metro measure; the search estimates
+      // the crossing on a log-log line and stops within the count tolerance
+      // (lk::fewestWithinErrorBound).
+      lk::ErrorBoundSearchOptions searchOptions;
+      searchOptions.countTolerance = this->MaximumErrorCountTolerance;
       Fit trial;
       vtkNew<vtkPolyData> pd;
+      bool found = false;
       int step = 0;
-      while (lo < hi)
+      const lk::ErrorBoundSearchResult searched = lk::fewestWithinErrorBound(
+        lo, hi, this->MaximumError, [&](std::size_t count, double& error) {
+          // Each trial gets a fifth of the progress left before 0.85, so the
+          // bar never runs back however many trials the search takes.
+          const double p0 = 0.85 * (1.0 - std::pow(0.8, step)), p1 = 0.85 * (1.0 - std::pow(0.8, step + 1));
+          ++step;
+          if (!fitAt(count, p0, p1, trial))
+            return false;
+          toPolyData(trial, pd);
+          error = measure(pd, true) ? metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal()
+                                    : std::numeric_limits<double>::infinity();
+          if (error <= this->MaximumError && (!found || count < fit.target))
+          {
+            fit = trial;
+            found = true;
+          }
+          return true;
+        },
+        searchOptions);
+      if (searched.aborted)
       {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        const double p0 = std::min(0.85, 0.1 * step), p1 = std::min(0.9, p0 + 0.1);
-        if (!fitAt(mid, p0, p1, trial))
+        vtkWarningMacro("Aborted.");
+        return 1;
+      }
+      errorBoundTrials = searched.probes;
+      if (!searched.withinBound)
+        vtkWarningMacro("No lattice of fewer than " << hi << " vertices stays within the error bound of "
+                                                    << this->MaximumError << " %; the lattice keeps " << hi
+                                                    << " vertices.");
+      if (!found || fit.target != searched.count)
+      {
+        if (!fitAt(searched.count, 0.85, 0.9, fit))
         {
           vtkWarningMacro("Aborted.");
           return 1;
         }
-        toPolyData(trial, pd);
-        const bool ok = measure(pd, true) && metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal() <=
-          this->MaximumError;
-        if (ok)
-        {
-          hi = mid;
-          fit = trial;
-          found = true;
-        }
-        else
-          lo = mid + 1;
-        ++step;
-      }
-      if (!found || fit.target != hi)
-      {
-        if (!fitAt(hi, 0.85, 0.9, fit))
-          return 1;
       }
     }
   }
@@ -439,6 +457,17 @@ int vtkLKLatticeFitFilter::RequestData(
   addValue(fd, "Triangles", static_cast<double>(fit.lattice.faces.size() - fit.quads));
   addValue(fd, "Quads", static_cast<double>(fit.quads));
   addValue(fd, "FeatureEdges", static_cast<double>(fit.features.size()));
+  if (searching)
+  {
+    // The search's trials, in order: count and Hausdorff error (%).
+    addValue(fd, "ErrorBoundTrials", static_cast<double>(errorBoundTrials.size()));
+    vtkNew<vtkDoubleArray> trials;
+    trials->SetName("ErrorBoundTrialCountAndError");
+    trials->SetNumberOfComponents(2);
+    for (const auto& [count, error] : errorBoundTrials)
+      trials->InsertNextTuple2(static_cast<double>(count), error);
+    fd->AddArray(trials);
+  }
   if (this->Refinement)
   {
     addValue(fd, "RefinementInitialRMS", fit.refinement.initialRms);
@@ -508,6 +537,7 @@ void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "MaximumErrorCountTolerance: " << this->MaximumErrorCountTolerance << "\n";
   os << indent << "FeatureWeight: " << this->FeatureWeight << "\n";
   os << indent << "FeatureNeighbourWeight: " << this->FeatureNeighbourWeight << "\n";
   os << indent << "LockFeatures: " << this->LockFeatures << "\n";

@@ -515,13 +515,43 @@ TEST(LatticeFitFilter, ErrorBoundFindsAFewVerticesWithinIt)
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputConnection(sphere->GetOutputPort());
   fit->SetMaximumError(0.5);
+  // The progress never runs back, however many fits the search takes.
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* cd, void* data) {
+    static_cast<std::vector<double>*>(cd)->push_back(*static_cast<double*>(data));
+  });
+  fit->AddObserver(vtkCommand::ProgressEvent, onProgress);
   fit->Update();
+  ASSERT_GT(progress.size(), 10u);
+  for (std::size_t i = 1; i < progress.size(); ++i)
+    ASSERT_GE(progress[i], progress[i - 1]) << "progress event " << i;
   vtkPolyData* lattice = fit->GetOutput();
   const double max = field(lattice, "Hausdorff_MaxPercent");
   std::printf("sphere of %lld vertices within 0.5 %%: %lld lattice vertices, max %.4f %%\n",
     static_cast<long long>(sphere->GetOutput()->GetNumberOfPoints()),
     static_cast<long long>(lattice->GetNumberOfPoints()), max);
   EXPECT_LE(max, 0.5);
+  // Fewer fits than bisection over [4, 3481] (12).
+  std::printf("%g fits measured\n", field(lattice, "ErrorBoundTrials"));
+  EXPECT_GE(field(lattice, "ErrorBoundTrials"), 2.0);
+  EXPECT_LT(field(lattice, "ErrorBoundTrials"), 12.0);
+  // Each trial's count and error: the lattice's count is one measured within
+  // the bound, with the error the output reports.
+  vtkDataArray* trials = lattice->GetFieldData()->GetArray("ErrorBoundTrialCountAndError");
+  ASSERT_NE(trials, nullptr);
+  ASSERT_EQ(trials->GetNumberOfComponents(), 2);
+  EXPECT_EQ(static_cast<double>(trials->GetNumberOfTuples()), field(lattice, "ErrorBoundTrials"));
+  bool measured = false;
+  for (vtkIdType i = 0; i < trials->GetNumberOfTuples(); ++i)
+    if (trials->GetComponent(i, 0) == static_cast<double>(lattice->GetNumberOfPoints()))
+    {
+      measured = true;
+      EXPECT_LE(trials->GetComponent(i, 1), 0.5);
+      EXPECT_NEAR(trials->GetComponent(i, 1), max, 1e-9);
+    }
+  EXPECT_TRUE(measured);
   EXPECT_GT(lattice->GetNumberOfPoints(), 4);
   EXPECT_LT(lattice->GetNumberOfPoints(), sphere->GetOutput()->GetNumberOfPoints() / 4);
   // Not stopped early: with 20 % fewer vertices the bound no longer holds.
