@@ -169,6 +169,35 @@ class PipelineTest(unittest.TestCase):
         self.assertLess(fd.GetArray("Hausdorff_MeanPercent").GetValue(0),
                         0.8 * plain_fd.GetArray("Hausdorff_MeanPercent").GetValue(0))
 
+    def test_lattice_fit_to_an_error_bound(self):
+        import latticekit
+        from vtkmodules.vtkFiltersSources import vtkSphereSource
+
+        sphere = vtkSphereSource()
+        sphere.SetThetaResolution(40)
+        sphere.SetPhiResolution(40)
+        sphere.SetRadius(10.0)
+        fit = latticekit.vtkLKLatticeFitFilter()
+        fit.SetInputConnection(sphere.GetOutputPort())
+        fit.SetMaximumError(1.0)
+        self.assertEqual(fit.GetMaximumErrorCountTolerance(), 0.01)
+        fit.SetMaximumErrorCountTolerance(0.05)
+        fit.Update()
+        lattice = fit.GetOutput()
+        fd = lattice.GetFieldData()
+        self.assertLessEqual(fd.GetArray("Hausdorff_MaxPercent").GetValue(0), 1.0)
+        trials = fd.GetArray("ErrorBoundTrialCountAndError")
+        self.assertEqual(trials.GetNumberOfComponents(), 2)
+        self.assertEqual(trials.GetNumberOfTuples(), fd.GetArray("ErrorBoundTrials").GetValue(0))
+        counts = [trials.GetComponent(i, 0) for i in range(trials.GetNumberOfTuples())]
+        errors = [trials.GetComponent(i, 1) for i in range(trials.GetNumberOfTuples())]
+        # The lattice's count was measured within the bound; a count at most
+        # 5 % below it was measured above it.
+        n = lattice.GetNumberOfPoints()
+        self.assertIn(n, counts)
+        self.assertLessEqual(errors[counts.index(n)], 1.0)
+        self.assertTrue(any(e > 1.0 and n - max(1, 0.05 * n) <= c < n for c, e in zip(counts, errors)))
+
     def test_homogenized_loop_from_python(self):
         import latticekit
         from vtkmodules.vtkCommonCore import vtkDoubleArray
