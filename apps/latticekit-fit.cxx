@@ -29,20 +29,21 @@ void usage(std::ostream& os)
         "\n"
         "  --vertices N           lattice vertices (default: 10 % of the input's)\n"
         "  --ratio R              keep this fraction of the vertices instead (0 < R < 1)\n"
-        "  --max-error E          fewest vertices whose surface stays within E % of the\n"
-        "                         bounding-box diagonal (Hausdorff), searched over fitted\n"
-        "                         and measured counts\n"
+        "  --max-error E          or the fewest vertices whose surface stays within E % of\n"
+        "                         the bounding-box diagonal (Hausdorff), searched over\n"
+        "                         fitted and measured counts (one of these three at most)\n"
         "  --count-tolerance T    with --max-error: fewest to within this fraction of the\n"
         "                         count (default 0.01; 0: exact; larger saves fits)\n"
         "  --features LINES       polylines along mesh edges (.vtp/.vtk; point data MeshPointId,\n"
         "                         or points equal to mesh points)\n"
-        "  --feature-weight K     k of eq. 3.14 on feature edges (default 1000)\n"
+        "  --feature-weight K     k of eq. 3.14 on feature edges (default 1000; this and the\n"
+        "                         next two need --features)\n"
         "  --neighbour-weight W   weight of edges next to a feature (default 100)\n"
         "  --lock-features        feature edges are never collapsed and never move\n"
         "  --flat-quadrics        plain Garland-Heckbert placement (for comparison)\n"
         "  --quads                pair triangles into quads where the pair is near-rectangular\n"
         "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
-        "  --refine-iterations N  outer iterations of the refinement (default 8)\n"
+        "  --refine-iterations N  outer iterations of the refinement (default 8; implies --refine)\n"
         "  --refine-max K         spend K of the lattice vertices on the largest distances:\n"
         "                         split the edges nearest to the farthest samples, then a\n"
         "                         second refinement pass with the tail penalty (implies\n"
@@ -50,7 +51,8 @@ void usage(std::ostream& os)
         "                         when they do not lower the largest distance)\n"
         "  --refine-tail MU       tail penalty of the refinement: a soft bound on the max\n"
         "                         error, paid for in mean; in the pass after the insertions,\n"
-        "                         or with --refine-max 0 in the only pass (default 10; 0: off)\n"
+        "                         or with --refine-max 0 in the only pass (default 10; 0: off;\n"
+        "                         implies --refine)\n"
         "  --surface OUT          also write the lattice surface (.vtp/.vtk/.stl/.ply/.obj/.gltf)\n"
         "  --vertex-map OUT       write MESH with LatticeFaceId, LatticeVertexId, Distance\n"
         "  --resolution N         tessellation of the surface and of the error (default 8)\n"
@@ -66,6 +68,9 @@ int main(int argc, char* argv[])
   long vertices = 0, iterations = 8, resolution = 8, insertions = -1; // -1: 1 per 100 vertices
   double ratio = 0.0, maxError = 0.0, countTolerance = 0.01, k = 1000.0, kn = 100.0, tail = 10.0;
   bool lock = false, flat = false, quads = false, refine = false, quiet = false;
+  // Options that act only with another: refused without it rather than
+  // ignored.
+  bool countToleranceGiven = false, featureOptionGiven = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -79,15 +84,24 @@ int main(int argc, char* argv[])
     else if (a == "--max-error")
       maxError = args.number(a, 1e-9, 100.0, "a percentage above 0");
     else if (a == "--count-tolerance")
+    {
       countTolerance = args.number(a, 0.0, 1.0, "a number from 0 to 1");
+      countToleranceGiven = true;
+    }
     else if (a == "--features")
       featuresIn = args.value(a);
     else if (a == "--feature-weight")
+    {
       k = args.number(a, 1e-300, 1e300, "a number above 0");
+      featureOptionGiven = true;
+    }
     else if (a == "--neighbour-weight")
+    {
       kn = args.number(a, 1e-300, 1e300, "a number above 0");
+      featureOptionGiven = true;
+    }
     else if (a == "--lock-features")
-      lock = true;
+      lock = featureOptionGiven = true;
     else if (a == "--flat-quadrics")
       flat = true;
     else if (a == "--quads")
@@ -95,9 +109,15 @@ int main(int argc, char* argv[])
     else if (a == "--refine")
       refine = true;
     else if (a == "--refine-iterations")
+    {
       iterations = args.integer(a, 1, 100, "an integer from 1 to 100");
+      refine = true;
+    }
     else if (a == "--refine-tail")
+    {
       tail = args.number(a, 0.0, 1e300, "a number of at least 0");
+      refine = true;
+    }
     else if (a == "--refine-max")
     {
       insertions = args.integer(a, 0, 1000000, "an integer of at least 0");
@@ -120,6 +140,21 @@ int main(int argc, char* argv[])
   {
     std::cerr << "error: a MESH and -o LATTICE are required\n";
     usage(std::cerr);
+    return 2;
+  }
+  if ((vertices > 0) + (ratio > 0.0) + (maxError > 0.0) > 1)
+  {
+    std::cerr << "error: --vertices, --ratio and --max-error exclude each other\n";
+    return 2;
+  }
+  if (countToleranceGiven && maxError == 0.0)
+  {
+    std::cerr << "error: --count-tolerance needs --max-error\n";
+    return 2;
+  }
+  if (featureOptionGiven && featuresIn.empty())
+  {
+    std::cerr << "error: --feature-weight, --neighbour-weight and --lock-features need --features\n";
     return 2;
   }
   lkapp::installMessageHandler(quiet);
