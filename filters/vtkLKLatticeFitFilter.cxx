@@ -404,7 +404,6 @@ int vtkLKLatticeFitFilter::RequestData(
       searchOptions.countTolerance = this->MaximumErrorCountTolerance;
       Fit trial;
       vtkNew<vtkPolyData> pd;
-      bool found = false;
       int step = 0;
       const lk::ErrorBoundSearchResult searched = lk::fewestWithinErrorBound(
         lo, hi, this->MaximumError, [&](std::size_t count, double& error) {
@@ -417,11 +416,10 @@ int vtkLKLatticeFitFilter::RequestData(
           toPolyData(trial, pd);
           error = measure(pd, true) ? metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal()
                                     : std::numeric_limits<double>::infinity();
-          if (error <= this->MaximumError && (!found || count < fit.target))
-          {
+          // A count within the bound is always below the last one (the
+          // bracket only shrinks), so `fit` ends as the search's answer.
+          if (error <= this->MaximumError)
             fit = trial;
-            found = true;
-          }
           return true;
         },
         searchOptions);
@@ -431,13 +429,13 @@ int vtkLKLatticeFitFilter::RequestData(
         return 1;
       }
       errorBoundTrials = searched.probes;
+      // When no count was within the bound, the answer is hi, not measured.
       if (!searched.withinBound)
+      {
         vtkWarningMacro("No lattice of fewer than " << hi << " vertices stays within the error bound of "
                                                     << this->MaximumError << " %; the lattice keeps " << hi
                                                     << " vertices.");
-      if (!found || fit.target != searched.count)
-      {
-        if (!fitAt(searched.count, 0.85, 0.9, fit))
+        if (!fitAt(hi, 0.85, 0.9, fit))
         {
           vtkWarningMacro("Aborted.");
           return 1;

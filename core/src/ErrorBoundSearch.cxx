@@ -27,10 +27,10 @@ ErrorBoundSearchResult fewestWithinErrorBound(std::size_t lo, std::size_t hi, do
     throw std::invalid_argument("the assumed exponent must be positive");
 
   ErrorBoundSearchResult result;
-  // Bracket: `failing` is the largest count measured above the bound (lo - 1
-  // notionally, its error unknown), `within` the smallest within it (hi
-  // notionally). The previous measurement on each side gives a slope when the
-  // other side is not measured yet.
+  // The bracket: `above` ends at the largest count measured above the bound
+  // (lo - 1 notionally, its error unknown), `below` at the smallest measured
+  // within it (hi notionally). A side's previous measurement gives a slope
+  // while the other side is not measured yet.
   struct Side
   {
     double count = 0.0, error = NAN;         // the bracket's end
@@ -53,6 +53,8 @@ ErrorBoundSearchResult fewestWithinErrorBound(std::size_t lo, std::size_t hi, do
     const double q = std::log(s.previousError / s.error) / std::log(s.count / s.previousCount);
     return std::isfinite(q) ? std::clamp(q, 0.5, 4.0) : pAssumed;
   };
+  // Halving: geometric while the ends are more than a factor 2 apart.
+  auto halve = [](double f, double w) { return w > 2.0 * f ? std::sqrt(f * w) : 0.5 * (f + w); };
   auto record = [](Side& s, double n, double e) {
     s.previousCount = s.count;
     s.previousError = s.measured ? s.error : NAN;
@@ -77,7 +79,7 @@ ErrorBoundSearchResult fewestWithinErrorBound(std::size_t lo, std::size_t hi, do
       const double t = (std::log(above.error) - std::log(bound)) / (std::log(above.error) - std::log(below.error));
       estimate = std::exp(std::log(f) + t * (std::log(w) - std::log(f)));
       if (sameSide >= 3)
-        estimate = w > 2.0 * f ? std::sqrt(f * w) : 0.5 * (f + w);
+        estimate = halve(f, w);
       else if (sameSide == 2)
         estimate += lastSide < 0 ? 0.5 * width : -0.5 * width;
     }
@@ -97,8 +99,8 @@ ErrorBoundSearchResult fewestWithinErrorBound(std::size_t lo, std::size_t hi, do
     }
     else
       // Nothing usable (a first probe, errors of 0 or unmeasurable, or a
-      // bracket whose ends are out of order): halve it.
-      estimate = w > 2.0 * f ? std::sqrt(f * w) : 0.5 * (f + w);
+      // bracket whose ends are out of order).
+      estimate = halve(f, w);
     // Strictly inside the bracket.
     const auto n = static_cast<std::size_t>(std::llround(std::clamp(estimate, above.count + 1.0, w - 1.0)));
 
@@ -114,10 +116,8 @@ ErrorBoundSearchResult fewestWithinErrorBound(std::size_t lo, std::size_t hi, do
     lastSide = side;
     record(side > 0 ? below : above, static_cast<double>(n), e);
   }
-  const std::size_t within = static_cast<std::size_t>(below.count);
-  const bool withinMeasured = below.measured;
-  result.count = within;
-  result.withinBound = withinMeasured;
+  result.count = static_cast<std::size_t>(below.count);
+  result.withinBound = below.measured;
   return result;
 }
 } // namespace lk

@@ -7,12 +7,14 @@
 /// power of the count (h^2 ~ 1/n for a smooth surface against its samples),
 /// so the count where it crosses the bound is estimated on a log-log line:
 /// through the two measured ends of the bracket when both are known (regula
-/// falsi in log-log), from one end with an assumed exponent when only one is.
-/// Two guards keep it from stalling: after two estimates on the same side the
-/// next one is pushed half the stopping width past the estimate (so that it
-/// tends to land on the other side), and after three the bracket is halved
-/// (geometrically while its ends are more than a factor 2 apart). Every probe
-/// lies strictly inside the bracket, so the search ends.
+/// falsi in log-log); from one end when only one is, with the slope of that
+/// side's last two measurements (kept to exponents 0.5 to 4) or the assumed
+/// exponent before there are two. Guards keep it from stalling: after two
+/// estimates on the same side the next one is pushed half the stopping width
+/// past the estimate (so that it tends to land on the other side), and after
+/// three the bracket is halved (geometrically while its ends are more than a
+/// factor 2 apart), or, while only one side is measured, the extrapolated step
+/// doubles. Every probe lies strictly inside the bracket, so the search ends.
 ///
 /// It stops when the bracket (the largest count measured above the bound, the
 /// smallest within it) is no wider than `countTolerance` of the count (at
