@@ -15,6 +15,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkMath.h>
+#include <vtkOBJReader.h>
+#include <vtkAlgorithm.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataReader.h>
 
@@ -43,6 +45,28 @@ std::set<lk::EdgeKey> latticeEdges(vtkPolyData* lattice)
       edges.insert(lk::edgeKey(ids[k], ids[(k + 1) % n]));
   }
   return edges;
+}
+
+/// A mesh of tests/data (.vtp or .obj).
+vtkSmartPointer<vtkPolyData> readTestData(const std::string& name)
+{
+  const std::string path = std::string(LATTICEKIT_TEST_DATA) + "/" + name;
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(path.c_str());
+    reader = obj;
+  }
+  else
+  {
+    auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    xml->SetFileName(path.c_str());
+    reader = xml;
+  }
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> pd = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  return pd;
 }
 } // namespace
 
@@ -218,15 +242,8 @@ TEST(LatticeFitFilter, InsertionsThatDoNotLowerTheMaxAreUndone)
   // artefact and the second pass bulges (Metro max 4.3 % against 1.6 %), so
   // the filter redoes the fit without them: the whole target to the QEM, one
   // refinement pass without the tail penalty.
-  auto read = [](const std::string& name) {
-    vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/" + name).c_str());
-    reader->Update();
-    vtkSmartPointer<vtkPolyData> pd = reader->GetOutput();
-    return pd;
-  };
-  auto piece = read("mandible_piece.vtp");
-  auto line = read("mandible_piece_cut_line.vtp");
+  auto piece = readTestData("mandible_piece.vtp");
+  auto line = readTestData("mandible_piece_cut_line.vtp");
   ASSERT_EQ(piece->GetNumberOfPoints(), 4357);
   auto run = [&](bool defaults) {
     auto fit = vtkSmartPointer<vtkLKLatticeFitFilter>::New();
@@ -422,25 +439,10 @@ TEST(LatticeFitFilter, UnreachableTargetIsAWarning)
 {
   // A torus cannot be simplified to 5 vertices without changing its
   // topology: the lattice stops above the target, and the filter says so.
-  const int nu = 16, nv = 8;
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> triangles;
-  for (int i = 0; i < nu; ++i)
-  {
-    for (int j = 0; j < nv; ++j)
-    {
-      const double u = 2.0 * M_PI * i / nu, v = 2.0 * M_PI * j / nv;
-      points->InsertNextPoint((3.0 + std::cos(v)) * std::cos(u), (3.0 + std::cos(v)) * std::sin(u), std::sin(v));
-      const vtkIdType a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
-                      d = i * nv + (j + 1) % nv;
-      const vtkIdType t0[3] = { a, b, c }, t1[3] = { a, c, d };
-      triangles->InsertNextCell(3, t0);
-      triangles->InsertNextCell(3, t1);
-    }
-  }
-  vtkNew<vtkPolyData> torus;
-  torus->SetPoints(points);
-  torus->SetPolys(triangles);
+  // The 16 x 8 torus of the command-line test (radii 3 and 1).
+  auto torus = readTestData("torus.obj");
+  ASSERT_EQ(torus->GetNumberOfPoints(), 128);
+  ASSERT_EQ(torus->GetNumberOfPolys(), 256);
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(torus);
   fit->SetTargetNumberOfVertices(5);
