@@ -272,7 +272,12 @@ struct Foot
 /// (u, v) by barycentric interpolation, then Gauss-Newton steps on that patch
 /// (clamped to the parameter square). Cheaper than LatticeSurfaceLocator's
 /// exhaustive search, and enough for samples that lie close to the surface.
-std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& samples, int resolution)
+/// `previous`: the samples' foot points on a surface of the same lattice
+/// before a step; each one's tessellation triangle starts its own search,
+/// which bounds it nearly at the answer (half the search time on the
+/// mandible; the answer is the same up to ties between triangles).
+std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& samples, int resolution,
+  const std::vector<Foot>* previous = nullptr)
 {
   const int r = std::max(2, resolution);
   TriangleMesh tess;
@@ -298,6 +303,8 @@ std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& s
       }
   }
   const ClosestPointTree tree(tess);
+  const bool usePrevious = previous && previous->size() == samples.size() &&
+    std::all_of(previous->begin(), previous->end(), [&](const Foot& f) { return f.patch < s.patches.size(); });
   std::vector<Foot> out(samples.size());
   auto work = [&](std::size_t begin, std::size_t end) {
     ClosestPointTree::Hit hint;
@@ -305,6 +312,17 @@ std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& s
     for (std::size_t i = begin; i < end; ++i)
     {
       const Vec3& q = samples[i];
+      if (usePrevious)
+      {
+        // The triangle of cell (ci, cj) that holds the previous (u, v):
+        // the first of the pair below its diagonal, the second above.
+        const Foot& f = (*previous)[i];
+        const double fu = f.u * r, fv = f.v * r;
+        const int ci = std::clamp(static_cast<int>(fu), 0, r - 1), cj = std::clamp(static_cast<int>(fv), 0, r - 1);
+        const std::size_t cell = f.patch * static_cast<std::size_t>(r * r) + static_cast<std::size_t>(ci * r + cj);
+        hint.face = static_cast<std::int64_t>(2 * cell + (fu - ci >= fv - cj ? 0 : 1));
+        haveHint = true;
+      }
       hint = haveHint ? tree.closest(q, hint) : tree.closest(q);
       haveHint = true;
       const Triangle& t = tess.triangles[static_cast<std::size_t>(hint.face)];
@@ -604,16 +622,19 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     const Anchors anchors = buildAnchors(lattice, options.weights.vertex);
     const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
     std::vector<Combo> combos(samples.size());
+    inChunks(samples.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t s = begin; s < end; ++s)
+        combos[s] = sampleCombo(models[feet[s].patch], feet[s].u, feet[s].v);
+    });
     double weight = 0.0;
-    for (std::size_t s = 0; s < samples.size(); ++s)
-    {
-      combos[s] = sampleCombo(models[feet[s].patch], feet[s].u, feet[s].v);
-      for (const auto& vw : combos[s])
+    for (const Combo& combo : combos)
+      for (const auto& vw : combo)
         weight += vw.second * vw.second;
-    }
     std::vector<Combo> reverseCombos(reverse.size());
-    for (std::size_t r = 0; r < reverse.size(); ++r)
-      reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
+    inChunks(reverse.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t r = begin; r < end; ++r)
+        reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
+    });
     // Each distance d = |e| with its weight, and its tail residual where d > tau.
     std::vector<std::vector<Term>> termsOfFace(lattice.faces.size());
     auto addDistance = [&](std::size_t patch, const Combo& combo, const Vec3& e, const Vec3& n, double d, double w) {
@@ -658,7 +679,10 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       }
       ceres::Solver::Options so;
       so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-      so.max_num_iterations = 3;
+      // The step is linear (FaceResidual, Damping): one Gauss-Newton step
+      // with this trust region solves it. A second iteration only confirmed
+      // convergence, at the cost of another factorisation (same result).
+      so.max_num_iterations = 1;
       so.initial_trust_region_radius = 1e8;
       so.logging_type = ceres::SILENT;
       so.minimizer_progress_to_stdout = false;
@@ -672,7 +696,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       try
       {
         LatticeSurface trial = buildLatticeSurface(lattice, options.weights);
-        std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution);
+        std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution, &feet);
         std::vector<ReversePoint> trialReverse;
         if (twoWay)
           trialReverse = reversePoints(trial, *options.original, *originalTree);
