@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 vtkStandardNewMacro(vtkLKStrokeFeatureLineFilter);
 
@@ -226,6 +227,21 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
     return 0;
   }
 
+  std::map<std::int64_t, double> gapOf;
+  for (std::size_t i = 0; i < r.snapGaps.size(); ++i)
+    if (r.snapGaps[i] > 0.0)
+      gapOf[r.movedVertices[i]] = r.snapGaps[i];
+  if (!gapOf.empty())
+  {
+    double largest = 0.0;
+    for (const auto& vg : gapOf)
+      largest = std::max(largest, vg.second);
+    vtkWarningMacro(<< gapOf.size() << " of " << r.movedVertices.size()
+                    << " line vertices stop short of the stroke, by up to " << largest
+                    << ": snapping them onto it would fold the triangles around them (point data StrokeGap of "
+                       "output 1). The split mode puts the line on the stroke exactly.");
+  }
+
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(r.mesh);
   output->SetPoints(result->GetPoints());
   if (r.mesh.points.size() == mesh.points.size())
@@ -272,6 +288,18 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   lineOut->SetPoints(pts);
   lineOut->SetLines(cells);
   lineOut->GetPointData()->AddArray(meshIds);
+  if (this->Mode == SNAP)
+  {
+    // How far each line vertex is left from the stroke (0: on it).
+    vtkNew<vtkDoubleArray> gap;
+    gap->SetName("StrokeGap");
+    for (vtkIdType i = 0; i < meshIds->GetNumberOfTuples(); ++i)
+    {
+      const auto it = gapOf.find(meshIds->GetValue(i));
+      gap->InsertNextValue(it == gapOf.end() ? 0.0 : it->second);
+    }
+    lineOut->GetPointData()->AddArray(gap);
+  }
   vtkNew<vtkDoubleArray> closed;
   closed->SetName("Closed");
   closed->InsertNextValue(r.closed ? 1.0 : 0.0);

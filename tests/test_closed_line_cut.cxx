@@ -203,6 +203,37 @@ TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
         }
       }
       EXPECT_GT(moved, 10);
+      // No triangle folds or flattens: each keeps its normal within 60
+      // degrees and 1 % of its area (the earlier snap turned some over here).
+      vtkCellArray* before = bone->GetPolys();
+      vtkCellArray* after = feature->GetOutput()->GetPolys();
+      ASSERT_EQ(before->GetNumberOfCells(), after->GetNumberOfCells());
+      auto normal = [](vtkPolyData* mesh, vtkCellArray* cells, vtkIdType c) {
+        vtkIdType n;
+        const vtkIdType* ids;
+        cells->GetCellAtId(c, n, ids);
+        double p[3][3];
+        for (int k = 0; k < 3; ++k)
+          mesh->GetPoint(ids[k], p[k]);
+        const lk::Vec3 a(p[0]), b(p[1]), c3(p[2]);
+        return lk::Vec3((b - a).cross(c3 - a));
+      };
+      int folded = 0;
+      for (vtkIdType c = 0; c < before->GetNumberOfCells(); ++c)
+      {
+        const lk::Vec3 n0 = normal(bone, before, c), n1 = normal(feature->GetOutput(), after, c);
+        if (n1.norm() < 0.01 * n0.norm() * (1 - 1e-9) || n0.dot(n1) < 0.5 * n0.norm() * n1.norm() * (1 - 1e-9))
+          ++folded;
+      }
+      EXPECT_EQ(folded, 0);
+      // Every line vertex says how far it is left from the stroke.
+      vtkDataArray* gap = line->GetPointData()->GetArray("StrokeGap");
+      ASSERT_NE(gap, nullptr);
+      EXPECT_GE(gap->GetRange()[0], 0.0);
+      EXPECT_GT(gap->GetRange()[1], 0.0); // some vertices stop short on this stroke (0.054 mm)
+      EXPECT_LT(gap->GetRange()[1], 0.2); // mm; the mandible's edges are about 1 mm
+      EXPECT_EQ(errors.warnings, 1);
+      EXPECT_NE(errors.warningMessages.find("stop short of the stroke"), std::string::npos) << errors.warningMessages;
     }
     // The line cuts the (possibly snapped) mesh into two pieces.
     vtkNew<vtkPolyData> surface;

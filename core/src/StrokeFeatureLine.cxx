@@ -43,6 +43,82 @@ Vec3 closestOnPolyline(const std::vector<Vec3>& line, const Vec3& p)
   return best;
 }
 
+/// Whether every triangle of `around` keeps its orientation and its shape at
+/// the current points: its normal within 60 degrees of the input's, and at
+/// least 1 % of its input area (three line vertices of one triangle on a
+/// straight stroke would flatten it).
+constexpr double kSnapCosTurn = 0.5;
+constexpr double kSnapAreaRatio = 0.01;
+bool snapKeepsTriangles(const TriangleMesh& input, const std::vector<Vec3>& points,
+  const std::vector<std::int64_t>& around)
+{
+  for (const auto f : around)
+  {
+    const Triangle& t = input.triangles[static_cast<std::size_t>(f)];
+    auto normal = [&](const std::vector<Vec3>& p) {
+      const Vec3& a = p[static_cast<std::size_t>(t[0])];
+      return Vec3((p[static_cast<std::size_t>(t[1])] - a).cross(p[static_cast<std::size_t>(t[2])] - a));
+    };
+    const Vec3 n0 = normal(input.points), n1 = normal(points);
+    const double l0 = n0.norm(), l1 = n1.norm();
+    if (!(l1 >= kSnapAreaRatio * l0) || n0.dot(n1) < kSnapCosTurn * l0 * l1)
+      return false;
+  }
+  return true;
+}
+
+/// Snap: each path vertex moves to the closest point of the projected
+/// stroke, as far as it can without folding a triangle around it. A vertex
+/// whose full move would turn one of its triangles by more than 60 degrees
+/// or flatten it stops at the farthest fraction of the move (bisection)
+/// that keeps them; those vertices are retried after the others have moved,
+/// and what is left of each move is reported (StrokeResult::snapGaps).
+void snapPath(const TriangleMesh& mesh, const std::vector<Vec3>& projected, const std::vector<std::int64_t>& path,
+  StrokeResult& result)
+{
+  std::vector<std::vector<std::int64_t>> facesAt(mesh.points.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (const auto v : mesh.triangles[f])
+      facesAt[static_cast<std::size_t>(v)].push_back(static_cast<std::int64_t>(f));
+  std::vector<std::int64_t> todo;
+  std::set<std::int64_t> seen;
+  for (const auto v : path)
+    if (seen.insert(v).second)
+      todo.push_back(v);
+  result.movedVertices = todo;
+  std::vector<Vec3>& points = result.mesh.points;
+  for (int pass = 0; pass < 3 && !todo.empty(); ++pass)
+  {
+    std::vector<std::int64_t> shortOnes;
+    for (const auto v : todo)
+    {
+      const auto vi = static_cast<std::size_t>(v);
+      const Vec3 from = points[vi], to = closestOnPolyline(projected, mesh.points[vi]);
+      points[vi] = to;
+      if (snapKeepsTriangles(mesh, points, facesAt[vi]))
+        continue;
+      double lo = 0.0, hi = 1.0; // lo keeps the triangles (the vertex's place before this move does)
+      for (int k = 0; k < 20; ++k)
+      {
+        const double mid = 0.5 * (lo + hi);
+        points[vi] = from + mid * (to - from);
+        (snapKeepsTriangles(mesh, points, facesAt[vi]) ? lo : hi) = mid;
+      }
+      points[vi] = from + lo * (to - from);
+      shortOnes.push_back(v);
+    }
+    todo = std::move(shortOnes);
+  }
+  result.snapGaps.assign(result.movedVertices.size(), 0.0);
+  const std::set<std::int64_t> shortOnes(todo.begin(), todo.end());
+  for (std::size_t i = 0; i < result.movedVertices.size(); ++i)
+  {
+    const auto vi = static_cast<std::size_t>(result.movedVertices[i]);
+    if (shortOnes.count(result.movedVertices[i]))
+      result.snapGaps[i] = (closestOnPolyline(projected, mesh.points[vi]) - points[vi]).norm();
+  }
+}
+
 } // namespace
 
 StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& strokeIn, const StrokeOptions& o)
@@ -201,17 +277,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     for (std::size_t i = 0; i + 1 < simple.size(); ++i)
       result.featureEdges.push_back(edgeKey(simple[i], simple[i + 1]));
     if (o.mode == StrokeMode::Snap)
-    {
-      std::set<std::int64_t> done;
-      for (auto v : simple)
-      {
-        if (!done.insert(v).second)
-          continue;
-        result.mesh.points[static_cast<std::size_t>(v)] =
-          closestOnPolyline(projected, mesh.points[static_cast<std::size_t>(v)]);
-        result.movedVertices.push_back(v);
-      }
-    }
+      snapPath(mesh, projected, simple, result);
   }
   sortUnique(result.featureEdges);
   return result;

@@ -19,7 +19,13 @@
 ///   point of the projected stroke polyline; connectivity is unchanged.
 ///   (Eq. 3.12 slides a vertex along one of its edges towards the next
 ///   input point; the closest point on the stroke is the same aim without
-///   being limited to one edge. Only path vertices move.)
+///   being limited to one edge. Only path vertices move.) A move that would
+///   fold the mesh (turn a triangle around the vertex by more than 60
+///   degrees from the input's, or leave it less than 1 % of its area, as
+///   three line vertices of one triangle on a straight stroke would) stops
+///   short, at the farthest point of the move that keeps them; such
+///   vertices are retried after the others, and `snapGaps` says how far
+///   each one is left from the stroke (eq. 3.12 can fold there too).
 /// - Split (3.1.4): new vertices where the projected stroke crosses mesh edges
 ///   (the point of the edge nearest the stroke segment between two samples
 ///   on either side, eq. 3.13's foot point), and at the stroke's two ends
@@ -60,7 +66,8 @@ struct StrokeResult
   std::vector<EdgeKey> featureEdges;       ///< sorted, unique
   std::vector<std::int64_t> line;          ///< the vertex path (NearestEdges, Snap)
   std::vector<std::int64_t> paintedFaces;  ///< Paint: the covered faces
-  std::vector<std::int64_t> movedVertices; ///< Snap
+  std::vector<std::int64_t> movedVertices; ///< Snap: the path's vertices
+  std::vector<double> snapGaps;            ///< Snap: per moved vertex, its distance left to the stroke (0: on it)
   bool closed = false;
 };
 
