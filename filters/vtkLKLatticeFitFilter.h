@@ -45,8 +45,11 @@
  * ErrorBoundTrialCountAndError (2 components per trial, in order: the vertex
  * count and its Hausdorff error in %), and with
  * Refinement RefinementInitialRMS, RefinementFinalRMS, RefinementIterations
- * (both passes), RefinementInsertions (the vertices inserted) and
- * RefinementInsertionsRefused (tried and undone, see RefinementInsertions).
+ * (both passes), RefinementSamples (the input's samples the refinement fits:
+ * Metro's vertices, edges and 4 faces per triangle, at least 20,000; beyond
+ * 500,000 thinned to 150 per lattice vertex), RefinementInsertions (the
+ * vertices inserted) and RefinementInsertionsRefused (tried and undone, see
+ * RefinementInsertions).
  *
  * Output 1: the input mesh with point data "LatticeFaceId" (the lattice face
  * each input vertex projects onto: the face of its closest point on the

@@ -563,3 +563,38 @@ TEST(LatticeFitFilter, ErrorBoundFindsAFewVerticesWithinIt)
   fewer->Update();
   EXPECT_GT(field(fewer->GetOutput(), "Hausdorff_MaxPercent"), 0.5);
 }
+
+TEST(LatticeFitFilter, AHugeInputIsThinnedForTheRefinement)
+{
+  // A sphere of 180,000 triangles gives Metro's sampling about 1.4 million
+  // samples; the refinement of a 200-vertex lattice keeps 500,000 of them
+  // (150 per vertex would be 30,000; 500,000 is the floor of the cap). The
+  // mandible stays below the cap and keeps all of its samples.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(300);
+  sphere->SetPhiResolution(302);
+  sphere->SetRadius(10.0);
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputConnection(sphere->GetOutputPort());
+  fit->SetTargetNumberOfVertices(200);
+  fit->SetRefinement(true);
+  fit->SetRefinementIterations(2);
+  fit->SetRefinementInsertions(0);
+  fit->Update();
+  ASSERT_GT(sphere->GetOutput()->GetNumberOfPolys(), 170000);
+  EXPECT_EQ(field(fit->GetOutput(), "RefinementSamples"), 500000.0);
+  EXPECT_LT(field(fit->GetOutput(), "RefinementFinalRMS"), field(fit->GetOutput(), "RefinementInitialRMS"));
+  EXPECT_LT(field(fit->GetOutput(), "Hausdorff_MeanPercent"), 0.05);
+
+  auto bone = lktest::tciaMandible();
+  vtkNew<vtkLKLatticeFitFilter> small;
+  small->SetInputData(bone);
+  small->SetTargetNumberOfVertices(300);
+  small->SetRefinement(true);
+  small->SetRefinementIterations(1);
+  small->SetRefinementInsertions(0);
+  small->Update();
+  // Every vertex, edge and face sample: more than the 4 face samples per triangle.
+  EXPECT_GT(field(small->GetOutput(), "RefinementSamples"), 4.0 * bone->GetNumberOfPolys());
+  EXPECT_LT(field(small->GetOutput(), "RefinementSamples"), 500000.0);
+}
