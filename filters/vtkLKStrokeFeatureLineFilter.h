@@ -11,9 +11,9 @@
  * NEAREST_EDGES (the edge path through the vertices nearest the stroke,
  * without self-intersection), SNAP (that path with its vertices moved onto
  * the stroke, connectivity unchanged; a vertex whose move would fold a
- * triangle around it (turning it by more than 60 degrees, or leaving it less
- * than 1 % of its area) stops short, with a
- * warning and its distance left in point data "StrokeGap" of output 1) and SPLIT (new vertices where the
+ * triangle around it, turning it by more than 60 degrees or leaving it less
+ * than 1 % of its area, stops short, with a warning and its distance left in
+ * point data "StrokeGap" of output 1) and SPLIT (new vertices where the
  * stroke crosses edges and at its ends, faces split so that new edges follow
  * the stroke; the mesh stays a manifold triangle mesh; input point data are
  * not passed in this mode, as points are added). A stroke whose ends are

@@ -80,20 +80,26 @@ void snapPath(const TriangleMesh& mesh, const std::vector<Vec3>& projected, cons
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
     for (const auto v : mesh.triangles[f])
       facesAt[static_cast<std::size_t>(v)].push_back(static_cast<std::int64_t>(f));
-  std::vector<std::int64_t> todo;
   std::set<std::int64_t> seen;
   for (const auto v : path)
     if (seen.insert(v).second)
-      todo.push_back(v);
-  result.movedVertices = todo;
+      result.movedVertices.push_back(v);
+  const std::size_t n = result.movedVertices.size();
+  std::vector<Vec3> targets(n);
+  std::vector<std::size_t> todo(n); // indices into movedVertices
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    targets[i] = closestOnPolyline(projected, mesh.points[static_cast<std::size_t>(result.movedVertices[i])]);
+    todo[i] = i;
+  }
   std::vector<Vec3>& points = result.mesh.points;
   for (int pass = 0; pass < 3 && !todo.empty(); ++pass)
   {
-    std::vector<std::int64_t> shortOnes;
-    for (const auto v : todo)
+    std::vector<std::size_t> shortOnes;
+    for (const auto i : todo)
     {
-      const auto vi = static_cast<std::size_t>(v);
-      const Vec3 from = points[vi], to = closestOnPolyline(projected, mesh.points[vi]);
+      const auto vi = static_cast<std::size_t>(result.movedVertices[i]);
+      const Vec3 from = points[vi], to = targets[i];
       points[vi] = to;
       if (snapKeepsTriangles(mesh, points, facesAt[vi]))
         continue;
@@ -105,18 +111,13 @@ void snapPath(const TriangleMesh& mesh, const std::vector<Vec3>& projected, cons
         (snapKeepsTriangles(mesh, points, facesAt[vi]) ? lo : hi) = mid;
       }
       points[vi] = from + lo * (to - from);
-      shortOnes.push_back(v);
+      shortOnes.push_back(i);
     }
     todo = std::move(shortOnes);
   }
-  result.snapGaps.assign(result.movedVertices.size(), 0.0);
-  const std::set<std::int64_t> shortOnes(todo.begin(), todo.end());
-  for (std::size_t i = 0; i < result.movedVertices.size(); ++i)
-  {
-    const auto vi = static_cast<std::size_t>(result.movedVertices[i]);
-    if (shortOnes.count(result.movedVertices[i]))
-      result.snapGaps[i] = (closestOnPolyline(projected, mesh.points[vi]) - points[vi]).norm();
-  }
+  result.snapGaps.assign(n, 0.0);
+  for (const auto i : todo)
+    result.snapGaps[i] = (targets[i] - points[static_cast<std::size_t>(result.movedVertices[i])]).norm();
 }
 
 } // namespace
