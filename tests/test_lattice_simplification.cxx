@@ -249,6 +249,42 @@ TEST(LatticeRefinement, MovesTheSurfaceOntoTheSamples)
   EXPECT_EQ(lattice.points[7], p7);
 }
 
+TEST(LatticeRefinement, ReportsProgressTwicePerIterationAndStopsWhenAsked)
+{
+  const lk::TriangleMesh sphere = lktest::icosphere(4, 10.0);
+  lk::SimplificationOptions o;
+  o.targetVertices = 200;
+  const lk::PolygonMesh start = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
+  lk::RefinementOptions ro;
+  ro.iterations = 4;
+  std::vector<double> seen;
+  ro.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  lk::PolygonMesh lattice = start;
+  const auto report = lk::refineLatticeFit(lattice, sphere.points, ro);
+  ASSERT_EQ(report.iterations, 4);
+  ASSERT_GE(seen.size(), 8u); // a retried step reports its half again
+  EXPECT_DOUBLE_EQ(seen.front(), 0.125);
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+  for (std::size_t i = 1; i < seen.size(); ++i)
+    EXPECT_GE(seen[i], seen[i - 1]);
+  // Stopped at the first half: the step is never applied.
+  lattice = start;
+  ro.progress = [](double) { return false; };
+  const auto stopped = lk::refineLatticeFit(lattice, sphere.points, ro);
+  EXPECT_EQ(stopped.iterations, 0);
+  EXPECT_EQ(lattice.points, start.points);
+  EXPECT_EQ(stopped.finalRms, stopped.initialRms);
+  // Stopped at the end of the first iteration: one step kept.
+  lattice = start;
+  ro.progress = [](double f) { return f < 0.25; };
+  const auto one = lk::refineLatticeFit(lattice, sphere.points, ro);
+  EXPECT_EQ(one.iterations, 1);
+  EXPECT_LT(one.finalRms, one.initialRms);
+}
+
 TEST(LatticeRefinement, WinsBackTheAccuracyQuadPairingLoses)
 {
   const double radius = 10.0;

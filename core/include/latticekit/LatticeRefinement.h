@@ -85,7 +85,9 @@ struct RefinementOptions
   /// linear model follows the vertex weights, the edge weights only the
   /// exact energy that accepts or refuses each step.
   LatticeWeights weights;
-  /// Called with the fraction done; returning false stops after the current step.
+  /// Called with the fraction done, twice per iteration (after the solve
+  /// and after the step is measured); returning false stops there, and a
+  /// step not yet measured is undone.
   std::function<bool(double)> progress;
 };
 
