@@ -651,7 +651,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     const std::vector<FaceBlock> faceBlocks = compress(termsOfFace);
 
     const std::vector<Vec3> x0 = lattice.points;
-    bool accepted = false, stopped = false;
+    bool accepted = false;
     for (int attempt = 0; attempt < 4 && !accepted; ++attempt)
     {
       std::vector<std::array<double, 3>> delta(nv, { 0.0, 0.0, 0.0 });
@@ -693,11 +693,9 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
         break;
       // Half the iteration is done; measuring the step is the other half
       // (on a 20,000-vertex skull an iteration takes half a minute).
+      // A stop here leaves the step unaccepted, so it is undone below.
       if (options.progress && !options.progress((it + 0.5) / double(options.iterations)))
-      {
-        stopped = true;
         break;
-      }
       for (std::size_t v = 0; v < nv; ++v)
         lattice.points[v] = x0[v] + Vec3(delta[v][0], delta[v][1], delta[v][2]);
       try
@@ -723,7 +721,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       }
       damping = accepted ? std::max(1e-4, 0.5 * damping) : 4.0 * damping;
     }
-    if (!accepted || stopped)
+    if (!accepted)
     {
       lattice.points = x0;
       break;
