@@ -194,6 +194,38 @@ double bumpFalloff(double radius)
   return std::log(100.0) / (radius * radius);
 }
 
+/// `text` with every line broken at spaces to at most `width` characters
+/// (a longer word stays whole).
+std::string wrapped(const std::string& text, std::size_t width)
+{
+  std::string out;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+  {
+    std::string current;
+    std::istringstream words(line);
+    for (std::string word; words >> word;)
+    {
+      if (!current.empty() && current.size() + 1 + word.size() > width)
+      {
+        out += current + "\n";
+        current = "  "; // continuation lines are indented
+      }
+      current += (current.empty() || current == "  " ? "" : " ") + word;
+    }
+    out += current + "\n";
+  }
+  if (!out.empty())
+    out.pop_back();
+  return out;
+}
+
+/// Appends `line` to a message of several lines.
+void addLine(std::string& message, const std::string& line)
+{
+  message += (message.empty() ? "" : "\n") + line;
+}
+
 const char* modeName(int mode)
 {
   switch (mode)
@@ -392,7 +424,7 @@ public:
   std::vector<std::array<double, 3>> current;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
-  vtkNew<vtkTextActor> help, status;
+  vtkNew<vtkTextActor> help, status, messages;
   vtkNew<vtkScalarBarActor> scalarBar;
   vtkNew<vtkActor> strokeActor;
   vtkNew<vtkPolyData> strokePd;
@@ -474,6 +506,13 @@ public:
     status->GetTextProperty()->SetColor(0.1, 0.1, 0.4);
     status->SetDisplayPosition(8, 78);
     renderer->AddViewProp(status);
+    // Problems and warnings, at the top where they are seen while drawing.
+    messages->GetTextProperty()->SetFontSize(14);
+    messages->GetTextProperty()->SetColor(0.6, 0.1, 0.0);
+    messages->GetTextProperty()->SetVerticalJustificationToTop();
+    messages->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    messages->GetPositionCoordinate()->SetValue(0.01, 0.985);
+    renderer->AddViewProp(messages);
     scalarBar->SetTitle("Metro distance");
     scalarBar->SetNumberOfLabels(4);
     scalarBar->SetVisibility(false);
@@ -514,9 +553,11 @@ public:
     deformers.clear();
     vtkSmartPointer<vtkPolyData> surface = bone;
     std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
-    int failed = 0;
-    for (const Stroke& st : session.strokes)
+    std::vector<std::string> notes; // per stroke: why it failed, or what its filter warned
+    for (std::size_t i = 0; i < session.strokes.size(); ++i)
     {
+      const Stroke& st = session.strokes[i];
+      const std::string which = "stroke " + std::to_string(i + 1) + " (" + modeName(st.mode) + ")";
       vtkNew<vtkPoints> pts;
       for (const auto& p : st.points)
         pts->InsertNextPoint(p.data());
@@ -530,11 +571,15 @@ public:
       f->SetInputData(faces);
       f->SetStrokeData(stroke);
       f->SetMode(st.mode);
-      const int before = lkapp::errorCount();
+      const int errorsBefore = lkapp::errorCount(), warningsBefore = lkapp::warningCount();
       f->Update();
-      if (lkapp::errorCount() > before || f->GetOutput()->GetNumberOfPoints() == 0)
+      const std::string warned = lkapp::warningsSince(warningsBefore);
+      if (!warned.empty())
+        notes.push_back(which + ": " + warned);
+      if (lkapp::errorCount() > errorsBefore || f->GetOutput()->GetNumberOfPoints() == 0)
       {
-        ++failed;
+        const std::string why = lkapp::errorsSince(errorsBefore);
+        notes.push_back(which + " failed: " + (why.empty() ? "no feature line" : why));
         continue; // the stroke stays in the session; the message says why
       }
       auto next = vtkSmartPointer<vtkPolyData>::New();
@@ -547,8 +592,8 @@ public:
         st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
         closedLines.push_back(line);
     }
-    if (failed > 0)
-      cut.message = std::to_string(failed) + " stroke(s) missed the surface or failed (see the terminal)";
+    for (const auto& note : notes)
+      addLine(cut.message, note);
     vtkNew<vtkPolyData> faces;
     faces->ShallowCopy(surface);
     vtkNew<vtkCellArray> none;
@@ -586,12 +631,12 @@ public:
       }
       else
       {
-        cut.message = "the cut failed: " + lkapp::errors();
+        addLine(cut.message, "the cut failed: " + lkapp::errorsSince(before));
         cut.failed = true;
       }
     }
     else if (session.cut)
-      cut.message = "no closed line to cut along: draw a stroke whose ends meet";
+      addLine(cut.message, "no closed line to cut along: draw a stroke whose ends meet");
     if (cut.pieces.empty())
     {
       auto whole = vtkSmartPointer<vtkPolyData>::New();
@@ -637,8 +682,8 @@ public:
       if (d.piece < static_cast<int>(pieces.size()))
         perPiece[static_cast<std::size_t>(d.piece)].push_back(&d);
       else
-        message = "deformation " + std::to_string(i) + " is on piece " + std::to_string(d.piece) +
-          ", which does not exist: the plan has " + std::to_string(pieces.size()) + " piece(s)";
+        addLine(message, "deformation " + std::to_string(i) + " is on piece " + std::to_string(d.piece) +
+          ", which does not exist: the plan has " + std::to_string(pieces.size()) + " piece(s)");
     }
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
@@ -656,7 +701,7 @@ public:
       f->Update(); // only what changed is redone (the filter keeps its state)
       if (lkapp::errorCount() > before)
       {
-        message = "cannot deform piece " + std::to_string(p) + ": " + lkapp::errors();
+        addLine(message, "cannot deform piece " + std::to_string(p) + ": " + lkapp::errorsSince(before));
         continue;
       }
       auto deformed = vtkSmartPointer<vtkPolyData>::New();
@@ -697,7 +742,7 @@ public:
         const int before = lkapp::errorCount();
         smooth->Update();
         if (lkapp::errorCount() > before)
-          message = "no lattice for piece " + std::to_string(p) + " (see the terminal)";
+          addLine(message, "no lattice for piece " + std::to_string(p) + ": " + lkapp::errorsSince(before));
         if (smooth->GetOutput()->GetNumberOfPoints() > 0)
         {
           shown = smooth->GetOutput();
@@ -730,8 +775,8 @@ public:
       pieceActors[p].assign(sceneActors.begin() + static_cast<std::ptrdiff_t>(firstActor), sceneActors.end());
     }
     if (session.segment >= static_cast<int>(pieces.size()))
-      message = "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
-        std::to_string(pieces.size()) + " piece(s)";
+      addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
+        std::to_string(pieces.size()) + " piece(s)");
     placeSegment(session.segmentMatrix);
     updateStatus();
   }
@@ -804,11 +849,10 @@ public:
       s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
     else if (hasSegment())
       s << " | segment: piece " << session.segment << (isIdentity(session.segmentMatrix) ? "" : " (moved)");
-    if (!message.empty())
-      s << " | " << message;
     if (!notice.empty())
       s << " | " << notice;
     status->SetInput(s.str().c_str());
+    messages->SetInput(wrapped(message, 120).c_str());
   }
 
   void showStroke()
@@ -858,8 +902,9 @@ public:
         t.size(), u[u.size() / 2], u.back(), t[t.size() / 2], t.back());
     }
     std::printf("%s", segmentText().c_str());
-    if (!message.empty())
-      std::printf("message: %s\n", message.c_str());
+    std::istringstream lines(message);
+    for (std::string line; std::getline(lines, line);)
+      std::printf("message: %s\n", line.c_str());
   }
 
   bool exportPieces(const std::string& folder, std::string& error)

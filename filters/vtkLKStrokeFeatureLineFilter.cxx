@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 vtkStandardNewMacro(vtkLKStrokeFeatureLineFilter);
@@ -236,8 +237,10 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
     double largest = 0.0;
     for (const auto& vg : gapOf)
       largest = std::max(largest, vg.second);
+    char upTo[32];
+    std::snprintf(upTo, sizeof upTo, "%.3g", largest);
     vtkWarningMacro(<< gapOf.size() << " of " << r.movedVertices.size()
-                    << " line vertices stop short of the stroke, by up to " << largest
+                    << " line vertices stop short of the stroke, by up to " << upTo
                     << ": snapping them onto it would fold the triangles around them (point data StrokeGap of "
                        "output 1). The split mode puts the line on the stroke exactly.");
   }

@@ -40,9 +40,16 @@ namespace lkapp
 
 namespace
 {
-int g_errors = 0;
-std::string g_messages;
+std::vector<std::string> g_errors, g_warnings;
 bool g_quiet = false;
+
+std::string joined(const std::vector<std::string>& messages, int from)
+{
+  std::string all;
+  for (std::size_t i = static_cast<std::size_t>(std::max(from, 0)); i < messages.size(); ++i)
+    all += (all.empty() ? "" : "\n") + messages[i];
+  return all;
+}
 
 std::string lower(std::string s)
 {
@@ -84,8 +91,7 @@ public:
     {
       return; // the executive repeating the filter's own error
     }
-    ++g_errors;
-    g_messages += (g_messages.empty() ? "" : "\n") + m;
+    g_errors.push_back(m);
     std::cerr << "\nerror: " << m << std::endl;
   }
   void DisplayWarningText(const char* text) override
@@ -93,7 +99,9 @@ public:
     // Also with --quiet, which silences the progress bar only: a warning
     // says something about the result (a lattice above its target vertex
     // count, a volume without orientation) that a script must not lose.
-    std::cerr << "\nwarning: " << cleanMessage(text) << std::endl;
+    const std::string m = cleanMessage(text);
+    g_warnings.push_back(m);
+    std::cerr << "\nwarning: " << m << std::endl;
   }
   void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
   void DisplayDebugText(const char*) override {}
@@ -119,18 +127,32 @@ void installMessageHandler(bool quiet)
 
 int errorCount()
 {
-  return g_errors;
+  return static_cast<int>(g_errors.size());
 }
 
 std::string errors()
 {
-  return g_messages;
+  return joined(g_errors, 0);
+}
+
+std::string errorsSince(int count)
+{
+  return joined(g_errors, count);
 }
 
 void clearErrors()
 {
-  g_errors = 0;
-  g_messages.clear();
+  g_errors.clear();
+}
+
+int warningCount()
+{
+  return static_cast<int>(g_warnings.size());
+}
+
+std::string warningsSince(int count)
+{
+  return joined(g_warnings, count);
 }
 
 ProgressBar::ProgressBar(vtkAlgorithm* algorithm, const std::string& label, bool enabled)

@@ -23,9 +23,17 @@ namespace lkapp
 void installMessageHandler(bool quiet = false);
 /// Number of VTK errors since the last call to clearErrors().
 int errorCount();
-/// Messages of those errors, joined.
+/// Messages of those errors, joined by newlines.
 std::string errors();
+/// The messages of the errors after the first `count` (a count taken before a
+/// step gives that step's errors).
+std::string errorsSince(int count);
 void clearErrors();
+/// Number of VTK warnings so far, and the messages of those after the first
+/// `count`: a window shows a step's warnings where the user looks, not only
+/// in the terminal.
+int warningCount();
+std::string warningsSince(int count);
 
 /// A progress bar on standard error, driven by an algorithm's ProgressEvent.
 /// It stops where it is at the first VTK error (the error's line ends it), so
