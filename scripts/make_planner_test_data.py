@@ -1,5 +1,7 @@
 # Makes the planner test data: tests/data/mandible_session.json (a split-mode stroke
-# along the plane x = centre of the TCIA mandible, cut, lattice, Metro) and
+# along the plane x = centre of the TCIA mandible, cut, lattice, Metro),
+# tests/data/mandible_messages_session.json (that stroke off the bone, then in snap
+# mode) and
 # tests/data/mandible_events.log (a closed circle stroke drawn with the mouse on the
 # condyle, then the cut and lattice keys, then the cut-out segment moved and
 # rotated with the mouse and the session saved; vtkInteractorEventRecorder format).
@@ -30,6 +32,11 @@ print(o.GetNumberOfCells(), n, len(pts))
 session = {"strokes": [{"mode": "split", "points": pts}], "cut": True, "capping": True, "lattice": True, "latticeVertices": 400, "metro": True}
 if 'session' in parts:
     json.dump(session, open('tests/data/mandible_session.json', 'w'), indent=1)
+    # The messages test: the stroke moved 500 along x (it misses the bone), then
+    # the stroke itself in snap mode; cut, no lattice.
+    missed = {"mode": "split", "points": [[p[0] + 500, p[1], p[2]] for p in pts]}
+    messages = dict(session, strokes=[missed, {"mode": "snap", "points": pts}], lattice=False, metro=False)
+    json.dump(messages, open('tests/data/mandible_messages_session.json', 'w'), indent=1)
 
 import math, sys
 sys.path.insert(0, 'build/python')
