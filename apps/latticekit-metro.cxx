@@ -33,6 +33,8 @@ void usage(std::ostream& os)
         "  --no-edge        no edge samples\n"
         "  --no-face        no face samples\n"
         "  --one-sided      only A -> B\n"
+        "  --all-samples    mean and RMS over every sample counted once, as Metro 4 prints them\n"
+        "                   (default: area-weighted over the face samples)\n"
         "  --colored OUT    write A with per-point distance and colours (blue small, red large)\n"
         "  -q, --quiet      no progress bar\n"
         "  -h, --help       this help\n";
@@ -72,7 +74,7 @@ int main(int argc, char* argv[])
   std::string colored;
   long samples = 0, seed = 5489;
   double density = 0.0;
-  bool vertex = true, edge = true, face = true, symmetric = true, quiet = false;
+  bool vertex = true, edge = true, face = true, symmetric = true, quiet = false, allSamples = false;
   int method = vtkLKMetroFilter::MONTE_CARLO;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -96,6 +98,8 @@ int main(int argc, char* argv[])
       face = false;
     else if (a == "--one-sided")
       symmetric = false;
+    else if (a == "--all-samples")
+      allSamples = true;
     else if (a == "--colored")
       colored = args.value(a);
     else if (a == "-q" || a == "--quiet")
@@ -145,6 +149,7 @@ int main(int argc, char* argv[])
   metro->SetEdgeSampling(edge);
   metro->SetFaceSampling(face);
   metro->SetSymmetric(symmetric);
+  metro->SetMeanOverAllSamples(allSamples);
   const auto start = std::chrono::steady_clock::now();
   {
     lkapp::ProgressBar bar(metro, "metro", !quiet);
@@ -164,6 +169,8 @@ int main(int argc, char* argv[])
   std::printf("\tbbox diagonal (A and B together) %.6f\n", lkapp::fieldValue(out, "BoundingBoxDiagonal"));
   std::printf("\tface sampling %s\n",
     method == vtkLKMetroFilter::MONTE_CARLO ? "Monte Carlo" : "similar triangles");
+  std::printf("\tmean and RMS %s\n", allSamples ? "over all samples, each counted once (Metro 4)"
+                                                 : "area-weighted over the face samples");
   printDirection(out, "Forward distance (A -> B):", "AtoB");
   if (symmetric)
   {

@@ -90,6 +90,7 @@ void vtkLKMetroFilter::PrintSelf(ostream& os, vtkIndent indent)
      << (this->FaceSamplingMethod == MONTE_CARLO ? "MonteCarlo" : "SimilarTriangles") << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "Symmetric: " << this->Symmetric << "\n";
+  os << indent << "MeanOverAllSamples: " << this->MeanOverAllSamples << "\n";
   os << indent << "ColorMaximum: " << this->ColorMaximum << "\n";
 }
 
@@ -205,7 +206,7 @@ int vtkLKMetroFilter::RequestData(
         return 1;
       }
     }
-    stats[dir] = lk::summarizeDistances(samples, distance);
+    stats[dir] = lk::summarizeDistances(samples, distance, this->MeanOverAllSamples);
     this->SampleCounts[dir] = static_cast<vtkIdType>(samples.size());
 
     if (dir == 0)

@@ -16,7 +16,8 @@
  * Definitions (documented choices where Metro leaves room):
  * - max is over every sample (vertex, edge and face samples);
  * - mean and RMS are surface integrals estimated from the face samples, each
- *   weighted by the area it stands for;
+ *   weighted by the area it stands for (with MeanOverAllSamples, Metro 4's own
+ *   figures: every sample, vertex, edge and face, counted once);
  * - the symmetric figures take, for each statistic, the worse direction
  *   (so the symmetric max is the Hausdorff distance);
  * - percentages are relative to the diagonal of the bounding box of both
@@ -112,6 +113,18 @@ public:
   ///@}
 
   ///@{
+  /// Mean and RMS over every sample counted once (vertex, edge and face), as
+  /// Metro 4 prints them, for comparison with published Metro figures. Off
+  /// (default): area-weighted over the face samples, a surface integral that
+  /// does not depend on how many vertex and edge samples a mesh gets (a fine
+  /// mesh has many vertex samples, and a flat mesh's vertices are often its
+  /// farthest points).
+  vtkSetMacro(MeanOverAllSamples, bool);
+  vtkGetMacro(MeanOverAllSamples, bool);
+  vtkBooleanMacro(MeanOverAllSamples, bool);
+  ///@}
+
+  ///@{
   /// Distance mapped to red in DistanceColors; 0 (default) uses the 99th
   /// percentile of the point distances.
   vtkSetClampMacro(ColorMaximum, double, 0.0, VTK_DOUBLE_MAX);
@@ -150,6 +163,7 @@ protected:
   int FaceSamplingMethod = MONTE_CARLO;
   int RandomSeed = 5489;
   bool Symmetric = true;
+  bool MeanOverAllSamples = false;
   double ColorMaximum = 0.0;
   double EffectiveColorMaximum = 0.0;
   double Results[10] = {};

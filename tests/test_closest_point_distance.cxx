@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace
@@ -174,6 +175,29 @@ TEST(MetroDistance, SymmetricStatisticsTakeTheWorseDirection)
   EXPECT_EQ(s.max, 1.0);
   EXPECT_EQ(s.mean, 0.4);
   EXPECT_EQ(s.rms, 0.3);
+}
+
+TEST(MetroDistance, MeanOverAllSamplesCountsEachSampleOnce)
+{
+  // One vertex sample at 3, one edge sample at 1, two face samples at 0 and
+  // 2 standing for areas 3 and 1: area-weighted, the mean is (0*3 + 2*1)/4;
+  // Metro 4's mean counts the four samples alike.
+  lk::SampleSet s;
+  s.points.assign(4, lk::Vec3(0, 0, 0));
+  s.kinds = { lk::SampleKind::Vertex, lk::SampleKind::Edge, lk::SampleKind::Face, lk::SampleKind::Face };
+  s.weights = { 0.0, 0.0, 3.0, 1.0 };
+  s.faces = { -1, 0, 0, 0 };
+  const std::vector<double> d = { 3.0, 1.0, 0.0, 2.0 };
+  const lk::DistanceStatistics area = lk::summarizeDistances(s, d);
+  EXPECT_DOUBLE_EQ(area.mean, 0.5);
+  EXPECT_DOUBLE_EQ(area.rms, 1.0);
+  EXPECT_DOUBLE_EQ(area.max, 3.0);
+  const lk::DistanceStatistics all = lk::summarizeDistances(s, d, true);
+  EXPECT_DOUBLE_EQ(all.mean, 1.5);
+  EXPECT_DOUBLE_EQ(all.rms, std::sqrt(14.0 / 4.0));
+  EXPECT_DOUBLE_EQ(all.max, 3.0);
+  EXPECT_DOUBLE_EQ(all.area, 4.0);
+  EXPECT_EQ(all.samples(), 4u);
 }
 
 TEST(MetroDistance, HausdorffOfAPartialCopyIsOneSided)

@@ -293,6 +293,44 @@ TEST(MetroFilter, AgreesWithAnIndependentComputationOnTheMandible)
   EXPECT_NEAR(metro->GetBackwardRMS(), bwd.rms, 0.01 * bwd.rms);
 }
 
+TEST(MetroFilter, MeanOverAllSamplesPoolsTheThreeKindsOfSample)
+{
+  // Metro 4's mean counts every sample once: it is the three kinds' own
+  // means weighted by their counts. The samples do not depend on which kinds
+  // are on (edges and faces are seeded by their own index).
+  MandiblePair pair;
+  auto run = [&](bool vertex, bool edge, bool face, bool all) {
+    auto m = vtkSmartPointer<vtkLKMetroFilter>::New();
+    m->SetInputData(pair.copy);
+    m->SetTargetData(pair.surface);
+    m->SetVertexSampling(vertex);
+    m->SetEdgeSampling(edge);
+    m->SetFaceSampling(face);
+    m->SetMeanOverAllSamples(all);
+    m->Update();
+    return m;
+  };
+  auto pooled = run(true, true, true, true), area = run(true, true, true, false);
+  auto v = run(true, false, false, true), e = run(false, true, false, true), f = run(false, false, true, true);
+  vtkPolyData* out = pooled->GetOutput();
+  const double nv = field(out, "AtoB_VertexSamples"), ne = field(out, "AtoB_EdgeSamples"),
+               nf = field(out, "AtoB_FaceSamples");
+  ASSERT_GT(nv, 0.0);
+  ASSERT_GT(ne, 0.0);
+  ASSERT_GT(nf, 0.0);
+  const double n = nv + ne + nf;
+  const double mean = (nv * v->GetForwardMean() + ne * e->GetForwardMean() + nf * f->GetForwardMean()) / n;
+  EXPECT_NEAR(pooled->GetForwardMean(), mean, 1e-9 * mean);
+  const double ms = (nv * std::pow(v->GetForwardRMS(), 2) + ne * std::pow(e->GetForwardRMS(), 2) +
+                      nf * std::pow(f->GetForwardRMS(), 2)) / n;
+  EXPECT_NEAR(pooled->GetForwardRMS(), std::sqrt(ms), 1e-9 * std::sqrt(ms));
+  EXPECT_EQ(pooled->GetForwardMaximum(), area->GetForwardMaximum());
+  // The decimated copy's vertices lie off the surface more than its faces do
+  // on average, so counting them moves the mean.
+  EXPECT_GT(v->GetForwardMean(), area->GetForwardMean());
+  EXPECT_GT(std::abs(pooled->GetForwardMean() - area->GetForwardMean()), 0.01 * area->GetForwardMean());
+}
+
 TEST(MetroFilter, SingleTriangleIsMeasuredNotRefused)
 {
   vtkNew<vtkPoints> pts;

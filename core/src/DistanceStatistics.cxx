@@ -7,7 +7,7 @@
 namespace lk
 {
 
-DistanceStatistics summarizeDistances(const SampleSet& samples, const std::vector<double>& distances)
+DistanceStatistics summarizeDistances(const SampleSet& samples, const std::vector<double>& distances, bool overAllSamples)
 {
   if (distances.size() != samples.size())
   {
@@ -38,9 +38,9 @@ DistanceStatistics summarizeDistances(const SampleSet& samples, const std::vecto
         break;
     }
   }
-  if (wsum > 0.0)
+  s.area = wsum;
+  if (wsum > 0.0 && !overAllSamples)
   {
-    s.area = wsum;
     s.mean = wd / wsum;
     s.rms = std::sqrt(wd2 / wsum);
   }

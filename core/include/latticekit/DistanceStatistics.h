@@ -12,8 +12,8 @@ namespace lk
 struct DistanceStatistics
 {
   double max = 0.0;  ///< over every sample (vertex, edge, face)
-  double mean = 0.0; ///< area-weighted over face samples (all samples if none)
-  double rms = 0.0;  ///< area-weighted over face samples (all samples if none)
+  double mean = 0.0; ///< area-weighted over face samples (all samples if none, or if asked)
+  double rms = 0.0;  ///< area-weighted over face samples (all samples if none, or if asked)
   double area = 0.0; ///< sum of the face sample weights
   std::size_t vertexSamples = 0;
   std::size_t edgeSamples = 0;
@@ -21,8 +21,13 @@ struct DistanceStatistics
   std::size_t samples() const { return vertexSamples + edgeSamples + faceSamples; }
 };
 
-/// Summarises distances[i] of samples[i].
-DistanceStatistics summarizeDistances(const SampleSet& samples, const std::vector<double>& distances);
+/// Summarises distances[i] of samples[i]. With overAllSamples the mean and
+/// RMS count every sample once, vertex, edge and face alike, as Metro 4
+/// prints them; by default they are area-weighted over the face samples (a
+/// surface integral, which does not depend on how many vertex and edge
+/// samples there are).
+DistanceStatistics summarizeDistances(
+  const SampleSet& samples, const std::vector<double>& distances, bool overAllSamples = false);
 
 /// The symmetric (two-sided) figures: each statistic is the worse of the two
 /// directions, as the Hausdorff distance is the larger of the two one-sided ones.
