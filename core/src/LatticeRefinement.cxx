@@ -619,36 +619,42 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   double damping = options.damping;
   for (int it = 0; it < options.iterations; ++it)
   {
-    const Anchors anchors = buildAnchors(lattice, options.weights.vertex);
-    const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
-    std::vector<Combo> combos(samples.size());
-    inChunks(samples.size(), [&](std::size_t begin, std::size_t end) {
-      for (std::size_t s = begin; s < end; ++s)
-        combos[s] = sampleCombo(models[feet[s].patch], feet[s].u, feet[s].v);
-    });
+    // The patch models and the samples' combinations and terms live only
+    // until they are compressed: on a 20,000-vertex skull they are
+    // gigabytes, and the solve needs only the face blocks.
     double weight = 0.0;
-    for (const Combo& combo : combos)
-      for (const auto& vw : combo)
-        weight += vw.second * vw.second;
-    std::vector<Combo> reverseCombos(reverse.size());
-    inChunks(reverse.size(), [&](std::size_t begin, std::size_t end) {
-      for (std::size_t r = begin; r < end; ++r)
-        reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
-    });
-    // Each distance d = |e| with its weight, and its tail residual where d > tau.
-    std::vector<std::vector<Term>> termsOfFace(lattice.faces.size());
-    auto addDistance = [&](std::size_t patch, const Combo& combo, const Vec3& e, const Vec3& n, double d, double w) {
-      auto& terms = termsOfFace[static_cast<std::size_t>(surface.patchFace[patch])];
-      terms.push_back({ &combo, e, n, std::sqrt(w) });
-      if (mu > 0.0 && d > tau)
-        terms.push_back({ &combo, e * ((d - tau) / d), n, std::sqrt(mu * w) });
-    };
-    for (std::size_t s = 0; s < samples.size(); ++s)
-      addDistance(feet[s].patch, combos[s], feet[s].point - samples[s], feet[s].normal, feet[s].distance, 1.0);
-    for (std::size_t r = 0; r < reverse.size(); ++r)
-      addDistance(reverse[r].patch, reverseCombos[r], reverse[r].point - reverse[r].closest, reverse[r].normal,
-        reverse[r].distance, reverseWeight);
-    const std::vector<FaceBlock> faceBlocks = compress(termsOfFace);
+    std::vector<FaceBlock> faceBlocks;
+    {
+      const Anchors anchors = buildAnchors(lattice, options.weights.vertex);
+      const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
+      std::vector<Combo> combos(samples.size());
+      inChunks(samples.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t s = begin; s < end; ++s)
+          combos[s] = sampleCombo(models[feet[s].patch], feet[s].u, feet[s].v);
+      });
+      for (const Combo& combo : combos)
+        for (const auto& vw : combo)
+          weight += vw.second * vw.second;
+      std::vector<Combo> reverseCombos(reverse.size());
+      inChunks(reverse.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t r = begin; r < end; ++r)
+          reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
+      });
+      // Each distance d = |e| with its weight, and its tail residual where d > tau.
+      std::vector<std::vector<Term>> termsOfFace(lattice.faces.size());
+      auto addDistance = [&](std::size_t patch, const Combo& combo, const Vec3& e, const Vec3& n, double d, double w) {
+        auto& terms = termsOfFace[static_cast<std::size_t>(surface.patchFace[patch])];
+        terms.push_back({ &combo, e, n, std::sqrt(w) });
+        if (mu > 0.0 && d > tau)
+          terms.push_back({ &combo, e * ((d - tau) / d), n, std::sqrt(mu * w) });
+      };
+      for (std::size_t s = 0; s < samples.size(); ++s)
+        addDistance(feet[s].patch, combos[s], feet[s].point - samples[s], feet[s].normal, feet[s].distance, 1.0);
+      for (std::size_t r = 0; r < reverse.size(); ++r)
+        addDistance(reverse[r].patch, reverseCombos[r], reverse[r].point - reverse[r].closest, reverse[r].normal,
+          reverse[r].distance, reverseWeight);
+      faceBlocks = compress(termsOfFace);
+    }
 
     const std::vector<Vec3> x0 = lattice.points;
     bool accepted = false;
