@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace
 {
@@ -117,6 +118,46 @@ TEST(MeshCut, BadLoopsAreRefused)
   EXPECT_NE(message({ { 0, 1, 2, 3, 4 } }).find("not closed along mesh edges"), std::string::npos);
   // The same vertex twice: a self-crossing loop.
   EXPECT_NE(message({ { t[0], t[1], t[2], t[0], t[1], t[2] } }).find("crosses itself"), std::string::npos);
+}
+
+TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
+{
+  // A torus (16 x 8 quads, split): one loop around the tube leaves it in one
+  // piece, as a loop around a bone does when a canal joins its two sides;
+  // two such loops cut it in two.
+  const int n = 16, m = 8;
+  lk::TriangleMesh torus;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j)
+    {
+      const double u = 2.0 * 3.14159265358979 * i / n, v = 2.0 * 3.14159265358979 * j / m;
+      torus.points.emplace_back((3.0 + std::cos(v)) * std::cos(u), (3.0 + std::cos(v)) * std::sin(u), std::sin(v));
+    }
+  auto id = [&](int i, int j) { return static_cast<std::int64_t>((i % n) * m + (j % m)); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j)
+    {
+      torus.triangles.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+      torus.triangles.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  auto tube = [&](int i) {
+    std::vector<std::int64_t> loop;
+    for (int j = 0; j < m; ++j)
+      loop.push_back(id(i, j));
+    return loop;
+  };
+  std::string message;
+  try
+  {
+    lk::cutAlongLoops(lktest::asPolygonMesh(torus), { tube(0) }, false);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("do not separate"), std::string::npos) << message;
+  EXPECT_NE(message.find("has 1 handle"), std::string::npos) << message;
+  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(torus), { tube(0), tube(8) }, false).pieces.size(), 2u);
 }
 
 TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)

@@ -279,7 +279,50 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
     }
   }
   if (pieces <= components)
-    throw std::invalid_argument("the loops do not separate the mesh (it stays in one piece)");
+  {
+    // Why, where it can be told: the loops' component has handles (on a
+    // bone, a canal or a marrow cavity open to the outside), and a path
+    // around a handle joins the two sides of a loop.
+    std::string why;
+    const auto a0 = static_cast<std::size_t>(loops.front().front());
+    if (directed.start[a0] < directed.start[a0 + 1])
+    {
+      const std::size_t comp = find(compParent, directed.face[directed.start[a0]]);
+      std::int64_t faces = 0, edges = 0, vertices = 0, borderEdges = 0;
+      std::vector<char> seen(mesh.points.size(), 0);
+      for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+      {
+        if (find(compParent, f) != comp)
+          continue;
+        ++faces;
+        for (const auto v : mesh.faces[f])
+          if (!seen[static_cast<std::size_t>(v)])
+          {
+            seen[static_cast<std::size_t>(v)] = 1;
+            ++vertices;
+          }
+      }
+      for (std::size_t a = 0; a + 1 < directed.start.size(); ++a)
+        for (std::size_t k = directed.start[a]; k < directed.start[a + 1]; ++k)
+        {
+          if (find(compParent, directed.face[k]) != comp)
+            continue;
+          if (directed.twin[k] == DirectedEdges::npos)
+          {
+            ++edges;
+            ++borderEdges;
+          }
+          else if (directed.target[k] > static_cast<std::int64_t>(a))
+            ++edges;
+        }
+      const std::int64_t genus = (2 - (vertices - edges + faces)) / 2;
+      if (borderEdges == 0 && genus > 0)
+        why = ": the surface has " + std::to_string(genus) + (genus == 1 ? " handle" : " handles") +
+          " (on a bone: a canal, or a marrow cavity open to the outside), and a path around a handle joins "
+          "the two sides. Draw the line where the bone is solid, or add a loop around the inner wall as well";
+    }
+    throw std::invalid_argument("the loops do not separate the mesh (it stays in one piece)" + why);
+  }
 
   CutResult result;
   result.pieces.resize(pieces);
