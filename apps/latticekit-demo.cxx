@@ -678,7 +678,7 @@ int main(int argc, char* argv[])
          << stroke->GetNumberOfPoints() << " points every " << plan.penStep << " mm, " << plan.penOffset
          << " mm off the surface; split mode: a closed cut line of " << line->GetNumberOfPoints() - 1
          << " vertices whose edges follow the stroke.\n"
-         << "- Capped cut: " << pieces.size() << " pieces, each closed by the same faired cap:";
+         << "- Capped cut: " << pieces.size() << " pieces, each closed by the same flat cap:";
   for (std::size_t p = 0; p < pieces.size(); ++p)
     report << " piece " << p << " " << pieces[p]->GetNumberOfPolys() << " triangles" << (p + 1 < pieces.size() ? ";" : ".");
   report << "\n\n## Table 2 (as in the paper): lattices at " << plan.vertices

@@ -4,7 +4,7 @@
 //   built once per mesh as the planner does when it loads the bone): the
 //   time of each addPoint for a pen stroke sampled every millimetre.
 // - The cut along the closed line (lk::cutAlongLoops, with and without the
-//   faired cap, and vtkLKClosedLineCutFilter end to end).
+//   flat cap, and vtkLKClosedLineCutFilter end to end).
 // The stroke is a craniotomy outline: the section of the skull's outer
 // surface by a sphere of radius 20 mm around the top of the dome, traced
 // 0.3 mm off the surface. Anchors measured in the same run: one ray pick

@@ -136,8 +136,12 @@ int vtkLKClosedLineCutFilter::RequestData(
     vtkErrorMacro("Cannot cut: " << e.what() << ".");
     return 0;
   }
-  if (cut.capFailures > 0)
-    vtkWarningMacro(<< cut.capFailures << " cap(s) could not be faired; they are refined but not smoothed.");
+  for (std::size_t p = 0; p < cut.capCrossings.size(); ++p)
+    if (cut.capCrossings[p] > 0)
+      vtkWarningMacro(<< "Piece " << p << ": its cap crosses the surface or another cap (" << cut.capCrossings[p]
+                      << " pairs of triangles intersect), so the piece is not a valid solid. A cap crosses the "
+                         "surface where a line is far from planar, and two caps overlap where lines are nested "
+                         "(around the outer and the inner wall of a hollow bone).");
   this->UpdateProgress(0.8);
 
   vtkNew<vtkPoints> points;
@@ -181,6 +185,14 @@ int vtkLKClosedLineCutFilter::RequestData(
   count->SetName("Pieces");
   count->InsertNextValue(static_cast<double>(cut.pieces.size()));
   output->GetFieldData()->AddArray(count);
+  if (!cut.capCrossings.empty())
+  {
+    vtkNew<vtkDoubleArray> crossings; // one value per piece
+    crossings->SetName("CapCrossings");
+    for (const std::size_t c : cut.capCrossings)
+      crossings->InsertNextValue(static_cast<double>(c));
+    output->GetFieldData()->AddArray(crossings);
+  }
   this->NumberOfPieces = static_cast<int>(cut.pieces.size());
   this->UpdateProgress(1.0);
   return 1;

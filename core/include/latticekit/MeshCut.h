@@ -8,10 +8,11 @@
 /// then cut" works as well as "cut, then lattice".
 ///
 /// Capping (beyond the paper; surgeons 3D-print the pieces): each loop is
-/// closed once by a hole-filling surface (CGAL's triangulate, refine and fair:
-/// a minimal-weight triangulation of the loop, refined to the density of its
-/// border, then faired, i.e. made smooth, by a bi-Laplacian solve with the
-/// loop fixed). The same cap goes into both pieces beside the loop, with
+/// closed once by a hole-filling surface (CGAL's triangulate and refine): a
+/// loop within 5 % of its size of its fitting plane (an osteotomy's section; a
+/// saw cut is flat) by a 2D constrained Delaunay triangulation in that plane,
+/// any other loop by a minimal-weight triangulation; both refined to the
+/// density of the loop. The same cap goes into both pieces beside the loop, with
 /// opposite orientations, so both come out watertight and fit each other.
 
 #include "latticekit/PolygonMesh.h"
@@ -28,7 +29,13 @@ struct CutResult
   std::vector<std::vector<std::int64_t>> vertexOrigin;
   /// For each piece: the input face of each of its faces (-1 for cap faces).
   std::vector<std::vector<std::int64_t>> faceOrigin;
-  std::size_t capFailures = 0; ///< caps whose fairing failed (refined but not faired)
+  /// For each capped piece: pairs of its triangles that intersect, at least
+  /// one of them a cap triangle (0 when the caps are clean; empty without
+  /// capping). A cap crosses the surface where a loop is far from planar, and
+  /// two caps overlap where loops are nested (the outer and inner wall of a
+  /// hollow bone, which would need one annular cap): such a piece is not a
+  /// valid solid for printing.
+  std::vector<std::size_t> capCrossings;
 };
 
 /// Cuts along the loops (vertex ids; a loop may repeat its first vertex at
