@@ -622,8 +622,11 @@ public:
       cutter->SetInputData(faces);
       cutter->SetLinesData(loops);
       cutter->SetCapping(session.capping);
-      const int before = lkapp::errorCount();
+      const int before = lkapp::errorCount(), warningsBefore = lkapp::warningCount();
       cutter->Update();
+      const std::string warned = lkapp::warningsSince(warningsBefore);
+      if (!warned.empty())
+        addLine(cut.message, "the cut: " + warned);
       if (lkapp::errorCount() == before)
       {
         for (int r = 0; r < cutter->GetNumberOfPieces(); ++r)
