@@ -32,32 +32,59 @@ std::size_t find(std::vector<std::size_t>& parent, std::size_t x)
 
 /// Pairs of intersecting triangles of a capped piece of which at least one is
 /// a cap triangle (faceOrigin < 0): a cap that crosses the piece's surface or
-/// another cap (nested loops around a hollow bone). The piece is fanned into
-/// triangles for CGAL's test; a piece CGAL cannot hold as a manifold surface
-/// counts as 0 (it was checked to be one before the cut).
+/// another cap (nested loops around a hollow bone). Only the caps'
+/// neighbourhood can hold such a pair, so CGAL's test runs on the faces whose
+/// boxes meet the caps' box (on the skull's craniotomy, a few thousand of
+/// 563,000), fanned into triangles; on the whole piece where that subset is
+/// not a manifold surface CGAL can hold.
 std::size_t capCrossings(const PolygonMesh& piece, const std::vector<std::int64_t>& faceOrigin)
 {
-  Mesh sm;
-  for (const Vec3& q : piece.points)
-    sm.add_vertex(Point(q.x(), q.y(), q.z()));
-  std::vector<char> isCap;
+  std::vector<CGAL::Bbox_3> boxes(piece.faces.size());
+  CGAL::Bbox_3 capBox;
   for (std::size_t f = 0; f < piece.faces.size(); ++f)
   {
-    const auto& face = piece.faces[f];
-    for (std::size_t i = 1; i + 1 < face.size(); ++i)
+    for (const auto v : piece.faces[f])
     {
-      auto vi = [&](std::int64_t v) { return Mesh::Vertex_index(static_cast<Mesh::size_type>(v)); };
-      if (sm.add_face(vi(face[0]), vi(face[i]), vi(face[i + 1])) == Mesh::null_face())
-        return 0;
-      isCap.push_back(faceOrigin[f] < 0);
+      const Vec3& q = piece.points[static_cast<std::size_t>(v)];
+      boxes[f] += Point(q.x(), q.y(), q.z()).bbox();
     }
+    if (faceOrigin[f] < 0)
+      capBox += boxes[f];
   }
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
-  PMP::self_intersections(sm, std::back_inserter(pairs));
+  auto count = [&](bool nearOnly, std::size_t& crossings) {
+    Mesh sm;
+    std::vector<Mesh::Vertex_index> id(piece.points.size());
+    std::vector<char> isCap;
+    for (std::size_t f = 0; f < piece.faces.size(); ++f)
+    {
+      if (nearOnly && !CGAL::do_overlap(boxes[f], capBox))
+        continue;
+      const auto& face = piece.faces[f];
+      for (const auto v : face)
+        if (id[static_cast<std::size_t>(v)] == Mesh::null_vertex())
+        {
+          const Vec3& q = piece.points[static_cast<std::size_t>(v)];
+          id[static_cast<std::size_t>(v)] = sm.add_vertex(Point(q.x(), q.y(), q.z()));
+        }
+      for (std::size_t i = 1; i + 1 < face.size(); ++i)
+      {
+        if (sm.add_face(id[static_cast<std::size_t>(face[0])], id[static_cast<std::size_t>(face[i])],
+              id[static_cast<std::size_t>(face[i + 1])]) == Mesh::null_face())
+          return false;
+        isCap.push_back(faceOrigin[f] < 0);
+      }
+    }
+    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+    PMP::self_intersections(sm, std::back_inserter(pairs));
+    crossings = 0;
+    for (const auto& [a, b] : pairs)
+      if (isCap[static_cast<std::size_t>(a)] || isCap[static_cast<std::size_t>(b)])
+        ++crossings;
+    return true;
+  };
   std::size_t crossings = 0;
-  for (const auto& [a, b] : pairs)
-    if (isCap[static_cast<std::size_t>(a)] || isCap[static_cast<std::size_t>(b)])
-      ++crossings;
+  if (!count(true, crossings))
+    count(false, crossings); // the piece was checked to be a manifold surface before the cut
   return crossings;
 }
 
@@ -68,7 +95,6 @@ struct Cap
 {
   std::vector<Vec3> points;
   std::vector<std::array<std::int64_t, 3>> triangles;
-  bool flat = false; ///< triangulated in the loop's fitting plane
 };
 
 /// Loops within this fraction of their bounding-box diagonal of their
@@ -103,8 +129,8 @@ Cap makeCap(const std::vector<Vec3>& loop)
   // plane, refined. Its projection onto the plane cannot overlap itself, so
   // the cap cannot fold. Other loops get CGAL's minimal-weight triangulation,
   // refined. Neither is faired: fairing (a bi-Laplacian solve with cotangent
-  // weights) folded the caps, 48 pairs of cap triangles crossing on the main
-  // job's cut and 134 on a wavy loop on a sphere.
+  // weights) folded the caps: 118 and 90 pairs of crossing triangles on the
+  // main job's pieces, 134 and 149 on a wavy loop on a sphere; 0 now.
   Vec3 centre = Vec3::Zero();
   for (const Vec3& p : loop)
     centre += p;
@@ -121,10 +147,10 @@ Cap makeCap(const std::vector<Vec3>& loop)
   for (const Vec3& p : loop)
     deviation = std::max(deviation, std::abs(normal.dot(p - centre)));
   const double planarTolerance = kFlatCapTolerance * box.diagonal().norm();
-  cap.flat = deviation <= planarTolerance;
+  const bool flat = deviation <= planarTolerance;
   PMP::triangulate_and_refine_hole(m, border, std::back_inserter(faces), std::back_inserter(newVertices),
     CGAL::parameters::density_control_factor(0.7)
-      .use_2d_constrained_delaunay_triangulation(cap.flat)
+      .use_2d_constrained_delaunay_triangulation(flat)
       .threshold_distance(planarTolerance));
   std::map<Mesh::Vertex_index, std::int64_t> id;
   for (std::size_t i = 0; i < vs.size(); ++i)
@@ -259,6 +285,51 @@ struct DirectedEdges
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 };
 
+/// Why loops that do not separate a mesh could not, where it can be told:
+/// the closed component of vertex `a0` has handles (on a bone, a canal or a
+/// marrow cavity open to the outside), and a path around a handle joins the
+/// two sides of a loop. Empty otherwise.
+std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed, std::vector<std::size_t>& compParent,
+  std::size_t a0)
+{
+  if (directed.start[a0] == directed.start[a0 + 1])
+    return "";
+  const std::size_t comp = find(compParent, directed.face[directed.start[a0]]);
+  std::int64_t faces = 0, edges = 0, vertices = 0, borderEdges = 0;
+  std::vector<char> seen(mesh.points.size(), 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+  {
+    if (find(compParent, f) != comp)
+      continue;
+    ++faces;
+    for (const auto v : mesh.faces[f])
+      if (!seen[static_cast<std::size_t>(v)])
+      {
+        seen[static_cast<std::size_t>(v)] = 1;
+        ++vertices;
+      }
+  }
+  for (std::size_t a = 0; a + 1 < directed.start.size(); ++a)
+    for (std::size_t k = directed.start[a]; k < directed.start[a + 1]; ++k)
+    {
+      if (find(compParent, directed.face[k]) != comp)
+        continue;
+      if (directed.twin[k] == DirectedEdges::npos)
+      {
+        ++edges;
+        ++borderEdges;
+      }
+      else if (directed.target[k] > static_cast<std::int64_t>(a))
+        ++edges;
+    }
+  const std::int64_t genus = (2 - (vertices - edges + faces)) / 2;
+  if (borderEdges > 0 || genus <= 0)
+    return "";
+  return ": the surface has " + std::to_string(genus) + (genus == 1 ? " handle" : " handles") +
+    " (on a bone: a canal, or a marrow cavity open to the outside), and a path around a handle joins the two "
+    "sides. Draw the line where the bone is solid";
+}
+
 } // namespace
 
 CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
@@ -341,47 +412,7 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
   }
   if (pieces <= components)
   {
-    // Why, where it can be told: the loops' component has handles (on a
-    // bone, a canal or a marrow cavity open to the outside), and a path
-    // around a handle joins the two sides of a loop.
-    std::string why;
-    const auto a0 = static_cast<std::size_t>(loops.front().front());
-    if (directed.start[a0] < directed.start[a0 + 1])
-    {
-      const std::size_t comp = find(compParent, directed.face[directed.start[a0]]);
-      std::int64_t faces = 0, edges = 0, vertices = 0, borderEdges = 0;
-      std::vector<char> seen(mesh.points.size(), 0);
-      for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-      {
-        if (find(compParent, f) != comp)
-          continue;
-        ++faces;
-        for (const auto v : mesh.faces[f])
-          if (!seen[static_cast<std::size_t>(v)])
-          {
-            seen[static_cast<std::size_t>(v)] = 1;
-            ++vertices;
-          }
-      }
-      for (std::size_t a = 0; a + 1 < directed.start.size(); ++a)
-        for (std::size_t k = directed.start[a]; k < directed.start[a + 1]; ++k)
-        {
-          if (find(compParent, directed.face[k]) != comp)
-            continue;
-          if (directed.twin[k] == DirectedEdges::npos)
-          {
-            ++edges;
-            ++borderEdges;
-          }
-          else if (directed.target[k] > static_cast<std::int64_t>(a))
-            ++edges;
-        }
-      const std::int64_t genus = (2 - (vertices - edges + faces)) / 2;
-      if (borderEdges == 0 && genus > 0)
-        why = ": the surface has " + std::to_string(genus) + (genus == 1 ? " handle" : " handles") +
-          " (on a bone: a canal, or a marrow cavity open to the outside), and a path around a handle joins "
-          "the two sides. Draw the line where the bone is solid";
-    }
+    const std::string why = handlesNote(mesh, directed, compParent, static_cast<std::size_t>(loops.front().front()));
     throw std::invalid_argument("the loops do not separate the mesh (it stays in one piece)" + why);
   }
 
