@@ -553,7 +553,6 @@ public:
     deformers.clear();
     vtkSmartPointer<vtkPolyData> surface = bone;
     std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
-    std::vector<std::string> notes; // per stroke: why it failed, or what its filter warned
     for (std::size_t i = 0; i < session.strokes.size(); ++i)
     {
       const Stroke& st = session.strokes[i];
@@ -575,11 +574,11 @@ public:
       f->Update();
       const std::string warned = lkapp::warningsSince(warningsBefore);
       if (!warned.empty())
-        notes.push_back(which + ": " + warned);
+        addLine(cut.message, which + ": " + warned);
       if (lkapp::errorCount() > errorsBefore || f->GetOutput()->GetNumberOfPoints() == 0)
       {
         const std::string why = lkapp::errorsSince(errorsBefore);
-        notes.push_back(which + " failed: " + (why.empty() ? "no feature line" : why));
+        addLine(cut.message, which + " failed: " + (why.empty() ? "no feature line" : why));
         continue; // the stroke stays in the session; the message says why
       }
       auto next = vtkSmartPointer<vtkPolyData>::New();
@@ -592,8 +591,6 @@ public:
         st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
         closedLines.push_back(line);
     }
-    for (const auto& note : notes)
-      addLine(cut.message, note);
     vtkNew<vtkPolyData> faces;
     faces->ShallowCopy(surface);
     vtkNew<vtkCellArray> none;
