@@ -27,6 +27,15 @@ class ImportTest(unittest.TestCase):
             self.assertIn(name, obj.GetClassName())
 
 
+class DocumentationTest(unittest.TestCase):
+    def test_the_package_docstring_runs(self):
+        import doctest
+        import latticekit
+        failures, tried = doctest.testmod(latticekit)
+        self.assertGreater(tried, 5)
+        self.assertEqual(failures, 0)
+
+
 class PipelineTest(unittest.TestCase):
     def test_vtk_sources_and_latticekit_filters_in_one_pipeline(self):
         import latticekit
