@@ -168,6 +168,76 @@ TEST(MedicalImageReader, GantryTiltedSeriesMatchesEverySlicePosition)
   EXPECT_EQ(stored->GetTuple1(3), matrix->GetElement(0, 3));
 }
 
+TEST(MedicalImageReader, RescaledSeriesReadsInHounsfieldUnitsInPositionOrder)
+{
+  // Three slices of a Philips skull phantom: 12-bit unsigned pixels with
+  // RescaleIntercept -1024, as nearly every CT stores them. Their names (I90,
+  // I100, I110) sort the wrong way as text, and the folder holds a LICENSE
+  // file that is not DICOM.
+  const std::string folder = lktest::sampleData("dicom-ct-philips-phantom");
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(folder.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  ASSERT_STREQ(reader->GetFileFormat(), "DICOM");
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 3);
+  EXPECT_NEAR(reader->GetGantryTilt(), 0.0, 1e-9);
+  EXPECT_NEAR(reader->GetMinimumSliceGap(), 5.0, 1e-6);
+  EXPECT_NEAR(reader->GetMaximumSliceGap(), 5.0, 1e-6);
+  vtkImageData* volume = reader->GetOutput();
+  int dims[3];
+  volume->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 512);
+  ASSERT_EQ(dims[1], 512);
+  ASSERT_EQ(dims[2], 3);
+  EXPECT_NEAR(volume->GetSpacing()[2], 5.0, 1e-6);
+
+  // Slice k of the volume is the file at the k-th position along the slice
+  // normal, and holds its stored values times RescaleSlope plus
+  // RescaleIntercept, every voxel.
+  const char* byPosition[3] = { "/I90", "/I100", "/I110" }; // z = 736.21, 741.21, 746.21
+  double lowest[3] = { 0, 0, 0 };
+  vtkIdType bone = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkDICOMReader> raw;
+    raw->SetFileName((folder + byPosition[k]).c_str());
+    raw->SetMemoryRowOrderToFileNative();
+    raw->AutoRescaleOff();
+    raw->Update();
+    vtkDICOMMetaData* meta = raw->GetMetaData();
+    const double slope = meta->Get(DC::RescaleSlope).AsDouble();
+    const double intercept = meta->Get(DC::RescaleIntercept).AsDouble();
+    ASSERT_EQ(slope, 1.0);
+    ASSERT_EQ(intercept, -1024.0);
+    if (k == 0)
+    {
+      meta->Get(DC::ImagePositionPatient).GetValues(lowest, 3);
+    }
+    vtkImageData* stored = raw->GetOutput();
+    ASSERT_EQ(stored->GetDimensions()[0], 512);
+    vtkIdType mismatches = 0;
+    for (int j = 0; j < 512; ++j)
+    {
+      for (int i = 0; i < 512; ++i)
+      {
+        const double hu = volume->GetScalarComponentAsDouble(i, j, k, 0);
+        mismatches += hu != stored->GetScalarComponentAsDouble(i, j, 0, 0) * slope + intercept;
+        bone += hu > 300.0;
+      }
+    }
+    EXPECT_EQ(mismatches, 0) << "slice " << k << " (" << byPosition[k] << ")";
+  }
+  EXPECT_EQ(volume->GetScalarRange()[0], -1024.0); // air outside the field of view
+  EXPECT_GT(bone, 30000); // the phantom's skull at 300 HU in all three slices
+  // The patient matrix puts voxel 0 at the lowest slice's ImagePositionPatient.
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_NEAR(reader->GetPatientMatrix()->GetElement(a, 3), lowest[a], 1e-6);
+  }
+}
+
 TEST(MedicalImageReader, SliceSpacingIsHonoured)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
