@@ -562,12 +562,8 @@ public:
         pts->InsertNextPoint(p.data());
       vtkNew<vtkPolyData> stroke;
       stroke->SetPoints(pts);
-      vtkNew<vtkPolyData> faces;
-      faces->ShallowCopy(surface);
-      vtkNew<vtkCellArray> none;
-      faces->SetLines(none);
       vtkNew<vtkLKStrokeFeatureLineFilter> f;
-      f->SetInputData(faces);
+      f->SetInputData(facesOnly(surface));
       f->SetStrokeData(stroke);
       f->SetMode(st.mode);
       const int errorsBefore = lkapp::errorCount(), warningsBefore = lkapp::warningCount();
@@ -591,10 +587,7 @@ public:
         st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
         closedLines.push_back(line);
     }
-    vtkNew<vtkPolyData> faces;
-    faces->ShallowCopy(surface);
-    vtkNew<vtkCellArray> none;
-    faces->SetLines(none);
+    vtkSmartPointer<vtkPolyData> faces = facesOnly(surface);
     if (session.cut && !closedLines.empty())
     {
       vtkNew<vtkPolyData> loops;
@@ -779,6 +772,16 @@ public:
         std::to_string(pieces.size()) + " piece(s)");
     placeSegment(session.segmentMatrix);
     updateStatus();
+  }
+
+  /// The surface without its line cells (the feature lines a stroke left on it).
+  static vtkSmartPointer<vtkPolyData> facesOnly(vtkPolyData* surface)
+  {
+    auto faces = vtkSmartPointer<vtkPolyData>::New();
+    faces->ShallowCopy(surface);
+    vtkNew<vtkCellArray> none;
+    faces->SetLines(none);
+    return faces;
   }
 
   vtkSmartPointer<vtkPolyData> region(vtkPolyData* cut, int r)
