@@ -513,8 +513,15 @@ public:
     messages->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     messages->GetPositionCoordinate()->SetValue(0.01, 0.985);
     renderer->AddViewProp(messages);
-    scalarBar->SetTitle("Metro distance");
-    scalarBar->SetNumberOfLabels(4);
+    scalarBar->SetTitle("distance (mm)");
+    scalarBar->SetNumberOfLabels(5);
+    scalarBar->SetMaximumWidthInPixels(90);
+    for (vtkTextProperty* text : { scalarBar->GetLabelTextProperty(), scalarBar->GetTitleTextProperty() })
+    {
+      text->SetColor(0.1, 0.1, 0.1);
+      text->ShadowOff();
+      text->ItalicOff();
+    }
     scalarBar->SetVisibility(false);
     renderer->AddViewProp(scalarBar);
     vtkNew<vtkPolyDataMapper> sm;
