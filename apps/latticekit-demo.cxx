@@ -5,6 +5,7 @@
 // paper's Table 2 (no cut / cut / cut with quads), exported pieces and
 // lattices, and PNG pictures.
 #include "common/AppSupport.h"
+#include "common/DistanceColourBar.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKClosedLineCutFilter.h"
@@ -330,6 +331,7 @@ struct Row
   double vertices = 0, triangles = 0, quads = 0, polygons = 0;
   long long bytes = 0;
   double max = 0, mean = 0, rms = 0;
+  double colourTop = 0; ///< the distance (mm) the error picture maps to red
   double seconds = 0;
 };
 
@@ -402,6 +404,7 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
   row.max = lkapp::fieldValue(m, "Hausdorff_MaxPercent");
   row.mean = lkapp::fieldValue(m, "Hausdorff_MeanPercent");
   row.rms = lkapp::fieldValue(m, "Hausdorff_RMSPercent");
+  row.colourTop = metro->GetEffectiveColorMaximum();
   surfaceOut = vtkSmartPointer<vtkPolyData>::New();
   surfaceOut->ShallowCopy(m);
   row.seconds = since(start);
@@ -442,8 +445,17 @@ bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBa
   vtkNew<vtkRenderer> renderer;
   for (const auto& a : actors)
     renderer->AddActor(a);
+  // The colour bar gets a column of its own, so that the bone never runs under it.
+  vtkNew<vtkRenderer> barRenderer;
   if (bar)
-    renderer->AddViewProp(bar);
+  {
+    renderer->SetViewport(0.0, 0.0, 0.82, 1.0);
+    barRenderer->SetViewport(0.82, 0.0, 1.0, 1.0);
+    barRenderer->SetBackground(1.0, 1.0, 1.0);
+    bar->SetPosition(0.4, 0.1); // room on the left for the above-range note
+    bar->SetPosition2(0.55, 0.8);
+    barRenderer->AddViewProp(bar);
+  }
   vtkNew<vtkTextActor> text;
   text->SetInput(title.c_str());
   text->GetTextProperty()->SetFontSize(16);
@@ -461,6 +473,8 @@ bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBa
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
+  if (bar)
+    window->AddRenderer(barRenderer);
   window->SetSize(1000, 800);
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
@@ -737,26 +751,18 @@ int main(int argc, char* argv[])
     double range[2];
     surfaceQuads->GetPointData()->GetArray("Distance")->GetRange(range);
     vtkNew<vtkLookupTable> lut;
-    lut->SetHueRange(0.667, 0.0);
-    lut->SetTableRange(0.0, range[1] > 0 ? range[1] : 1.0);
-    lut->Build();
+    vtkNew<vtkScalarBarActor> bar;
+    lkapp::distanceColourBar(rows.back().colourTop, range[1], lut, bar);
     vtkNew<vtkPolyDataNormals> normals;
     normals->SetInputData(surfaceQuads);
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputConnection(normals->GetOutputPort());
     mapper->SetLookupTable(lut);
-    mapper->SetScalarRange(0.0, range[1] > 0 ? range[1] : 1.0);
+    mapper->UseLookupTableScalarRangeOn();
     mapper->SetScalarModeToUsePointFieldData();
     mapper->SelectColorArray("Distance");
     vtkNew<vtkActor> coloured;
     coloured->SetMapper(mapper);
-    vtkNew<vtkScalarBarActor> bar;
-    bar->SetLookupTable(lut);
-    bar->SetTitle("distance (mm)");
-    bar->SetNumberOfLabels(5);
-    bar->SetMaximumWidthInPixels(90);
-    bar->GetLabelTextProperty()->SetColor(0, 0, 0);
-    bar->GetTitleTextProperty()->SetColor(0, 0, 0);
     ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png");
     if (!ok)
     {

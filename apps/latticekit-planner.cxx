@@ -4,6 +4,7 @@
 // deform the pieces (bump, box, smoothing brush on adaptively refined
 // patches), save and replay sessions (JSON), export the pieces.
 #include "common/AppSupport.h"
+#include "common/DistanceColourBar.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKClosedLineCutFilter.h"
@@ -426,6 +427,7 @@ public:
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkTextActor> help, status, messages;
   vtkNew<vtkScalarBarActor> scalarBar;
+  vtkNew<vtkLookupTable> distanceColours; ///< the Metro colours of every piece
   vtkNew<vtkActor> strokeActor;
   vtkNew<vtkPolyData> strokePd;
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
@@ -513,15 +515,6 @@ public:
     messages->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     messages->GetPositionCoordinate()->SetValue(0.01, 0.985);
     renderer->AddViewProp(messages);
-    scalarBar->SetTitle("distance (mm)");
-    scalarBar->SetNumberOfLabels(5);
-    scalarBar->SetMaximumWidthInPixels(90);
-    for (vtkTextProperty* text : { scalarBar->GetLabelTextProperty(), scalarBar->GetTitleTextProperty() })
-    {
-      text->SetColor(0.1, 0.1, 0.1);
-      text->ShadowOff();
-      text->ItalicOff();
-    }
     scalarBar->SetVisibility(false);
     renderer->AddViewProp(scalarBar);
     vtkNew<vtkPolyDataMapper> sm;
@@ -725,6 +718,8 @@ public:
       addLineActor(line, shade);
     applyDeformations();
     pieceActors.assign(pieces.size(), {});
+    // Every piece's Metro colours share one scale: the largest of their colour maxima.
+    double colourTop = 0.0, largest = 0.0;
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
       const std::size_t firstActor = sceneActors.size();
@@ -761,19 +756,17 @@ public:
         coloured->ShallowCopy(metro->GetOutput());
         coloured->GetPointData()->SetActiveScalars("Distance");
         auto actor = addActorData(coloured, { 1, 1, 1 }, true);
-        vtkNew<vtkLookupTable> lut;
-        lut->SetHueRange(0.667, 0.0);
-        lut->SetRange(0.0, metro->GetEffectiveColorMaximum());
-        lut->Build();
-        actor->GetMapper()->SetLookupTable(lut);
-        actor->GetMapper()->SetScalarRange(0.0, metro->GetEffectiveColorMaximum());
-        scalarBar->SetLookupTable(lut);
+        actor->GetMapper()->SetLookupTable(distanceColours);
+        actor->GetMapper()->UseLookupTableScalarRangeOn();
+        colourTop = std::max(colourTop, metro->GetEffectiveColorMaximum());
+        largest = std::max(largest, metro->GetHausdorffDistance());
         scalarBar->SetVisibility(true);
       }
       else
         addActorData(shown, pieceColour(p), false);
       pieceActors[p].assign(sceneActors.begin() + static_cast<std::ptrdiff_t>(firstActor), sceneActors.end());
     }
+    lkapp::distanceColourBar(colourTop, largest, distanceColours, scalarBar);
     if (session.segment >= static_cast<int>(pieces.size()))
       addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
         std::to_string(pieces.size()) + " piece(s)");

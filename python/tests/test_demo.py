@@ -66,16 +66,25 @@ class DemoTest(unittest.TestCase):
             image = png.GetOutput()
             width, height, _ = image.GetDimensions()
             scalars = image.GetPointData().GetScalars()
-            coloured = blue = 0
+            coloured = blue = warm = magenta = 0
             for i in range(0, width * height, 7):
                 r, g, b = (scalars.GetComponent(i, c) for c in range(3))
                 if not (r > 240 and g > 240 and b > 240):
                     coloured += 1
                 if b > 150 and r < 100:
                     blue += 1
+                if i % width < 0.8 * width:  # the bone, left of the colour bar
+                    if r > 180 and b < 90:
+                        warm += 1
+                    if r > 150 and g < 60 and b > 150:
+                        magenta += 1
             total = width * height / 7
             self.assertGreater(coloured / total, 0.05, "the picture is almost blank")
             self.assertGreater(blue, 100, "no small-error (blue) surface is visible")
+            # The scale ends at the 99th percentile, so the large errors stand
+            # out (red), and the few points beyond it are magenta.
+            self.assertGreater(warm, 30, "no large-error (yellow to red) surface is visible")
+            self.assertGreater(magenta, 10, "the points above the scale are not marked")
 
     def test_bad_plan_is_refused(self):
         with tempfile.TemporaryDirectory() as tmp:
