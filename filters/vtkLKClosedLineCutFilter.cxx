@@ -140,8 +140,8 @@ int vtkLKClosedLineCutFilter::RequestData(
     if (cut.capCrossings[p] > 0)
       vtkWarningMacro(<< "Piece " << p << ": its cap crosses the surface or another cap (" << cut.capCrossings[p]
                       << " pairs of triangles intersect), so the piece is not a valid solid. A cap crosses the "
-                         "surface where a line is far from planar, and two caps overlap where lines are nested "
-                         "(around the outer and the inner wall of a hollow bone).");
+                         "surface where a line is far from planar, and two caps overlap where nested lines could "
+                         "not share one cap.");
   this->UpdateProgress(0.8);
 
   vtkNew<vtkPoints> points;

@@ -19,11 +19,12 @@
  * points); field data "Pieces". Their cut borders coincide exactly. With
  * Capping, each loop is closed by one hole-filling surface (CGAL triangulate
  * and refine; flat for a near-planar loop) shared, reversed, by the two pieces beside
- * it: both pieces are closed and fit each other (see MeshCut.h). A cap
- * that crosses its piece's surface (a line far from planar) or another cap
- * (nested lines, around the outer and the inner wall of a hollow bone) is
- * reported: a warning, and field data "CapCrossings" (per piece, the pairs
- * of intersecting triangles of which one is a cap triangle; 0 when clean).
+ * it: both pieces are closed and fit each other (see MeshCut.h). Near-planar
+ * lines nested in one plane (around the outer and the inner wall of a hollow
+ * bone) share one flat cap with holes (an annulus). A cap that crosses its
+ * piece's surface (a line far from planar) or another cap is reported: a
+ * warning, and field data "CapCrossings" (per piece, the pairs of
+ * intersecting triangles of which one is a cap triangle; 0 when clean).
  *
  * Bad input (an open line, lines crossing, a loop that crosses itself, loops
  * that do not separate the mesh, points that are not mesh points) gives a

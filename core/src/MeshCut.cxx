@@ -1,13 +1,20 @@
 #include "latticekit/MeshCut.h"
 
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Polygon_mesh_processing/refine.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <deque>
 #include <map>
 #include <numeric>
 #include <set>
@@ -101,6 +108,158 @@ struct Cap
 /// fitting plane get a flat cap.
 constexpr double kFlatCapTolerance = 0.05;
 
+/// A loop's least-squares plane, and whether the loop is near it.
+struct LoopPlane
+{
+  Vec3 centre = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();
+  Vec3 u = Vec3::UnitX(), v = Vec3::UnitY(); ///< in the plane, u x v = normal
+  double deviation = 0.0;                    ///< the farthest loop point from the plane
+  double tolerance = 0.0;                    ///< kFlatCapTolerance x the loop's box diagonal
+  bool flat = false;
+};
+
+LoopPlane fitLoopPlane(const std::vector<Vec3>& loop)
+{
+  LoopPlane plane;
+  for (const Vec3& p : loop)
+    plane.centre += p;
+  plane.centre /= static_cast<double>(loop.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : loop)
+  {
+    cov += (p - plane.centre) * (p - plane.centre).transpose();
+    box.extend(p);
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(cov);
+  plane.normal = eigen.eigenvectors().col(0);
+  plane.u = eigen.eigenvectors().col(2);
+  plane.v = plane.normal.cross(plane.u);
+  for (const Vec3& p : loop)
+    plane.deviation = std::max(plane.deviation, std::abs(plane.normal.dot(p - plane.centre)));
+  plane.tolerance = kFlatCapTolerance * box.diagonal().norm();
+  plane.flat = plane.deviation <= plane.tolerance;
+  return plane;
+}
+
+using Point2 = Kernel::Point_2;
+
+std::vector<Point2> projected(const std::vector<Vec3>& loop, const LoopPlane& plane)
+{
+  std::vector<Point2> out;
+  out.reserve(loop.size());
+  for (const Vec3& p : loop)
+    out.emplace_back(plane.u.dot(p - plane.centre), plane.v.dot(p - plane.centre));
+  return out;
+}
+
+/// One flat cap for loops nested in one plane (the outer and the inner wall
+/// of a hollow bone: an annulus): a 2D constrained Delaunay triangulation of
+/// the part of the plane inside an odd number of loops, then refined inside
+/// (CGAL's Liepa refinement, which keeps the loops' edges). Ids < 0 are
+/// -(k+1) for vertex k of the loops taken one after another. Empty when the
+/// loops' projections touch or cross.
+Cap makeNestedCap(const std::vector<std::vector<Vec3>>& loops, const LoopPlane& plane)
+{
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Kernel>;
+  using Fbi = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;
+  using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel, Fbi>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using CDT = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+  CDT cdt;
+  std::vector<Vec3> points;
+  for (const auto& loop : loops)
+  {
+    const std::vector<Point2> flat = projected(loop, plane);
+    std::vector<CDT::Vertex_handle> handles;
+    for (std::size_t i = 0; i < loop.size(); ++i)
+    {
+      const auto h = cdt.insert(flat[i]);
+      h->info() = points.size();
+      points.push_back(loop[i]);
+      handles.push_back(h);
+    }
+    for (std::size_t i = 0; i < handles.size(); ++i)
+      cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
+  }
+  Cap cap;
+  if (cdt.number_of_vertices() != points.size())
+    return cap; // two loop points project onto one, or constraints crossed
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (v->info() >= points.size())
+      return cap;
+  // Nesting level of each face: 0 outside every loop, +1 across each loop
+  // (flood fills that stop at constrained edges, as in CGAL's examples).
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    f->info() = -1;
+  std::deque<CDT::Edge> border;
+  auto fill = [&](CDT::Face_handle start, int level) {
+    std::deque<CDT::Face_handle> queue{ start };
+    while (!queue.empty())
+    {
+      const CDT::Face_handle f = queue.front();
+      queue.pop_front();
+      if (f->info() != -1)
+        continue;
+      f->info() = level;
+      for (int i = 0; i < 3; ++i)
+      {
+        const CDT::Face_handle n = f->neighbor(i);
+        if (n->info() != -1)
+          continue;
+        if (cdt.is_constrained(CDT::Edge(f, i)))
+          border.emplace_back(f, i);
+        else
+          queue.push_back(n);
+      }
+    }
+  };
+  fill(cdt.infinite_face(), 0);
+  while (!border.empty())
+  {
+    const CDT::Edge e = border.front();
+    border.pop_front();
+    const CDT::Face_handle n = e.first->neighbor(e.second);
+    if (n->info() == -1)
+      fill(n, e.first->info() + 1);
+  }
+  Mesh m;
+  std::vector<Mesh::Vertex_index> vs;
+  for (const Vec3& p : points)
+    vs.push_back(m.add_vertex(Point(p.x(), p.y(), p.z())));
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->info() % 2 == 1)
+      if (m.add_face(vs[f->vertex(0)->info()], vs[f->vertex(1)->info()], vs[f->vertex(2)->info()]) ==
+        Mesh::null_face())
+        return cap;
+  std::vector<Mesh::Face_index> faces(m.faces().begin(), m.faces().end());
+  std::vector<Mesh::Face_index> newFaces;
+  std::vector<Mesh::Vertex_index> newVertices;
+  PMP::refine(m, faces, std::back_inserter(newFaces), std::back_inserter(newVertices),
+    CGAL::parameters::density_control_factor(0.7));
+  std::map<Mesh::Vertex_index, std::int64_t> id;
+  for (std::size_t i = 0; i < vs.size(); ++i)
+    id[vs[i]] = -static_cast<std::int64_t>(i) - 1;
+  for (auto v : newVertices)
+  {
+    id[v] = static_cast<std::int64_t>(cap.points.size());
+    const Point& p = m.point(v);
+    cap.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (auto face : m.faces())
+  {
+    std::array<std::int64_t, 3> t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(m.halfedge(face), m))
+      if (k < 3)
+        t[static_cast<std::size_t>(k++)] = id.at(v);
+    if (k == 3)
+      cap.triangles.push_back(t);
+  }
+  return cap;
+}
+
 Cap makeCap(const std::vector<Vec3>& loop)
 {
   // The hole is the border of a single fan-free face: build the loop as a mesh
@@ -131,23 +290,9 @@ Cap makeCap(const std::vector<Vec3>& loop)
   // refined. Neither is faired: fairing (a bi-Laplacian solve with cotangent
   // weights) folded the caps: 118 and 90 pairs of crossing triangles on the
   // main job's pieces, 134 and 149 on a wavy loop on a sphere; 0 now.
-  Vec3 centre = Vec3::Zero();
-  for (const Vec3& p : loop)
-    centre += p;
-  centre /= static_cast<double>(loop.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  Eigen::AlignedBox3d box;
-  for (const Vec3& p : loop)
-  {
-    cov += (p - centre) * (p - centre).transpose();
-    box.extend(p);
-  }
-  const Vec3 normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
-  double deviation = 0.0;
-  for (const Vec3& p : loop)
-    deviation = std::max(deviation, std::abs(normal.dot(p - centre)));
-  const double planarTolerance = kFlatCapTolerance * box.diagonal().norm();
-  const bool flat = deviation <= planarTolerance;
+  const LoopPlane plane = fitLoopPlane(loop);
+  const double planarTolerance = plane.tolerance;
+  const bool flat = plane.flat;
   PMP::triangulate_and_refine_hole(m, border, std::back_inserter(faces), std::back_inserter(newVertices),
     CGAL::parameters::density_control_factor(0.7)
       .use_2d_constrained_delaunay_triangulation(flat)
@@ -330,6 +475,108 @@ std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed, 
     "sides. Draw the line where the bone is solid";
 }
 
+
+/// Loops that share a cap, the outermost first: a flat loop lies inside
+/// another (its first point within the other's projection) when both are
+/// flat, their planes are within 10 degrees, and it is within the other's
+/// flatness tolerance of the other's plane. Every other loop is a group of one.
+std::vector<std::vector<std::size_t>> nestedLoopGroups(
+  const std::vector<std::vector<Vec3>>& loops, const std::vector<LoopPlane>& planes)
+{
+  const std::size_t n = loops.size();
+  std::vector<std::size_t> root(n);
+  std::iota(root.begin(), root.end(), 0);
+  const double parallel = std::cos(10.0 * 3.14159265358979 / 180.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      const LoopPlane& pi = planes[i];
+      const LoopPlane& pj = planes[j];
+      if (i == j || !pi.flat || !pj.flat || pj.tolerance <= pi.tolerance ||
+        std::abs(pi.normal.dot(pj.normal)) < parallel)
+        continue;
+      if (!std::all_of(loops[i].begin(), loops[i].end(),
+            [&](const Vec3& p) { return std::abs(pj.normal.dot(p - pj.centre)) <= pj.tolerance; }))
+        continue;
+      const std::vector<Point2> polygon = projected(loops[j], pj);
+      const Point2 q = projected({ loops[i].front() }, pj).front();
+      if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), q, Kernel()) != CGAL::ON_BOUNDED_SIDE)
+        continue;
+      if (root[i] == i || pj.tolerance > planes[root[i]].tolerance)
+        root[i] = j; // the largest loop around it
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < n && root[root[i]] != root[i]; ++k)
+      root[i] = root[root[i]];
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<std::size_t> groupOf(n, n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (root[i] == i)
+    {
+      groupOf[i] = groups.size();
+      groups.push_back({ i });
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    if (root[i] != i)
+      groups[groupOf[root[i]]].push_back(i);
+  return groups;
+}
+
+/// Whether a cap for the loops of `group` (ids loop after loop, as
+/// makeNestedCap numbers them) closes the pieces beside them: all loops'
+/// edges on one side of the cap must border one piece, and on the other side
+/// one other piece (for a hollow bone, each piece holds its part of the outer
+/// and of the inner wall). Turns the cap so that it runs along the first
+/// loop's first edge.
+bool nestedCapFitsThePieces(Cap& cap, const std::vector<std::size_t>& group,
+  const std::vector<std::vector<std::int64_t>>& loops, const DirectedEdges& directed,
+  const std::vector<std::size_t>& faceRegion)
+{
+  if (cap.triangles.empty())
+    return false;
+  // Whether the cap runs k -> k + 1 (its loop vertices' ids), against it, or neither.
+  auto runs = [&](std::int64_t k) {
+    const std::int64_t a = -k - 1, b = -k - 2;
+    for (const auto& t : cap.triangles)
+      for (int i = 0; i < 3; ++i)
+      {
+        if (t[static_cast<std::size_t>(i)] == a && t[static_cast<std::size_t>((i + 1) % 3)] == b)
+          return 1;
+        if (t[static_cast<std::size_t>(i)] == b && t[static_cast<std::size_t>((i + 1) % 3)] == a)
+          return -1;
+      }
+    return 0;
+  };
+  const int first = runs(0);
+  if (first == 0)
+    return false;
+  if (first < 0)
+    for (auto& t : cap.triangles)
+      std::swap(t[1], t[2]);
+  std::int64_t offset = 0;
+  std::size_t along = DirectedEdges::npos, against = DirectedEdges::npos; // the pieces of each side
+  for (auto l : group)
+  {
+    const auto& loop = loops[l];
+    const int dir = runs(offset);
+    if (dir == 0)
+      return false;
+    const auto a = dir > 0 ? loop[0] : loop[1], b = dir > 0 ? loop[1] : loop[0];
+    const std::size_t ab = directed.find(a, b), ba = directed.find(b, a);
+    if (ab == DirectedEdges::npos || ba == DirectedEdges::npos)
+      return false;
+    const std::size_t pieceAlong = faceRegion[directed.face[ab]], pieceAgainst = faceRegion[directed.face[ba]];
+    if (along == DirectedEdges::npos)
+    {
+      along = pieceAlong;
+      against = pieceAgainst;
+    }
+    else if (pieceAlong != along || pieceAgainst != against)
+      return false;
+    offset += static_cast<std::int64_t>(loop.size());
+  }
+  return along != against;
+}
 } // namespace
 
 CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
@@ -469,19 +716,15 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
   }
   if (!cap)
     return result;
-  for (const auto& loop : loops)
-  {
-    std::vector<Vec3> pts;
-    for (auto v : loop)
-      pts.push_back(mesh.points[static_cast<std::size_t>(v)]);
-    const Cap c = makeCap(pts);
-    if (c.triangles.empty())
-      throw std::invalid_argument("a loop could not be capped (CGAL's hole filling failed)");
-    // The cap's triangles run along the loop (a -> b); a piece whose faces
-    // run a -> b takes the cap reversed, the other as it is.
+  // One cap per loop, except for loops nested in one plane (the outer and
+  // the inner wall of a hollow bone), which share one flat cap with holes.
+  // `ids` are the cap's loop vertices (mesh ids, loop after loop); the cap's
+  // triangles run along the first loop (ids[0] -> ids[1]); a piece whose
+  // faces run ids[0] -> ids[1] takes the cap reversed, the other as it is.
+  auto insertCap = [&](const std::vector<std::int64_t>& ids, const Cap& c) {
     for (int side = 0; side < 2; ++side)
     {
-      const auto a = loop[0], b = loop[1];
+      const auto a = ids[0], b = ids[1];
       const std::size_t slot = side == 0 ? directed.find(a, b) : directed.find(b, a);
       if (slot == DirectedEdges::npos)
         continue;
@@ -516,7 +759,7 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
       {
         std::vector<std::int64_t> face;
         for (auto i : t)
-          face.push_back(i < 0 ? localId(p, loop[static_cast<std::size_t>(-i - 1)]) : capIds[static_cast<std::size_t>(i)]);
+          face.push_back(i < 0 ? localId(p, ids[static_cast<std::size_t>(-i - 1)]) : capIds[static_cast<std::size_t>(i)]);
         if (reverse)
           std::reverse(face.begin(), face.end());
         std::array<std::int64_t, 3> key{ face[0], face[1], face[2] };
@@ -567,6 +810,40 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
       piece.points = std::move(points);
       result.faceOrigin[p] = std::move(origin);
       result.vertexOrigin[p] = std::move(vorigin);
+    }
+    };
+  std::vector<std::vector<Vec3>> loopPoints(loops.size());
+  std::vector<LoopPlane> planes(loops.size());
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    for (auto v : loops[l])
+      loopPoints[l].push_back(mesh.points[static_cast<std::size_t>(v)]);
+    planes[l] = fitLoopPlane(loopPoints[l]);
+  }
+  for (const auto& group : nestedLoopGroups(loopPoints, planes))
+  {
+    if (group.size() > 1)
+    {
+      std::vector<std::int64_t> ids;
+      std::vector<std::vector<Vec3>> points;
+      for (auto l : group)
+      {
+        ids.insert(ids.end(), loops[l].begin(), loops[l].end());
+        points.push_back(loopPoints[l]);
+      }
+      Cap c = makeNestedCap(points, planes[group.front()]);
+      if (nestedCapFitsThePieces(c, group, loops, directed, faceRegion))
+      {
+        insertCap(ids, c);
+        continue;
+      }
+    }
+    for (auto l : group)
+    {
+      const Cap c = makeCap(loopPoints[l]);
+      if (c.triangles.empty())
+        throw std::invalid_argument("a loop could not be capped (CGAL's hole filling failed)");
+      insertCap(loops[l], c);
     }
   }
   result.capCrossings.resize(result.pieces.size());

@@ -12,8 +12,12 @@
 /// loop within 5 % of its size of its fitting plane (an osteotomy's section; a
 /// saw cut is flat) by a 2D constrained Delaunay triangulation in that plane,
 /// any other loop by a minimal-weight triangulation; both refined to the
-/// density of the loop. The same cap goes into both pieces beside the loop, with
-/// opposite orientations, so both come out watertight and fit each other.
+/// density of the loop. Flat loops nested in one plane (lines around the outer
+/// and the inner wall of a hollow bone) share one cap with holes, an annulus:
+/// a 2D constrained Delaunay triangulation of the region inside an odd number
+/// of them, refined inside. The same cap goes into both pieces beside the
+/// loop, with opposite orientations, so both come out watertight and fit each
+/// other.
 
 #include "latticekit/PolygonMesh.h"
 
@@ -31,10 +35,10 @@ struct CutResult
   std::vector<std::vector<std::int64_t>> faceOrigin;
   /// For each capped piece: pairs of its triangles that intersect, at least
   /// one of them a cap triangle (0 when the caps are clean; empty without
-  /// capping). A cap crosses the surface where a loop is far from planar, and
-  /// two caps overlap where loops are nested (the outer and inner wall of a
-  /// hollow bone, which would need one annular cap): such a piece is not a
-  /// valid solid for printing.
+  /// capping). A cap crosses the surface where a loop is far from planar, or
+  /// where nested loops could not share one cap (their projections cross, or
+  /// their sides are not the same two pieces): such a piece is not a valid
+  /// solid for printing.
   std::vector<std::size_t> capCrossings;
 };
 
