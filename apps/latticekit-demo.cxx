@@ -692,7 +692,12 @@ int main(int argc, char* argv[])
          << stroke->GetNumberOfPoints() << " points every " << plan.penStep << " mm, " << plan.penOffset
          << " mm off the surface; split mode: a closed cut line of " << line->GetNumberOfPoints() - 1
          << " vertices whose edges follow the stroke.\n"
-         << "- Capped cut: " << pieces.size() << " pieces, each closed by the same flat cap:";
+         << "- Capped cut: " << pieces.size() << " pieces, each closed by the same flat cap"
+         << (cut->GetNumberOfInnerWallLines() > 0
+                ? " (the bone is hollow there: the cut also takes the plane's section of the marrow cavity, " +
+                  std::to_string(cut->GetNumberOfInnerWallLines()) + " inner line(s), and the cap is an annulus)"
+                : std::string())
+         << ":";
   for (std::size_t p = 0; p < pieces.size(); ++p)
     report << " piece " << p << " " << pieces[p]->GetNumberOfPolys() << " triangles" << (p + 1 < pieces.size() ? ";" : ".");
   report << "\n\n## Table 2 (as in the paper): lattices at " << plan.vertices

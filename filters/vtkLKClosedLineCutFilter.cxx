@@ -95,6 +95,7 @@ int vtkLKClosedLineCutFilter::RequestData(
   vtkPolyData* linesIn = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->NumberOfPieces = 0;
+  this->NumberOfInnerWallLines = 0;
 
   vtkNew<vtkPolyData> faces;
   vtkNew<vtkPolyData> ownLines;
@@ -129,7 +130,7 @@ int vtkLKClosedLineCutFilter::RequestData(
   lk::CutResult cut;
   try
   {
-    cut = lk::cutAlongLoops(mesh, loops, this->Capping);
+    cut = lk::cutAlongLoops(mesh, loops, this->Capping, this->CutInnerWalls);
   }
   catch (const std::exception& e)
   {
@@ -185,6 +186,10 @@ int vtkLKClosedLineCutFilter::RequestData(
   count->SetName("Pieces");
   count->InsertNextValue(static_cast<double>(cut.pieces.size()));
   output->GetFieldData()->AddArray(count);
+  vtkNew<vtkDoubleArray> innerLines;
+  innerLines->SetName("InnerWallLines");
+  innerLines->InsertNextValue(static_cast<double>(cut.innerWallLoops));
+  output->GetFieldData()->AddArray(innerLines);
   if (!cut.capCrossings.empty())
   {
     vtkNew<vtkDoubleArray> crossings; // one value per piece
@@ -194,6 +199,7 @@ int vtkLKClosedLineCutFilter::RequestData(
     output->GetFieldData()->AddArray(crossings);
   }
   this->NumberOfPieces = static_cast<int>(cut.pieces.size());
+  this->NumberOfInnerWallLines = static_cast<int>(cut.innerWallLoops);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -202,4 +208,5 @@ void vtkLKClosedLineCutFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Capping: " << this->Capping << "\n";
+  os << indent << "CutInnerWalls: " << this->CutInnerWalls << "\n";
 }

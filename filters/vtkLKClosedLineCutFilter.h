@@ -16,7 +16,8 @@
  * Output: all pieces in one polydata, the loop vertices duplicated so each
  * piece has its own; cell data "RegionId" (the piece), "InputCellId" (-1 on
  * caps), "Cap" (1 on cap triangles); point data "InputPointId" (-1 on cap
- * points); field data "Pieces". Their cut borders coincide exactly. With
+ * points and the points of inner-wall lines); field data "Pieces" and
+ * "InnerWallLines" (see CutInnerWalls). Their cut borders coincide exactly. With
  * Capping, each loop is closed by one hole-filling surface (CGAL triangulate
  * and refine; flat for a near-planar loop) shared, reversed, by the two pieces beside
  * it: both pieces are closed and fit each other (see MeshCut.h). Near-planar
@@ -53,8 +54,22 @@ public:
   vtkBooleanMacro(Capping, bool);
   ///@}
 
+  ///@{
+  /// Where the lines do not separate the surface because it is hollow (a
+  /// marrow cavity or canal inside a bone, joined to the outside), also cut
+  /// the inner walls where a near-planar line's plane meets them inside the
+  /// line, as a saw does; with Capping, the inner and outer lines share one
+  /// flat cap, an annulus (default on; see MeshCut.h). Off: such lines are
+  /// refused, with the number of handles that join their sides.
+  vtkSetMacro(CutInnerWalls, bool);
+  vtkGetMacro(CutInnerWalls, bool);
+  vtkBooleanMacro(CutInnerWalls, bool);
+  ///@}
+
   /// Pieces of the last update.
   int GetNumberOfPieces() const { return this->NumberOfPieces; }
+  /// Lines the last update added on inner walls (also field data "InnerWallLines").
+  int GetNumberOfInnerWallLines() const { return this->NumberOfInnerWallLines; }
 
 protected:
   vtkLKClosedLineCutFilter();
@@ -63,7 +78,9 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool Capping = false;
+  bool CutInnerWalls = true;
   int NumberOfPieces = 0;
+  int NumberOfInnerWallLines = 0;
 
 private:
   vtkLKClosedLineCutFilter(const vtkLKClosedLineCutFilter&) = delete;

@@ -155,6 +155,46 @@ TEST(MeshCut, BadLoopsAreRefused)
   EXPECT_NE(message({ { t[0], t[1], t[2], t[0], t[1], t[2] } }).find("crosses itself"), std::string::npos);
 }
 
+namespace
+{
+/// Both halves of a torus cut in the plane z = 0 are closed, consistently
+/// oriented, and their cap faces lie in the plane between the equators (radii
+/// 2 and 4), at least one per segment of an equator of n.
+void expectHalvesClosedByAnAnnulus(const lk::CutResult& cut, int n, double flatness)
+{
+  ASSERT_EQ(cut.pieces.size(), 2u);
+  for (std::size_t p = 0; p < 2; ++p)
+  {
+    const lk::PolygonMesh& piece = cut.pieces[p];
+    // Closed and consistently oriented: every directed edge once, and its twin.
+    std::map<std::pair<std::int64_t, std::int64_t>, int> edges;
+    std::size_t capFaces = 0;
+    for (std::size_t f = 0; f < piece.faces.size(); ++f)
+    {
+      const auto& face = piece.faces[f];
+      for (std::size_t i = 0; i < face.size(); ++i)
+        ++edges[{ face[i], face[(i + 1) % face.size()] }];
+      if (cut.faceOrigin[p][f] >= 0)
+        continue;
+      ++capFaces;
+      for (auto v : face)
+      {
+        const lk::Vec3& q = piece.points[static_cast<std::size_t>(v)];
+        EXPECT_NEAR(q.z(), 0.0, flatness);
+        EXPECT_GT(std::hypot(q.x(), q.y()), 2.0 - 1e-9);
+        EXPECT_LT(std::hypot(q.x(), q.y()), 4.0 + 1e-9);
+      }
+    }
+    EXPECT_GE(capFaces, 2u * static_cast<std::size_t>(n));
+    for (const auto& [edge, count] : edges)
+    {
+      EXPECT_EQ(count, 1);
+      EXPECT_EQ(edges.count({ edge.second, edge.first }), 1u) << "piece " << p << " is open";
+    }
+  }
+}
+} // namespace
+
 TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
 {
   // A torus (16 x 8 quads, split): one loop around the tube leaves it in one
@@ -215,36 +255,27 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
     const auto nested = lk::cutAlongLoops(lktest::asPolygonMesh(torus), loops, true);
     ASSERT_EQ(nested.pieces.size(), 2u);
     EXPECT_EQ(nested.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
-    for (std::size_t p = 0; p < 2; ++p)
-    {
-      const lk::PolygonMesh& piece = nested.pieces[p];
-      // Closed and consistently oriented: every directed edge once, and its twin.
-      std::map<std::pair<std::int64_t, std::int64_t>, int> edges;
-      std::size_t capFaces = 0;
-      for (std::size_t f = 0; f < piece.faces.size(); ++f)
-      {
-        const auto& face = piece.faces[f];
-        for (std::size_t i = 0; i < face.size(); ++i)
-          ++edges[{ face[i], face[(i + 1) % face.size()] }];
-        if (nested.faceOrigin[p][f] >= 0)
-          continue;
-        ++capFaces;
-        for (auto v : face)
-        {
-          const lk::Vec3& q = piece.points[static_cast<std::size_t>(v)];
-          EXPECT_NEAR(q.z(), 0.0, 1e-9);
-          EXPECT_GT(std::hypot(q.x(), q.y()), 2.0 - 1e-9);
-          EXPECT_LT(std::hypot(q.x(), q.y()), 4.0 + 1e-9);
-        }
-      }
-      EXPECT_GE(capFaces, 2u * n);
-      for (const auto& [edge, count] : edges)
-      {
-        EXPECT_EQ(count, 1);
-        EXPECT_EQ(edges.count({ edge.second, edge.first }), 1u) << "piece " << p << " is open";
-      }
-    }
+    expectHalvesClosedByAnAnnulus(nested, n, 1e-9);
   }
+
+  // The outer equator alone does not separate the torus (the hole joins its
+  // sides, as the marrow cavity does a bone's). Through the inner walls, the
+  // cut also takes the torus's section by the equator's plane inside it: the
+  // inner equator, moved off the plane by a hair since its vertices lie on it.
+  EXPECT_THROW(lk::cutAlongLoops(lktest::asPolygonMesh(torus), { outer }, true), std::invalid_argument);
+  const auto walls = lk::cutAlongLoops(lktest::asPolygonMesh(torus), { outer }, true, true);
+  EXPECT_EQ(walls.innerWallLoops, 1u);
+  ASSERT_EQ(walls.pieces.size(), 2u);
+  EXPECT_EQ(walls.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
+  expectHalvesClosedByAnAnnulus(walls, n, 1e-3);
+  // Every new vertex is on the plane; split triangles keep their input face.
+  for (std::size_t p = 0; p < 2; ++p)
+    for (std::size_t v = 0; v < walls.pieces[p].points.size(); ++v)
+      if (walls.vertexOrigin[p][v] < 0)
+        EXPECT_NEAR(walls.pieces[p].points[v].z(), 0.0, 1e-3);
+  for (const auto& origins : walls.faceOrigin)
+    for (auto f : origins)
+      EXPECT_LT(f, static_cast<std::int64_t>(torus.triangles.size()));
   // Capped along two tubes, the caps are clean.
   const auto clean = lk::cutAlongLoops(lktest::asPolygonMesh(torus), { tube(0), tube(8) }, true);
   EXPECT_EQ(clean.capCrossings, std::vector<std::size_t>({ 0u, 0u }));

@@ -577,9 +577,188 @@ bool nestedCapFitsThePieces(Cap& cap, const std::vector<std::size_t>& group,
   }
   return along != against;
 }
+
+/// A mesh split along the inner walls that a loop goes around, and those
+/// walls' new loops.
+struct InnerWalls
+{
+  PolygonMesh mesh;                      ///< the input's points first, then the new ones
+  std::vector<std::int64_t> faceParent;  ///< the input face of each face
+  std::vector<std::vector<std::int64_t>> loops;
+};
+
+/// The sections of the mesh by a flat loop's plane that lie inside the loop
+/// (projected onto the plane) and away from it: on a hollow bone, the inner
+/// wall (the marrow cavity or a canal) that a line drawn around the outside
+/// does not reach. Each becomes a loop of new vertices where triangle edges
+/// cross the plane; the triangles it crosses are split. Where a vertex lies
+/// on the plane the plane is moved by a hair, so that no new vertex falls on
+/// an old one. Sections through faces that are not triangles are left out.
+InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::int64_t>& loop,
+  const std::vector<char>& onLoop)
+{
+  InnerWalls out;
+  std::vector<Vec3> points;
+  for (auto v : loop)
+    points.push_back(mesh.points[static_cast<std::size_t>(v)]);
+  const LoopPlane plane = fitLoopPlane(points);
+  if (!plane.flat)
+    return out;
+  const std::vector<Point2> polygon = projected(points, plane);
+  // Crossing edges (a < b) and their parameter along a -> b.
+  std::vector<double> d(mesh.points.size());
+  std::map<std::pair<std::int64_t, std::int64_t>, double> crossing;
+  for (int attempt = 0; attempt < 8; ++attempt)
+  {
+    const double offset = attempt * 1e-3 * plane.tolerance;
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+      d[v] = plane.normal.dot(mesh.points[v] - plane.centre) - offset;
+    crossing.clear();
+    bool clean = true;
+    for (const auto& face : mesh.faces)
+      for (std::size_t i = 0; i < face.size() && clean; ++i)
+      {
+        const auto a = std::min(face[i], face[(i + 1) % face.size()]);
+        const auto b = std::max(face[i], face[(i + 1) % face.size()]);
+        const double da = d[static_cast<std::size_t>(a)], db = d[static_cast<std::size_t>(b)];
+        if ((da >= 0.0) == (db >= 0.0))
+          continue;
+        const double t = da / (da - db);
+        clean = t > 1e-4 && t < 1.0 - 1e-4;
+        crossing[{ a, b }] = t;
+      }
+    if (clean)
+      break;
+    if (attempt == 7)
+      return out;
+  }
+  // The section graph: each crossed triangle joins its two crossed edges.
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOfEdge;
+  auto key = [](std::int64_t a, std::int64_t b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+  {
+    const auto& face = mesh.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto e = key(face[i], face[(i + 1) % face.size()]);
+      if (crossing.count(e))
+        facesOfEdge[e].push_back(f);
+    }
+  }
+  std::set<std::pair<std::int64_t, std::int64_t>> visited;
+  std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> cycles;
+  for (const auto& [start, startFaces] : facesOfEdge)
+  {
+    if (visited.count(start) || startFaces.size() != 2)
+      continue;
+    std::vector<std::pair<std::int64_t, std::int64_t>> cycle{ start };
+    visited.insert(start);
+    std::size_t through = startFaces[0];
+    auto edge = start;
+    bool closed = false;
+    for (;;)
+    {
+      const auto& face = mesh.faces[through];
+      if (face.size() != 3)
+        break;
+      std::pair<std::int64_t, std::int64_t> next{ -1, -1 };
+      for (std::size_t i = 0; i < 3; ++i)
+      {
+        const auto e = key(face[i], face[(i + 1) % 3]);
+        if (e != edge && crossing.count(e))
+          next = e;
+      }
+      if (next.first < 0)
+        break;
+      if (next == start)
+      {
+        closed = true;
+        break;
+      }
+      if (!visited.insert(next).second)
+        break;
+      const auto& fs = facesOfEdge[next];
+      if (fs.size() != 2)
+        break;
+      cycle.push_back(next);
+      edge = next;
+      through = fs[0] == through ? fs[1] : fs[0];
+    }
+    if (closed)
+      cycles.push_back(std::move(cycle));
+  }
+  // Keep the sections inside the loop that do not come near it.
+  auto crossingPoint = [&](const std::pair<std::int64_t, std::int64_t>& e) -> Vec3 {
+    const double t = crossing.at(e);
+    return (1.0 - t) * mesh.points[static_cast<std::size_t>(e.first)] +
+      t * mesh.points[static_cast<std::size_t>(e.second)];
+  };
+  std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> kept;
+  for (const auto& cycle : cycles)
+  {
+    bool inside = true;
+    for (const auto& e : cycle)
+    {
+      const Vec3 q = crossingPoint(e);
+      const Point2 q2(plane.u.dot(q - plane.centre), plane.v.dot(q - plane.centre));
+      inside = inside && !onLoop[static_cast<std::size_t>(e.first)] && !onLoop[static_cast<std::size_t>(e.second)] &&
+        CGAL::bounded_side_2(polygon.begin(), polygon.end(), q2, Kernel()) == CGAL::ON_BOUNDED_SIDE;
+      for (auto f : facesOfEdge[e])
+        for (auto v : mesh.faces[f])
+          inside = inside && !onLoop[static_cast<std::size_t>(v)];
+    }
+    if (inside)
+      kept.push_back(cycle);
+  }
+  if (kept.empty())
+    return out;
+  out.mesh.points = mesh.points;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> newVertex;
+  for (const auto& cycle : kept)
+  {
+    std::vector<std::int64_t> ids;
+    for (const auto& e : cycle)
+    {
+      newVertex[e] = static_cast<std::int64_t>(out.mesh.points.size());
+      ids.push_back(newVertex[e]);
+      out.mesh.points.push_back(crossingPoint(e));
+    }
+    out.loops.push_back(std::move(ids));
+  }
+  // Split every triangle that a kept section crosses: the vertex alone on its
+  // side keeps a triangle, the other two a quad, cut in two.
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+  {
+    const auto& face = mesh.faces[f];
+    std::size_t lone = 3;
+    if (face.size() == 3)
+      for (std::size_t i = 0; i < 3; ++i)
+      {
+        const auto e1 = key(face[i], face[(i + 1) % 3]), e2 = key(face[i], face[(i + 2) % 3]);
+        if (newVertex.count(e1) && newVertex.count(e2))
+          lone = i;
+      }
+    if (lone == 3)
+    {
+      out.mesh.faces.push_back(face);
+      out.faceParent.push_back(static_cast<std::int64_t>(f));
+      continue;
+    }
+    const auto a = face[lone], b = face[(lone + 1) % 3], c = face[(lone + 2) % 3];
+    const auto p = newVertex.at(key(a, b)), q = newVertex.at(key(a, c));
+    for (const auto& t : { std::vector<std::int64_t>{ a, p, q }, std::vector<std::int64_t>{ p, b, c },
+           std::vector<std::int64_t>{ p, c, q } })
+    {
+      out.mesh.faces.push_back(t);
+      out.faceParent.push_back(static_cast<std::int64_t>(f));
+    }
+  }
+  return out;
+}
 } // namespace
 
-CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
+CutResult cutAlongLoops(
+  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap, bool throughInnerWalls)
 {
   std::string problem = polygonIndexProblem(mesh);
   if (!problem.empty())
@@ -655,6 +834,47 @@ CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<s
     {
       isComponent[c] = 1;
       ++components;
+    }
+  }
+  if (pieces <= components && throughInnerWalls)
+  {
+    // A hollow bone: cut its inner walls too, where each loop's plane meets
+    // them, and cut again along all loops.
+    PolygonMesh current = mesh;
+    std::vector<std::int64_t> faceParent(mesh.faces.size());
+    std::iota(faceParent.begin(), faceParent.end(), 0);
+    std::vector<std::vector<std::int64_t>> all = loops;
+    std::vector<char> marked = onLoop;
+    for (const auto& loop : loops)
+    {
+      InnerWalls walls = splitAlongInnerWalls(current, loop, marked);
+      if (walls.loops.empty())
+        continue;
+      for (auto& f : walls.faceParent)
+        f = faceParent[static_cast<std::size_t>(f)];
+      faceParent = std::move(walls.faceParent);
+      current = std::move(walls.mesh);
+      marked.resize(current.points.size(), 0);
+      for (auto& inner : walls.loops)
+      {
+        for (auto v : inner)
+          marked[static_cast<std::size_t>(v)] = 1;
+        all.push_back(std::move(inner));
+      }
+    }
+    if (all.size() > loops.size())
+    {
+      CutResult result = cutAlongLoops(current, all, cap, false);
+      for (auto& origins : result.vertexOrigin)
+        for (auto& v : origins)
+          if (v >= static_cast<std::int64_t>(mesh.points.size()))
+            v = -1;
+      for (auto& origins : result.faceOrigin)
+        for (auto& f : origins)
+          if (f >= 0)
+            f = faceParent[static_cast<std::size_t>(f)];
+      result.innerWallLoops = all.size() - loops.size();
+      return result;
     }
   }
   if (pieces <= components)

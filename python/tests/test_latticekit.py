@@ -9,6 +9,7 @@ SAMPLE_DATA = os.environ.get("LATTICEKIT_SAMPLE_DATA",
                              os.path.join(os.path.dirname(__file__), "..", "..", "sample_data"))
 MANDIBLE = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_0522c0017_Mandible.nrrd")
 GE = os.path.join(SAMPLE_DATA, "dicom-ct-ge-tilt")
+CTHEAD = os.path.join(SAMPLE_DATA, "cthead", "cthead_hu_approx.nii.gz")
 
 
 class ImportTest(unittest.TestCase):
@@ -285,7 +286,7 @@ class PipelineTest(unittest.TestCase):
 
     def test_wrinkly_surface_from_python(self):
         import latticekit
-        from vtkmodules.vtkCommonCore import vtkCommand
+        from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
 
         net = latticekit.vtkLKWrinklyNetSource()
         net.SetNetTypeToAnnular()
@@ -379,6 +380,133 @@ class PipelineTest(unittest.TestCase):
         for i in range(picked.GetNumberOfPoints()):
             self.assertGreater(picked.GetPoint(i)[2], 0.0)
         self.assertGreater(f.GetFeatureLineOutput().GetNumberOfPoints(), 11)
+
+    def test_a_saw_cut_through_hollow_bone_goes_through_the_marrow_cavity(self):
+        # The main job's mandible (the bundled CT head at 300 HU, the plan's
+        # box padded with air, the component at the chin) is hollow half-way
+        # along its left body: the marrow cavity gives an inner surface joined
+        # to the outside. A closed line drawn around the outside there (the
+        # plane's outer section, split into the mesh) does not separate it
+        # alone; through the inner walls the cut takes the cavity's section
+        # too, and each piece is closed by one annular cap.
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkPlane, vtkPolyData
+        from vtkmodules.vtkFiltersCore import (vtkCutter, vtkFeatureEdges, vtkPolyDataConnectivityFilter,
+                                               vtkStripper, vtkThreshold)
+        from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
+        from vtkmodules.vtkImagingCore import vtkExtractVOI, vtkImageConstantPad
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(CTHEAD)
+        voi = vtkExtractVOI()
+        voi.SetInputConnection(reader.GetOutputPort())
+        voi.SetVOI(0, 255, 0, 255, 83, 112)  # z from 166 mm (2 mm slices) to the last slice
+        pad = vtkImageConstantPad()
+        pad.SetInputConnection(voi.GetOutputPort())
+        pad.SetOutputWholeExtent(-1, 256, -1, 256, 82, 113)
+        pad.SetConstant(-1024)
+        bone = latticekit.vtkLKBoneSurfaceFilter()
+        bone.SetInputConnection(pad.GetOutputPort())
+        bone.SetIsoValue(300)
+        bone.SetSmoothingIterations(10)
+        bone.SetExtractionModeToSeededComponent()
+        bone.SetSeedPoint(113, 36, 170)
+        bone.Update()
+        mandible = bone.GetOutput()
+        self.assertGreater(mandible.GetNumberOfPoints(), 10000)
+
+        # The stroke: the plane's section nearest to the plan's point, every
+        # third point (about 1 mm apart).
+        plane = vtkPlane()
+        plane.SetOrigin(83, 72.25, 185)
+        plane.SetNormal(-0.55, 0.83, 0)
+        section = vtkCutter()
+        section.SetInputData(mandible)
+        section.SetCutFunction(plane)
+        nearest = vtkPolyDataConnectivityFilter()
+        nearest.SetInputConnection(section.GetOutputPort())
+        nearest.SetExtractionModeToClosestPointRegion()
+        nearest.SetClosestPoint(83, 72.25, 195)
+        strip = vtkStripper()
+        strip.SetInputConnection(nearest.GetOutputPort())
+        strip.JoinContiguousSegmentsOn()
+        strip.Update()
+        loop = strip.GetOutput()
+        ids = loop.GetCell(0).GetPointIds()
+        stroke_points = vtkPoints()
+        for i in range(0, ids.GetNumberOfIds(), 3):
+            stroke_points.InsertNextPoint(loop.GetPoint(ids.GetId(i)))
+        stroke_points.InsertNextPoint(loop.GetPoint(ids.GetId(0)))
+        stroke = vtkPolyData()
+        stroke.SetPoints(stroke_points)
+        line = latticekit.vtkLKStrokeFeatureLineFilter()
+        line.SetInputData(mandible)
+        line.SetStrokeData(stroke)
+        line.SetModeToSplit()
+        line.Update()
+        self.assertEqual(line.GetFeatureLineOutput().GetFieldData().GetArray("Closed").GetValue(0), 1)
+        faces = vtkPolyData()
+        faces.ShallowCopy(line.GetOutput())
+        faces.SetLines(vtkCellArray())
+
+        cut = latticekit.vtkLKClosedLineCutFilter()
+        cut.SetInputData(faces)
+        cut.SetLinesData(line.GetFeatureLineOutput())
+        cut.CappingOn()
+        errors = []
+        cut.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+        cut.AddObserver(vtkCommand.WarningEvent, lambda caller, event: None)
+        cut.CutInnerWallsOff()
+        cut.Update()
+        self.assertEqual(cut.GetNumberOfPieces(), 0)
+        self.assertEqual(len(errors), 1)  # refused: the line does not separate the hollow bone
+
+        cut.CutInnerWallsOn()
+        cut.Update()
+        self.assertEqual(len(errors), 1)
+        self.assertEqual(cut.GetNumberOfPieces(), 2)
+        self.assertGreaterEqual(cut.GetNumberOfInnerWallLines(), 1)
+        out = cut.GetOutput()
+        self.assertEqual(out.GetFieldData().GetArray("InnerWallLines").GetValue(0), cut.GetNumberOfInnerWallLines())
+        crossings = out.GetFieldData().GetArray("CapCrossings")
+        self.assertLessEqual(max(crossings.GetValue(p) for p in range(2)), 10)  # 3 and 0 measured
+
+        def cells(name, value):
+            keep = vtkThreshold()
+            keep.SetInputData(out)
+            keep.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_CELLS, name)
+            keep.SetLowerThreshold(value - 0.5)
+            keep.SetUpperThreshold(value + 0.5)
+            surface = vtkGeometryFilter()
+            surface.SetInputConnection(keep.GetOutputPort())
+            surface.Update()
+            return surface.GetOutput()
+
+        for p in range(2):
+            edges = vtkFeatureEdges()
+            edges.SetInputData(cells("RegionId", p))
+            edges.BoundaryEdgesOn()
+            edges.NonManifoldEdgesOn()
+            edges.FeatureEdgesOff()
+            edges.ManifoldEdgesOff()
+            edges.Update()
+            self.assertEqual(edges.GetOutput().GetNumberOfCells(), 0, "piece %d is not closed" % p)
+        # The caps are annuli, bounded by the outer line and the cavity's.
+        cap = cells("Cap", 1)
+        borders = vtkFeatureEdges()
+        borders.SetInputData(cap)
+        borders.BoundaryEdgesOn()
+        borders.NonManifoldEdgesOff()
+        borders.FeatureEdgesOff()
+        borders.ManifoldEdgesOff()
+        borders.Update()
+        loops = vtkPolyDataConnectivityFilter()
+        loops.SetInputConnection(borders.GetOutputPort())
+        loops.SetExtractionModeToAllRegions()
+        loops.Update()
+        # vtkFeatureEdges merges the two caps' coinciding borders: the outer
+        # line and the cavity's (a disc cap would have one).
+        self.assertEqual(loops.GetNumberOfExtractedRegions(), 2)
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of

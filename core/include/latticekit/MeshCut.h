@@ -29,7 +29,8 @@ namespace lk
 struct CutResult
 {
   std::vector<PolygonMesh> pieces;
-  /// For each piece: the input vertex of each of its vertices (-1 for cap vertices).
+  /// For each piece: the input vertex of each of its vertices (-1 for cap
+  /// vertices and for the vertices of inner-wall loops).
   std::vector<std::vector<std::int64_t>> vertexOrigin;
   /// For each piece: the input face of each of its faces (-1 for cap faces).
   std::vector<std::vector<std::int64_t>> faceOrigin;
@@ -40,6 +41,8 @@ struct CutResult
   /// their sides are not the same two pieces): such a piece is not a valid
   /// solid for printing.
   std::vector<std::size_t> capCrossings;
+  /// Loops added on inner walls (see throughInnerWalls); 0 when none were needed.
+  std::size_t innerWallLoops = 0;
 };
 
 /// Cuts along the loops (vertex ids; a loop may repeat its first vertex at
@@ -47,6 +50,15 @@ struct CutResult
 /// mesh, a loop that is open (fewer than 3 vertices, or consecutive vertices
 /// not joined by an edge), crosses itself (a vertex twice), or loops that do
 /// not separate the mesh.
-CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap);
+///
+/// throughInnerWalls: where the loops do not separate the mesh, and a loop is
+/// flat, the mesh is also cut where the loop's plane meets its inner walls
+/// inside the loop (on a hollow bone, the marrow cavity or a canal that a line
+/// drawn around the outside does not reach: a saw cuts through them). The
+/// triangles there are split along the plane, the new loops join the cut, and
+/// with capping each inner loop shares the outer loop's flat cap (an annulus).
+/// The sections must lie inside the loop and away from it, in triangles.
+CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap,
+  bool throughInnerWalls = false);
 
 } // namespace lk
