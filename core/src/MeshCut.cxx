@@ -154,6 +154,35 @@ std::vector<Point2> projected(const std::vector<Vec3>& loop, const LoopPlane& pl
   return out;
 }
 
+/// The cap made of `faces` of `m`: the loops' vertices `loop` become ids
+/// -(i+1), the vertices `added` by the filling new points.
+template <typename Faces>
+Cap capOf(const Mesh& m, const std::vector<Mesh::Vertex_index>& loop, const std::vector<Mesh::Vertex_index>& added,
+  const Faces& faces)
+{
+  Cap cap;
+  std::map<Mesh::Vertex_index, std::int64_t> id;
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    id[loop[i]] = -static_cast<std::int64_t>(i) - 1;
+  for (auto v : added)
+  {
+    id[v] = static_cast<std::int64_t>(cap.points.size());
+    const Point& p = m.point(v);
+    cap.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (auto face : faces)
+  {
+    std::array<std::int64_t, 3> t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(m.halfedge(face), m))
+      if (k < 3)
+        t[static_cast<std::size_t>(k++)] = id.at(v);
+    if (k == 3)
+      cap.triangles.push_back(t);
+  }
+  return cap;
+}
+
 /// One flat cap for loops nested in one plane (the outer and the inner wall
 /// of a hollow bone: an annulus): a 2D constrained Delaunay triangulation of
 /// the part of the plane inside an odd number of loops, then refined inside
@@ -183,12 +212,11 @@ Cap makeNestedCap(const std::vector<std::vector<Vec3>>& loops, const LoopPlane& 
     for (std::size_t i = 0; i < handles.size(); ++i)
       cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
   }
-  Cap cap;
   if (cdt.number_of_vertices() != points.size())
-    return cap; // two loop points project onto one, or constraints crossed
+    return {}; // two loop points project onto one, or constraints crossed
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (v->info() >= points.size())
-      return cap;
+      return {};
   // Nesting level of each face: 0 outside every loop, +1 across each loop
   // (flood fills that stop at constrained edges, as in CGAL's examples).
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
@@ -232,32 +260,13 @@ Cap makeNestedCap(const std::vector<std::vector<Vec3>>& loops, const LoopPlane& 
     if (f->info() % 2 == 1)
       if (m.add_face(vs[f->vertex(0)->info()], vs[f->vertex(1)->info()], vs[f->vertex(2)->info()]) ==
         Mesh::null_face())
-        return cap;
+        return {};
   std::vector<Mesh::Face_index> faces(m.faces().begin(), m.faces().end());
   std::vector<Mesh::Face_index> newFaces;
   std::vector<Mesh::Vertex_index> newVertices;
   PMP::refine(m, faces, std::back_inserter(newFaces), std::back_inserter(newVertices),
     CGAL::parameters::density_control_factor(0.7));
-  std::map<Mesh::Vertex_index, std::int64_t> id;
-  for (std::size_t i = 0; i < vs.size(); ++i)
-    id[vs[i]] = -static_cast<std::int64_t>(i) - 1;
-  for (auto v : newVertices)
-  {
-    id[v] = static_cast<std::int64_t>(cap.points.size());
-    const Point& p = m.point(v);
-    cap.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto face : m.faces())
-  {
-    std::array<std::int64_t, 3> t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(m.halfedge(face), m))
-      if (k < 3)
-        t[static_cast<std::size_t>(k++)] = id.at(v);
-    if (k == 3)
-      cap.triangles.push_back(t);
-  }
-  return cap;
+  return capOf(m, vs, newVertices, m.faces());
 }
 
 Cap makeCap(const std::vector<Vec3>& loop)
@@ -271,9 +280,8 @@ Cap makeCap(const std::vector<Vec3>& loop)
   // The polygon face runs against the loop; the hole (border) runs along it.
   std::vector<Mesh::Vertex_index> reversed(vs.rbegin(), vs.rend());
   const auto f = m.add_face(reversed);
-  Cap cap;
   if (f == Mesh::null_face())
-    return cap;
+    return {};
   Mesh::Halfedge_index border;
   for (auto h : m.halfedges())
     if (m.is_border(h))
@@ -297,26 +305,7 @@ Cap makeCap(const std::vector<Vec3>& loop)
     CGAL::parameters::density_control_factor(0.7)
       .use_2d_constrained_delaunay_triangulation(flat)
       .threshold_distance(planarTolerance));
-  std::map<Mesh::Vertex_index, std::int64_t> id;
-  for (std::size_t i = 0; i < vs.size(); ++i)
-    id[vs[i]] = -static_cast<std::int64_t>(i) - 1;
-  for (auto v : newVertices)
-  {
-    id[v] = static_cast<std::int64_t>(cap.points.size());
-    const Point& p = m.point(v);
-    cap.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto face : faces)
-  {
-    std::array<std::int64_t, 3> t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(m.halfedge(face), m))
-      if (k < 3)
-        t[static_cast<std::size_t>(k++)] = id.at(v);
-    if (k == 3)
-      cap.triangles.push_back(t);
-  }
-  return cap;
+  return capOf(m, vs, newVertices, faces);
 }
 } // namespace
 
