@@ -227,6 +227,15 @@ void addLine(std::string& message, const std::string& line)
   message += (message.empty() ? "" : "\n") + line;
 }
 
+/// Each line of `text` as its own line of `message`, after `prefix`.
+void addLines(std::string& message, const std::string& prefix, const std::string& text)
+{
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty())
+      addLine(message, prefix + line);
+}
+
 const char* modeName(int mode)
 {
   switch (mode)
@@ -538,6 +547,7 @@ public:
     std::vector<vtkSmartPointer<vtkPolyData>> pieces;
     std::string message;
     bool failed = false;
+    int innerWallLines = 0; ///< lines the cut added on a hollow bone's inner walls
   } cut;
   /// One deformation filter per piece: it keeps the refined mesh between
   /// updates, so a drag or a brush dab costs one deformation.
@@ -570,7 +580,7 @@ public:
       f->Update();
       const std::string warned = lkapp::warningsSince(warningsBefore);
       if (!warned.empty())
-        addLine(cut.message, which + ": " + warned);
+        addLines(cut.message, which + ": ", warned);
       if (lkapp::errorCount() > errorsBefore || f->GetOutput()->GetNumberOfPoints() == 0)
       {
         const std::string why = lkapp::errorsSince(errorsBefore);
@@ -616,11 +626,12 @@ public:
       cutter->Update();
       const std::string warned = lkapp::warningsSince(warningsBefore);
       if (!warned.empty())
-        addLine(cut.message, "the cut: " + warned);
+        addLines(cut.message, "the cut: ", warned);
       if (lkapp::errorCount() == before)
       {
         for (int r = 0; r < cutter->GetNumberOfPieces(); ++r)
           cut.pieces.push_back(region(cutter->GetOutput(), r));
+        cut.innerWallLines = cutter->GetNumberOfInnerWallLines();
       }
       else
       {
@@ -838,7 +849,8 @@ public:
   {
     std::ostringstream s;
     s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
-      << " | pieces: " << pieces.size() << (session.lattice ? " | lattice" : "");
+      << " | pieces: " << pieces.size() << (cut.innerWallLines > 0 ? " (cut through the marrow cavity too)" : "")
+      << (session.lattice ? " | lattice" : "");
     if (tool != NO_TOOL)
     {
       char r[32];
@@ -873,6 +885,8 @@ public:
   void report()
   {
     std::printf("strokes: %zu\npieces: %zu\n", session.strokes.size(), pieces.size());
+    if (cut.innerWallLines > 0)
+      std::printf("inner wall lines: %d (the cut went through the marrow cavity too)\n", cut.innerWallLines);
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
       std::printf("piece %zu: %lld points, %lld faces", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
