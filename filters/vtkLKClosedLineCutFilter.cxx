@@ -140,7 +140,8 @@ int vtkLKClosedLineCutFilter::RequestData(
   for (std::size_t p = 0; p < cut.capCrossings.size(); ++p)
     if (cut.capCrossings[p] > 0)
       vtkWarningMacro(<< "Piece " << p << ": its cap crosses the surface or another cap (" << cut.capCrossings[p]
-                      << " pairs of triangles intersect), so the piece is not a valid solid. A cap crosses the "
+                      << " pairs of triangles intersect, reaching at most " << cut.capCrossingDepths[p] << " through each other"
+                      << "), so the piece is not a valid solid. A cap crosses the "
                          "surface where a line is far from planar, and two caps overlap where nested lines could "
                          "not share one cap.");
   this->UpdateProgress(0.8);
@@ -197,6 +198,11 @@ int vtkLKClosedLineCutFilter::RequestData(
     for (const std::size_t c : cut.capCrossings)
       crossings->InsertNextValue(static_cast<double>(c));
     output->GetFieldData()->AddArray(crossings);
+    vtkNew<vtkDoubleArray> depths; // one value per piece
+    depths->SetName("CapCrossingDepth");
+    for (const double d : cut.capCrossingDepths)
+      depths->InsertNextValue(d);
+    output->GetFieldData()->AddArray(depths);
   }
   this->NumberOfPieces = static_cast<int>(cut.pieces.size());
   this->NumberOfInnerWallLines = static_cast<int>(cut.innerWallLoops);

@@ -25,7 +25,10 @@
  * bone) share one flat cap with holes (an annulus). A cap that crosses its
  * piece's surface (a line far from planar) or another cap is reported: a
  * warning, and field data "CapCrossings" (per piece, the pairs of
- * intersecting triangles of which one is a cap triangle; 0 when clean).
+ * intersecting triangles of which one is a cap triangle; 0 when clean) and
+ * "CapCrossingDepth" (per piece, the deepest overlap of such a pair: how far
+ * each triangle reaches through the other's plane on its shallower side, the
+ * smaller of the two; micrometres where triangles graze beside a line).
  *
  * Bad input (an open line, lines crossing, a loop that crosses itself, loops
  * that do not separate the mesh, points that are not mesh points) gives a

@@ -86,8 +86,16 @@ TEST(ClosedLineCut, MandibleCutIntoTwoPiecesThatCapWatertight)
       ASSERT_NE(crossings, nullptr);
       ASSERT_EQ(crossings->GetNumberOfTuples(), 2);
       const double crossed = crossings->GetTuple1(0) + crossings->GetTuple1(1);
-      std::printf("cap crossings: %.0f + %.0f\n", crossings->GetTuple1(0), crossings->GetTuple1(1));
+      vtkDataArray* depths = cut->GetOutput()->GetFieldData()->GetArray("CapCrossingDepth");
+      ASSERT_NE(depths, nullptr);
+      std::printf("cap crossings: %.0f + %.0f, reaching at most %.4f and %.4f mm through each other\n",
+        crossings->GetTuple1(0), crossings->GetTuple1(1), depths->GetTuple1(0), depths->GetTuple1(1));
       EXPECT_LE(crossed, 10.0);
+      for (int p = 0; p < 2; ++p)
+      {
+        EXPECT_EQ(depths->GetTuple1(p) > 0.0, crossings->GetTuple1(p) > 0.0);
+        EXPECT_LT(depths->GetTuple1(p), 0.5); // grazes beside the line, not a cap through the bone
+      }
       EXPECT_EQ(errors.warnings, crossed > 0 ? 1 : 0) << errors.warningMessages;
       if (crossed > 0)
         EXPECT_NE(errors.warningMessages.find("crosses the surface"), std::string::npos) << errors.warningMessages;

@@ -20,6 +20,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace lk
 {
@@ -44,7 +45,12 @@ std::size_t find(std::vector<std::size_t>& parent, std::size_t x)
 /// boxes meet the caps' box (on the skull's craniotomy, a few thousand of
 /// 563,000), fanned into triangles; on the whole piece where that subset is
 /// not a manifold surface CGAL can hold.
-std::size_t capCrossings(const PolygonMesh& piece, const std::vector<std::int64_t>& faceOrigin)
+/// Pairs that only touch (reaching through each other by less than 1e-6 of
+/// the piece's size) are not counted. With the count, the deepest pair's
+/// overlap: how far each triangle reaches through the other's plane on its
+/// shallower side, the smaller of the two (micrometres where triangles graze
+/// beside a line).
+std::pair<std::size_t, double> capCrossings(const PolygonMesh& piece, const std::vector<std::int64_t>& faceOrigin)
 {
   std::vector<CGAL::Bbox_3> boxes(piece.faces.size());
   CGAL::Bbox_3 capBox;
@@ -58,6 +64,12 @@ std::size_t capCrossings(const PolygonMesh& piece, const std::vector<std::int64_
     if (faceOrigin[f] < 0)
       capBox += boxes[f];
   }
+  double depth = 0.0;
+  CGAL::Bbox_3 all;
+  for (const auto& b : boxes)
+    all += b;
+  const double touching = 1e-6 * std::sqrt(CGAL::square(all.xmax() - all.xmin()) +
+    CGAL::square(all.ymax() - all.ymin()) + CGAL::square(all.zmax() - all.zmin()));
   auto count = [&](bool nearOnly, std::size_t& crossings) {
     Mesh sm;
     std::vector<Mesh::Vertex_index> id(piece.points.size());
@@ -84,15 +96,46 @@ std::size_t capCrossings(const PolygonMesh& piece, const std::vector<std::int64_
     std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
     PMP::self_intersections(sm, std::back_inserter(pairs));
     crossings = 0;
+    depth = 0.0;
+    auto triangle = [&](Mesh::Face_index f) {
+      std::array<Point, 3> t;
+      std::size_t k = 0;
+      for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+        t[k++] = sm.point(v);
+      return Kernel::Triangle_3(t[0], t[1], t[2]);
+    };
     for (const auto& [a, b] : pairs)
-      if (isCap[static_cast<std::size_t>(a)] || isCap[static_cast<std::size_t>(b)])
-        ++crossings;
+    {
+      if (!isCap[static_cast<std::size_t>(a)] && !isCap[static_cast<std::size_t>(b)])
+        continue;
+      const Kernel::Triangle_3 ta = triangle(a), tb = triangle(b);
+      // How far t reaches through the plane of u on its shallower side.
+      auto through = [](const Kernel::Triangle_3& t, const Kernel::Triangle_3& u) {
+        const Kernel::Vector_3 n = CGAL::normal(u.vertex(0), u.vertex(1), u.vertex(2));
+        const double length = std::sqrt(CGAL::to_double(n.squared_length()));
+        if (!(length > 0.0))
+          return 0.0;
+        double above = 0.0, below = 0.0;
+        for (int i = 0; i < 3; ++i)
+        {
+          const double d = CGAL::to_double((t.vertex(i) - u.vertex(0)) * n) / length;
+          above = std::max(above, d);
+          below = std::max(below, -d);
+        }
+        return std::min(above, below);
+      };
+      const double reach = std::min(through(ta, tb), through(tb, ta));
+      if (reach <= touching)
+        continue; // they touch (CGAL counts a shared point), to a millionth of the size
+      ++crossings;
+      depth = std::max(depth, reach);
+    }
     return true;
   };
   std::size_t crossings = 0;
   if (!count(true, crossings))
     count(false, crossings); // the piece was checked to be a manifold surface before the cut
-  return crossings;
+  return { crossings, depth };
 }
 
 /// The cap of a loop: new points and triangles (indices: < 0 means loop
@@ -1056,8 +1099,10 @@ CutResult cutAlongLoops(
     }
   }
   result.capCrossings.resize(result.pieces.size());
+  result.capCrossingDepths.resize(result.pieces.size());
   for (std::size_t p = 0; p < result.pieces.size(); ++p)
-    result.capCrossings[p] = capCrossings(result.pieces[p], result.faceOrigin[p]);
+    std::tie(result.capCrossings[p], result.capCrossingDepths[p]) =
+      capCrossings(result.pieces[p], result.faceOrigin[p]);
   return result;
 }
 

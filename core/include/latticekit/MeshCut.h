@@ -41,6 +41,11 @@ struct CutResult
   /// their sides are not the same two pieces): such a piece is not a valid
   /// solid for printing.
   std::vector<std::size_t> capCrossings;
+  /// For each capped piece: the deepest of those pairs' overlaps, how far
+  /// each triangle reaches through the other's plane on its shallower side,
+  /// the smaller of the two (0 without crossings). Micrometres mean triangles
+  /// that graze each other beside a line.
+  std::vector<double> capCrossingDepths;
   /// Loops added on inner walls (see throughInnerWalls); 0 when none were needed.
   std::size_t innerWallLoops = 0;
 };
