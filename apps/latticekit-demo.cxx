@@ -470,8 +470,8 @@ bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBa
     renderer->SetViewport(0.0, 0.0, 0.82, 1.0);
     barRenderer->SetViewport(0.82, 0.0, 1.0, 1.0);
     barRenderer->SetBackground(1.0, 1.0, 1.0);
-    bar->SetPosition(0.4, 0.1); // room on the left for the above-range note
-    bar->SetPosition2(0.55, 0.8);
+    bar->SetPosition(0.47, 0.1); // room on the left for the above-range note
+    bar->SetPosition2(0.5, 0.8);
     barRenderer->AddViewProp(bar);
   }
   vtkNew<vtkTextActor> text;
