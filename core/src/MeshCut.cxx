@@ -648,7 +648,7 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
     crossing.clear();
     bool clean = true;
     for (const auto& face : mesh.faces)
-      for (std::size_t i = 0; i < face.size() && clean; ++i)
+      for (std::size_t i = 0; i < face.size(); ++i)
       {
         const auto a = std::min(face[i], face[(i + 1) % face.size()]);
         const auto b = std::max(face[i], face[(i + 1) % face.size()]);
@@ -656,8 +656,17 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
         if ((da >= 0.0) == (db >= 0.0))
           continue;
         const double t = da / (da - db);
-        clean = t > 1e-4 && t < 1.0 - 1e-4;
         crossing[{ a, b }] = t;
+        if (t > 1e-4 && t < 1.0 - 1e-4)
+          continue;
+        // A new vertex would fall on an old one; it matters only where a
+        // section could be kept: inside the loop, away from it.
+        if (onLoop[static_cast<std::size_t>(a)] || onLoop[static_cast<std::size_t>(b)])
+          continue;
+        const Vec3 q = (1.0 - t) * mesh.points[static_cast<std::size_t>(a)] + t * mesh.points[static_cast<std::size_t>(b)];
+        const Point2 q2(plane.u.dot(q - plane.centre), plane.v.dot(q - plane.centre));
+        if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), q2, Kernel()) != CGAL::ON_UNBOUNDED_SIDE)
+          clean = false;
       }
     if (clean)
       break;
