@@ -392,8 +392,8 @@ class PipelineTest(unittest.TestCase):
         import latticekit
         from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
         from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObject, vtkPlane, vtkPolyData
-        from vtkmodules.vtkFiltersCore import (vtkCutter, vtkFeatureEdges, vtkPolyDataConnectivityFilter,
-                                               vtkStripper, vtkThreshold)
+        from vtkmodules.vtkFiltersCore import vtkCutter, vtkPolyDataConnectivityFilter, vtkStripper, vtkThreshold
+        from mesh_checks import open_edges
         from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
         from vtkmodules.vtkImagingCore import vtkExtractVOI, vtkImageConstantPad
         reader = latticekit.vtkLKMedicalImageReader()
@@ -488,25 +488,10 @@ class PipelineTest(unittest.TestCase):
             return surface.GetOutput()
 
         for p in range(2):
-            edges = vtkFeatureEdges()
-            edges.SetInputData(cells("RegionId", p))
-            edges.BoundaryEdgesOn()
-            edges.NonManifoldEdgesOn()
-            edges.FeatureEdgesOff()
-            edges.ManifoldEdgesOff()
-            edges.Update()
-            self.assertEqual(edges.GetOutput().GetNumberOfCells(), 0, "piece %d is not closed" % p)
+            self.assertEqual(open_edges(cells("RegionId", p)).GetNumberOfCells(), 0, "piece %d is not closed" % p)
         # The caps are annuli, bounded by the outer line and the cavity's.
-        cap = cells("Cap", 1)
-        borders = vtkFeatureEdges()
-        borders.SetInputData(cap)
-        borders.BoundaryEdgesOn()
-        borders.NonManifoldEdgesOff()
-        borders.FeatureEdgesOff()
-        borders.ManifoldEdgesOff()
-        borders.Update()
         loops = vtkPolyDataConnectivityFilter()
-        loops.SetInputConnection(borders.GetOutputPort())
+        loops.SetInputData(open_edges(cells("Cap", 1), non_manifold=False))
         loops.SetExtractionModeToAllRegions()
         loops.Update()
         # vtkFeatureEdges merges the two caps' coinciding borders: the outer
@@ -539,7 +524,7 @@ class LatticeSurfaceTest(unittest.TestCase):
         import latticekit
         from vtkmodules.vtkCommonCore import vtkPoints
         from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-        from vtkmodules.vtkFiltersCore import vtkFeatureEdges
+        from mesh_checks import open_edges
 
         points = vtkPoints()
         for p in ((1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)):
@@ -558,14 +543,7 @@ class LatticeSurfaceTest(unittest.TestCase):
         self.assertEqual(surface.GetNumberOfPatches(), 24)
         out = surface.GetOutput()
         self.assertEqual(out.GetFieldData().GetArray("DisplayPolygons").GetValue(0), out.GetNumberOfPolys())
-        edges = vtkFeatureEdges()
-        edges.SetInputData(out)
-        edges.BoundaryEdgesOn()
-        edges.NonManifoldEdgesOn()
-        edges.FeatureEdgesOff()
-        edges.ManifoldEdgesOff()
-        edges.Update()
-        self.assertEqual(edges.GetOutput().GetNumberOfLines(), 0)
+        self.assertEqual(open_edges(out).GetNumberOfLines(), 0)
 
         position, normal = [0.0] * 3, [0.0] * 3
         self.assertTrue(surface.EvaluatePatch(0, 0.5, 0.5, position, normal))
