@@ -140,8 +140,8 @@ int vtkLKClosedLineCutFilter::RequestData(
   for (std::size_t p = 0; p < cut.capCrossings.size(); ++p)
     if (cut.capCrossings[p] > 0)
       vtkWarningMacro(<< "Piece " << p << ": its cap crosses the surface or another cap (" << cut.capCrossings[p]
-                      << " pairs of triangles intersect, reaching at most " << cut.capCrossingDepths[p] << " through each other"
-                      << "), so the piece is not a valid solid. A cap crosses the "
+                      << " pairs of triangles intersect, reaching at most " << cut.capCrossingDepths[p]
+                      << " through each other), so the piece is not a valid solid. A cap crosses the "
                          "surface where a line is far from planar, and two caps overlap where nested lines could "
                          "not share one cap.");
   this->UpdateProgress(0.8);

@@ -188,12 +188,18 @@ LoopPlane fitLoopPlane(const std::vector<Vec3>& loop)
 
 using Point2 = Kernel::Point_2;
 
+/// A point in the plane's coordinates (u, v).
+Point2 projected(const Vec3& p, const LoopPlane& plane)
+{
+  return { plane.u.dot(p - plane.centre), plane.v.dot(p - plane.centre) };
+}
+
 std::vector<Point2> projected(const std::vector<Vec3>& loop, const LoopPlane& plane)
 {
   std::vector<Point2> out;
   out.reserve(loop.size());
   for (const Vec3& p : loop)
-    out.emplace_back(plane.u.dot(p - plane.centre), plane.v.dot(p - plane.centre));
+    out.push_back(projected(p, plane));
   return out;
 }
 
@@ -312,7 +318,8 @@ Cap makeNestedCap(const std::vector<std::vector<Vec3>>& loops, const LoopPlane& 
   return capOf(m, vs, newVertices, m.faces());
 }
 
-Cap makeCap(const std::vector<Vec3>& loop)
+/// The cap of one loop; `plane` is the loop's fitted plane (fitLoopPlane).
+Cap makeCap(const std::vector<Vec3>& loop, const LoopPlane& plane)
 {
   // The hole is the border of a single fan-free face: build the loop as a mesh
   // with one polygon face, then fill its other side.
@@ -341,13 +348,10 @@ Cap makeCap(const std::vector<Vec3>& loop)
   // refined. Neither is faired: fairing (a bi-Laplacian solve with cotangent
   // weights) folded the caps: 118 and 90 pairs of crossing triangles on the
   // main job's pieces, 134 and 149 on a wavy loop on a sphere; 0 now.
-  const LoopPlane plane = fitLoopPlane(loop);
-  const double planarTolerance = plane.tolerance;
-  const bool flat = plane.flat;
   PMP::triangulate_and_refine_hole(m, border, std::back_inserter(faces), std::back_inserter(newVertices),
     CGAL::parameters::density_control_factor(0.7)
-      .use_2d_constrained_delaunay_triangulation(flat)
-      .threshold_distance(planarTolerance));
+      .use_2d_constrained_delaunay_triangulation(plane.flat)
+      .threshold_distance(plane.tolerance));
   return capOf(m, vs, newVertices, faces);
 }
 } // namespace
@@ -507,7 +511,6 @@ std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed, 
     "sides. Draw the line where the bone is solid";
 }
 
-
 /// Loops that share a cap, the outermost first: a flat loop lies inside
 /// another (its first point within the other's projection) when both are
 /// flat, their planes are within 10 degrees, and it is within the other's
@@ -531,8 +534,8 @@ std::vector<std::vector<std::size_t>> nestedLoopGroups(
             [&](const Vec3& p) { return std::abs(pj.normal.dot(p - pj.centre)) <= pj.tolerance; }))
         continue;
       const std::vector<Point2> polygon = projected(loops[j], pj);
-      const Point2 q = projected({ loops[i].front() }, pj).front();
-      if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), q, Kernel()) != CGAL::ON_BOUNDED_SIDE)
+      if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), projected(loops[i].front(), pj), Kernel()) !=
+        CGAL::ON_BOUNDED_SIDE)
         continue;
       if (root[i] == i || pj.tolerance > planes[root[i]].tolerance)
         root[i] = j; // the largest loop around it
@@ -640,6 +643,12 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
   // Crossing edges (a < b) and their parameter along a -> b.
   std::vector<double> d(mesh.points.size());
   std::map<std::pair<std::int64_t, std::int64_t>, double> crossing;
+  auto pointAt = [&](std::int64_t a, std::int64_t b, double t) -> Vec3 {
+    return (1.0 - t) * mesh.points[static_cast<std::size_t>(a)] + t * mesh.points[static_cast<std::size_t>(b)];
+  };
+  auto inside = [&](const Vec3& q) {
+    return CGAL::bounded_side_2(polygon.begin(), polygon.end(), projected(q, plane), Kernel());
+  };
   for (int attempt = 0; attempt < 8; ++attempt)
   {
     const double offset = attempt * 1e-3 * plane.tolerance;
@@ -663,9 +672,7 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
         // section could be kept: inside the loop, away from it.
         if (onLoop[static_cast<std::size_t>(a)] || onLoop[static_cast<std::size_t>(b)])
           continue;
-        const Vec3 q = (1.0 - t) * mesh.points[static_cast<std::size_t>(a)] + t * mesh.points[static_cast<std::size_t>(b)];
-        const Point2 q2(plane.u.dot(q - plane.centre), plane.v.dot(q - plane.centre));
-        if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), q2, Kernel()) != CGAL::ON_UNBOUNDED_SIDE)
+        if (inside(pointAt(a, b, t)) != CGAL::ON_UNBOUNDED_SIDE)
           clean = false;
       }
     if (clean)
@@ -729,26 +736,21 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
       cycles.push_back(std::move(cycle));
   }
   // Keep the sections inside the loop that do not come near it.
-  auto crossingPoint = [&](const std::pair<std::int64_t, std::int64_t>& e) -> Vec3 {
-    const double t = crossing.at(e);
-    return (1.0 - t) * mesh.points[static_cast<std::size_t>(e.first)] +
-      t * mesh.points[static_cast<std::size_t>(e.second)];
+  auto crossingPoint = [&](const std::pair<std::int64_t, std::int64_t>& e) {
+    return pointAt(e.first, e.second, crossing.at(e));
   };
   std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> kept;
   for (const auto& cycle : cycles)
   {
-    bool inside = true;
+    bool keep = true;
     for (const auto& e : cycle)
     {
-      const Vec3 q = crossingPoint(e);
-      const Point2 q2(plane.u.dot(q - plane.centre), plane.v.dot(q - plane.centre));
-      inside = inside && !onLoop[static_cast<std::size_t>(e.first)] && !onLoop[static_cast<std::size_t>(e.second)] &&
-        CGAL::bounded_side_2(polygon.begin(), polygon.end(), q2, Kernel()) == CGAL::ON_BOUNDED_SIDE;
+      keep = keep && inside(crossingPoint(e)) == CGAL::ON_BOUNDED_SIDE;
       for (auto f : facesOfEdge[e])
-        for (auto v : mesh.faces[f])
-          inside = inside && !onLoop[static_cast<std::size_t>(v)];
+        for (auto v : mesh.faces[f]) // the crossed triangles, hence the edge's ends too
+          keep = keep && !onLoop[static_cast<std::size_t>(v)];
     }
-    if (inside)
+    if (keep)
       kept.push_back(cycle);
   }
   if (kept.empty())
@@ -1072,7 +1074,7 @@ CutResult cutAlongLoops(
       result.faceOrigin[p] = std::move(origin);
       result.vertexOrigin[p] = std::move(vorigin);
     }
-    };
+  };
   std::vector<std::vector<Vec3>> loopPoints(loops.size());
   std::vector<LoopPlane> planes(loops.size());
   for (std::size_t l = 0; l < loops.size(); ++l)
@@ -1101,7 +1103,7 @@ CutResult cutAlongLoops(
     }
     for (auto l : group)
     {
-      const Cap c = makeCap(loopPoints[l]);
+      const Cap c = makeCap(loopPoints[l], planes[l]);
       if (c.triangles.empty())
         throw std::invalid_argument("a loop could not be capped (CGAL's hole filling failed)");
       insertCap(loops[l], c);
