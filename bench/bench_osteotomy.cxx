@@ -191,14 +191,29 @@ int main(int argc, char* argv[])
   poly.points = split.points;
   for (const auto& tri : split.triangles)
     poly.faces.push_back({ tri[0], tri[1], tri[2] });
+  // Each timing below is the median of kRuns runs, with the range: single
+  // runs vary by about 30 % on a 2-core machine.
+  constexpr int kRuns = 5;
+  auto range = [](std::vector<double> v) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f ms (%.1f-%.1f)", percentile(v, 0.5), percentile(v, 0.0), percentile(v, 1.0));
+    return std::string(text);
+  };
   for (bool cap : { false, true })
   {
-    t = Clock::now();
-    const auto cut = lk::cutAlongLoops(poly, { splitter.line() }, cap);
-    const double tCut = ms(t);
-    std::printf("cutAlongLoops (%s): %.1f ms (target < 200 ms), %zu pieces: %zu and %zu faces\n",
-      cap ? "capped" : "open", tCut, cut.pieces.size(), cut.pieces[0].faces.size(),
-      cut.pieces.size() > 1 ? cut.pieces[1].faces.size() : 0);
+    std::vector<double> tCut;
+    std::size_t pieces = 0, faces0 = 0, faces1 = 0;
+    for (int run = 0; run < kRuns; ++run)
+    {
+      t = Clock::now();
+      const auto cut = lk::cutAlongLoops(poly, { splitter.line() }, cap);
+      tCut.push_back(ms(t));
+      pieces = cut.pieces.size();
+      faces0 = cut.pieces[0].faces.size();
+      faces1 = cut.pieces.size() > 1 ? cut.pieces[1].faces.size() : 0;
+    }
+    std::printf("cutAlongLoops (%s): median %s of %d runs (target < 200 ms), %zu pieces: %zu and %zu faces\n",
+      cap ? "capped" : "open", range(tCut).c_str(), kRuns, pieces, faces0, faces1);
   }
   auto splitPd = lkvtk::fromTriangleMesh(split);
   vtkNew<vtkPolyData> lines;
@@ -215,22 +230,29 @@ int main(int argc, char* argv[])
   lines->SetPoints(lp);
   lines->SetLines(lc);
   lines->GetPointData()->AddArray(mid);
-  vtkNew<vtkLKClosedLineCutFilter> cutFilter;
-  cutFilter->SetInputData(splitPd);
-  cutFilter->SetLinesData(lines);
-  cutFilter->SetCapping(true);
-  t = Clock::now();
-  cutFilter->Update();
-  const double tFilter = ms(t);
-  vtkNew<vtkPolyDataConnectivityFilter> regions;
-  regions->SetInputData(splitPd);
-  regions->SetExtractionModeToAllRegions();
-  regions->ColorRegionsOn();
-  t = Clock::now();
-  regions->Update();
-  const double tRegions = ms(t);
-  std::printf("vtkLKClosedLineCutFilter (capped, with VTK conversions): %.1f ms, %d pieces; anchor "
-              "vtkPolyDataConnectivityFilter (all regions): %.1f ms; ratio %.2f\n",
-    tFilter, cutFilter->GetNumberOfPieces(), tRegions, tFilter / tRegions);
+  std::vector<double> tFilter, tRegions;
+  int filterPieces = 0;
+  for (int run = 0; run < kRuns; ++run)
+  {
+    vtkNew<vtkLKClosedLineCutFilter> cutFilter;
+    cutFilter->SetInputData(splitPd);
+    cutFilter->SetLinesData(lines);
+    cutFilter->SetCapping(true);
+    t = Clock::now();
+    cutFilter->Update();
+    tFilter.push_back(ms(t));
+    filterPieces = cutFilter->GetNumberOfPieces();
+    vtkNew<vtkPolyDataConnectivityFilter> regions;
+    regions->SetInputData(splitPd);
+    regions->SetExtractionModeToAllRegions();
+    regions->ColorRegionsOn();
+    t = Clock::now();
+    regions->Update();
+    tRegions.push_back(ms(t));
+  }
+  std::printf("vtkLKClosedLineCutFilter (capped, with VTK conversions): median %s, %d pieces; anchor "
+              "vtkPolyDataConnectivityFilter (all regions): median %s; ratio of medians %.2f\n",
+    range(tFilter).c_str(), filterPieces, range(tRegions).c_str(),
+    percentile(tFilter, 0.5) / percentile(tRegions, 0.5));
   return 0;
 }
