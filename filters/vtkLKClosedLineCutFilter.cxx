@@ -20,6 +20,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkLKClosedLineCutFilter);
 
@@ -104,12 +105,16 @@ int vtkLKClosedLineCutFilter::RequestData(
     faces->ShallowCopy(input);
     vtkNew<vtkCellArray> none;
     faces->SetLines(none);
+  }
+  if (input && !linesIn)
+  {
     ownLines->SetPoints(input->GetPoints());
     ownLines->SetLines(input->GetLines());
     vtkNew<vtkIdTypeArray> ids;
     ids->SetName("MeshPointId");
+    ids->SetNumberOfValues(input->GetNumberOfPoints());
     for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-      ids->InsertNextValue(i);
+      ids->SetValue(i, i);
     ownLines->GetPointData()->AddArray(ids);
   }
   lk::PolygonMesh mesh;
@@ -157,25 +162,43 @@ int vtkLKClosedLineCutFilter::RequestData(
   vtkNew<vtkUnsignedCharArray> capFlag;
   capFlag->SetName("Cap");
   const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  vtkIdType totalPoints = 0, totalFaces = 0, totalCorners = 0;
+  for (const auto& piece : cut.pieces)
+  {
+    totalPoints += static_cast<vtkIdType>(piece.points.size());
+    totalFaces += static_cast<vtkIdType>(piece.faces.size());
+    for (const auto& face : piece.faces)
+      totalCorners += static_cast<vtkIdType>(face.size());
+  }
+  points->SetNumberOfPoints(totalPoints);
+  pointOrigin->SetNumberOfValues(totalPoints);
+  polys->AllocateExact(totalFaces, totalCorners);
+  cellOrigin->SetNumberOfValues(totalFaces);
+  region->SetNumberOfValues(totalFaces);
+  capFlag->SetNumberOfValues(totalFaces);
+  vtkIdType base = 0, cell = 0;
+  std::vector<vtkIdType> ids;
   for (std::size_t p = 0; p < cut.pieces.size(); ++p)
   {
-    const vtkIdType base = points->GetNumberOfPoints();
     for (std::size_t v = 0; v < cut.pieces[p].points.size(); ++v)
     {
-      points->InsertNextPoint(cut.pieces[p].points[v].data());
-      pointOrigin->InsertNextValue(static_cast<vtkIdType>(cut.vertexOrigin[p][v]));
+      const vtkIdType id = base + static_cast<vtkIdType>(v);
+      points->SetPoint(id, cut.pieces[p].points[v].data());
+      pointOrigin->SetValue(id, static_cast<vtkIdType>(cut.vertexOrigin[p][v]));
     }
-    for (std::size_t f = 0; f < cut.pieces[p].faces.size(); ++f)
+    for (std::size_t f = 0; f < cut.pieces[p].faces.size(); ++f, ++cell)
     {
       const auto& face = cut.pieces[p].faces[f];
-      polys->InsertNextCell(static_cast<vtkIdType>(face.size()));
+      ids.clear();
       for (auto v : face)
-        polys->InsertCellPoint(base + static_cast<vtkIdType>(v));
+        ids.push_back(base + static_cast<vtkIdType>(v));
+      polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
       const auto origin = cut.faceOrigin[p][f];
-      cellOrigin->InsertNextValue(origin < 0 ? -1 : firstPoly + static_cast<vtkIdType>(origin));
-      region->InsertNextValue(static_cast<int>(p));
-      capFlag->InsertNextValue(origin < 0 ? 1 : 0);
+      cellOrigin->SetValue(cell, origin < 0 ? -1 : firstPoly + static_cast<vtkIdType>(origin));
+      region->SetValue(cell, static_cast<int>(p));
+      capFlag->SetValue(cell, origin < 0 ? 1 : 0);
     }
+    base += static_cast<vtkIdType>(cut.pieces[p].points.size());
   }
   output->SetPoints(points);
   output->SetPolys(polys);

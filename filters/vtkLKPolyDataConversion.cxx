@@ -88,6 +88,7 @@ std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh)
     pd->GetPoint(i, p);
     mesh.points[static_cast<std::size_t>(i)] = lk::Vec3(p[0], p[1], p[2]);
   }
+  mesh.faces.reserve(static_cast<std::size_t>(pd->GetNumberOfPolys()));
   auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
   {
