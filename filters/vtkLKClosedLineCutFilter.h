@@ -62,7 +62,11 @@ public:
   /// marrow cavity or canal inside a bone, joined to the outside), also cut
   /// the inner walls where a near-planar line's plane meets them inside the
   /// line, as a saw does; with Capping, the inner and outer lines share one
-  /// flat cap, an annulus (default on; see MeshCut.h). Off: such lines are
+  /// flat cap, an annulus (default on; see MeshCut.h). With Capping, the same
+  /// is tried where the lines separate but a cap crosses the surface (a canal
+  /// open at one end only, or a dip inside the line, reaching through the
+  /// plane): the part beyond the plane joins the piece there, and the result
+  /// is kept if its caps cross less. Off: lines that do not separate are
   /// refused, with the number of handles that join their sides.
   vtkSetMacro(CutInnerWalls, bool);
   vtkGetMacro(CutInnerWalls, bool);

@@ -281,6 +281,95 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
   EXPECT_EQ(clean.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
 }
 
+namespace
+{
+/// The closed surface swept by revolving `profile` (radius, height) about
+/// the z axis in n steps; the profile starts and ends on the axis (poles).
+/// Faces point outwards for a profile that runs out along the bottom.
+lk::TriangleMesh revolved(const std::vector<std::pair<double, double>>& profile, int n)
+{
+  lk::TriangleMesh m;
+  const std::size_t rings = profile.size() - 2;
+  for (std::size_t k = 1; k + 1 < profile.size(); ++k)
+    for (int i = 0; i < n; ++i)
+    {
+      const double a = 2.0 * 3.14159265358979 * i / n;
+      m.points.emplace_back(profile[k].first * std::cos(a), profile[k].first * std::sin(a), profile[k].second);
+    }
+  const auto bottom = static_cast<std::int64_t>(m.points.size());
+  m.points.emplace_back(0.0, 0.0, profile.front().second);
+  const auto top = static_cast<std::int64_t>(m.points.size());
+  m.points.emplace_back(0.0, 0.0, profile.back().second);
+  auto id = [&](std::size_t k, int i) { return static_cast<std::int64_t>(k * static_cast<std::size_t>(n) + static_cast<std::size_t>(i % n)); };
+  for (int i = 0; i < n; ++i)
+  {
+    m.triangles.push_back({ bottom, id(0, i + 1), id(0, i) });
+    for (std::size_t k = 0; k + 1 < rings; ++k)
+    {
+      m.triangles.push_back({ id(k, i), id(k, i + 1), id(k + 1, i + 1) });
+      m.triangles.push_back({ id(k, i), id(k + 1, i + 1), id(k + 1, i) });
+    }
+    m.triangles.push_back({ top, id(rings - 1, i), id(rings - 1, i + 1) });
+  }
+  return m;
+}
+} // namespace
+
+TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
+{
+  // A cylinder (radius 2, height 2) with a blind hole (radius 0.5) drilled
+  // from the top down to z = 0.3, cut by the outer ring at z = 1: a canal
+  // open at one end only that crosses the saw's plane. The line separates
+  // the top from the bottom, but the top's flat cap runs through the hole.
+  const int n = 16;
+  const lk::TriangleMesh solid = revolved({ { 0.0, 0.0 }, { 2.0, 0.0 }, { 2.0, 0.5 }, { 2.0, 1.0 }, { 2.0, 1.5 },
+                                            { 2.0, 2.0 }, { 0.5, 2.0 }, { 0.5, 1.5 }, { 0.5, 0.7 }, { 0.5, 0.3 },
+                                            { 0.0, 0.3 } },
+    n);
+  ASSERT_EQ(lk::cgalSurfaceMeshProblem(solid), "");
+  ASSERT_GT(lk::signedVolume(solid), 0.0);
+  std::vector<std::int64_t> ring;
+  for (int i = 0; i < n; ++i)
+    ring.push_back(2 * n + i); // the profile's third ring: (2, 1)
+  const auto plain = lk::cutAlongLoops(lktest::asPolygonMesh(solid), { ring }, true);
+  ASSERT_EQ(plain.pieces.size(), 2u);
+  EXPECT_GT(plain.capCrossings[0] + plain.capCrossings[1], 0u);
+
+  // Through the inner walls the hole's section joins the cut: the cap is an
+  // annulus (radii 0.5 to 2), the top keeps the hole's upper part, and the
+  // hole's bottom (z 0.3 to 1) goes with the bottom piece, as a dimple.
+  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(solid), { ring }, true, true);
+  EXPECT_EQ(cut.innerWallLoops, 1u);
+  ASSERT_EQ(cut.pieces.size(), 2u);
+  EXPECT_EQ(cut.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
+  double volume = 0.0;
+  for (std::size_t p = 0; p < 2; ++p)
+  {
+    const lk::TriangleMesh t = asTriangles(cut.pieces[p]);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(t), "") << "piece " << p;
+    EXPECT_EQ(lk::countBoundaryEdges(t), 0u) << "piece " << p;
+    EXPECT_GT(lk::signedVolume(t), 0.0);
+    volume += lk::signedVolume(t);
+    double low = 1e9, high = -1e9;
+    for (const auto& q : cut.pieces[p].points)
+    {
+      low = std::min(low, q.z());
+      high = std::max(high, q.z());
+    }
+    const bool bottom = high < 1.0 + 1e-3;
+    EXPECT_TRUE(bottom || low > 1.0 - 1e-3) << "piece " << p << " spans " << low << " to " << high;
+    for (std::size_t f = 0; f < cut.pieces[p].faces.size(); ++f)
+      if (cut.faceOrigin[p][f] < 0)
+        for (auto v : cut.pieces[p].faces[f])
+        {
+          const lk::Vec3& q = cut.pieces[p].points[static_cast<std::size_t>(v)];
+          EXPECT_NEAR(q.z(), 1.0, 1e-3);
+          EXPECT_GT(std::hypot(q.x(), q.y()), 0.45); // the hole's polygon, inside radius 0.5
+        }
+  }
+  EXPECT_NEAR(volume, lk::signedVolume(solid), 1e-6 * lk::signedVolume(solid));
+}
+
 TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)
 {
   auto message = [](const lk::PolygonMesh& m) -> std::string {

@@ -20,6 +20,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -566,18 +567,22 @@ std::vector<std::vector<std::size_t>> nestedLoopGroups(
   return groups;
 }
 
-/// Whether a cap for the loops of `group` (ids loop after loop, as
-/// makeNestedCap numbers them) closes the pieces beside them: all loops'
-/// edges on one side of the cap must border one piece, and on the other side
-/// one other piece (for a hollow bone, each piece holds its part of the outer
-/// and of the inner wall). Turns the cap so that it runs along the first
-/// loop's first edge.
-bool nestedCapFitsThePieces(Cap& cap, const std::vector<std::size_t>& group,
+/// The pieces on the two sides of a cap for the loops of `group` (ids loop
+/// after loop, as makeNestedCap numbers them), sorted, or nothing when the
+/// cap does not fit: the cap must run along or against every loop, and no
+/// piece may lie on both sides. For a hollow bone each side is one piece,
+/// holding its part of the outer and of the inner wall; where a canal open at
+/// one end only, or a dip inside the line, crosses the plane, the part
+/// beyond the plane is a piece of its own on the far side, to be joined with
+/// the piece there. Turns the cap so that it runs along the first loop's
+/// first edge.
+using CapSides = std::pair<std::vector<std::size_t>, std::vector<std::size_t>>;
+std::optional<CapSides> nestedCapSides(Cap& cap, const std::vector<std::size_t>& group,
   const std::vector<std::vector<std::int64_t>>& loops, const DirectedEdges& directed,
   const std::vector<std::size_t>& faceRegion)
 {
   if (cap.triangles.empty())
-    return false;
+    return std::nullopt;
   // Whether the cap runs k -> k + 1 (its loop vertices' ids), against it, or neither.
   auto runs = [&](std::int64_t k) {
     const std::int64_t a = -k - 1, b = -k - 2;
@@ -593,33 +598,30 @@ bool nestedCapFitsThePieces(Cap& cap, const std::vector<std::size_t>& group,
   };
   const int first = runs(0);
   if (first == 0)
-    return false;
+    return std::nullopt;
   if (first < 0)
     for (auto& t : cap.triangles)
       std::swap(t[1], t[2]);
   std::int64_t offset = 0;
-  std::size_t along = DirectedEdges::npos, against = DirectedEdges::npos; // the pieces of each side
+  std::set<std::size_t> along, against; // the pieces of each side
   for (auto l : group)
   {
     const auto& loop = loops[l];
     const int dir = runs(offset);
     if (dir == 0)
-      return false;
+      return std::nullopt;
     const auto a = dir > 0 ? loop[0] : loop[1], b = dir > 0 ? loop[1] : loop[0];
     const std::size_t ab = directed.find(a, b), ba = directed.find(b, a);
     if (ab == DirectedEdges::npos || ba == DirectedEdges::npos)
-      return false;
-    const std::size_t pieceAlong = faceRegion[directed.face[ab]], pieceAgainst = faceRegion[directed.face[ba]];
-    if (along == DirectedEdges::npos)
-    {
-      along = pieceAlong;
-      against = pieceAgainst;
-    }
-    else if (pieceAlong != along || pieceAgainst != against)
-      return false;
+      return std::nullopt;
+    along.insert(faceRegion[directed.face[ab]]);
+    against.insert(faceRegion[directed.face[ba]]);
     offset += static_cast<std::int64_t>(loop.size());
   }
-  return along != against;
+  for (auto p : along)
+    if (against.count(p))
+      return std::nullopt;
+  return CapSides{ { along.begin(), along.end() }, { against.begin(), against.end() } };
 }
 
 /// A mesh split along the inner walls that a loop goes around, and those
@@ -809,20 +811,20 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
 }
 } // namespace
 
-CutResult cutAlongLoops(
-  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap, bool throughInnerWalls)
+namespace
 {
-  std::string problem = polygonIndexProblem(mesh);
-  if (!problem.empty())
-    throw std::invalid_argument(problem);
-  if (loopsIn.empty())
-    throw std::invalid_argument("no loop to cut along");
-  DirectedEdges directed(mesh);
-  problem = directed.problem();
-  if (!problem.empty())
-    throw std::invalid_argument(problem);
+/// Loops that leave the mesh in one piece (the message says why, where it can).
+struct LoopsDoNotSeparate : std::invalid_argument
+{
+  using std::invalid_argument::invalid_argument;
+};
+
+/// The loops without a repeated closing vertex, checked: closed along mesh
+/// edges, not crossing themselves. Marks the cut's directed edges.
+std::vector<std::vector<std::int64_t>> checkedLoops(
+  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, DirectedEdges& directed)
+{
   std::vector<std::vector<std::int64_t>> loops;
-  std::vector<char> onLoop(mesh.points.size(), 0);
   for (std::size_t l = 0; l < loopsIn.size(); ++l)
   {
     std::vector<std::int64_t> loop = loopsIn[l];
@@ -848,10 +850,28 @@ CutResult cutAlongLoops(
         directed.cut[ab] = 1;
       if (ba != DirectedEdges::npos)
         directed.cut[ba] = 1;
-      onLoop[static_cast<std::size_t>(a)] = 1;
     }
     loops.push_back(loop);
   }
+  return loops;
+}
+
+CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
+{
+  std::string problem = polygonIndexProblem(mesh);
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
+  if (loopsIn.empty())
+    throw std::invalid_argument("no loop to cut along");
+  DirectedEdges directed(mesh);
+  problem = directed.problem();
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
+  const std::vector<std::vector<std::int64_t>> loops = checkedLoops(mesh, loopsIn, directed);
+  std::vector<char> onLoop(mesh.points.size(), 0);
+  for (const auto& loop : loops)
+    for (auto v : loop)
+      onLoop[static_cast<std::size_t>(v)] = 1;
   // Regions: faces joined across edges that are not cut. Components: regions
   // joined across the cut edges (loops only separate within a component).
   std::vector<std::size_t> parent(mesh.faces.size());
@@ -885,52 +905,11 @@ CutResult cutAlongLoops(
   std::size_t components = 0;
   for (std::size_t r = 0; r < pieces; ++r)
     components += find(regionComponent, r) == r;
-  if (pieces <= components && throughInnerWalls)
-  {
-    // A hollow bone: cut its inner walls too, where each loop's plane meets
-    // them, and cut again along all loops.
-    PolygonMesh current = mesh;
-    std::vector<std::int64_t> faceParent(mesh.faces.size());
-    std::iota(faceParent.begin(), faceParent.end(), 0);
-    std::vector<std::vector<std::int64_t>> all = loops;
-    std::vector<char> marked = onLoop;
-    for (const auto& loop : loops)
-    {
-      InnerWalls walls = splitAlongInnerWalls(current, loop, marked);
-      if (walls.loops.empty())
-        continue;
-      for (auto& f : walls.faceParent)
-        f = faceParent[static_cast<std::size_t>(f)];
-      faceParent = std::move(walls.faceParent);
-      current = std::move(walls.mesh);
-      marked.resize(current.points.size(), 0);
-      for (auto& inner : walls.loops)
-      {
-        for (auto v : inner)
-          marked[static_cast<std::size_t>(v)] = 1;
-        all.push_back(std::move(inner));
-      }
-    }
-    if (all.size() > loops.size())
-    {
-      CutResult result = cutAlongLoops(current, all, cap, false);
-      for (auto& origins : result.vertexOrigin)
-        for (auto& v : origins)
-          if (v >= static_cast<std::int64_t>(mesh.points.size()))
-            v = -1;
-      for (auto& origins : result.faceOrigin)
-        for (auto& f : origins)
-          if (f >= 0)
-            f = faceParent[static_cast<std::size_t>(f)];
-      result.innerWallLoops = all.size() - loops.size();
-      return result;
-    }
-  }
   if (pieces <= components)
   {
     const std::string why =
       handlesNote(mesh, directed, faceRegion, regionComponent, static_cast<std::size_t>(loops.front().front()));
-    throw std::invalid_argument("the loops do not separate the mesh (it stays in one piece)" + why);
+    throw LoopsDoNotSeparate("the loops do not separate the mesh (it stays in one piece)" + why);
   }
 
   // The caps depend on the loops alone: they are made on a second thread
@@ -972,6 +951,48 @@ CutResult cutAlongLoops(
       }
       return made;
     });
+  }
+  // Nested caps need their pieces: which ones each side holds, and those of
+  // one side joined into one piece, before the pieces are built.
+  std::vector<Cap> caps;
+  std::vector<char> nestedFits(groups.size(), 0);
+  if (std::any_of(groups.begin(), groups.end(), [](const auto& g) { return g.size() > 1; }))
+  {
+    caps = capsMade.get();
+    std::vector<std::optional<CapSides>> sides(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      if (groups[g].size() > 1)
+        sides[g] = nestedCapSides(caps[g], groups[g], loops, directed, faceRegion);
+    std::vector<std::size_t> joined(pieces);
+    std::iota(joined.begin(), joined.end(), 0);
+    for (const auto& side : sides)
+      if (side)
+        for (const auto* pieceSet : { &side->first, &side->second })
+          for (auto p : *pieceSet)
+          {
+            const std::size_t a = find(joined, p), b = find(joined, pieceSet->front());
+            joined[std::max(a, b)] = std::min(a, b); // the smallest piece's number leads
+          }
+    // Joined, a cap's two sides must still be different pieces (caps of
+    // several groups could join them); otherwise only caps with one piece on
+    // each side are kept, as they are.
+    bool consistent = true;
+    for (const auto& side : sides)
+      if (side && find(joined, side->first.front()) == find(joined, side->second.front()))
+        consistent = false;
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      nestedFits[g] = sides[g] && (consistent || (sides[g]->first.size() == 1 && sides[g]->second.size() == 1));
+    if (consistent)
+    {
+      std::vector<std::size_t> number(pieces, static_cast<std::size_t>(-1));
+      std::size_t joinedPieces = 0;
+      for (std::size_t p = 0; p < pieces; ++p)
+        if (find(joined, p) == p)
+          number[p] = joinedPieces++;
+      for (auto& r : faceRegion)
+        r = number[find(joined, r)];
+      pieces = joinedPieces;
+    }
   }
 
   CutResult result;
@@ -1123,7 +1144,8 @@ CutResult cutAlongLoops(
       result.vertexOrigin[p] = std::move(vorigin);
     }
   };
-  std::vector<Cap> caps = capsMade.get();
+  if (capsMade.valid())
+    caps = capsMade.get();
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
     const auto& group = groups[g];
@@ -1132,7 +1154,7 @@ CutResult cutAlongLoops(
       std::vector<std::int64_t> ids;
       for (auto l : group)
         ids.insert(ids.end(), loops[l].begin(), loops[l].end());
-      if (nestedCapFitsThePieces(caps[g], group, loops, directed, faceRegion))
+      if (nestedFits[g])
       {
         insertCap(ids, caps[g]);
         continue;
@@ -1149,6 +1171,105 @@ CutResult cutAlongLoops(
     std::tie(result.capCrossings[p], result.capCrossingDepths[p]) =
       capCrossings(result.pieces[p], result.faceOrigin[p]);
   return result;
+}
+
+std::size_t totalCrossings(const CutResult& cut)
+{
+  return std::accumulate(cut.capCrossings.begin(), cut.capCrossings.end(), std::size_t(0));
+}
+
+/// The cut through the inner walls: the mesh split where each flat loop's
+/// plane meets walls inside it and away from it, and cut along all loops.
+/// Nothing when no loop's plane meets such a wall.
+std::optional<CutResult> cutThroughInnerWalls(
+  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
+{
+  std::vector<std::vector<std::int64_t>> loops = loopsIn;
+  std::vector<char> marked(mesh.points.size(), 0);
+  for (auto& loop : loops)
+  {
+    if (loop.size() > 1 && loop.front() == loop.back())
+      loop.pop_back();
+    for (auto v : loop)
+      marked[static_cast<std::size_t>(v)] = 1;
+  }
+  PolygonMesh current = mesh;
+  std::vector<std::int64_t> faceParent(mesh.faces.size());
+  std::iota(faceParent.begin(), faceParent.end(), 0);
+  std::vector<std::vector<std::int64_t>> all = loops;
+  for (const auto& loop : loops)
+  {
+    InnerWalls walls = splitAlongInnerWalls(current, loop, marked);
+    if (walls.loops.empty())
+      continue;
+    for (auto& f : walls.faceParent)
+      f = faceParent[static_cast<std::size_t>(f)];
+    faceParent = std::move(walls.faceParent);
+    current = std::move(walls.mesh);
+    marked.resize(current.points.size(), 0);
+    for (auto& inner : walls.loops)
+    {
+      for (auto v : inner)
+        marked[static_cast<std::size_t>(v)] = 1;
+      all.push_back(std::move(inner));
+    }
+  }
+  if (all.size() == loops.size())
+    return std::nullopt;
+  CutResult result = cutOnce(current, all, cap);
+  for (auto& origins : result.vertexOrigin)
+    for (auto& v : origins)
+      if (v >= static_cast<std::int64_t>(mesh.points.size()))
+        v = -1;
+  for (auto& origins : result.faceOrigin)
+    for (auto& f : origins)
+      if (f >= 0)
+        f = faceParent[static_cast<std::size_t>(f)];
+  result.innerWallLoops = all.size() - loops.size();
+  return result;
+}
+} // namespace
+
+CutResult cutAlongLoops(
+  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap, bool throughInnerWalls)
+{
+  if (!throughInnerWalls)
+    return cutOnce(mesh, loops, cap);
+  // A hollow bone: where the loops do not separate the mesh (a marrow cavity
+  // or canal joins their sides), or where a cap crosses the surface (a canal
+  // open at one end only, or a dip inside the line, crossing the plane), the
+  // inner walls are cut too. The second is kept only if its caps cross less.
+  std::optional<CutResult> plain;
+  std::string whyNot;
+  try
+  {
+    plain = cutOnce(mesh, loops, cap);
+  }
+  catch (const LoopsDoNotSeparate& e)
+  {
+    whyNot = e.what();
+  }
+  if (plain && (!cap || totalCrossings(*plain) == 0))
+    return std::move(*plain);
+  if (!plain)
+  {
+    std::optional<CutResult> walls = cutThroughInnerWalls(mesh, loops, cap);
+    if (!walls)
+      throw std::invalid_argument(whyNot);
+    return std::move(*walls);
+  }
+  try
+  {
+    std::optional<CutResult> walls = cutThroughInnerWalls(mesh, loops, cap);
+    if (walls && totalCrossings(*walls) < totalCrossings(*plain))
+      return std::move(*walls);
+  }
+  catch (const std::invalid_argument&)
+  {
+    // The cut through the walls failed (a cap could not be made): the plain
+    // cut stands, with its crossings reported.
+  }
+  return std::move(*plain);
 }
 
 } // namespace lk
