@@ -65,8 +65,9 @@ public:
   /// flat cap, an annulus (default on; see MeshCut.h). With Capping, the same
   /// is tried where the lines separate but a cap crosses the surface (a canal
   /// open at one end only, or a dip inside the line, reaching through the
-  /// plane): the part beyond the plane joins the piece there, and the result
-  /// is kept if its caps cross less. Off: lines that do not separate are
+  /// plane) or a piece gets no cap (a closed cavity): each part beyond the
+  /// plane joins the piece on its side, and the result is kept if its caps
+  /// cross less, or as much with fewer pieces. Off: lines that do not separate are
   /// refused, with the number of handles that join their sides.
   vtkSetMacro(CutInnerWalls, bool);
   vtkGetMacro(CutInnerWalls, bool);

@@ -368,6 +368,36 @@ TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
         }
   }
   EXPECT_NEAR(volume, lk::signedVolume(solid), 1e-6 * lk::signedVolume(solid));
+
+  // A closed cavity (an inner surface of its own, facing inwards) that the
+  // plane crosses: before, a third piece, and the caps ran through it. Now
+  // its halves join the pieces on their sides: two pieces, each with a
+  // dimple, closed, no crossings.
+  lk::TriangleMesh hollow = revolved({ { 0.0, 0.0 }, { 2.0, 0.0 }, { 2.0, 0.5 }, { 2.0, 1.0 }, { 2.0, 1.5 },
+                                       { 2.0, 2.0 }, { 0.0, 2.0 } },
+    n);
+  const lk::TriangleMesh cavity =
+    revolved({ { 0.0, 1.6 }, { 0.6, 1.6 }, { 0.6, 1.2 }, { 0.6, 0.8 }, { 0.0, 0.8 } }, n); // runs down: faces in
+  const auto offset = static_cast<std::int64_t>(hollow.points.size());
+  hollow.points.insert(hollow.points.end(), cavity.points.begin(), cavity.points.end());
+  for (auto t : cavity.triangles)
+    hollow.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  ASSERT_LT(lk::signedVolume(cavity), 0.0);
+  const auto hollowCut = lk::cutAlongLoops(lktest::asPolygonMesh(hollow), { ring }, true, true);
+  EXPECT_EQ(hollowCut.innerWallLoops, 1u);
+  ASSERT_EQ(hollowCut.pieces.size(), 2u);
+  EXPECT_EQ(hollowCut.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
+  volume = 0.0;
+  for (std::size_t p = 0; p < 2; ++p)
+  {
+    const lk::TriangleMesh t = asTriangles(hollowCut.pieces[p]);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(t), "") << "piece " << p;
+    EXPECT_EQ(lk::countBoundaryEdges(t), 0u) << "piece " << p;
+    EXPECT_GT(lk::signedVolume(t), 0.0);
+    volume += lk::signedVolume(t);
+  }
+  EXPECT_NEAR(volume, lk::signedVolume(hollow), 1e-6 * lk::signedVolume(hollow));
+  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(hollow), { ring }, true).pieces.size(), 3u);
 }
 
 TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)

@@ -1237,8 +1237,9 @@ CutResult cutAlongLoops(
     return cutOnce(mesh, loops, cap);
   // A hollow bone: where the loops do not separate the mesh (a marrow cavity
   // or canal joins their sides), or where a cap crosses the surface (a canal
-  // open at one end only, or a dip inside the line, crossing the plane), the
-  // inner walls are cut too. The second is kept only if its caps cross less.
+  // open at one end only, or a dip inside the line, crossing the plane) or a
+  // piece has no cap (a closed cavity), the inner walls are cut too. The
+  // second is kept only if its caps cross less, or as much with fewer pieces.
   std::optional<CutResult> plain;
   std::string whyNot;
   try
@@ -1249,7 +1250,13 @@ CutResult cutAlongLoops(
   {
     whyNot = e.what();
   }
-  if (plain && (!cap || totalCrossings(*plain) == 0))
+  // A piece without a cap face lies beside no loop: an inner surface of its
+  // own (a closed cavity), which the caps may run through.
+  auto uncapped = [](const CutResult& cut) {
+    return std::any_of(cut.faceOrigin.begin(), cut.faceOrigin.end(),
+      [](const auto& origin) { return std::none_of(origin.rbegin(), origin.rend(), [](auto f) { return f < 0; }); });
+  };
+  if (plain && (!cap || (totalCrossings(*plain) == 0 && !uncapped(*plain))))
     return std::move(*plain);
   if (!plain)
   {
@@ -1261,7 +1268,9 @@ CutResult cutAlongLoops(
   try
   {
     std::optional<CutResult> walls = cutThroughInnerWalls(mesh, loops, cap);
-    if (walls && totalCrossings(*walls) < totalCrossings(*plain))
+    if (walls &&
+      (totalCrossings(*walls) < totalCrossings(*plain) ||
+        (totalCrossings(*walls) == totalCrossings(*plain) && walls->pieces.size() < plain->pieces.size())))
       return std::move(*walls);
   }
   catch (const std::invalid_argument&)

@@ -65,9 +65,11 @@ struct CutResult
 /// The sections must lie inside the loop and away from it, in triangles.
 /// With capping, the same is tried where the loops separate the mesh but a
 /// cap crosses it (a canal open at one end only, or a dip of the surface
-/// inside the loop, reaching through the plane): the part beyond the plane is
-/// joined to the piece on the cap's far side (a dimple in it), and that cut is
-/// returned if its caps cross less than the plain cut's.
+/// inside the loop, reaching through the plane) or a piece gets no cap (a
+/// closed cavity, an inner surface of its own): each part beyond the plane is
+/// joined to the piece on the cap's side it lies on (a dimple in it), and that
+/// cut is returned if its caps cross less than the plain cut's, or as much
+/// with fewer pieces.
 CutResult cutAlongLoops(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap,
   bool throughInnerWalls = false);
 
