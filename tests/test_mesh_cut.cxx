@@ -313,6 +313,42 @@ lk::TriangleMesh revolved(const std::vector<std::pair<double, double>>& profile,
   }
   return m;
 }
+
+/// A cut of a revolved solid by its ring at z = 1, through the inner walls:
+/// one inner line, two closed pieces without crossings, one on each side of
+/// the plane, whose caps lie in the plane outside the inner wall (radius 0.5
+/// or more, a polygon of it inside), and whose volumes sum to the whole's.
+void expectClosedPiecesOnEitherSideOfAnAnnulus(const lk::CutResult& cut, double wholeVolume)
+{
+  EXPECT_EQ(cut.innerWallLoops, 1u);
+  ASSERT_EQ(cut.pieces.size(), 2u);
+  EXPECT_EQ(cut.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
+  double volume = 0.0;
+  for (std::size_t p = 0; p < 2; ++p)
+  {
+    const lk::TriangleMesh t = asTriangles(cut.pieces[p]);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(t), "") << "piece " << p;
+    EXPECT_EQ(lk::countBoundaryEdges(t), 0u) << "piece " << p;
+    EXPECT_GT(lk::signedVolume(t), 0.0);
+    volume += lk::signedVolume(t);
+    double low = 1e9, high = -1e9;
+    for (const auto& q : cut.pieces[p].points)
+    {
+      low = std::min(low, q.z());
+      high = std::max(high, q.z());
+    }
+    EXPECT_TRUE(high < 1.0 + 1e-3 || low > 1.0 - 1e-3) << "piece " << p << " spans " << low << " to " << high;
+    for (std::size_t f = 0; f < cut.pieces[p].faces.size(); ++f)
+      if (cut.faceOrigin[p][f] < 0)
+        for (auto v : cut.pieces[p].faces[f])
+        {
+          const lk::Vec3& q = cut.pieces[p].points[static_cast<std::size_t>(v)];
+          EXPECT_NEAR(q.z(), 1.0, 1e-3);
+          EXPECT_GT(std::hypot(q.x(), q.y()), 0.45);
+        }
+  }
+  EXPECT_NEAR(volume, wholeVolume, 1e-6 * wholeVolume);
+}
 } // namespace
 
 TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
@@ -338,36 +374,8 @@ TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
   // Through the inner walls the hole's section joins the cut: the cap is an
   // annulus (radii 0.5 to 2), the top keeps the hole's upper part, and the
   // hole's bottom (z 0.3 to 1) goes with the bottom piece, as a dimple.
-  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(solid), { ring }, true, true);
-  EXPECT_EQ(cut.innerWallLoops, 1u);
-  ASSERT_EQ(cut.pieces.size(), 2u);
-  EXPECT_EQ(cut.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
-  double volume = 0.0;
-  for (std::size_t p = 0; p < 2; ++p)
-  {
-    const lk::TriangleMesh t = asTriangles(cut.pieces[p]);
-    EXPECT_EQ(lk::cgalSurfaceMeshProblem(t), "") << "piece " << p;
-    EXPECT_EQ(lk::countBoundaryEdges(t), 0u) << "piece " << p;
-    EXPECT_GT(lk::signedVolume(t), 0.0);
-    volume += lk::signedVolume(t);
-    double low = 1e9, high = -1e9;
-    for (const auto& q : cut.pieces[p].points)
-    {
-      low = std::min(low, q.z());
-      high = std::max(high, q.z());
-    }
-    const bool bottom = high < 1.0 + 1e-3;
-    EXPECT_TRUE(bottom || low > 1.0 - 1e-3) << "piece " << p << " spans " << low << " to " << high;
-    for (std::size_t f = 0; f < cut.pieces[p].faces.size(); ++f)
-      if (cut.faceOrigin[p][f] < 0)
-        for (auto v : cut.pieces[p].faces[f])
-        {
-          const lk::Vec3& q = cut.pieces[p].points[static_cast<std::size_t>(v)];
-          EXPECT_NEAR(q.z(), 1.0, 1e-3);
-          EXPECT_GT(std::hypot(q.x(), q.y()), 0.45); // the hole's polygon, inside radius 0.5
-        }
-  }
-  EXPECT_NEAR(volume, lk::signedVolume(solid), 1e-6 * lk::signedVolume(solid));
+  expectClosedPiecesOnEitherSideOfAnAnnulus(
+    lk::cutAlongLoops(lktest::asPolygonMesh(solid), { ring }, true, true), lk::signedVolume(solid));
 
   // A closed cavity (an inner surface of its own, facing inwards) that the
   // plane crosses: before, a third piece, and the caps ran through it. Now
@@ -383,20 +391,8 @@ TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
   for (auto t : cavity.triangles)
     hollow.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
   ASSERT_LT(lk::signedVolume(cavity), 0.0);
-  const auto hollowCut = lk::cutAlongLoops(lktest::asPolygonMesh(hollow), { ring }, true, true);
-  EXPECT_EQ(hollowCut.innerWallLoops, 1u);
-  ASSERT_EQ(hollowCut.pieces.size(), 2u);
-  EXPECT_EQ(hollowCut.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
-  volume = 0.0;
-  for (std::size_t p = 0; p < 2; ++p)
-  {
-    const lk::TriangleMesh t = asTriangles(hollowCut.pieces[p]);
-    EXPECT_EQ(lk::cgalSurfaceMeshProblem(t), "") << "piece " << p;
-    EXPECT_EQ(lk::countBoundaryEdges(t), 0u) << "piece " << p;
-    EXPECT_GT(lk::signedVolume(t), 0.0);
-    volume += lk::signedVolume(t);
-  }
-  EXPECT_NEAR(volume, lk::signedVolume(hollow), 1e-6 * lk::signedVolume(hollow));
+  expectClosedPiecesOnEitherSideOfAnAnnulus(
+    lk::cutAlongLoops(lktest::asPolygonMesh(hollow), { ring }, true, true), lk::signedVolume(hollow));
   EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(hollow), { ring }, true).pieces.size(), 3u);
 }
 
