@@ -819,17 +819,24 @@ struct LoopsDoNotSeparate : std::invalid_argument
   using std::invalid_argument::invalid_argument;
 };
 
-/// The loops without a repeated closing vertex, checked: closed along mesh
-/// edges, not crossing themselves. Marks the cut's directed edges.
-std::vector<std::vector<std::int64_t>> checkedLoops(
-  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, DirectedEdges& directed)
+/// The loops without a repeated closing vertex (a loop may end where it
+/// starts).
+std::vector<std::vector<std::int64_t>> openLoops(std::vector<std::vector<std::int64_t>> loops)
 {
-  std::vector<std::vector<std::int64_t>> loops;
-  for (std::size_t l = 0; l < loopsIn.size(); ++l)
-  {
-    std::vector<std::int64_t> loop = loopsIn[l];
+  for (auto& loop : loops)
     if (loop.size() > 1 && loop.front() == loop.back())
       loop.pop_back();
+  return loops;
+}
+
+/// Checks the loops (without closing vertices, openLoops): closed along mesh
+/// edges, not crossing themselves. Marks the cut's directed edges.
+void checkLoops(
+  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, DirectedEdges& directed)
+{
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    const std::vector<std::int64_t>& loop = loops[l];
     const std::string which = "loop " + std::to_string(l);
     if (loop.size() < 3)
       throw std::invalid_argument(which + " has fewer than 3 vertices: it is not a closed line");
@@ -851,23 +858,22 @@ std::vector<std::vector<std::int64_t>> checkedLoops(
       if (ba != DirectedEdges::npos)
         directed.cut[ba] = 1;
     }
-    loops.push_back(loop);
   }
-  return loops;
 }
 
-CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
+/// One cut along the loops (without closing vertices, openLoops).
+CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap)
 {
   std::string problem = polygonIndexProblem(mesh);
   if (!problem.empty())
     throw std::invalid_argument(problem);
-  if (loopsIn.empty())
+  if (loops.empty())
     throw std::invalid_argument("no loop to cut along");
   DirectedEdges directed(mesh);
   problem = directed.problem();
   if (!problem.empty())
     throw std::invalid_argument(problem);
-  const std::vector<std::vector<std::int64_t>> loops = checkedLoops(mesh, loopsIn, directed);
+  checkLoops(mesh, loops, directed);
   std::vector<char> onLoop(mesh.points.size(), 0);
   for (const auto& loop : loops)
     for (auto v : loop)
@@ -1180,19 +1186,15 @@ std::size_t totalCrossings(const CutResult& cut)
 
 /// The cut through the inner walls: the mesh split where each flat loop's
 /// plane meets walls inside it and away from it, and cut along all loops.
-/// Nothing when no loop's plane meets such a wall.
+/// Nothing when no loop's plane meets such a wall. The loops are checked
+/// (cutOnce) and without closing vertices.
 std::optional<CutResult> cutThroughInnerWalls(
-  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap)
+  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap)
 {
-  std::vector<std::vector<std::int64_t>> loops = loopsIn;
   std::vector<char> marked(mesh.points.size(), 0);
-  for (auto& loop : loops)
-  {
-    if (loop.size() > 1 && loop.front() == loop.back())
-      loop.pop_back();
+  for (const auto& loop : loops)
     for (auto v : loop)
       marked[static_cast<std::size_t>(v)] = 1;
-  }
   PolygonMesh current = mesh;
   std::vector<std::int64_t> faceParent(mesh.faces.size());
   std::iota(faceParent.begin(), faceParent.end(), 0);
@@ -1231,8 +1233,9 @@ std::optional<CutResult> cutThroughInnerWalls(
 } // namespace
 
 CutResult cutAlongLoops(
-  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap, bool throughInnerWalls)
+  const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loopsIn, bool cap, bool throughInnerWalls)
 {
+  const std::vector<std::vector<std::int64_t>> loops = openLoops(loopsIn);
   if (!throughInnerWalls)
     return cutOnce(mesh, loops, cap);
   // A hollow bone: where the loops do not separate the mesh (a marrow cavity
