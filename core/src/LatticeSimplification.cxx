@@ -144,21 +144,26 @@ struct State
     if (mesh.is_border(v0) || mesh.is_border(v1))
     {
       // Ends of the face fan: an 'a' that is no face's 'b', and the reverse.
-      int found = 0;
+      // One of each on a plain border. Where v0 and v1 share a neighbour
+      // through no common face (two sheets of the surface touch; the link
+      // condition refuses that collapse) the union of their fans has other
+      // ends, or two of one kind: the star is then costed as interior (a finite
+      // cost; the edge is not collapsed while the link condition fails).
+      int starts = 0, ends = 0;
       for (const Star::Face& f : s.faces)
       {
         if (std::none_of(s.faces.begin(), s.faces.end(), [&](const Star::Face& g) { return g.b == f.a; }))
         {
           s.q = f.a;
-          ++found;
+          ++starts;
         }
         if (std::none_of(s.faces.begin(), s.faces.end(), [&](const Star::Face& g) { return g.a == f.b; }))
         {
           s.p = f.b;
-          ++found;
+          ++ends;
         }
       }
-      s.border = found == 2;
+      s.border = starts == 1 && ends == 1;
     }
     return s;
   }
