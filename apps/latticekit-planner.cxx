@@ -531,6 +531,8 @@ public:
     strokeActor->SetMapper(sm);
     strokeActor->GetProperty()->SetColor(0.9, 0.1, 0.1);
     strokeActor->GetProperty()->SetLineWidth(3);
+    strokeActor->GetProperty()->SetPointSize(6);
+    strokeActor->PickableOff(); // strokes are picked on the bone, never on themselves
     renderer->AddActor(strokeActor);
     preview->SetVisibility(false);
     preview->PickableOff();
@@ -841,6 +843,7 @@ public:
     a->SetMapper(m);
     a->GetProperty()->SetColor(0.1 + shade, 0.5, 0.1);
     a->GetProperty()->SetLineWidth(3);
+    a->PickableOff(); // the lines lie on the bone; strokes and presses pick the bone
     renderer->AddActor(a);
     sceneActors.push_back(a);
   }
@@ -872,13 +875,19 @@ public:
 
   void showStroke()
   {
+    // A line cell needs two points: a stroke of one point (a click) is a
+    // vertex cell, and an empty one has no cell (a line of fewer points
+    // leaves the polydata's cell map unbuildable, which crashed a pick).
     vtkNew<vtkPoints> pts;
-    vtkNew<vtkCellArray> lines;
-    lines->InsertNextCell(static_cast<vtkIdType>(current.size()));
+    vtkNew<vtkCellArray> lines, verts;
+    vtkCellArray* cells = current.size() >= 2 ? lines.Get() : verts.Get();
+    if (!current.empty())
+      cells->InsertNextCell(static_cast<vtkIdType>(current.size()));
     for (const auto& p : current)
-      lines->InsertCellPoint(pts->InsertNextPoint(p.data()));
+      cells->InsertCellPoint(pts->InsertNextPoint(p.data()));
     strokePd->SetPoints(pts);
     strokePd->SetLines(lines);
+    strokePd->SetVerts(verts);
     strokePd->Modified();
   }
 

@@ -203,9 +203,14 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
     vtkNew<vtkPoints> picked;
     picked->SetDataTypeToDouble();
     vtkNew<vtkCellArray> line;
-    line->InsertNextCell(static_cast<vtkIdType>(stroke.size()));
     for (const auto& p : stroke)
-      line->InsertCellPoint(picked->InsertNextPoint(p.data()));
+      picked->InsertNextPoint(p.data());
+    if (stroke.size() >= 2) // a line cell needs two points (a shorter stroke is refused below)
+    {
+      line->InsertNextCell(static_cast<vtkIdType>(stroke.size()));
+      for (vtkIdType i = 0; i < static_cast<vtkIdType>(stroke.size()); ++i)
+        line->InsertCellPoint(i);
+    }
     this->PickedStroke->Initialize();
     this->PickedStroke->SetPoints(picked);
     this->PickedStroke->SetLines(line);

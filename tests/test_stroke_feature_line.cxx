@@ -158,6 +158,37 @@ TEST(StrokeFeatureLine, BadStrokesAreRefused)
   {
     EXPECT_NE(std::string(e.what()).find("misses the surface"), std::string::npos);
   }
+  // A click or a tiny stroke maps onto one mesh point. Its ends meet, so it
+  // counts as closed: a loop of fewer than three vertices is refused (it was
+  // a one-point line before, which VTK cannot hold as a line cell); with a
+  // closing tolerance below its length it is open, and covers no edge.
+  auto refusal = [&](lk::StrokeMode mode, double closeTolerance) -> std::string {
+    lk::StrokeOptions o;
+    o.mode = mode;
+    o.closeTolerance = closeTolerance;
+    try
+    {
+      lk::strokeToFeatureLine(grid, { { 0.51, 0.5, 0 }, { 0.52, 0.5, 0 } }, o);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return e.what();
+    }
+    return "";
+  };
+  for (const auto mode : { lk::StrokeMode::NearestEdges, lk::StrokeMode::Snap, lk::StrokeMode::Split })
+  {
+    EXPECT_NE(refusal(mode, 0.0).find("a closed line needs at least three vertices"), std::string::npos);
+  }
+  for (const auto mode : { lk::StrokeMode::NearestEdges, lk::StrokeMode::Snap })
+  {
+    EXPECT_NE(refusal(mode, 1e-6).find("covers no mesh edge: all its points are nearest mesh point"), std::string::npos);
+  }
+  // A small circle around one vertex covers that vertex alone.
+  std::vector<lk::Vec3> circle;
+  for (int i = 0; i <= 12; ++i)
+    circle.push_back({ 0.5 + 0.02 * std::cos(i * M_PI / 6), 0.5 + 0.02 * std::sin(i * M_PI / 6), 0 });
+  EXPECT_THROW(lk::strokeToFeatureLine(grid, circle, {}), std::invalid_argument);
 }
 
 #include "latticekit/ManifoldRepair.h"

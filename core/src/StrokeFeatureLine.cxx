@@ -274,6 +274,17 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       for (std::size_t k = 1; k < back.size(); ++k)
         simple.push_back(back[k]);
     }
+    // A line must have an edge, and a loop three vertices (as in split
+    // mode). A short stroke, a click or a small circle, maps onto one or
+    // two mesh points; so would a stroke that only goes back and forth.
+    const std::size_t distinct = simple.size() - (result.closed && simple.size() > 1 && simple.back() == simple.front());
+    if (result.closed && distinct < 3)
+      throw std::invalid_argument("a closed line needs at least three vertices: the stroke's loop covers " +
+        std::to_string(distinct) + " mesh point(s) (a stroke whose ends lie within " + std::to_string(closeTol) +
+        " of each other counts as closed: draw a larger loop, or an open stroke longer than that)");
+    if (distinct < 2)
+      throw std::invalid_argument("the stroke covers no mesh edge: all its points are nearest mesh point " +
+        std::to_string(simple.empty() ? -1 : simple.front()) + " (draw it across at least one edge)");
     result.line = simple;
     for (std::size_t i = 0; i + 1 < simple.size(); ++i)
       result.featureEdges.push_back(edgeKey(simple[i], simple[i + 1]));
