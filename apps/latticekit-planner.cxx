@@ -592,6 +592,14 @@ public:
       auto next = vtkSmartPointer<vtkPolyData>::New();
       next->ShallowCopy(f->GetOutput());
       surface = next;
+      // The earlier lines onto the new surface: a split stroke that crosses
+      // one cuts its edges (the cut needs its loops along the mesh's edges).
+      for (auto& earlier : cut.lines)
+      {
+        vtkNew<vtkPolyData> carried;
+        if (f->CarryLine(earlier.first, carried))
+          earlier.first->DeepCopy(carried);
+      }
       auto line = vtkSmartPointer<vtkPolyData>::New();
       line->DeepCopy(f->GetFeatureLineOutput());
       cut.lines.emplace_back(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);

@@ -20,6 +20,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -150,8 +151,28 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* lineOut = vtkPolyData::GetData(outputVector, 1);
 
+  // Line cells on the input are earlier feature lines (output 0 of another
+  // stroke): they are carried to output 0, through the edges a split cuts.
+  std::vector<std::vector<std::int64_t>> earlierLines;
+  vtkSmartPointer<vtkPolyData> faces = input;
+  if (input && input->GetNumberOfLines() > 0)
+  {
+    auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      earlierLines.emplace_back(ids, ids + n);
+    }
+    faces = vtkSmartPointer<vtkPolyData>::New();
+    faces->ShallowCopy(input);
+    vtkNew<vtkCellArray> none;
+    faces->SetLines(none);
+  }
+  this->InputPoints = input ? input->GetNumberOfPoints() : 0;
   lk::TriangleMesh mesh;
-  std::string problem = lkvtk::toTriangleMesh(input, mesh);
+  std::string problem = lkvtk::toTriangleMesh(faces, mesh);
   if (!problem.empty())
   {
     vtkErrorMacro("Cannot make a feature line: " << problem << ".");
@@ -255,6 +276,12 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   if (r.mesh.points.size() == mesh.points.size())
     output->GetPointData()->PassData(input->GetPointData());
   vtkNew<vtkCellArray> lines;
+  for (const auto& line : lk::carryLines(r.mesh, mesh.points.size(), earlierLines))
+  {
+    lines->InsertNextCell(static_cast<vtkIdType>(line.size()));
+    for (const auto v : line)
+      lines->InsertCellPoint(static_cast<vtkIdType>(v));
+  }
   for (const auto& e : r.featureEdges)
   {
     const vtkIdType ids[2] = { e.first, e.second };
@@ -264,7 +291,7 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   output->SetPolys(result->GetPolys());
   vtkNew<vtkUnsignedCharArray> flag;
   flag->SetName("FeatureEdge");
-  for (std::size_t i = 0; i < r.featureEdges.size(); ++i)
+  for (vtkIdType i = 0; i < lines->GetNumberOfCells(); ++i)
     flag->InsertNextValue(1);
   for (std::size_t i = 0; i < r.mesh.triangles.size(); ++i)
     flag->InsertNextValue(0);
@@ -314,6 +341,75 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   lineOut->GetFieldData()->AddArray(closed);
   output->GetFieldData()->AddArray(closed);
   this->UpdateProgress(1.0);
+  return 1;
+}
+
+int vtkLKStrokeFeatureLineFilter::CarryLine(vtkPolyData* line, vtkPolyData* carried)
+{
+  vtkPolyData* output = this->GetOutput();
+  vtkDataArray* ids = line ? line->GetPointData()->GetArray("MeshPointId") : nullptr;
+  if (!carried || !ids || !output || output->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("CarryLine needs a line with point data MeshPointId, a polydata to fill, and an updated filter.");
+    return 0;
+  }
+  std::vector<std::vector<std::int64_t>> paths;
+  auto it = vtk::TakeSmartPointer(line->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* pts;
+    it->GetCurrentCell(n, pts);
+    std::vector<std::int64_t> path;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const auto v = static_cast<std::int64_t>(ids->GetComponent(pts[k], 0));
+      if (v < 0 || v >= this->InputPoints)
+      {
+        vtkErrorMacro("CarryLine: MeshPointId " << v << " is not a point of the filter's input (" << this->InputPoints
+                                               << " points).");
+        return 0;
+      }
+      path.push_back(v);
+    }
+    paths.push_back(std::move(path));
+  }
+  lk::TriangleMesh after;
+  after.points.resize(static_cast<std::size_t>(output->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    output->GetPoint(i, p);
+    after.points[static_cast<std::size_t>(i)] = lk::Vec3(p[0], p[1], p[2]);
+  }
+  auto polys = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* pts;
+    polys->GetCurrentCell(n, pts);
+    if (n == 3)
+      after.triangles.push_back({ pts[0], pts[1], pts[2] });
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkIdTypeArray> meshIds;
+  meshIds->SetName("MeshPointId");
+  for (const auto& path : lk::carryLines(after, static_cast<std::size_t>(this->InputPoints), paths))
+  {
+    cells->InsertNextCell(static_cast<vtkIdType>(path.size()));
+    for (const auto v : path)
+    {
+      meshIds->InsertNextValue(static_cast<vtkIdType>(v));
+      cells->InsertCellPoint(points->InsertNextPoint(after.points[static_cast<std::size_t>(v)].data()));
+    }
+  }
+  carried->Initialize();
+  carried->SetPoints(points);
+  carried->SetLines(cells);
+  carried->GetPointData()->AddArray(meshIds);
+  carried->GetFieldData()->ShallowCopy(line->GetFieldData());
   return 1;
 }
 

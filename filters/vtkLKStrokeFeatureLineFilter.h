@@ -19,9 +19,14 @@
  * not passed in this mode, as points are added). A stroke whose ends are
  * within CloseTolerance gives a closed line.
  *
+ * Line cells on input 0 are earlier feature lines (output 0 of another
+ * stroke filter, so strokes chain): they are passed to output 0, and where a
+ * SPLIT stroke cuts one of their edges the new vertex on it joins them
+ * (CarryLine does the same for a line kept apart, such as output 1).
+ *
  * Output 0: the mesh (vertices moved in SNAP mode, faces split in SPLIT mode), plus
- * one line cell per feature edge (cell data "FeatureEdge" 1 on them, 0 on the
- * triangles). Output 1: the feature line as a polyline (NEAREST_EDGES, SNAP;
+ * the input's line cells and one line cell per new feature edge (cell data
+ * "FeatureEdge" 1 on the lines, 0 on the triangles). Output 1: the feature line as a polyline (NEAREST_EDGES, SNAP;
  * closed lines repeat their first point) or the feature edges as segments
  * (PAINT), with point data "MeshPointId": the form vtkLKLatticeFitFilter
  * (feature lines) and vtkLKClosedLineCutFilter (cut lines) take. Field data
@@ -100,6 +105,16 @@ public:
   /// Output 1: the feature line with MeshPointId.
   vtkPolyData* GetFeatureLineOutput();
 
+  /// An earlier feature line on this filter's input (polylines with point
+  /// data MeshPointId, as output 1 of an earlier stroke gives it), carried
+  /// onto output 0 of the last update: SPLIT cuts the mesh edges its stroke
+  /// crosses, and an edge of the earlier line it cut is replaced by the new
+  /// vertices on it (lk::carryLines). `carried` gets the line with
+  /// MeshPointId on output 0's points and `line`'s field data. Returns 0,
+  /// with an error, when `line` has no MeshPointId or names a point the
+  /// input did not have.
+  int CarryLine(vtkPolyData* line, vtkPolyData* carried);
+
 protected:
   vtkLKStrokeFeatureLineFilter();
   ~vtkLKStrokeFeatureLineFilter() override;
@@ -113,6 +128,7 @@ protected:
   vtkCamera* Camera = nullptr;
   int ViewportSize[2] = { 0, 0 };
   vtkPolyData* PickedStroke = nullptr;
+  vtkIdType InputPoints = 0; ///< of the last update's input, for CarryLine
 
 private:
   vtkLKStrokeFeatureLineFilter(const vtkLKStrokeFeatureLineFilter&) = delete;

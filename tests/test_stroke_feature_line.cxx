@@ -236,3 +236,66 @@ TEST(StrokeFeatureLine, ClosedSplitStrokeCutsTheSphere)
   EXPECT_NEAR(lk::signedVolume(r.mesh), lk::signedVolume(sphere), 1e-12);
   EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(r.mesh), { r.line }, false).pieces.size(), 2u);
 }
+
+TEST(StrokeFeatureLine, EarlierLinesAreCarriedThroughTheEdgesASplitCuts)
+{
+  // A closed split line around the sphere, then an open split stroke across
+  // it: the second stroke cuts the edges of the first line where it crosses.
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  std::vector<lk::Vec3> ring, across;
+  for (int k = 0; k <= 40; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * k / 40.0;
+    ring.emplace_back(0.95 * std::cos(a), 0.95 * std::sin(a), 0.2);
+  }
+  for (int k = 0; k <= 10; ++k)
+  {
+    const double z = 0.6 - 0.09 * k; // 0.6 down to -0.3, across z = 0.2
+    const double r = std::sqrt(1.0 - z * z);
+    across.emplace_back(r * std::cos(0.3), r * std::sin(0.3), z);
+  }
+  lk::StrokeOptions o;
+  o.mode = lk::StrokeMode::Split;
+  const auto first = lk::strokeToFeatureLine(sphere, ring, o);
+  ASSERT_TRUE(first.closed);
+  const auto second = lk::strokeToFeatureLine(first.mesh, across, o);
+  ASSERT_FALSE(second.closed);
+  const auto edges = lktest::edgesOf(second.mesh);
+  auto cutEdges = [&](const std::vector<std::int64_t>& line) {
+    int missing = 0;
+    for (std::size_t i = 0; i + 1 < line.size(); ++i)
+      missing += edges.count(lk::edgeKey(line[i], line[i + 1])) ? 0 : 1;
+    return missing;
+  };
+  ASSERT_GE(cutEdges(first.line), 1); // the crossing cut an edge of the ring
+  const auto carried = lk::carryLines(second.mesh, first.mesh.points.size(), { first.line, { 0, 1 } });
+  ASSERT_EQ(carried.size(), 2u);
+  const auto& ring2 = carried[0];
+  EXPECT_EQ(cutEdges(ring2), 0);
+  EXPECT_EQ(ring2.size(), first.line.size() + static_cast<std::size_t>(cutEdges(first.line)));
+  // The old vertices in their order, the new ones on the old segments.
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < ring2.size(); ++i)
+  {
+    if (k < first.line.size() && ring2[i] == first.line[k])
+    {
+      ++k;
+      continue;
+    }
+    ASSERT_GE(ring2[i], static_cast<std::int64_t>(first.mesh.points.size()));
+    ASSERT_GT(k, 0u);
+    const lk::Vec3 a = first.mesh.points[static_cast<std::size_t>(first.line[k - 1])];
+    const lk::Vec3 b = first.mesh.points[static_cast<std::size_t>(first.line[k])];
+    const lk::Vec3 p = second.mesh.points[static_cast<std::size_t>(ring2[i])];
+    EXPECT_LT((p - a).cross(b - a).norm() / (b - a).squaredNorm(), 1e-9);
+  }
+  EXPECT_EQ(k, first.line.size());
+  EXPECT_EQ(carried[1], (std::vector<std::int64_t>{ 0, 1 })); // not cut: as it was
+  // The carried ring still cuts the sphere in two; the stale one is refused.
+  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(second.mesh), { ring2 }, false).pieces.size(), 2u);
+  EXPECT_THROW(lk::cutAlongLoops(lktest::asPolygonMesh(second.mesh), { first.line }, false), std::invalid_argument);
+  // Modes that keep the edges leave lines as they are.
+  o.mode = lk::StrokeMode::NearestEdges;
+  const auto nearest = lk::strokeToFeatureLine(first.mesh, across, o);
+  EXPECT_EQ(lk::carryLines(nearest.mesh, first.mesh.points.size(), { first.line })[0], first.line);
+}

@@ -295,4 +295,80 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
   return result;
 }
 
+std::vector<std::vector<std::int64_t>> carryLines(
+  const TriangleMesh& after, std::size_t verticesBefore, const std::vector<std::vector<std::int64_t>>& lines)
+{
+  const auto n = static_cast<std::int64_t>(after.points.size());
+  std::vector<std::vector<std::int64_t>> neighbours(after.points.size());
+  for (const Triangle& t : after.triangles)
+    for (int i = 0; i < 3; ++i)
+    {
+      const auto a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+      neighbours[static_cast<std::size_t>(a)].push_back(b);
+      neighbours[static_cast<std::size_t>(b)].push_back(a);
+    }
+  auto joined = [&](std::int64_t a, std::int64_t b) {
+    const auto& na = neighbours[static_cast<std::size_t>(a)];
+    return std::find(na.begin(), na.end(), b) != na.end();
+  };
+  // The new vertices on segment (a, b), from a to b, each joined to the
+  // last by an edge; empty when there is no such chain.
+  auto chain = [&](std::int64_t a, std::int64_t b) {
+    const Vec3 pa = after.points[static_cast<std::size_t>(a)];
+    const Vec3 d = after.points[static_cast<std::size_t>(b)] - pa;
+    const double len2 = d.squaredNorm();
+    std::vector<std::int64_t> out;
+    if (!(len2 > 0.0))
+      return out;
+    const double tolerance = 1e-9 * std::sqrt(len2);
+    std::int64_t at = a;
+    double tAt = 0.0;
+    while (!joined(at, b))
+    {
+      std::int64_t next = -1;
+      double tNext = 1.0;
+      for (const auto c : neighbours[static_cast<std::size_t>(at)])
+      {
+        if (c < static_cast<std::int64_t>(verticesBefore))
+          continue;
+        const Vec3 q = after.points[static_cast<std::size_t>(c)] - pa;
+        const double t = q.dot(d) / len2;
+        if (t > tAt && t < tNext && (q - t * d).norm() <= tolerance)
+        {
+          next = c;
+          tNext = t;
+        }
+      }
+      if (next < 0)
+        return std::vector<std::int64_t>();
+      out.push_back(next);
+      at = next;
+      tAt = tNext;
+    }
+    return out;
+  };
+  std::vector<std::vector<std::int64_t>> carried;
+  carried.reserve(lines.size());
+  for (const auto& line : lines)
+  {
+    std::vector<std::int64_t> c;
+    for (std::size_t i = 0; i < line.size(); ++i)
+    {
+      const auto b = line[i];
+      if (i > 0)
+      {
+        const auto a = line[i - 1];
+        if (a >= 0 && b >= 0 && a < n && b < n && a != b && !joined(a, b))
+        {
+          const auto between = chain(a, b);
+          c.insert(c.end(), between.begin(), between.end());
+        }
+      }
+      c.push_back(b);
+    }
+    carried.push_back(std::move(c));
+  }
+  return carried;
+}
+
 } // namespace lk

@@ -381,6 +381,69 @@ class PipelineTest(unittest.TestCase):
             self.assertGreater(picked.GetPoint(i)[2], 0.0)
         self.assertGreater(f.GetFeatureLineOutput().GetNumberOfPoints(), 11)
 
+    def test_strokes_chain_and_a_split_carries_the_earlier_lines(self):
+        # A closed split ring, then an open split stroke across it on the first
+        # filter's output (with its line cells): the second cuts edges of the
+        # ring, and the ring is carried through them, in output 0 and by
+        # CarryLine, so that it still cuts the sphere in two.
+        import math
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+        from vtkmodules.vtkFiltersSources import vtkSphereSource
+        ball = vtkSphereSource()
+        ball.SetRadius(1.0)
+        ball.SetThetaResolution(48)
+        ball.SetPhiResolution(32)
+
+        def stroke(points):
+            pts = vtkPoints()
+            for p in points:
+                pts.InsertNextPoint(p)
+            pd = vtkPolyData()
+            pd.SetPoints(pts)
+            return pd
+
+        ring = [(0.98 * math.cos(a), 0.98 * math.sin(a), 0.2)
+                for a in (2 * math.pi * k / 60 for k in range(61))]
+        across = [(math.sqrt(1 - z * z) * math.cos(0.31), math.sqrt(1 - z * z) * math.sin(0.31), z)
+                  for z in (0.6 - 0.09 * k for k in range(11))]
+        first = latticekit.vtkLKStrokeFeatureLineFilter()
+        first.SetInputConnection(ball.GetOutputPort())
+        first.SetStrokeData(stroke(ring))
+        first.SetModeToSplit()
+        second = latticekit.vtkLKStrokeFeatureLineFilter()
+        second.SetInputConnection(first.GetOutputPort())
+        second.SetStrokeData(stroke(across))
+        second.SetModeToSplit()
+        errors = []
+        second.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+        second.Update()
+        self.assertEqual(errors, [])
+        ring_lines = first.GetOutput().GetNumberOfLines()
+        out = second.GetOutput()
+        # Output 0: the first filter's line cells, then the new feature edges.
+        self.assertEqual(out.GetNumberOfLines(),
+                         ring_lines + second.GetFeatureLineOutput().GetNumberOfPoints() - 1)
+        self.assertGreater(out.GetNumberOfPoints(), first.GetOutput().GetNumberOfPoints())
+
+        carried = vtkPolyData()
+        self.assertEqual(second.CarryLine(first.GetFeatureLineOutput(), carried), 1)
+        self.assertGreater(carried.GetNumberOfPoints(), first.GetFeatureLineOutput().GetNumberOfPoints())
+        self.assertEqual(carried.GetFieldData().GetArray("Closed").GetValue(0), 1)
+
+        cut = latticekit.vtkLKClosedLineCutFilter()
+        cut.SetInputData(out)
+        cut.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+        cut.SetLinesData(first.GetFeatureLineOutput())  # stale: its cut edges are gone
+        cut.Update()
+        self.assertEqual(len(errors), 1)
+        self.assertEqual(cut.GetNumberOfPieces(), 0)
+        cut.SetLinesData(carried)
+        cut.Update()
+        self.assertEqual(len(errors), 1)
+        self.assertEqual(cut.GetNumberOfPieces(), 2)
+
     def test_a_saw_cut_through_hollow_bone_goes_through_the_marrow_cavity(self):
         # The main job's mandible (the bundled CT head at 300 HU, the plan's
         # box padded with air, the component at the chin) is hollow half-way

@@ -75,4 +75,14 @@ struct StrokeResult
 /// two points or with non-finite points, or a stroke that misses the surface.
 StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& stroke, const StrokeOptions& options);
 
+/// Lines drawn earlier (vertex paths on the mesh a stroke started from),
+/// carried onto `after`, the mesh the stroke made: every mode keeps the
+/// vertex ids of the mesh before (`verticesBefore` of them) and appends new
+/// ones. Split mode cuts the edges its stroke crosses, so an earlier line
+/// edge (a, b) may no longer be an edge; it is replaced by the new vertices
+/// on the segment from a to b, in order (a chain of edges of `after`). Every
+/// other pair of consecutive vertices is kept as it is.
+std::vector<std::vector<std::int64_t>> carryLines(
+  const TriangleMesh& after, std::size_t verticesBefore, const std::vector<std::vector<std::int64_t>>& lines);
+
 } // namespace lk
