@@ -1,7 +1,8 @@
 # Makes the planner test data: tests/data/mandible_session.json (a split-mode stroke
 # along the plane x = centre of the TCIA mandible, cut, lattice, Metro),
 # tests/data/mandible_messages_session.json (that stroke off the bone, then in snap
-# mode) and
+# mode), tests/data/mandible_crossed_session.json (that stroke, then an open split
+# stroke across it) and
 # tests/data/mandible_events.log (a closed circle stroke drawn with the mouse on the
 # condyle, then the cut and lattice keys, then the cut-out segment moved and
 # rotated with the mouse and the session saved; vtkInteractorEventRecorder format).
@@ -37,6 +38,30 @@ if 'session' in parts:
     missed = {"mode": "split", "points": [[p[0] + 500, p[1], p[2]] for p in pts]}
     messages = dict(session, strokes=[missed, {"mode": "snap", "points": pts}], lattice=False, metro=False)
     json.dump(messages, open('tests/data/mandible_messages_session.json', 'w'), indent=1)
+    # The crossed-line test: the stroke, then an open split stroke 8 mm long
+    # across it, through a point 0.37 of the way from its 21st point to the
+    # 22nd (on a line edge, not a line vertex), along the surface normal
+    # times the stroke's direction, each point moved onto the surface.
+    from vtkmodules.vtkCommonCore import reference
+    from vtkmodules.vtkCommonDataModel import vtkCellLocator, vtkPointLocator
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    normals = vtkPolyDataNormals(); normals.SetInputData(s); normals.SplittingOff(); normals.Update()
+    cells = vtkCellLocator(); cells.SetDataSet(s); cells.BuildLocator()
+    points = vtkPointLocator(); points.SetDataSet(s); points.BuildLocator()
+    a, b = pts[20], pts[21]
+    at = [a[i] + 0.37 * (b[i] - a[i]) for i in range(3)]
+    t = [b[i] - a[i] for i in range(3)]
+    nv = normals.GetOutput().GetPointData().GetNormals().GetTuple3(points.FindClosestPoint(at))
+    across = [nv[1] * t[2] - nv[2] * t[1], nv[2] * t[0] - nv[0] * t[2], nv[0] * t[1] - nv[1] * t[0]]
+    length = sum(x * x for x in across) ** 0.5
+    crossing = []
+    for k in range(9):
+        q = [at[i] + (k - 4) * across[i] / length for i in range(3)]
+        onto = [0.0, 0.0, 0.0]
+        cells.FindClosestPoint(q, onto, reference(0), reference(0), reference(0.0))
+        crossing.append([round(v, 4) for v in onto])
+    crossed = dict(session, strokes=[session['strokes'][0], {"mode": "split", "points": crossing}], lattice=False, metro=False)
+    json.dump(crossed, open('tests/data/mandible_crossed_session.json', 'w'), indent=1)
 
 import math, sys
 sys.path.insert(0, 'build/python')
