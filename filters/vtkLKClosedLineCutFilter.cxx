@@ -149,6 +149,11 @@ int vtkLKClosedLineCutFilter::RequestData(
                       << " through each other), so the piece is not a valid solid. A cap crosses the "
                          "surface where a line is far from planar, and two caps overlap where nested lines could "
                          "not share one cap.");
+  for (std::size_t p = 0; p < cut.capNonManifoldEdges.size(); ++p)
+    if (cut.capNonManifoldEdges[p] > 0)
+      vtkWarningMacro(<< "Piece " << p << ": " << cut.capNonManifoldEdges[p]
+                      << " edges at its cap are shared by more than two faces, so the piece is not a manifold "
+                         "solid (field data CapNonManifoldEdges).");
   this->UpdateProgress(0.8);
 
   vtkNew<vtkPoints> points;
@@ -226,6 +231,11 @@ int vtkLKClosedLineCutFilter::RequestData(
     for (const double d : cut.capCrossingDepths)
       depths->InsertNextValue(d);
     output->GetFieldData()->AddArray(depths);
+    vtkNew<vtkDoubleArray> nonManifold; // one value per piece
+    nonManifold->SetName("CapNonManifoldEdges");
+    for (const std::size_t n : cut.capNonManifoldEdges)
+      nonManifold->InsertNextValue(static_cast<double>(n));
+    output->GetFieldData()->AddArray(nonManifold);
   }
   this->NumberOfPieces = static_cast<int>(cut.pieces.size());
   this->NumberOfInnerWallLines = static_cast<int>(cut.innerWallLoops);

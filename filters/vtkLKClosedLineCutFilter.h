@@ -28,7 +28,12 @@
  * intersecting triangles of which one is a cap triangle; 0 when clean) and
  * "CapCrossingDepth" (per piece, the deepest overlap of such a pair: how far
  * each triangle reaches through the other's plane on its shallower side, the
- * smaller of the two; micrometres where triangles graze beside a line).
+ * smaller of the two; micrometres where triangles graze beside a line). A
+ * line along mesh edges that detours around a stretch of bone the cap covers
+ * too leaves a pocket between the two, taken out, or a cap edge on a bone
+ * edge, split (MeshCut.h), so the piece stays a manifold solid; field data
+ * "CapNonManifoldEdges" (per piece; 0 when manifold) and a warning say so if
+ * an edge at a cap still has more than two faces.
  *
  * Bad input (an open line, lines crossing, a loop that crosses itself, loops
  * that do not separate the mesh, points that are not mesh points) gives a

@@ -2,7 +2,8 @@
 # along the plane x = centre of the TCIA mandible, cut, lattice, Metro),
 # tests/data/mandible_messages_session.json (that stroke off the bone, then in snap
 # mode), tests/data/mandible_crossed_session.json (that stroke, then an open split
-# stroke across it) and
+# stroke across it), tests/data/mandible_nearest_session.json (that stroke in
+# nearest-edges mode) and
 # tests/data/mandible_events.log (a closed circle stroke drawn with the mouse on the
 # condyle, then the cut and lattice keys, then the cut-out segment moved and
 # rotated with the mouse and the session saved; vtkInteractorEventRecorder format).
@@ -62,6 +63,10 @@ if 'session' in parts:
         crossing.append([round(v, 4) for v in onto])
     crossed = dict(session, strokes=[session['strokes'][0], {"mode": "split", "points": crossing}], lattice=False, metro=False)
     json.dump(crossed, open('tests/data/mandible_crossed_session.json', 'w'), indent=1)
+    # The nearest-edges test: the stroke in nearest mode, cut, lattice (its
+    # loop detours around a bone edge in the plane, and the cap used that edge).
+    nearest = dict(session, strokes=[{"mode": "nearest", "points": pts}], metro=False)
+    json.dump(nearest, open('tests/data/mandible_nearest_session.json', 'w'), indent=1)
 
 import math, sys
 sys.path.insert(0, 'build/python')

@@ -88,6 +88,10 @@ TEST(ClosedLineCut, MandibleCutIntoTwoPiecesThatCapWatertight)
       const double crossed = crossings->GetTuple1(0) + crossings->GetTuple1(1);
       vtkDataArray* depths = cut->GetOutput()->GetFieldData()->GetArray("CapCrossingDepth");
       ASSERT_NE(depths, nullptr);
+      vtkDataArray* nonManifold = cut->GetOutput()->GetFieldData()->GetArray("CapNonManifoldEdges");
+      ASSERT_NE(nonManifold, nullptr);
+      ASSERT_EQ(nonManifold->GetNumberOfTuples(), 2);
+      EXPECT_EQ(nonManifold->GetTuple1(0) + nonManifold->GetTuple1(1), 0.0);
       std::printf("cap crossings: %.0f + %.0f, reaching at most %.4f and %.4f mm through each other\n",
         crossings->GetTuple1(0), crossings->GetTuple1(1), depths->GetTuple1(0), depths->GetTuple1(1));
       EXPECT_LE(crossed, 10.0);

@@ -428,3 +428,101 @@ TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)
   isolated.points.push_back({ 5, 5, 5 });
   EXPECT_NE(message(isolated).find("isolated"), std::string::npos) << message(isolated);
 }
+
+namespace
+{
+/// A closed tube (rings of 12 around the z axis, closed by fans at both
+/// ends) with a lip: the ring at z = 1.05 has radius `lip`. The quad between
+/// ring z = 1 and the lip at angles 0 and 30 degrees is cut by the diagonal
+/// from (z = 1, 0 deg) to (lip, 30 deg), or the other one, or fanned
+/// around a vertex in its middle (quad 2).
+lk::TriangleMesh lippedTube(double lip, int quad)
+{
+  const bool otherDiagonal = quad == 1;
+  const double zs[] = { 0.0, 1.0, 1.05, 2.0 };
+  const double rs[] = { 1.0, 1.0, lip, 1.0 };
+  lk::TriangleMesh m;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 12; ++i)
+      m.points.emplace_back(rs[j] * std::cos(i * M_PI / 6), rs[j] * std::sin(i * M_PI / 6), zs[j]);
+  m.points.emplace_back(0, 0, 0);
+  m.points.emplace_back(0, 0, 2);
+  if (quad == 2)
+    m.points.emplace_back(1.05 * std::cos(M_PI / 12), 1.05 * std::sin(M_PI / 12), 1.025); // 50: the quad's middle
+  auto id = [](int j, int i) { return static_cast<std::int64_t>(12 * j + (i + 12) % 12); };
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 12; ++i)
+    {
+      if (j == 1 && i == 0 && quad == 2)
+      {
+        m.triangles.push_back({ id(j, i), id(j, i + 1), 50 });
+        m.triangles.push_back({ id(j, i + 1), id(j + 1, i + 1), 50 });
+        m.triangles.push_back({ id(j + 1, i + 1), id(j + 1, i), 50 });
+        m.triangles.push_back({ id(j + 1, i), id(j, i), 50 });
+      }
+      else if (j == 1 && i == 0 && otherDiagonal)
+      {
+        m.triangles.push_back({ id(j, i), id(j, i + 1), id(j + 1, i) });
+        m.triangles.push_back({ id(j, i + 1), id(j + 1, i + 1), id(j + 1, i) });
+      }
+      else
+      {
+        m.triangles.push_back({ id(j, i), id(j, i + 1), id(j + 1, i + 1) });
+        m.triangles.push_back({ id(j, i), id(j + 1, i + 1), id(j + 1, i) });
+      }
+    }
+  for (int i = 0; i < 12; ++i)
+  {
+    m.triangles.push_back({ 48, id(0, i + 1), id(0, i) });
+    m.triangles.push_back({ 49, id(3, i), id(3, i + 1) });
+  }
+  return m;
+}
+} // namespace
+
+TEST(MeshCut, ALoopThatDetoursAroundABoneEdgeGivesManifoldCappedPieces)
+{
+  // The loop runs along ring z = 1 but goes round the quad between angles 0
+  // and 30 degrees over the lip: (1, 0) -> (lip, 0) -> (lip, 30) -> (1, 30)
+  // -> ring. The ring's edge between 0 and 30 degrees stays a bone edge of
+  // the lower piece, inside the flat cap; the quad's two bone faces and the
+  // cap's triangles over it enclose nothing. Before, the edge could get the
+  // bone's two faces and the cap's two (a non-manifold piece, which the
+  // lattice fit refuses); now such a pocket is taken out of the piece. With a
+  // vertex inside the quad there is no pocket to take out: the cap's edge is
+  // split beside the bone's instead.
+  for (const int quad : { 0, 1, 2 })
+  {
+    const lk::TriangleMesh tube = lippedTube(1.1, quad);
+    ASSERT_EQ(lk::cgalSurfaceMeshProblem(tube), "");
+    std::vector<std::int64_t> loop = { 12, 24, 25, 13 };
+    for (int i = 2; i < 12; ++i)
+      loop.push_back(12 + i);
+    const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(tube), { loop }, true);
+    ASSERT_EQ(cut.pieces.size(), 2u);
+    double volume = 0.0;
+    for (std::size_t p = 0; p < 2; ++p)
+    {
+      const lk::TriangleMesh piece = asTriangles(cut.pieces[p]);
+      EXPECT_EQ(lk::cgalSurfaceMeshProblem(piece), "") << "piece " << p << ", quad " << quad;
+      EXPECT_EQ(lk::countBoundaryEdges(piece), 0u);
+      EXPECT_EQ(cut.capNonManifoldEdges[p], 0u);
+      EXPECT_EQ(cut.capCrossings[p], 0u);
+      EXPECT_GT(lk::signedVolume(piece), 0.0);
+      volume += lk::signedVolume(piece);
+      // The lower piece: with the quad spanned by loop vertices (0, 1), the
+      // pocket between its faces and the cap is taken out, so nothing of the
+      // lip is left in it; with a vertex in the quad (2) the stretch stays,
+      // and the cap's edge along the ring is split beside it.
+      bool lower = false, lip = false;
+      for (const auto& q : piece.points)
+      {
+        lower = lower || q.z() < 0.5;
+        lip = lip || q.z() > 1.04;
+      }
+      if (lower)
+        EXPECT_EQ(lip, quad == 2) << "quad " << quad;
+    }
+    EXPECT_NEAR(volume, lk::signedVolume(tube), 1e-9 * lk::signedVolume(tube));
+  }
+}

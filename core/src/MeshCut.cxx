@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <future>
 #include <limits>
 #include <map>
@@ -474,6 +475,145 @@ struct DirectedEdges
     return {};
   }
 };
+
+/// Which vertices of a piece are loop vertices: `vertexOrigin` (the input
+/// vertex of each, -1 for cap points) into `onLoop` (per input vertex).
+struct LoopVertices
+{
+  const std::vector<std::int64_t>& vertexOrigin;
+  const std::vector<char>& onLoop;
+  bool operator()(std::int64_t v) const
+  {
+    const auto o = vertexOrigin[static_cast<std::size_t>(v)];
+    return o >= 0 && onLoop[static_cast<std::size_t>(o)];
+  }
+};
+
+/// Closed pockets at a cap: a loop along mesh edges can detour around a
+/// stretch of bone whose faces are all spanned by loop vertices; the cap
+/// covers the same stretch with its own triangles, and the two enclose
+/// nothing (a sliver between two triangulations of the same loop vertices;
+/// two coinciding triangles are the smallest, taken out as the cap is
+/// inserted). Such faces share edges that other faces of the piece use too,
+/// so the piece is not a manifold there. Marks in `drop` each connected set
+/// of bone and cap faces spanned by loop vertices only, holding both kinds,
+/// whose every edge has exactly two faces of that kind: without them the
+/// piece is closed and manifold there. `near`: the faces to look at (all
+/// faces at a loop vertex).
+void markCapPockets(const PolygonMesh& piece, const std::vector<std::int64_t>& faceOrigin, const LoopVertices& onLoop,
+  const std::vector<std::size_t>& near, std::vector<char>& drop)
+{
+  std::vector<std::size_t> spanned; // faces spanned by loop vertices only
+  for (const auto f : near)
+  {
+    const auto& face = piece.faces[f];
+    if (!drop[f] && face.size() == 3 && onLoop(face[0]) && onLoop(face[1]) && onLoop(face[2]))
+      spanned.push_back(f);
+  }
+  if (spanned.empty())
+    return;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOf; // edge -> index into spanned
+  for (std::size_t i = 0; i < spanned.size(); ++i)
+  {
+    const auto& face = piece.faces[spanned[i]];
+    for (std::size_t k = 0; k < 3; ++k)
+      facesOf[{ std::min(face[k], face[(k + 1) % 3]), std::max(face[k], face[(k + 1) % 3]) }].push_back(i);
+  }
+  std::vector<std::size_t> parent(spanned.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [edge, fs] : facesOf)
+    if (fs.size() == 2)
+      parent[find(parent, fs[0])] = find(parent, fs[1]);
+  std::map<std::size_t, std::array<bool, 3>> kinds; // root -> (bone, cap, open)
+  for (const auto& [edge, fs] : facesOf)
+    for (const auto i : fs)
+      kinds[find(parent, i)][2] = kinds[find(parent, i)][2] || fs.size() != 2;
+  for (std::size_t i = 0; i < spanned.size(); ++i)
+    kinds[find(parent, i)][faceOrigin[spanned[i]] < 0 ? 1 : 0] = true;
+  for (std::size_t i = 0; i < spanned.size(); ++i)
+  {
+    const auto& k = kinds[find(parent, i)];
+    if (k[0] && k[1] && !k[2])
+      drop[spanned[i]] = 1;
+  }
+}
+
+/// An edge between two loop vertices with more than two faces of a capped
+/// piece, of which some are cap faces (a cap edge across a stretch of bone
+/// the loop detours around, which markCapPockets could not take out: the
+/// stretch has vertices off the loop): the cap faces on it are split at its
+/// midpoint, a new vertex of the piece, so the edge keeps the bone's two
+/// faces and the cap runs beside it. New faces are added to `near`.
+void splitOverfullCapEdges(PolygonMesh& piece, std::vector<std::int64_t>& faceOrigin,
+  std::vector<std::int64_t>& vertexOrigin, const std::vector<char>& inputOnLoop, std::vector<std::size_t>& near)
+{
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOf;
+  {
+    const LoopVertices onLoop{ vertexOrigin, inputOnLoop };
+    for (const auto f : near)
+    {
+      const auto& face = piece.faces[f];
+      for (std::size_t k = 0; k < face.size(); ++k)
+      {
+        const auto a = face[k], b = face[(k + 1) % face.size()];
+        if (onLoop(a) && onLoop(b))
+          facesOf[{ std::min(a, b), std::max(a, b) }].push_back(f);
+      }
+    }
+  }
+  for (const auto& [edge, fs] : facesOf)
+  {
+    if (fs.size() <= 2)
+      continue;
+    std::vector<std::size_t> capFaces;
+    for (const auto f : fs)
+      if (faceOrigin[f] < 0 && piece.faces[f].size() == 3)
+        capFaces.push_back(f);
+    if (capFaces.empty() || capFaces.size() == fs.size())
+      continue;
+    const auto m = static_cast<std::int64_t>(piece.points.size());
+    piece.points.push_back(0.5 * (piece.points[static_cast<std::size_t>(edge.first)] +
+                              piece.points[static_cast<std::size_t>(edge.second)]));
+    vertexOrigin.push_back(-1);
+    for (const auto f : capFaces)
+    {
+      const auto t = piece.faces[f];
+      std::size_t k = 0;
+      while (!((t[k] == edge.first || t[k] == edge.second) && (t[(k + 1) % 3] == edge.first || t[(k + 1) % 3] == edge.second)))
+        ++k;
+      const auto u = t[k], v = t[(k + 1) % 3], w = t[(k + 2) % 3];
+      piece.faces[f] = { u, m, w };
+      near.push_back(piece.faces.size());
+      piece.faces.push_back({ m, v, w });
+      faceOrigin.push_back(-1);
+    }
+  }
+}
+
+/// Edges of a capped piece near its loops (`near`: the faces at loop
+/// vertices and the caps' faces) used by more than two faces, or twice in
+/// one direction: where the piece is not a manifold, consistently oriented
+/// solid (0 when it is).
+std::size_t nonManifoldCapEdges(const PolygonMesh& piece, const std::vector<std::size_t>& near)
+{
+  std::map<std::pair<std::int64_t, std::int64_t>, std::pair<int, int>> uses; // (low, high) -> (low->high, high->low)
+  for (const auto f : near)
+  {
+    const auto& face = piece.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto a = face[i], b = face[(i + 1) % face.size()];
+      auto& u = uses[{ std::min(a, b), std::max(a, b) }];
+      ++(a < b ? u.first : u.second);
+    }
+  }
+  // An edge of a near face whose other faces are not near (away from the
+  // loops) shows fewer uses here; only too many count.
+  std::size_t bad = 0;
+  for (const auto& [edge, u] : uses)
+    bad += u.first > 1 || u.second > 1;
+  return bad;
+}
 
 /// Why loops that do not separate a mesh could not, where it can be told:
 /// the closed component of vertex `a0` has handles (on a bone, a canal or a
@@ -1042,9 +1182,14 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
       result.faceOrigin[p].reserve(facesIn[p]);
     }
   }
+  // Each input face's place in its piece, and how many bone faces each
+  // piece has before its caps: the faces at the loops are found from the
+  // loops' vertices, without a pass over the whole piece (the skull's).
+  std::vector<std::uint32_t> faceLocal(mesh.faces.size());
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
   {
     const std::size_t p = faceRegion[f];
+    faceLocal[f] = static_cast<std::uint32_t>(result.pieces[p].faces.size());
     std::vector<std::int64_t> face;
     face.reserve(mesh.faces[f].size());
     for (auto v : mesh.faces[f])
@@ -1054,6 +1199,51 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
   }
   if (!cap)
     return result;
+  std::vector<std::size_t> boneFaces(pieces);
+  for (std::size_t p = 0; p < pieces; ++p)
+    boneFaces[p] = result.pieces[p].faces.size();
+  std::vector<char> renumbered(pieces, 0); // by a compaction: faceLocal and boneFaces no longer hold
+  // Drops the marked faces of piece p, then the points no face uses (the
+  // ids of the input's vertices in the piece follow).
+  auto compact = [&](std::size_t p, const std::vector<char>& dropFace) {
+    if (std::find(dropFace.begin(), dropFace.end(), 1) == dropFace.end())
+      return;
+    renumbered[p] = 1;
+    PolygonMesh& piece = result.pieces[p];
+    std::vector<std::vector<std::int64_t>> faces;
+    std::vector<std::int64_t> origin;
+    for (std::size_t f = 0; f < piece.faces.size(); ++f)
+    {
+      if (f < dropFace.size() && dropFace[f])
+        continue;
+      faces.push_back(std::move(piece.faces[f]));
+      origin.push_back(result.faceOrigin[p][f]);
+    }
+    std::vector<std::int64_t> newId(piece.points.size(), -1);
+    std::vector<Vec3> points;
+    std::vector<std::int64_t> vorigin;
+    for (auto& face : faces)
+      for (auto& v : face)
+      {
+        if (newId[static_cast<std::size_t>(v)] < 0)
+        {
+          newId[static_cast<std::size_t>(v)] = static_cast<std::int64_t>(points.size());
+          points.push_back(piece.points[static_cast<std::size_t>(v)]);
+          vorigin.push_back(result.vertexOrigin[p][static_cast<std::size_t>(v)]);
+        }
+        v = newId[static_cast<std::size_t>(v)];
+      }
+    for (std::size_t v = 0; v < firstPiece.size(); ++v)
+      if (firstPiece[v] == static_cast<std::int64_t>(p) && firstId[v] >= 0)
+        firstId[v] = newId[static_cast<std::size_t>(firstId[v])];
+    for (auto& [key, id] : other)
+      if (key.first == p && id >= 0)
+        id = newId[static_cast<std::size_t>(id)];
+    piece.faces = std::move(faces);
+    piece.points = std::move(points);
+    result.faceOrigin[p] = std::move(origin);
+    result.vertexOrigin[p] = std::move(vorigin);
+  };
   // One cap per loop, except for loops nested in one plane (the outer and
   // the inner wall of a hollow bone), which share one flat cap with holes.
   // `ids` are the cap's loop vertices (mesh ids, loop after loop); the cap's
@@ -1111,47 +1301,12 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
         result.pieces[p].faces.push_back(face);
         result.faceOrigin[p].push_back(-1);
       }
-      // Compact: dropped faces out, then points no face uses.
-      if (std::find(dropFace.begin(), dropFace.end(), 1) == dropFace.end())
-        continue;
-      PolygonMesh& piece = result.pieces[p];
-      std::vector<std::vector<std::int64_t>> faces;
-      std::vector<std::int64_t> origin;
-      for (std::size_t f = 0; f < piece.faces.size(); ++f)
-      {
-        if (f < dropFace.size() && dropFace[f])
-          continue;
-        faces.push_back(std::move(piece.faces[f]));
-        origin.push_back(result.faceOrigin[p][f]);
-      }
-      std::vector<std::int64_t> newId(piece.points.size(), -1);
-      std::vector<Vec3> points;
-      std::vector<std::int64_t> vorigin;
-      for (auto& face : faces)
-        for (auto& v : face)
-        {
-          if (newId[static_cast<std::size_t>(v)] < 0)
-          {
-            newId[static_cast<std::size_t>(v)] = static_cast<std::int64_t>(points.size());
-            points.push_back(piece.points[static_cast<std::size_t>(v)]);
-            vorigin.push_back(result.vertexOrigin[p][static_cast<std::size_t>(v)]);
-          }
-          v = newId[static_cast<std::size_t>(v)];
-        }
-      for (std::size_t v = 0; v < firstPiece.size(); ++v)
-        if (firstPiece[v] == static_cast<std::int64_t>(p) && firstId[v] >= 0)
-          firstId[v] = newId[static_cast<std::size_t>(firstId[v])];
-      for (auto& [key, id] : other)
-        if (key.first == p && id >= 0)
-          id = newId[static_cast<std::size_t>(id)];
-      piece.faces = std::move(faces);
-      piece.points = std::move(points);
-      result.faceOrigin[p] = std::move(origin);
-      result.vertexOrigin[p] = std::move(vorigin);
+      compact(p, dropFace);
     }
   };
   if (capsMade.valid())
     caps = capsMade.get();
+
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
     const auto& group = groups[g];
@@ -1171,11 +1326,51 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
     else
       insertCap(loops[group.front()], caps[g]);
   }
+  // Each piece's faces at its loops: those around the loops' vertices, and
+  // its caps' (after its bone faces); after a compaction, by a pass over it.
+  auto nearFaces = [&](std::size_t p) {
+    std::vector<std::size_t> near;
+    const PolygonMesh& piece = result.pieces[p];
+    if (renumbered[p])
+    {
+      const LoopVertices onLoopHere{ result.vertexOrigin[p], onLoop };
+      for (std::size_t f = 0; f < piece.faces.size(); ++f)
+        if (std::any_of(piece.faces[f].begin(), piece.faces[f].end(),
+              [&](std::int64_t v) { return result.vertexOrigin[p][static_cast<std::size_t>(v)] < 0 || onLoopHere(v); }))
+          near.push_back(f);
+      return near;
+    }
+    for (const auto& loop : loops)
+      for (const auto v : loop)
+        for (std::size_t k = directed.start[static_cast<std::size_t>(v)]; k < directed.start[static_cast<std::size_t>(v) + 1]; ++k)
+          if (faceRegion[directed.face[k]] == p)
+            near.push_back(faceLocal[directed.face[k]]);
+    for (std::size_t f = boneFaces[p]; f < piece.faces.size(); ++f)
+      near.push_back(f);
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    return near;
+  };
   result.capCrossings.resize(result.pieces.size());
   result.capCrossingDepths.resize(result.pieces.size());
+  result.capNonManifoldEdges.resize(result.pieces.size());
   for (std::size_t p = 0; p < result.pieces.size(); ++p)
+  {
+    // Pockets between the bone and a cap, then cap edges that still lie on
+    // a bone edge (a loop along mesh edges that detours around it).
+    std::vector<std::size_t> near = nearFaces(p);
+    std::vector<char> drop(result.pieces[p].faces.size(), 0);
+    markCapPockets(result.pieces[p], result.faceOrigin[p], LoopVertices{ result.vertexOrigin[p], onLoop }, near, drop);
+    if (std::find(drop.begin(), drop.end(), 1) != drop.end())
+    {
+      compact(p, drop);
+      near = nearFaces(p);
+    }
+    splitOverfullCapEdges(result.pieces[p], result.faceOrigin[p], result.vertexOrigin[p], onLoop, near);
+    result.capNonManifoldEdges[p] = nonManifoldCapEdges(result.pieces[p], near);
     std::tie(result.capCrossings[p], result.capCrossingDepths[p]) =
       capCrossings(result.pieces[p], result.faceOrigin[p]);
+  }
   return result;
 }
 

@@ -46,6 +46,15 @@ struct CutResult
   /// the smaller of the two (0 without crossings). Micrometres mean triangles
   /// that graze each other beside a line.
   std::vector<double> capCrossingDepths;
+  /// For each capped piece: edges at its caps shared by more than two faces,
+  /// or twice in one direction (0 for a manifold solid; empty without
+  /// capping). A loop along mesh edges can detour around a stretch of bone
+  /// that the cap then covers too: where the stretch's faces are all spanned
+  /// by loop vertices, they and the cap's triangles over them enclose nothing
+  /// and are taken out of the piece (a pocket); otherwise the cap's edge that
+  /// lies on a bone edge is split at its midpoint. The count says so if an
+  /// edge still has too many faces.
+  std::vector<std::size_t> capNonManifoldEdges;
   /// Loops added on inner walls (see throughInnerWalls); 0 when none were needed.
   std::size_t innerWallLoops = 0;
 };
