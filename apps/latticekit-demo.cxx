@@ -5,6 +5,7 @@
 // paper's Table 2 (no cut / cut / cut with quads), exported pieces and
 // lattices, and PNG pictures.
 #include "common/AppSupport.h"
+#include "common/JsonFields.h"
 #include "common/DistanceColourBar.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
@@ -30,6 +31,7 @@
 #include <vtkImageConstantPad.h>
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPlane.h>
@@ -113,17 +115,78 @@ struct Plan
   std::array<double, 3> viewFrom{ 0, 0, 1 }, viewUp{ 0, -1, 0 };
 };
 
-bool readTriple(const Json::Value& v, std::array<double, 3>& out)
+/// Reads the plan, every field's kind checked (a wrong one is refused with a
+/// message naming it, not an exception).
+bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
 {
-  if (!v.isArray() || v.size() != 3)
+  using namespace lkapp;
+  const std::string where = "the plan";
+  long long smoothing = plan.smoothing, vertices = plan.vertices;
+  const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 10000, out); };
+  const auto count = [](const Json::Value& v, long long& out) { return jsonInteger(v, 8, 100000000, out); };
+  if (!jsonMember(root, "iso", plan.iso, jsonNumber, where, "a number", error) ||
+    !jsonMember(root, "smoothing", smoothing, iterations, where, "a whole number from 0 to 10,000", error) ||
+    !jsonMember(root, "latticeVertices", vertices, count, where, "a whole number from 8 to 100,000,000", error))
     return false;
-  for (Json::ArrayIndex i = 0; i < 3; ++i)
+  plan.smoothing = static_cast<int>(smoothing);
+  plan.vertices = static_cast<long>(vertices);
+  if (root.isMember("crop"))
   {
-    if (!v[i].isNumeric())
+    if (!jsonNumbers(root["crop"], plan.box))
+    {
+      error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax]";
       return false;
-    out[i] = v[i].asDouble();
+    }
+    plan.crop = true;
+  }
+  if (root.isMember("seed"))
+  {
+    if (!jsonNumbers(root["seed"], plan.seed))
+    {
+      error = "the plan's seed must be [x, y, z]";
+      return false;
+    }
+    plan.seeded = true;
+  }
+  const Json::Value& cut = root["cut"];
+  if (!cut.isObject() || !jsonNumbers(cut["origin"], plan.origin) || !jsonNumbers(cut["normal"], plan.normal))
+  {
+    error = "the plan needs a cut plane: \"cut\": {\"origin\": [x, y, z], \"normal\": [x, y, z]}";
+    return false;
+  }
+  if (!jsonMember(cut, "penOffset", plan.penOffset, jsonNumber, "the plan's cut", "a number", error) ||
+    !jsonMember(cut, "penStep", plan.penStep, jsonNumber, "the plan's cut", "a number", error))
+    return false;
+  if (root.isMember("view") &&
+    (!root["view"].isObject() || !jsonNumbers(root["view"]["from"], plan.viewFrom) ||
+      !jsonNumbers(root["view"]["up"], plan.viewUp)))
+  {
+    error = "the plan's view needs \"from\" and \"up\" as [x, y, z]";
+    return false;
+  }
+  const double n = std::sqrt(plan.normal[0] * plan.normal[0] + plan.normal[1] * plan.normal[1] + plan.normal[2] * plan.normal[2]);
+  if (!(n > 0) || !(plan.penStep > 0) || plan.penOffset < 0)
+  {
+    error = "the plan's cut normal must be non-zero, penStep above 0 and penOffset 0 or more";
+    return false;
   }
   return true;
+}
+
+/// The mean distance between a stroke's consecutive points, to 3 digits.
+std::string penSpacing(vtkPolyData* stroke)
+{
+  double length = 0.0;
+  for (vtkIdType i = 0; i + 1 < stroke->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    stroke->GetPoint(i, a);
+    stroke->GetPoint(i + 1, b);
+    length += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", stroke->GetNumberOfPoints() > 1 ? length / (stroke->GetNumberOfPoints() - 1) : 0.0);
+  return text;
 }
 
 bool loadPlan(const std::string& path, Plan& plan, std::string& error)
@@ -142,51 +205,15 @@ bool loadPlan(const std::string& path, Plan& plan, std::string& error)
     error = "'" + path + "' is not a plan (JSON object): " + errs;
     return false;
   }
-  plan.iso = root.get("iso", plan.iso).asDouble();
-  plan.smoothing = root.get("smoothing", plan.smoothing).asInt();
-  if (root.isMember("crop"))
+  try
   {
-    const Json::Value& c = root["crop"];
-    if (!c.isArray() || c.size() != 6)
-    {
-      error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax]";
-      return false;
-    }
-    for (Json::ArrayIndex i = 0; i < 6; ++i)
-      plan.box[i] = c[i].asDouble();
-    plan.crop = true;
+    return readPlan(root, plan, error);
   }
-  if (root.isMember("seed"))
+  catch (const Json::Exception& e) // a kind the checks above missed: refused all the same
   {
-    if (!readTriple(root["seed"], plan.seed))
-    {
-      error = "the plan's seed must be [x, y, z]";
-      return false;
-    }
-    plan.seeded = true;
-  }
-  const Json::Value& cut = root["cut"];
-  if (!readTriple(cut["origin"], plan.origin) || !readTriple(cut["normal"], plan.normal))
-  {
-    error = "the plan needs a cut plane: \"cut\": {\"origin\": [x, y, z], \"normal\": [x, y, z]}";
+    error = "'" + path + "' is not a valid plan: " + e.what();
     return false;
   }
-  plan.penOffset = cut.get("penOffset", plan.penOffset).asDouble();
-  plan.penStep = cut.get("penStep", plan.penStep).asDouble();
-  plan.vertices = root.get("latticeVertices", static_cast<Json::Int64>(plan.vertices)).asInt64();
-  if (root.isMember("view") &&
-    (!readTriple(root["view"]["from"], plan.viewFrom) || !readTriple(root["view"]["up"], plan.viewUp)))
-  {
-    error = "the plan's view needs \"from\" and \"up\" as [x, y, z]";
-    return false;
-  }
-  const double n = std::sqrt(plan.normal[0] * plan.normal[0] + plan.normal[1] * plan.normal[1] + plan.normal[2] * plan.normal[2]);
-  if (!(n > 0) || plan.vertices < 8 || !(plan.penStep > 0) || plan.penOffset < 0)
-  {
-    error = "the plan's cut normal must be non-zero, latticeVertices at least 8, penStep above 0";
-    return false;
-  }
-  return true;
 }
 
 /// The scripted pen stroke: the section of the surface by the cut plane (the
@@ -707,7 +734,8 @@ int main(int argc, char* argv[])
          << (plan.seeded ? ", the component at the seed" : "") << "): " << mandible->GetNumberOfPoints()
          << " vertices, " << mandible->GetNumberOfPolys() << " triangles.\n"
          << "- Scripted pen stroke: the section by the cut plane around one side of the body, "
-         << stroke->GetNumberOfPoints() << " points every " << plan.penStep << " mm, " << plan.penOffset
+         << stroke->GetNumberOfPoints() << " points " << penSpacing(stroke) << " mm apart on average (every "
+         << plan.penStep << " mm or more along the section's own points), " << plan.penOffset
          << " mm off the surface; split mode: a closed cut line of " << line->GetNumberOfPoints() - 1
          << " vertices whose edges follow the stroke.\n"
          << "- Capped cut: " << pieces.size() << " pieces, each closed by the same flat cap"

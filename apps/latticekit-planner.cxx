@@ -5,6 +5,7 @@
 // patches), save and replay sessions (JSON), export the pieces.
 #include "common/AppSupport.h"
 #include "common/DistanceColourBar.h"
+#include "common/JsonFields.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKClosedLineCutFilter.h"
@@ -63,6 +64,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -319,6 +321,134 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
   return static_cast<bool>(out);
 }
 
+/// Reads a session, every field's kind checked (a wrong one is refused with
+/// a message naming it, not an exception).
+bool readSession(const Json::Value& root, const std::string& path, Session& s, std::string& error)
+{
+  using namespace lkapp;
+  const std::string session = "the session '" + path + "'";
+  s = Session();
+  const Json::Value& strokes = root["strokes"];
+  if (!strokes.isNull() && !strokes.isArray())
+  {
+    error = session + ": \"strokes\" must be a list";
+    return false;
+  }
+  for (Json::ArrayIndex i = 0; strokes.isArray() && i < strokes.size(); ++i)
+  {
+    const Json::Value& js = strokes[i];
+    const std::string where = "stroke " + std::to_string(i + 1) + " in '" + path + "'";
+    std::string mode = "nearest";
+    if (!js.isObject())
+    {
+      error = where + " is not an object ({\"mode\": ..., \"points\": [...]})";
+      return false;
+    }
+    if (!jsonMember(js, "mode", mode, jsonString, where, "a string", error))
+      return false;
+    if (mode != "paint" && mode != "nearest" && mode != "snap" && mode != "split")
+    {
+      error = where + " has the mode '" + mode + "' (paint, nearest, snap or split)";
+      return false;
+    }
+    Stroke st;
+    st.mode = modeOf(mode);
+    const Json::Value& points = js["points"];
+    if (!points.isArray())
+    {
+      error = where + " needs \"points\": a list of [x, y, z]";
+      return false;
+    }
+    for (const auto& jp : points)
+    {
+      std::array<double, 3> p{};
+      if (!jsonNumbers(jp, p))
+      {
+        error = "a stroke point in '" + path + "' is not [x, y, z]";
+        return false;
+      }
+      st.points.push_back(p);
+    }
+    s.strokes.push_back(st);
+  }
+  long long vertices = s.latticeVertices;
+  const auto count = [](const Json::Value& v, long long& out) { return jsonInteger(v, 4, 100000000, out); };
+  if (!jsonMember(root, "cut", s.cut, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "capping", s.capping, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "lattice", s.lattice, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "metro", s.metro, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "latticeVertices", vertices, count, session, "a whole number from 4 to 100,000,000", error))
+    return false;
+  s.latticeVertices = static_cast<long>(vertices);
+  if (root.isMember("segment"))
+  {
+    const Json::Value& seg = root["segment"];
+    long long piece = -1;
+    std::array<double, 16> m{};
+    if (!seg.isObject() || !jsonInteger(seg["piece"], 0, std::numeric_limits<int>::max(), piece) ||
+      !jsonNumbers(seg["matrix"], m))
+    {
+      error = "the segment in '" + path + "' needs a piece index and a 16-number matrix";
+      return false;
+    }
+    s.segment = static_cast<int>(piece);
+    s.segmentMatrix = m;
+  }
+  const Json::Value& deformations = root["deformations"];
+  if (!deformations.isNull() && !deformations.isArray())
+  {
+    error = session + ": \"deformations\" must be a list";
+    return false;
+  }
+  for (Json::ArrayIndex i = 0; deformations.isArray() && i < deformations.size(); ++i)
+  {
+    const Json::Value& jd = deformations[i];
+    Deformation d;
+    const std::string where = "deformation " + std::to_string(s.deformations.size()) + " in '" + path + "'";
+    if (!jd.isObject() || !jsonString(jd["tool"], d.tool) || (d.tool != "bump" && d.tool != "box" && d.tool != "smooth"))
+    {
+      error = where + " has the tool '" + (jd.isObject() && jd["tool"].isString() ? jd["tool"].asString() : std::string("?")) +
+        "' (bump, box or smooth)";
+      return false;
+    }
+    long long piece = -1;
+    if (!jsonInteger(jd["piece"], 0, std::numeric_limits<int>::max(), piece) || !readTriple(jd["centre"], d.centre) ||
+      !jsonNumber(jd["radius"], d.radius) || !(d.radius > 0.0))
+    {
+      error = where + " needs a piece index, a centre [x, y, z] and a radius above 0";
+      return false;
+    }
+    d.piece = static_cast<int>(piece);
+    if (d.tool == "smooth")
+    {
+      long long iterations = d.iterations;
+      const auto upTo100 = [](const Json::Value& v, long long& out) { return jsonInteger(v, 1, 100, out); };
+      if (!jsonMember(jd, "iterations", iterations, upTo100, where, "1 to 100", error))
+      {
+        error = where + " needs 1 to 100 smoothing iterations";
+        return false;
+      }
+      d.iterations = static_cast<int>(iterations);
+    }
+    else if (!readTriple(jd["normal"], d.normal) || !jsonNumber(jd["amount"], d.amount))
+    {
+      error = where + " needs a normal [x, y, z] and an amount";
+      return false;
+    }
+    if (d.tool == "bump")
+    {
+      d.falloff = bumpFalloff(d.radius);
+      if (!jsonMember(jd, "falloff", d.falloff, jsonNumber, where, "a number", error) || !(d.falloff >= 0.0))
+      {
+        error = where + " needs a falloff of 0 or more";
+        return false;
+      }
+    }
+    s.deformations.push_back(d);
+  }
+  return true;
+}
+
 bool loadSession(const std::string& path, Session& s, std::string& error)
 {
   std::ifstream in(path);
@@ -335,87 +465,15 @@ bool loadSession(const std::string& path, Session& s, std::string& error)
     error = "'" + path + "' is not a session (JSON object): " + errs;
     return false;
   }
-  s = Session();
-  for (const auto& js : root["strokes"])
+  try
   {
-    Stroke st;
-    st.mode = modeOf(js["mode"].asString());
-    for (const auto& jp : js["points"])
-    {
-      if (!jp.isArray() || jp.size() != 3)
-      {
-        error = "a stroke point in '" + path + "' is not [x, y, z]";
-        return false;
-      }
-      st.points.push_back({ jp[0].asDouble(), jp[1].asDouble(), jp[2].asDouble() });
-    }
-    s.strokes.push_back(st);
+    return readSession(root, path, s, error);
   }
-  s.cut = root.get("cut", false).asBool();
-  s.capping = root.get("capping", true).asBool();
-  s.lattice = root.get("lattice", false).asBool();
-  s.latticeVertices = static_cast<long>(root.get("latticeVertices", 600).asInt64());
-  s.metro = root.get("metro", false).asBool();
-  if (root.isMember("segment"))
+  catch (const Json::Exception& e) // a kind the checks above missed: refused all the same
   {
-    const Json::Value& seg = root["segment"];
-    const Json::Value& m = seg["matrix"];
-    if (!seg["piece"].isInt() || !m.isArray() || m.size() != 16)
-    {
-      error = "the segment in '" + path + "' needs a piece index and a 16-number matrix";
-      return false;
-    }
-    s.segment = seg["piece"].asInt();
-    for (Json::ArrayIndex i = 0; i < 16; ++i)
-      s.segmentMatrix[i] = m[i].asDouble();
+    error = "'" + path + "' is not a valid session: " + e.what();
+    return false;
   }
-  for (const auto& jd : root["deformations"])
-  {
-    Deformation d;
-    d.tool = jd["tool"].asString();
-    const std::string where = "deformation " + std::to_string(s.deformations.size()) + " in '" + path + "'";
-    if (d.tool != "bump" && d.tool != "box" && d.tool != "smooth")
-    {
-      error = where + " has the tool '" + d.tool + "' (bump, box or smooth)";
-      return false;
-    }
-    if (!jd["piece"].isInt() || jd["piece"].asInt() < 0 || !readTriple(jd["centre"], d.centre) ||
-      !jd["radius"].isNumeric() || !(jd["radius"].asDouble() > 0.0) || !std::isfinite(jd["radius"].asDouble()))
-    {
-      error = where + " needs a piece index, a centre [x, y, z] and a radius above 0";
-      return false;
-    }
-    d.piece = jd["piece"].asInt();
-    d.radius = jd["radius"].asDouble();
-    if (d.tool == "smooth")
-    {
-      d.iterations = jd.get("iterations", 3).asInt();
-      if (d.iterations < 1 || d.iterations > 100)
-      {
-        error = where + " needs 1 to 100 smoothing iterations";
-        return false;
-      }
-    }
-    else if (!readTriple(jd["normal"], d.normal) || !jd["amount"].isNumeric() ||
-      !std::isfinite(jd["amount"].asDouble()))
-    {
-      error = where + " needs a normal [x, y, z] and an amount";
-      return false;
-    }
-    else
-      d.amount = jd["amount"].asDouble();
-    if (d.tool == "bump")
-    {
-      d.falloff = jd.get("falloff", bumpFalloff(d.radius)).asDouble();
-      if (!(d.falloff >= 0.0) || !std::isfinite(d.falloff))
-      {
-        error = where + " needs a falloff of 0 or more";
-        return false;
-      }
-    }
-    s.deformations.push_back(d);
-  }
-  return true;
 }
 
 std::array<double, 3> pieceColour(std::size_t p)

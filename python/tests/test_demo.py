@@ -88,6 +88,14 @@ class DemoTest(unittest.TestCase):
                                     capture_output=True, text=True, check=False, timeout=60)
             self.assertNotEqual(result.returncode, 0)
             self.assertIn("needs a cut plane", result.stderr)
+            # A field of the wrong kind is named (jsoncpp's exception aborted
+            # the demo: a negative return code here, from the signal).
+            with open(plan, "w") as f:
+                f.write('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "latticeVertices": "many"}')
+            result = subprocess.run([DEMO, "--plan", plan, "-o", os.path.join(tmp, "out"), "--no-render", "-q"],
+                                    capture_output=True, text=True, check=False, timeout=60)
+            self.assertEqual(result.returncode, 1)
+            self.assertIn('"latticeVertices" must be a whole number', result.stderr)
 
 
 class LatticeExampleTest(unittest.TestCase):
