@@ -3,6 +3,7 @@
 #include "vtkLKDICOMSeries.h"
 
 #include <vtkCallbackCommand.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
@@ -18,6 +19,7 @@
 #include <vtkObjectFactoryCollection.h>
 #include <vtkPointData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtksys/SystemInformation.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -26,6 +28,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <new>
 #include <sstream>
 #include <vector>
 
@@ -160,6 +163,75 @@ struct ErrorFlag
   }
 };
 
+/// Reads the image of an image reader: the header first, and the voxels only
+/// when the header describes a volume (at least 2 voxels along each axis;
+/// vtkNrrdReader crashes reading a 2-D raw file) that fits in this machine's
+/// memory (a corrupt or hostile header asks for terabytes, and the allocation
+/// ended the program). `message` says why not.
+bool readImage(vtkImageReader2* reader, ErrorFlag& flag, std::string& message)
+{
+  reader->UpdateInformation();
+  if (flag.failed)
+  {
+    message = flag.message;
+    return false;
+  }
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkInformation* info = reader->GetOutputInformation(0);
+  if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    message = "the header gives no image extent";
+    return false;
+  }
+  info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  double voxels = 1.0;
+  std::ostringstream size;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double n = static_cast<double>(extent[2 * a + 1]) - extent[2 * a] + 1.0;
+    size << (a ? " x " : "") << (n > 0 ? n : 0.0);
+    voxels *= n > 0 ? n : 0.0;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (extent[2 * a + 1] - extent[2 * a] + 1 < 2)
+    {
+      message = "the image has " + size.str() + " voxels; a volume needs at least 2 along each axis";
+      return false;
+    }
+  }
+  const int components = std::max(1, reader->GetNumberOfScalarComponents());
+  const int typeSize = std::max(1, vtkDataArray::GetDataTypeSize(reader->GetDataScalarType()));
+  const double bytes = voxels * components * typeSize;
+  vtksys::SystemInformation system;
+  system.RunMemoryCheck();
+  const double memory = static_cast<double>(system.GetTotalPhysicalMemory()) * 1024.0 * 1024.0; // MiB
+  if (memory > 0.0 && bytes > memory)
+  {
+    std::ostringstream os;
+    os.precision(3);
+    os << "the header describes " << size.str() << " voxels (" << bytes / 1e9
+       << " GB), more than this machine's memory (" << memory / 1e9 << " GB)";
+    message = os.str();
+    return false;
+  }
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    message = "out of memory reading " + size.str() + " voxels";
+    return false;
+  }
+  if (flag.failed || !reader->GetOutput() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    message = flag.message;
+    return false;
+  }
+  return true;
+}
+
 } // namespace
 
 vtkLKMedicalImageReader::vtkLKMedicalImageReader()
@@ -227,11 +299,10 @@ bool vtkLKMedicalImageReader::ReadVolume()
     }
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
-    reader->Update();
-    if (flag.failed || reader->GetOutput()->GetNumberOfPoints() == 0)
+    std::string message;
+    if (!readImage(reader, flag, message))
     {
-      vtkErrorMacro("Cannot read NRRD file '" << path << "'" << (flag.message.empty() ? "" : ": ")
-                                              << flag.message);
+      vtkErrorMacro("Cannot read NRRD file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
     }
     image = reader->GetOutput();
@@ -267,11 +338,10 @@ bool vtkLKMedicalImageReader::ReadVolume()
     vtkNew<vtkMetaImageReader> reader;
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
-    reader->Update();
-    if (flag.failed || reader->GetOutput()->GetNumberOfPoints() == 0)
+    std::string message;
+    if (!readImage(reader, flag, message))
     {
-      vtkErrorMacro("Cannot read MetaImage file '" << path << "'" << (flag.message.empty() ? "" : ": ")
-                                                   << flag.message);
+      vtkErrorMacro("Cannot read MetaImage file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
     }
     image = reader->GetOutput();
@@ -311,11 +381,10 @@ bool vtkLKMedicalImageReader::ReadVolume()
     vtkNew<vtkNIFTIImageReader> reader;
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
-    reader->Update();
-    if (flag.failed || reader->GetOutput()->GetNumberOfPoints() == 0)
+    std::string message;
+    if (!readImage(reader, flag, message))
     {
-      vtkErrorMacro("Cannot read NIfTI file '" << path << "'" << (flag.message.empty() ? "" : ": ")
-                                               << flag.message);
+      vtkErrorMacro("Cannot read NIfTI file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
     }
     image = reader->GetOutput();

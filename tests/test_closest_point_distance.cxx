@@ -93,6 +93,14 @@ TEST(ClosestPointTree, RejectsInvalidMeshes)
   m.triangles[0][1] = 99;
   EXPECT_THROW(lk::ClosestPointTree{ m }, std::invalid_argument);
   EXPECT_THROW(lk::ClosestPointTree{ lk::TriangleMesh() }, std::invalid_argument);
+  // An overflowed coordinate (vtkOBJReader stores 1e309 as 3.4e38) is refused
+  // as well: closest-point searches there cannot prune and never end.
+  m = lktest::cube();
+  m.points[3].x() = 3.4e38;
+  EXPECT_NE(lk::validateTriangleMesh(m).find("beyond 1e15"), std::string::npos);
+  EXPECT_THROW(lk::ClosestPointTree{ m }, std::invalid_argument);
+  m.points[3].x() = -lk::kLargestCoordinate;
+  EXPECT_EQ(lk::validateTriangleMesh(m), "");
 }
 
 TEST(MetroDistance, ParallelPlanes)

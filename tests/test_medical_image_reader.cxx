@@ -411,3 +411,33 @@ TEST(MedicalImageReader, MissingAndCorruptFilesAreClearErrors)
   EXPECT_GE(rec.errors, 1);
   EXPECT_NE(rec.messages.find("DICOM"), std::string::npos) << rec.messages;
 }
+
+TEST(MedicalImageReader, HeadersThatDescribeNoUsableVolumeAreRefusedBeforeReading)
+{
+  // A 2-D raw NRRD (vtkNrrdReader crashed reading it) and a header asking for
+  // 1e15 voxels (the allocation ended the program): refused from the header.
+  const std::string dir = tempFolder("bad-headers");
+  const std::string flat = dir + "/slice.nrrd";
+  {
+    std::ofstream out(flat, std::ios::binary);
+    out << "NRRD0004\ntype: float\ndimension: 2\nsizes: 4 4\nencoding: raw\n\n" << std::string(64, '\0');
+  }
+  const std::string huge = dir + "/huge.nrrd";
+  std::ofstream(huge, std::ios::binary)
+    << "NRRD0004\ntype: float\ndimension: 3\nsizes: 100000 100000 100000\nencoding: raw\n\n";
+  struct Case
+  {
+    std::string file, message;
+  };
+  for (const Case& c : { Case{ flat, "at least 2 along each axis" },
+         Case{ huge, "more than this machine's memory" } })
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(c.file.c_str());
+    reader->Update();
+    EXPECT_GE(rec.errors, 1) << c.file;
+    EXPECT_NE(rec.messages.find(c.message), std::string::npos) << rec.messages;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  }
+}

@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -279,7 +280,16 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
     return nullptr;
   }
   const int before = errorCount();
-  reader->Update();
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::exception& e)
+  {
+    // vtkPLYReader sizes its arrays from the header: a corrupt count throws.
+    error = "cannot read '" + path + "': the file is corrupt (" + e.what() + ")";
+    return nullptr;
+  }
   auto* pd = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (errorCount() != before || !pd || pd->GetNumberOfPoints() == 0)
   {

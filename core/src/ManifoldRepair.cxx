@@ -248,9 +248,12 @@ std::string polygonIndexProblem(const PolygonMesh& mesh)
         os << "face " << f << " refers to point " << id << ", but the lattice has " << n << " points";
         return os.str();
       }
-      if (!mesh.points[static_cast<std::size_t>(id)].allFinite())
+      const Vec3& p = mesh.points[static_cast<std::size_t>(id)];
+      if (!isUsablePoint(p))
       {
-        os << "point " << id << " has a NaN or infinite coordinate";
+        os << "point " << id << " has "
+           << (p.allFinite() ? "a coordinate beyond 1e15 (a corrupt file or an overflow)"
+                             : "a NaN or infinite coordinate");
         return os.str();
       }
       for (std::size_t j = i + 1; j < face.size(); ++j)

@@ -56,10 +56,13 @@ std::string validateTriangleMesh(const TriangleMesh& mesh)
            << " points";
         return os.str();
       }
-      if (!mesh.points[static_cast<std::size_t>(id)].allFinite())
+      const Vec3& p = mesh.points[static_cast<std::size_t>(id)];
+      if (!isUsablePoint(p))
       {
         std::ostringstream os;
-        os << "point " << id << " (used by triangle " << t << ") has a NaN or infinite coordinate";
+        os << "point " << id << " (used by triangle " << t << ") has "
+           << (p.allFinite() ? "a coordinate beyond 1e15 (a corrupt file or an overflow)"
+                             : "a NaN or infinite coordinate");
         return os.str();
       }
     }

@@ -93,8 +93,21 @@ double triangleArea(const TriangleMesh& mesh, std::size_t t);
 /// Total area.
 double surfaceArea(const TriangleMesh& mesh);
 
-/// Checks that every index is in range and every used coordinate is finite.
-/// Returns an empty string when the mesh is usable, else a sentence saying why not.
+/// The largest coordinate magnitude a mesh may have (1e15, a million km in
+/// mm). Larger ones come from corrupt files or overflow (VTK's OBJ reader
+/// stores 1e309 as 3.4e38), and distance queries lose all precision there:
+/// Metro's tree search could not prune and ran for hours.
+constexpr double kLargestCoordinate = 1e15;
+
+/// A finite point whose coordinates are at most kLargestCoordinate in magnitude.
+inline bool isUsablePoint(const Vec3& p)
+{
+  return p.allFinite() && p.cwiseAbs().maxCoeff() <= kLargestCoordinate;
+}
+
+/// Checks that every index is in range and every used point is usable
+/// (isUsablePoint). Returns an empty string when the mesh is usable, else a
+/// sentence saying why not.
 std::string validateTriangleMesh(const TriangleMesh& mesh);
 
 } // namespace lk
