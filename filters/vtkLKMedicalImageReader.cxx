@@ -1,6 +1,7 @@
 #include "vtkLKMedicalImageReader.h"
 
 #include "vtkLKDICOMSeries.h"
+#include "vtkLKMemory.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkDataArray.h>
@@ -19,7 +20,6 @@
 #include <vtkObjectFactoryCollection.h>
 #include <vtkPointData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
-#include <vtksys/SystemInformation.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -203,16 +203,10 @@ bool readImage(vtkImageReader2* reader, ErrorFlag& flag, std::string& message)
   const int components = std::max(1, reader->GetNumberOfScalarComponents());
   const int typeSize = std::max(1, vtkDataArray::GetDataTypeSize(reader->GetDataScalarType()));
   const double bytes = voxels * components * typeSize;
-  vtksys::SystemInformation system;
-  system.RunMemoryCheck();
-  const double memory = static_cast<double>(system.GetTotalPhysicalMemory()) * 1024.0 * 1024.0; // MiB
-  if (memory > 0.0 && bytes > memory)
+  std::string tooLarge;
+  if (lkvtk::exceedsMemory(bytes, tooLarge))
   {
-    std::ostringstream os;
-    os.precision(3);
-    os << "the header describes " << size.str() << " voxels (" << bytes / 1e9
-       << " GB), more than this machine's memory (" << memory / 1e9 << " GB)";
-    message = os.str();
+    message = "the header describes " + size.str() + " voxels (" + tooLarge + ")";
     return false;
   }
   try

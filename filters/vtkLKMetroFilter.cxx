@@ -3,6 +3,7 @@
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/DistanceStatistics.h"
 #include "latticekit/SurfaceSampling.h"
+#include "vtkLKMemory.h"
 #include "vtkLKPolyDataConversion.h"
 
 #include <vtkDoubleArray.h>
@@ -20,6 +21,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -169,8 +172,28 @@ int vtkLKMetroFilter::RequestData(
     const double base = treeShare + (1.0 - treeShare) * dir / directions;
     this->UpdateProgress(base);
     const lk::SamplingPlan plan = lk::planSampling(sampled, options);
+    // A point, a weight, a kind, a face and a distance per sample.
+    const double bytesPerSample = sizeof(lk::Vec3) + 2 * sizeof(double) + sizeof(lk::SampleKind) + sizeof(std::int64_t);
+    std::string tooLarge;
+    if (lkvtk::exceedsMemory(static_cast<double>(plan.total) * bytesPerSample, tooLarge))
+    {
+      vtkErrorMacro("Mesh " << (dir == 0 ? "A" : "B") << " would take " << plan.total << " samples (" << tooLarge
+                            << "): ask for fewer (NumberOfSamples, SampleDensity).");
+      return 0;
+    }
     lk::SampleSet samples;
-    lk::allocateSamples(plan, samples);
+    std::vector<double> distance;
+    try
+    {
+      lk::allocateSamples(plan, samples);
+      distance.assign(samples.size(), 0.0);
+    }
+    catch (const std::bad_alloc&)
+    {
+      vtkErrorMacro("Out of memory for " << plan.total << " samples of mesh " << (dir == 0 ? "A" : "B")
+                                         << ": ask for fewer (NumberOfSamples, SampleDensity).");
+      return 0;
+    }
     vtkSMPTools::For(0, static_cast<vtkIdType>(plan.vertices.size()), 4096,
       [&](vtkIdType b, vtkIdType e) {
         lk::fillVertexSamples(sampled, plan, static_cast<std::size_t>(b), static_cast<std::size_t>(e), samples);
@@ -183,7 +206,6 @@ int vtkLKMetroFilter::RequestData(
         lk::fillFaceSamples(sampled, plan, options, static_cast<std::size_t>(b),
           static_cast<std::size_t>(e), samples);
       });
-    std::vector<double> distance(samples.size(), 0.0);
 
     // Batches keep progress and abort responsive; within a batch the SMP
     // grain keeps neighbouring samples together so hints stay coherent.

@@ -410,6 +410,19 @@ TEST(MetroFilter, BadInputGivesClearErrors)
     EXPECT_NE(rec.messages.find(c.expected), std::string::npos) << rec.messages;
     EXPECT_EQ(metro->GetHausdorffDistance(), 0.0);
   }
+  // More samples than the machine can hold (a typo, an extra digit or ten):
+  // refused before the allocation, which ended the program.
+  {
+    vtkNew<vtkLKMetroFilter> metro;
+    lktest::ErrorRecorder rec(metro);
+    metro->SetInputData(good);
+    metro->SetTargetData(good);
+    metro->SetNumberOfSamples(VTK_ID_MAX / 64);
+    metro->Update();
+    EXPECT_EQ(rec.errors, 1);
+    EXPECT_NE(rec.messages.find("more than this machine's memory"), std::string::npos) << rec.messages;
+    EXPECT_EQ(metro->GetHausdorffDistance(), 0.0);
+  }
   // No second input at all: the executive refuses to run the filter.
   vtkNew<vtkLKMetroFilter> lonely;
   lonely->SetInputData(good);
