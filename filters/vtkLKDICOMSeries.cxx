@@ -264,6 +264,16 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   // input slice, and repeats it there.
   const double zSpan = slices.back().z - slices.front().z;
   const double wanted = sliceSpacing > 0.0 ? sliceSpacing : report.minGap;
+  if (sliceSpacing > 0.0 && zSpan > 0.0 && sliceSpacing > zSpan * (1.0 + 1e-9))
+  {
+    // Two output slices, the second far beyond the series: a stretched
+    // volume and a bone surface of the wrong size, not a resampling.
+    std::ostringstream os;
+    os << "a slice spacing of " << sliceSpacing << " mm is larger than the series' extent (" << zSpan
+       << " mm from the first slice to the last): choose at most that";
+    error = os.str();
+    return false;
+  }
   const int steps = zSpan > 0.0 ? static_cast<int>(std::ceil(zSpan / wanted - 1e-9)) : 0;
   const int nz = steps + 1;
   const double h = sliceSpacing > 0.0 || steps == 0 ? wanted : zSpan / steps;

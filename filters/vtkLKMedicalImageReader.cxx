@@ -527,6 +527,12 @@ int vtkLKMedicalImageReader::RequestInformation(
     if (!this->ReadVolume())
     {
       this->VolumeTime = 0;
+      // The executive skips RequestData after a failed request: clear the
+      // output here, or it would keep the volume of an earlier read.
+      if (vtkImageData* output = vtkImageData::GetData(outputVector))
+      {
+        output->Initialize();
+      }
       return 0;
     }
   }

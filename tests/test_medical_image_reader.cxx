@@ -245,6 +245,15 @@ TEST(MedicalImageReader, SliceSpacingIsHonoured)
   reader->SetSliceSpacing(2.0);
   reader->Update();
   EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[2], 2.0);
+
+  // A spacing beyond the series' extent gave two slices, the second 1e9 mm
+  // away, and a bone surface of 5e11 mm^2: refused now.
+  lktest::ErrorRecorder rec(reader);
+  reader->SetSliceSpacing(1e9);
+  reader->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("larger than the series' extent"), std::string::npos) << rec.messages;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 TEST(MedicalImageReader, NrrdGeometryComesFromTheHeader)
