@@ -191,29 +191,8 @@ std::string penSpacing(vtkPolyData* stroke)
 
 bool loadPlan(const std::string& path, Plan& plan, std::string& error)
 {
-  std::ifstream in(path);
-  if (!in)
-  {
-    error = "cannot open the plan '" + path + "'";
-    return false;
-  }
-  Json::Value root;
-  Json::CharReaderBuilder builder;
-  std::string errs;
-  if (!Json::parseFromStream(builder, in, &root, &errs) || !root.isObject())
-  {
-    error = "'" + path + "' is not a plan (JSON object): " + errs;
-    return false;
-  }
-  try
-  {
-    return readPlan(root, plan, error);
-  }
-  catch (const Json::Exception& e) // a kind the checks above missed: refused all the same
-  {
-    error = "'" + path + "' is not a valid plan: " + e.what();
-    return false;
-  }
+  return lkapp::loadJsonObject(
+    path, "plan", [&](const Json::Value& root, std::string& message) { return readPlan(root, plan, message); }, error);
 }
 
 /// The scripted pen stroke: the section of the surface by the cut plane (the

@@ -451,29 +451,8 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
 
 bool loadSession(const std::string& path, Session& s, std::string& error)
 {
-  std::ifstream in(path);
-  if (!in)
-  {
-    error = "cannot open '" + path + "'";
-    return false;
-  }
-  Json::Value root;
-  Json::CharReaderBuilder builder;
-  std::string errs;
-  if (!Json::parseFromStream(builder, in, &root, &errs) || !root.isObject())
-  {
-    error = "'" + path + "' is not a session (JSON object): " + errs;
-    return false;
-  }
-  try
-  {
-    return readSession(root, path, s, error);
-  }
-  catch (const Json::Exception& e) // a kind the checks above missed: refused all the same
-  {
-    error = "'" + path + "' is not a valid session: " + e.what();
-    return false;
-  }
+  return lkapp::loadJsonObject(
+    path, "session", [&](const Json::Value& root, std::string& message) { return readSession(root, path, s, message); }, error);
 }
 
 std::array<double, 3> pieceColour(std::size_t p)

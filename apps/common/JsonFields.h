@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <fstream>
 #include <limits>
 #include <string>
 
@@ -78,6 +79,38 @@ bool jsonMember(const Json::Value& object, const char* key, T& out, Read read, c
   error = where + ": \"" + key + "\" must be " + kind;
   return false;
 }
+/// Reads the JSON object in `path` (a `what`: "plan", "session") and hands it
+/// to `read(root, error)`. Every way it can fail is a message: the file
+/// missing, not JSON, not an object, or a field of a kind `read` did not check
+/// (jsoncpp throws then, and that ended the program).
+template <typename Read>
+bool loadJsonObject(const std::string& path, const std::string& what, Read read, std::string& error)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    error = "cannot open the " + what + " '" + path + "'";
+    return false;
+  }
+  Json::Value root;
+  Json::CharReaderBuilder builder;
+  std::string errs;
+  if (!Json::parseFromStream(builder, in, &root, &errs) || !root.isObject())
+  {
+    error = "'" + path + "' is not a " + what + " (JSON object): " + errs;
+    return false;
+  }
+  try
+  {
+    return read(root, error);
+  }
+  catch (const Json::Exception& e)
+  {
+    error = "'" + path + "' is not a valid " + what + ": " + e.what();
+    return false;
+  }
+}
+
 } // namespace lkapp
 
 #endif
