@@ -1565,8 +1565,18 @@ int main(int argc, char* argv[])
     std::ifstream in(events);
     std::string line;
     int played = 0;
+    int lineNumber = 0;
+    // A line as it can be printed: control and non-ASCII bytes as '?', at most 80 characters.
+    auto printable = [](const std::string& text) {
+      std::string shown = text.substr(0, 80);
+      for (char& ch : shown)
+        if (static_cast<unsigned char>(ch) < 32 || static_cast<unsigned char>(ch) > 126)
+          ch = '?';
+      return text.size() > 80 ? shown + "..." : shown;
+    };
     while (std::getline(in, line))
     {
+      ++lineNumber;
       if (line.empty() || line[0] == '#')
         continue;
       std::istringstream fields(line);
@@ -1574,7 +1584,7 @@ int main(int argc, char* argv[])
       int x = 0, y = 0, ctrl = 0, shift = 0, repeat = 0;
       if (!(fields >> name >> x >> y >> ctrl >> shift >> keyCode >> repeat >> keySym))
       {
-        std::cerr << "error: cannot read the event line '" << line << "'\n";
+        std::cerr << "error: cannot read event line " << lineNumber << " of '" << events << "' (EventName X Y ctrl shift keycode repeat keysym): '" << printable(line) << "'\n";
         return 1;
       }
       const unsigned long id = vtkCommand::GetEventIdFromString(name.c_str());
