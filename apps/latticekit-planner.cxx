@@ -124,19 +124,6 @@ Json::Value triple(const std::array<double, 3>& v)
   return j;
 }
 
-bool readTriple(const Json::Value& j, std::array<double, 3>& v)
-{
-  if (!j.isArray() || j.size() != 3)
-    return false;
-  for (Json::ArrayIndex i = 0; i < 3; ++i)
-  {
-    if (!j[i].isNumeric() || !std::isfinite(j[i].asDouble()))
-      return false;
-    v[i] = j[i].asDouble();
-  }
-  return true;
-}
-
 /// The part of a session the cut depends on: strokes, cut, capping.
 std::string cutKey(const Session& s)
 {
@@ -412,7 +399,7 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
       return false;
     }
     long long piece = -1;
-    if (!jsonInteger(jd["piece"], 0, std::numeric_limits<int>::max(), piece) || !readTriple(jd["centre"], d.centre) ||
+    if (!jsonInteger(jd["piece"], 0, std::numeric_limits<int>::max(), piece) || !jsonNumbers(jd["centre"], d.centre) ||
       !jsonNumber(jd["radius"], d.radius) || !(d.radius > 0.0))
     {
       error = where + " needs a piece index, a centre [x, y, z] and a radius above 0";
@@ -430,7 +417,7 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
       }
       d.iterations = static_cast<int>(iterations);
     }
-    else if (!readTriple(jd["normal"], d.normal) || !jsonNumber(jd["amount"], d.amount))
+    else if (!jsonNumbers(jd["normal"], d.normal) || !jsonNumber(jd["amount"], d.amount))
     {
       error = where + " needs a normal [x, y, z] and an amount";
       return false;

@@ -251,9 +251,7 @@ std::string polygonIndexProblem(const PolygonMesh& mesh)
       const Vec3& p = mesh.points[static_cast<std::size_t>(id)];
       if (!isUsablePoint(p))
       {
-        os << "point " << id << " has "
-           << (p.allFinite() ? "a coordinate beyond 1e15 (a corrupt file or an overflow)"
-                             : "a NaN or infinite coordinate");
+        os << "point " << id << " has " << unusablePointReason(p);
         return os.str();
       }
       for (std::size_t j = i + 1; j < face.size(); ++j)

@@ -60,9 +60,7 @@ std::string validateTriangleMesh(const TriangleMesh& mesh)
       if (!isUsablePoint(p))
       {
         std::ostringstream os;
-        os << "point " << id << " (used by triangle " << t << ") has "
-           << (p.allFinite() ? "a coordinate beyond 1e15 (a corrupt file or an overflow)"
-                             : "a NaN or infinite coordinate");
+        os << "point " << id << " (used by triangle " << t << ") has " << unusablePointReason(p);
         return os.str();
       }
     }

@@ -82,18 +82,19 @@ class DemoTest(unittest.TestCase):
     def test_bad_plan_is_refused(self):
         with tempfile.TemporaryDirectory() as tmp:
             plan = os.path.join(tmp, "plan.json")
-            with open(plan, "w") as f:
-                f.write('{"cut": {"origin": [0, 0, 0]}}')
-            result = subprocess.run([DEMO, "--plan", plan, "-o", os.path.join(tmp, "out"), "--no-render", "-q"],
-                                    capture_output=True, text=True, check=False, timeout=60)
+
+            def run_plan(text):
+                with open(plan, "w") as f:
+                    f.write(text)
+                return subprocess.run([DEMO, "--plan", plan, "-o", os.path.join(tmp, "out"), "--no-render", "-q"],
+                                      capture_output=True, text=True, check=False, timeout=60)
+
+            result = run_plan('{"cut": {"origin": [0, 0, 0]}}')
             self.assertNotEqual(result.returncode, 0)
             self.assertIn("needs a cut plane", result.stderr)
             # A field of the wrong kind is named (jsoncpp's exception aborted
             # the demo: a negative return code here, from the signal).
-            with open(plan, "w") as f:
-                f.write('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "latticeVertices": "many"}')
-            result = subprocess.run([DEMO, "--plan", plan, "-o", os.path.join(tmp, "out"), "--no-render", "-q"],
-                                    capture_output=True, text=True, check=False, timeout=60)
+            result = run_plan('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "latticeVertices": "many"}')
             self.assertEqual(result.returncode, 1)
             self.assertIn('"latticeVertices" must be a whole number', result.stderr)
 

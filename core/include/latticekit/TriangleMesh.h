@@ -105,6 +105,13 @@ inline bool isUsablePoint(const Vec3& p)
   return p.allFinite() && p.cwiseAbs().maxCoeff() <= kLargestCoordinate;
 }
 
+/// Why a point that is not usable is not: "a NaN or infinite coordinate" or
+/// "a coordinate beyond 1e15 (a corrupt file or an overflow)".
+inline const char* unusablePointReason(const Vec3& p)
+{
+  return p.allFinite() ? "a coordinate beyond 1e15 (a corrupt file or an overflow)" : "a NaN or infinite coordinate";
+}
+
 /// Checks that every index is in range and every used point is usable
 /// (isUsablePoint). Returns an empty string when the mesh is usable, else a
 /// sentence saying why not.
