@@ -32,6 +32,7 @@
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkMath.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPlane.h>
@@ -104,7 +105,7 @@ struct Plan
   double iso = 300.0;
   int smoothing = 10;
   bool crop = false;
-  std::array<double, 6> box{};      ///< data coordinates, mm
+  std::array<double, 6> box{};      ///< patient coordinates (as the surface), mm
   bool seeded = false;
   std::array<double, 3> seed{};     ///< the mandible's component
   std::array<double, 3> origin{};   ///< the cut plane
@@ -137,6 +138,12 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
       error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax]";
       return false;
     }
+    for (int c = 0; c < 3; ++c)
+      if (!(plan.box[2 * c] < plan.box[2 * c + 1]))
+      {
+        error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax], each min below its max";
+        return false;
+      }
     plan.crop = true;
   }
   if (root.isMember("seed"))
@@ -173,6 +180,14 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
   return true;
 }
 
+/// A number as a stream writes it (6 significant digits).
+std::string number(double x)
+{
+  std::ostringstream text;
+  text << x;
+  return text.str();
+}
+
 /// The mean distance between a stroke's consecutive points, to 3 digits.
 std::string penSpacing(vtkPolyData* stroke)
 {
@@ -187,6 +202,45 @@ std::string penSpacing(vtkPolyData* stroke)
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", stroke->GetNumberOfPoints() > 1 ? length / (stroke->GetNumberOfPoints() - 1) : 0.0);
   return text;
+}
+
+/// The voxel extent of the plan's crop box. The box is in patient coordinates
+/// (those of the surface, the seed and the cut plane), so its corners are
+/// taken to data coordinates through the inverse of the reader's patient
+/// matrix; the extent holds them all. False when it misses the volume.
+bool cropExtent(vtkImageData* image, vtkMatrix4x4* patient, const std::array<double, 6>& box, int v[6])
+{
+  vtkNew<vtkMatrix4x4> toData;
+  vtkMatrix4x4::Invert(patient, toData);
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { box[(corner & 1) ? 1 : 0], box[(corner & 2) ? 3 : 2], box[(corner & 4) ? 5 : 4], 1.0 };
+    double d[4];
+    toData->MultiplyPoint(p, d);
+    for (int c = 0; c < 3; ++c)
+    {
+      lo[c] = std::min(lo[c], d[c]);
+      hi[c] = std::max(hi[c], d[c]);
+    }
+  }
+  int e[6];
+  double origin[3], spacing[3];
+  image->GetExtent(e);
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  for (int c = 0; c < 3; ++c)
+  {
+    // Clamped as doubles first: a box far outside would overflow the int.
+    const double a = std::floor((lo[c] - origin[c]) / spacing[c]);
+    const double b = std::ceil((hi[c] - origin[c]) / spacing[c]);
+    v[2 * c] = static_cast<int>(std::max<double>(e[2 * c], std::min<double>(e[2 * c + 1], a)));
+    v[2 * c + 1] = static_cast<int>(std::max<double>(e[2 * c], std::min<double>(e[2 * c + 1], b)));
+    if (!(a < e[2 * c + 1]) || !(b > e[2 * c]) || v[2 * c] >= v[2 * c + 1])
+      return false;
+  }
+  return true;
 }
 
 bool loadPlan(const std::string& path, Plan& plan, std::string& error)
@@ -561,7 +615,16 @@ int main(int argc, char* argv[])
   }
   if (vertices > 0)
     plan.vertices = vertices;
-  if (!vtksys::SystemTools::MakeDirectory(folder) || !std::ofstream(folder + "/report.md", std::ios::app))
+  // The report is written first as a stub that says the run did not finish:
+  // it proves the folder writable, and a run that stops with an error does
+  // not leave an earlier run's report beside its own files. The finished
+  // report replaces it.
+  if (!vtksys::SystemTools::MakeDirectory(folder) ||
+    !(std::ofstream(folder + "/report.md")
+      << "# latticekit main job: did not finish\n\nThe run on `" << vtksys::SystemTools::GetFilenameName(input)
+      << "` with the plan `" << vtksys::SystemTools::GetFilenameName(planPath)
+      << "` stopped with an error (printed on the terminal). Other files in this folder may be from an "
+         "earlier run.\n"))
   {
     std::cerr << "error: cannot write to '" << folder << "'\n";
     return 1;
@@ -582,20 +645,12 @@ int main(int argc, char* argv[])
   vtkAlgorithmOutput* volume = reader->GetOutputPort();
   if (plan.crop)
   {
-    int e[6], v[6];
-    image->GetExtent(e);
-    double origin[3], spacing[3];
-    image->GetOrigin(origin);
-    image->GetSpacing(spacing);
-    for (int c = 0; c < 3; ++c)
+    int v[6];
+    if (!cropExtent(image, reader->GetPatientMatrix(), plan.box, v))
     {
-      v[2 * c] = std::max(e[2 * c], static_cast<int>(std::floor((plan.box[2 * c] - origin[c]) / spacing[c])));
-      v[2 * c + 1] = std::min(e[2 * c + 1], static_cast<int>(std::ceil((plan.box[2 * c + 1] - origin[c]) / spacing[c])));
-      if (v[2 * c] >= v[2 * c + 1])
-      {
-        std::cerr << "error: the plan's crop box misses the volume\n";
-        return 1;
-      }
+      std::cerr << "error: the plan's crop box misses the volume (the box is in patient coordinates, mm, "
+                   "as the surface and the seed are)\n";
+      return 1;
     }
     voi->SetVOI(v);
     pad->SetInputConnection(voi->GetOutputPort());
@@ -684,7 +739,21 @@ int main(int argc, char* argv[])
         return 1;
       }
 
-  // 5. Table 2: no cut / cut / cut with quads (and refinement).
+  // 5. Table 2: no cut / cut / cut with quads (and refinement). Each piece
+  //    keeps its locked lines' vertices; with fewer free vertices than
+  //    locked ones the pieces' lattices are fans of slivers off the line
+  //    (or cannot reach their share at all), so such a plan is refused.
+  vtkIdType lockedVertices = 0;
+  for (const auto& border : borders)
+    lockedVertices += border ? border->GetNumberOfLines() : 0; // closed lines: as many vertices as edges
+  if (plan.vertices < 2 * lockedVertices)
+  {
+    std::cerr << "error: the plan's latticeVertices (" << plan.vertices << ") is too few for the cut: the "
+              << pieces.size() << " pieces keep " << lockedVertices
+              << " vertices of their cut lines, and need at least as many more; give latticeVertices "
+              << 2 * lockedVertices << " or more (the pieces are written to " << folder << ")\n";
+    return 1;
+  }
   vtkSmartPointer<vtkPolyData> surfaceWhole, surfaceCut, surfaceQuads;
   std::vector<vtkSmartPointer<vtkPolyData>> latticesWhole, latticesCut, latticesQuads;
   std::vector<Row> rows;
@@ -707,9 +776,12 @@ int main(int argc, char* argv[])
   // 6. The report.
   std::ostringstream report;
   report << "# latticekit main job: a mandible osteotomy plan\n\n"
-         << "CT: `" << vtksys::SystemTools::GetFilenameName(input) << "`; plan: `"
-         << vtksys::SystemTools::GetFilenameName(planPath) << "`.\n\n"
-         << "- Mandible surface (" << plan.iso << " HU" << (plan.crop ? ", the plan's box, padded with air" : "")
+         << (bone->GetTreatedAsLabelMap() ? "Label map" : "CT") << ": `" << vtksys::SystemTools::GetFilenameName(input)
+         << "`; plan: `" << vtksys::SystemTools::GetFilenameName(planPath) << "`.\n\n"
+         << "- Mandible surface ("
+         << (bone->GetTreatedAsLabelMap() ? "label map, level " + number(bone->GetEffectiveIsoValue())
+                                          : number(plan.iso) + " HU")
+         << (plan.crop ? ", the plan's box, padded with air" : "")
          << (plan.seeded ? ", the component at the seed" : "") << "): " << mandible->GetNumberOfPoints()
          << " vertices, " << mandible->GetNumberOfPolys() << " triangles.\n"
          << "- Scripted pen stroke: the section by the cut plane around one side of the body, "

@@ -10,6 +10,11 @@ DEMO = os.environ["LATTICEKIT_DEMO"]
 SAMPLE_DATA = os.environ["LATTICEKIT_SAMPLE_DATA"]
 
 
+def read_text(path):
+    with open(path) as f:
+        return f.read()
+
+
 class DemoTest(unittest.TestCase):
     @unittest.skipIf(shutil.which("xvfb-run") is None, "xvfb-run is not installed")
     def test_main_job_plans_the_osteotomy_on_the_ct_head(self):
@@ -29,7 +34,7 @@ class DemoTest(unittest.TestCase):
                           "lattice_piece%d.vtp" % p, "lattice_quads_piece%d.vtp" % p]
             for name in names:
                 self.assertTrue(os.path.getsize(os.path.join(out, name)) > 0, name)
-            report = open(os.path.join(out, "report.md")).read()
+            report = read_text(os.path.join(out, "report.md"))
             self.assertIn("Capped cut: 2 pieces", report)
             rows = {}
             for line in report.splitlines():
@@ -78,6 +83,52 @@ class DemoTest(unittest.TestCase):
             # out (red), and the few points beyond it are magenta.
             self.assertGreater(warm, 30, "no large-error (yellow to red) surface is visible")
             self.assertGreater(magenta, 10, "the points above the scale are not marked")
+
+    def test_label_map_plan_in_patient_coordinates(self):
+        """A plan for another volume: the TCIA mandible label map (NRRD, LPS
+        origin far from 0). The crop box is in patient coordinates, like the
+        seed, the cut plane and the surface (it was read as data coordinates,
+        which missed the bone: 'Iso value 0.5 is outside the volume's range
+        [0, 0]'). Too few lattice vertices for the cut are refused, with the
+        pieces written and a report that says the run did not finish."""
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+        mandible = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_0522c0017_Mandible.nrrd")
+        plan_text = ('{"iso": 0.5, "smoothing": 0, "crop": [0, 70, 250, 360, -1000, -900], "seed": [40, 300, -950],'
+                     ' "cut": {"origin": [35, 300, -950], "normal": [1, 0, 0]}, "latticeVertices": %d}')
+        with tempfile.TemporaryDirectory() as tmp:
+            plan = os.path.join(tmp, "plan.json")
+            out = os.path.join(tmp, "out")
+
+            def run(vertices):
+                with open(plan, "w") as f:
+                    f.write(plan_text % vertices)
+                return subprocess.run([DEMO, mandible, "--plan", plan, "-o", out, "--no-render", "-q"],
+                                      capture_output=True, text=True, check=False, timeout=300)
+
+            # Each piece keeps the cut line's 217 vertices: 300 in all leaves none free.
+            result = run(300)
+            self.assertEqual(result.returncode, 1, result.stdout + result.stderr)
+            self.assertIn("too few for the cut", result.stderr)
+            self.assertIn("give latticeVertices 868 or more", result.stderr)
+            self.assertTrue(read_text(os.path.join(out, "report.md")).startswith("# latticekit main job: did not finish"))
+            self.assertGreater(os.path.getsize(os.path.join(out, "piece1.stl")), 0)
+
+            result = run(868)
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            report = read_text(os.path.join(out, "report.md"))
+            self.assertIn("Label map: `test_oncologist_0522c0017_Mandible.nrrd`", report)
+            self.assertIn("(label map, level 0.5, the plan's box", report)
+            self.assertIn("Capped cut: 2 pieces", report)
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(out, "mandible.vtp"))
+            reader.Update()
+            bounds = reader.GetOutput().GetBounds()
+            # The crop's x range [0, 70] mm (patient), padded by one voxel (0.98 mm):
+            # the mandible reaches x = -59, so the box did cut it.
+            self.assertGreater(bounds[0], -1.5)
+            self.assertLess(bounds[1], 71.5)
+            self.assertGreater(reader.GetOutput().GetNumberOfPoints(), 3000)
 
     def test_bad_plan_is_refused(self):
         with tempfile.TemporaryDirectory() as tmp:
