@@ -148,6 +148,13 @@ class DemoTest(unittest.TestCase):
             result = run_plan('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "latticeVertices": "many"}')
             self.assertEqual(result.returncode, 1)
             self.assertIn('"latticeVertices" must be a whole number', result.stderr)
+            result = run_plan('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "crop": [10, 0, 0, 1, 0, 1]}')
+            self.assertEqual(result.returncode, 1)
+            self.assertIn("each min below its max", result.stderr)
+            # A box far outside the volume (its voxel indices overflow an int).
+            result = run_plan('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "crop": [1e300, 2e300, 0, 1, 0, 1]}')
+            self.assertEqual(result.returncode, 1)
+            self.assertIn("the plan's crop box misses the volume", result.stderr)
 
 
 class LatticeExampleTest(unittest.TestCase):
