@@ -150,6 +150,10 @@ int vtkLKLatticeFitFilter::RequestData(
     vtkErrorMacro("Cannot fit a lattice: " << problem << ".");
     return 0;
   }
+  if (features.empty() && lines && lines->GetNumberOfPoints() > 0)
+    vtkWarningMacro("The feature lines (" << lines->GetNumberOfPoints() << " points, " << lines->GetNumberOfLines()
+                                          << " lines) have no edge between two different mesh points: the "
+                                             "lattice is fitted without features.");
 
   lk::SimplificationOptions so;
   so.featureWeight = this->FeatureWeight;

@@ -146,8 +146,11 @@ std::string lineEdges(vtkPolyData* lines, vtkPolyData* mesh, std::vector<lk::Edg
     {
       const double v = ids->GetComponent(i, 0);
       if (!(v >= 0.0 && v < static_cast<double>(n)) || v != std::floor(v))
-        return "line point " + std::to_string(i) + " has MeshPointId " + std::to_string(v) +
-          ", outside the mesh's point ids 0.." + std::to_string(n - 1);
+      {
+        std::ostringstream text; // as the user wrote it: 1000000, not 1000000.000000
+        text << "line point " << i << " has MeshPointId " << v << ", outside the mesh's point ids 0.." << n - 1;
+        return text.str();
+      }
       meshId[static_cast<std::size_t>(i)] = static_cast<vtkIdType>(v);
     }
   }

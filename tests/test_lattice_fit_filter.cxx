@@ -352,7 +352,7 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     fit->SetInputData(bone);
     fit->SetFeatureLinesData(lines);
     fit->SetTargetNumberOfVertices(500);
-    expectError(fit, "outside the mesh's point ids");
+    expectError(fit, "has MeshPointId " + std::to_string(bone->GetNumberOfPoints() + 5) + ", outside the mesh's point ids");
     ids->SetValue(1, 5000); // in range, but not joined to 0 by an edge
     ids->Modified();
     vtkNew<vtkLKLatticeFitFilter> fit2;
@@ -360,6 +360,21 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     fit2->SetFeatureLinesData(lines);
     fit2->SetTargetNumberOfVertices(500);
     expectError(fit2, "not an edge of the mesh");
+    // Both ends on one mesh point: no feature edge at all. The fit goes on
+    // without features, and says so (it was silent).
+    ids->SetValue(1, 0);
+    ids->Modified();
+    vtkNew<vtkLKLatticeFitFilter> fit3;
+    fit3->SetInputData(bone);
+    fit3->SetFeatureLinesData(lines);
+    fit3->SetTargetNumberOfVertices(500);
+    lktest::ErrorRecorder messages(fit3);
+    fit3->Update();
+    EXPECT_EQ(messages.errors, 0) << messages.messages;
+    EXPECT_EQ(messages.warnings, 1);
+    EXPECT_NE(messages.warningMessages.find("no edge between two different mesh points"), std::string::npos)
+      << messages.warningMessages;
+    EXPECT_EQ(fit3->GetOutput()->GetNumberOfPoints(), 500);
   }
   {
     // A fan of four triangles around point 0 and a fifth on 0-2-1, the first
