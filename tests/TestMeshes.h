@@ -106,6 +106,30 @@ inline lk::TriangleMesh icosphere(int levels, double radius)
   return m;
 }
 
+/// A torus about the z axis (radii R and r), nu x nv quads split into
+/// triangles; point i * nv + j at angles 2 pi i / nu around the axis and
+/// 2 pi j / nv around the tube (tests/data/torus.obj is (16, 8, 3, 1)).
+inline lk::TriangleMesh torus(int nu, int nv, double R, double r)
+{
+  lk::TriangleMesh m;
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+    {
+      const double u = 2 * pi * i / nu, v = 2 * pi * j / nv;
+      m.points.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+    {
+      const std::int64_t a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
+                         d = i * nv + (j + 1) % nv;
+      m.triangles.push_back({ a, b, c });
+      m.triangles.push_back({ a, c, d });
+    }
+  return m;
+}
+
 /// Closed unit cube [0,1]^3 as 12 outward triangles.
 inline lk::TriangleMesh cube()
 {

@@ -81,6 +81,46 @@ TEST(StrokeSplitter, ClosedStrokeOnTheSphereSplitsItIntoTwoPieces)
   EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(m), { line }, false).pieces.size(), 2u);
 }
 
+TEST(StrokeSplitter, AStrokeAlongARingOfEdgesMakesNoFlatTriangles)
+{
+  // The planner's stroke around the tube of tests/data/torus.obj, 0.05 beside
+  // the ring of edges at angle 0 (the mesh points there have y = 0): its
+  // points project to either side, so the walk crosses the ring's edges
+  // again and again, and one edge can get two new vertices. A fan of the
+  // face beside it then held three collinear vertices: a zero-area
+  // triangle, which the cut refused ("face 351 has zero area").
+  const lk::TriangleMesh torus = lktest::torus(16, 8, 3.0, 1.0);
+  lk::StrokeSplitter splitter(torus);
+  auto smallestArea = [](const lk::TriangleMesh& m) {
+    double smallest = 1e300;
+    for (const lk::Triangle& t : m.triangles)
+    {
+      const lk::Vec3 &a = m.points[static_cast<std::size_t>(t[0])], &b = m.points[static_cast<std::size_t>(t[1])],
+                     &c = m.points[static_cast<std::size_t>(t[2])];
+      smallest = std::min(smallest, 0.5 * (b - a).cross(c - a).norm());
+    }
+    return smallest;
+  };
+  const double pi = 3.14159265358979323846;
+  for (int k = 0; k <= 40; ++k)
+  {
+    const double v = 2 * pi * k / 40;
+    splitter.addPoint({ 3 + 1.05 * std::cos(v), 0.05, 1.05 * std::sin(v) });
+    ASSERT_GT(smallestArea(splitter.mesh()), 1e-8) << "after stroke point " << k;
+  }
+  // Point 40 is point 0 again: the line is back on its first vertex, and
+  // close() has no walk left to do (it threw "the stroke segment runs along
+  // the surface normal").
+  ASSERT_EQ(splitter.line().front(), splitter.line().back());
+  EXPECT_NO_THROW(splitter.close());
+  EXPECT_TRUE(splitter.closed());
+  const lk::TriangleMesh m = splitter.mesh();
+  EXPECT_GT(smallestArea(m), 1e-8);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_NEAR(lk::signedVolume(m), lk::signedVolume(torus), 1e-9);
+  expectConnectedLine(m, splitter.line());
+}
+
 TEST(StrokeSplitter, AFailedPointLeavesTheMeshAndLineUnchanged)
 {
   const lk::TriangleMesh grid = lktest::grid(10, 1.0, 0.0);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -282,26 +283,99 @@ struct StrokeSplitter::Impl
   }
 
   /// Triangulates a convex planar face (a triangle cut by straight line
-  /// edges) as a fan from its widest corner: a vertex inserted on an edge has
-  /// a straight angle, and a fan from it makes no needle triangles, where a
-  /// diagonal between the ends of that edge would make a flat one.
+  /// edges, with the vertices inserted on its sides) so that its smallest
+  /// angle is largest: dynamic programming over the polygon's diagonals
+  /// (O(n^3); n is a handful). The vertices inserted on one side are
+  /// collinear, and a triangle of three of them has zero area: the fan from
+  /// the widest corner used before made one as soon as a side held two
+  /// inserted vertices (a stroke that crosses one edge twice, as along a
+  /// ring of edges on a torus). Triangles facing against the face are never
+  /// taken while another choice exists.
   void triangulateConvex(FI f)
   {
-    HI apex = m.halfedge(f);
-    double widest = -2.0;
+    std::vector<HI> around; // halfedges whose targets are the polygon's corners, in order
     for (HI h : CGAL::halfedges_around_face(m.halfedge(f), m))
-    {
-      const Vec3 c = p(m.target(h));
-      const Vec3 a = (p(m.source(h)) - c).normalized(), b = (p(m.target(m.next(h))) - c).normalized();
-      const double straightness = -a.dot(b); // 1 for a straight angle
-      if (straightness > widest)
+      around.push_back(h);
+    const std::size_t n = around.size();
+    if (n <= 3)
+      return;
+    std::vector<Vec3> q(n);
+    for (std::size_t i = 0; i < n; ++i)
+      q[i] = p(m.target(around[i]));
+    Vec3 normal = Vec3::Zero(); // Newell's
+    for (std::size_t i = 0; i < n; ++i)
+      normal += q[i].cross(q[(i + 1) % n]);
+    // The smallest angle of triangle (a, b, c); 0 for a flat one and -1 for
+    // one facing against the polygon.
+    auto quality = [&](std::size_t a, std::size_t b, std::size_t c) {
+      const Vec3 ab = q[b] - q[a], bc = q[c] - q[b], ca = q[a] - q[c];
+      const Vec3 cross = ab.cross(bc);
+      if (!(cross.dot(normal) > 0.0))
+        return cross.norm() > 0.0 ? -1.0 : 0.0;
+      auto angle = [](const Vec3& u, const Vec3& v) { return std::atan2(u.cross(v).norm(), u.dot(v)); };
+      return std::min({ angle(ab, -ca), angle(bc, -ab), angle(ca, -bc) });
+    };
+    // best[i][j]: the best smallest angle over the triangulations of corners
+    // i..j (j > i + 1; 4 for a side, j = i + 1); apex[i][j]: the corner that
+    // makes a triangle with side (i, j) there.
+    std::vector<std::vector<double>> best(n, std::vector<double>(n, 4.0));
+    std::vector<std::vector<std::size_t>> apex(n, std::vector<std::size_t>(n, 0));
+    for (std::size_t length = 2; length < n; ++length)
+      for (std::size_t i = 0; i + length < n; ++i)
       {
-        widest = straightness;
-        apex = h;
+        const std::size_t j = i + length;
+        best[i][j] = -2.0;
+        for (std::size_t k = i + 1; k < j; ++k)
+        {
+          const double value = std::min({ best[i][k], best[k][j], quality(i, k, j) });
+          if (value > best[i][j])
+          {
+            best[i][j] = value;
+            apex[i][j] = k;
+          }
+        }
       }
+    // The diagonals, outermost first, each splitting the sub-face that holds
+    // both its ends (diagonals do not cross, so exactly one does).
+    std::vector<std::pair<std::size_t, std::size_t>> diagonals, pending{ { 0, n - 1 } };
+    while (!pending.empty())
+    {
+      const auto [i, j] = pending.back();
+      pending.pop_back();
+      if (j < i + 2)
+        continue;
+      const std::size_t k = apex[i][j];
+      if (k > i + 1)
+        diagonals.emplace_back(i, k);
+      if (j > k + 1)
+        diagonals.emplace_back(k, j);
+      pending.emplace_back(i, k);
+      pending.emplace_back(k, j);
     }
-    while (CGAL::degree(m.face(apex), m) > 3)
-      CGAL::Euler::split_face(apex, m.next(m.next(apex)), m);
+    std::vector<FI> parts{ f };
+    for (const auto& [i, j] : diagonals)
+    {
+      const VI a = m.target(around[i]), b = m.target(around[j]);
+      bool done = false;
+      for (std::size_t part = 0; part < parts.size() && !done; ++part)
+      {
+        HI ha = SMesh::null_halfedge(), hb = SMesh::null_halfedge();
+        for (HI h : CGAL::halfedges_around_face(m.halfedge(parts[part]), m))
+        {
+          if (m.target(h) == a)
+            ha = h;
+          if (m.target(h) == b)
+            hb = h;
+        }
+        if (ha == SMesh::null_halfedge() || hb == SMesh::null_halfedge())
+          continue;
+        const HI h = CGAL::Euler::split_face(ha, hb, m);
+        parts.push_back(m.face(m.opposite(h)));
+        done = true;
+      }
+      if (!done)
+        throw std::logic_error("internal: a diagonal of a split face has no sub-face");
+    }
   }
 
   void triangulateAround(VI v)
@@ -359,16 +433,49 @@ struct StrokeSplitter::Impl
     const std::size_t before = line.size();
     std::vector<VI> touched{ a };
     VI previous = a;
+    // The vertices along each edge the walk splits, in order from one end,
+    // keyed by the edge's ends on the unchanged mesh. A walk can cross (or
+    // end on) one edge twice when the stroke runs along it; the second
+    // split must go to the piece of the edge that holds its point (the
+    // event's halfedge spans only the first piece by then, and a vertex put
+    // outside its segment folded the faces beside it).
+    std::map<std::pair<VI, VI>, std::vector<VI>> pieces;
+    std::vector<std::pair<VI, VI>> ends;
     for (const Event& e : plan.events)
+      ends.emplace_back(e.atVertex ? VI() : m.source(e.edge), e.atVertex ? VI() : m.target(e.edge));
+    for (std::size_t i = 0; i < plan.events.size(); ++i)
     {
+      const Event& e = plan.events[i];
       VI next = e.vertex;
       if (!e.atVertex)
       {
-        const VI u = m.source(e.edge), w = m.target(e.edge);
-        const HI h = CGAL::Euler::split_edge(e.edge, m);
-        next = m.target(h);
-        m.point(next) = cgal::Point(e.x.x(), e.x.y(), e.x.z());
-        insertIntoLine(u, w, next);
+        const auto key = std::minmax(ends[i].first, ends[i].second);
+        std::vector<VI>& chain = pieces[key];
+        if (chain.empty())
+          chain = { key.first, key.second };
+        const Vec3 p0 = p(chain.front()), d = p(chain.back()) - p0;
+        auto along = [&](const Vec3& y) { return (y - p0).dot(d) / d.squaredNorm(); };
+        const double t = along(e.x);
+        std::size_t k = 0;
+        while (k + 2 < chain.size() && along(p(chain[k + 1])) < t)
+          ++k;
+        const VI u = chain[k], w = chain[k + 1];
+        const double snap = 1e-6 * meanEdge;
+        if ((p(u) - e.x).norm() <= snap)
+          next = u;
+        else if ((p(w) - e.x).norm() <= snap)
+          next = w;
+        else
+        {
+          const auto [piece, found] = CGAL::halfedge(u, w, m);
+          if (!found)
+            throw std::logic_error("internal: a split edge lost a piece");
+          const HI h = CGAL::Euler::split_edge(piece, m);
+          next = m.target(h);
+          m.point(next) = cgal::Point(e.x.x(), e.x.y(), e.x.z());
+          insertIntoLine(u, w, next);
+          chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(k + 1), next);
+        }
       }
       connect(previous, next);
       appendToLine(next);
@@ -463,6 +570,15 @@ void StrokeSplitter::close()
     return;
   if (s.line.size() < 3)
     throw std::invalid_argument("a closed line needs at least three vertices");
+  if (s.line.back() == s.line.front())
+  {
+    // The stroke came back onto its first vertex: closed already (there is
+    // no walk from a vertex to itself).
+    if (std::set<std::int64_t>(s.line.begin(), s.line.end()).size() < 3)
+      throw std::invalid_argument("a closed line needs at least three vertices");
+    s.closed = true;
+    return;
+  }
   const VI a(static_cast<SMesh::size_type>(s.line.back()));
   const VI first(static_cast<SMesh::size_type>(s.line.front()));
   const Plan plan = s.plan(a, s.p(first), first, s.vertexNormal(a) + s.vertexNormal(first));
