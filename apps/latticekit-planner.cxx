@@ -12,6 +12,7 @@
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
+#include "vtkLKMeshRepairFilter.h"
 #include "vtkLKMetroFilter.h"
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
@@ -1498,12 +1499,35 @@ int main(int argc, char* argv[])
   const std::string ext = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(input));
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    planner.bone = lkapp::readMesh(input, error);
-    if (!planner.bone)
+    const auto mesh = lkapp::readMesh(input, error);
+    if (!mesh)
     {
       std::cerr << "error: " << error << "\n";
       return 1;
     }
+    // The same repair as the CT's surface gets: polygons triangulated, a
+    // triangle soup (an STL from elsewhere) merged, non-manifold vertices
+    // split, the orientation made consistent. Split mode, the cut and the
+    // lattice need that, and refused the mesh one step at a time without it.
+    vtkNew<vtkLKMeshRepairFilter> repair;
+    repair->SetInputData(mesh);
+    repair->Update();
+    if (lkapp::errorCount() > 0 || repair->GetOutput()->GetNumberOfPolys() == 0)
+    {
+      std::cerr << "error: " << (lkapp::errorCount() ? lkapp::errors() : "no surface in " + input) << "\n";
+      return 1;
+    }
+    planner.bone = vtkSmartPointer<vtkPolyData>::New();
+    planner.bone->ShallowCopy(repair->GetOutput());
+    const double merged = lkapp::fieldValue(planner.bone, "MergedPoints"),
+                 degenerate = lkapp::fieldValue(planner.bone, "RemovedDegenerateFaces"),
+                 split = lkapp::fieldValue(planner.bone, "SplitNonManifoldVertices");
+    std::cout << "mesh: " << planner.bone->GetNumberOfPoints() << " points, " << planner.bone->GetNumberOfPolys()
+              << " triangles";
+    if (mesh->GetNumberOfPolys() != planner.bone->GetNumberOfPolys() || merged > 0 || degenerate > 0 || split > 0)
+      std::cout << " (repaired from " << mesh->GetNumberOfPolys() << " faces: " << merged << " points merged, "
+                << degenerate << " degenerate faces removed, " << split << " non-manifold vertices split)";
+    std::cout << "\n";
   }
   else
   {
