@@ -615,6 +615,12 @@ int main(int argc, char* argv[])
   }
   if (vertices > 0)
     plan.vertices = vertices;
+  if (render && !lkapp::hasDisplay())
+  {
+    std::cerr << "error: the pictures need an X display (DISPLAY is not set): run under xvfb-run -a, or pass "
+                 "--no-render\n";
+    return 1;
+  }
   // The report is written first as a stub that says the run did not finish:
   // it proves the folder writable, and a run that stops with an error does
   // not leave an earlier run's report beside its own files. The finished

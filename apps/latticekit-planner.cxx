@@ -1549,6 +1549,14 @@ int main(int argc, char* argv[])
     std::cerr << "error: " << error << "\n";
     return 1;
   }
+  // After the input and the session are read, so that their problems are
+  // named first.
+  if (!lkapp::hasDisplay())
+  {
+    std::cerr << "error: the planner needs an X display (DISPLAY is not set); headless, run it under xvfb-run -a "
+                 "with --screenshot, --export or --events\n";
+    return 1;
+  }
   planner.setup();
   planner.rebuild();
   planner.renderer->ResetCamera();

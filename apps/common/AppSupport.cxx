@@ -555,6 +555,12 @@ long long fileBytes(const std::string& path)
   return static_cast<long long>(vtksys::SystemTools::FileLength(path));
 }
 
+bool hasDisplay()
+{
+  const char* display = std::getenv("DISPLAY");
+  return display && *display;
+}
+
 double fieldValue(vtkPolyData* pd, const std::string& name)
 {
   vtkDataArray* a = pd->GetFieldData()->GetArray(name.c_str());

@@ -69,6 +69,12 @@ long long fileBytes(const std::string& path);
 /// filters report their measurements there.
 double fieldValue(vtkPolyData* pd, const std::string& name);
 
+/// Whether an X display is named (DISPLAY set): Debian's VTK renders only
+/// through X, and without one it aborts the program in its first render
+/// ("bad X server connection"), after the work and before anything can say
+/// why; the tools check this first.
+bool hasDisplay();
+
 /// Command-line helpers.
 bool parseDouble(const std::string& text, double& value);
 bool parseInt(const std::string& text, long& value);
