@@ -1,4 +1,5 @@
 #include "vtkLKBezierIFSFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/BezierIFS.h"
 
@@ -140,6 +141,8 @@ int vtkLKBezierIFSFilter::RequestData(
     return 0;
   }
   this->UpdateProgress(0.8);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

@@ -1,4 +1,5 @@
 #include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKAbort.h"
 
 #include "vtkLKMeshRepairFilter.h"
 
@@ -45,6 +46,10 @@ public:
       auto* self = static_cast<ProgressRelay*>(cd);
       const double p = static_cast<vtkAlgorithm*>(caller)->GetProgress();
       self->Owner->UpdateProgress(self->Lo + (self->Hi - self->Lo) * p);
+      // A stop asked of the owner is passed on: VTK's filters check their
+      // own flag in their loops.
+      if (self->Owner->GetAbortExecute())
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
     });
     inner->AddObserver(vtkCommand::ProgressEvent, this->Command);
   }
@@ -208,7 +213,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     gauss->Update();
     smoothed = gauss->GetOutput();
   }
-  if (this->GetAbortExecute())
+  if (lkvtk::stopRequested(this, { output }))
   {
     return 1;
   }
@@ -245,7 +250,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     vtkErrorMacro("No surface at iso value " << this->EffectiveIsoValue << ".");
     return 0;
   }
-  if (this->GetAbortExecute())
+  if (lkvtk::stopRequested(this, { output }))
   {
     return 1;
   }
@@ -275,7 +280,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     connectivity->Update();
     surface = connectivity->GetOutput();
   }
-  if (this->GetAbortExecute())
+  if (lkvtk::stopRequested(this, { output }))
   {
     return 1;
   }
@@ -313,7 +318,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     }
     surface = repair->GetOutput();
   }
-  if (this->GetAbortExecute())
+  if (lkvtk::stopRequested(this, { output }))
   {
     return 1;
   }
@@ -331,6 +336,10 @@ int vtkLKBoneSurfaceFilter::RequestData(
     smoother->NormalizeCoordinatesOn();
     smoother->Update();
     surface = smoother->GetOutput();
+  }
+  if (lkvtk::stopRequested(this, { output }))
+  {
+    return 1;
   }
   output->ShallowCopy(surface);
   output->GetPointData()->Initialize();

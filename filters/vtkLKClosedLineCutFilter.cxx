@@ -1,4 +1,5 @@
 #include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/MeshCut.h"
 #include "vtkLKPolyDataConversion.h"
@@ -155,6 +156,8 @@ int vtkLKClosedLineCutFilter::RequestData(
                       << " edges at its cap are shared by more than two faces, so the piece is not a manifold "
                          "solid (field data CapNonManifoldEdges).");
   this->UpdateProgress(0.8);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

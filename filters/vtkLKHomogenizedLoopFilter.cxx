@@ -1,4 +1,5 @@
 #include "vtkLKHomogenizedLoopFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/HomogenizedLoop.h"
 #include "vtkLKPolyDataConversion.h"
@@ -93,17 +94,24 @@ int vtkLKHomogenizedLoopFilter::RequestData(
     }
   }
   this->UpdateProgress(0.1);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
 
   lk::HomogenizedLoopOutput out;
   try
   {
-    out = lk::homogenizedLoop(in, this->NumberOfSubdivisions);
+    out = lk::homogenizedLoop(in, this->NumberOfSubdivisions, [this](double done) {
+      this->UpdateProgress(0.1 + 0.7 * done);
+      return !this->GetAbortExecute();
+    });
   }
   catch (const std::exception& e)
   {
     vtkErrorMacro("Cannot subdivide: " << e.what() << ".");
     return 0;
   }
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
   this->UpdateProgress(0.8);
 
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(out.mesh);

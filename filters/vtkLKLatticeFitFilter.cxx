@@ -1,4 +1,5 @@
 #include "vtkLKLatticeFitFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/ErrorBoundSearch.h"
@@ -395,7 +396,7 @@ int vtkLKLatticeFitFilter::RequestData(
       }
       if (!fitAt(static_cast<std::size_t>(target), 0.0, 0.9, fit))
       {
-        vtkWarningMacro("Aborted.");
+        lkvtk::stopRequested(this, { output, vertexMap });
         return 1;
       }
       if (fit.lattice.points.size() > static_cast<std::size_t>(target))
@@ -450,7 +451,7 @@ int vtkLKLatticeFitFilter::RequestData(
         searchOptions);
       if (searched.aborted)
       {
-        vtkWarningMacro("Aborted.");
+        lkvtk::stopRequested(this, { output, vertexMap });
         return 1;
       }
       errorBoundTrials = searched.probes;
@@ -462,7 +463,7 @@ int vtkLKLatticeFitFilter::RequestData(
                                                     << " vertices.");
         if (!fitAt(hi, 0.85, 0.9, fit))
         {
-          vtkWarningMacro("Aborted.");
+          lkvtk::stopRequested(this, { output, vertexMap });
           return 1;
         }
       }

@@ -1,4 +1,5 @@
 #include "vtkLKLatticeSurfaceFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/LatticeSurface.h"
 #include "latticekit/LatticeSurfaceLocator.h"
@@ -343,7 +344,7 @@ int vtkLKLatticeSurfaceFilter::RequestData(
     if (p % 64 == 0)
     {
       this->UpdateProgress(0.2 + 0.7 * static_cast<double>(p) / static_cast<double>(s.patches.size()));
-      if (this->GetAbortExecute())
+      if (lkvtk::stopRequested(this, { output, net }))
       {
         return 1;
       }

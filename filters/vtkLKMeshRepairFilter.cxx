@@ -1,4 +1,5 @@
 #include "vtkLKMeshRepairFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/ManifoldRepair.h"
 #include "vtkLKPolyDataConversion.h"
@@ -56,6 +57,8 @@ int vtkLKMeshRepairFilter::RequestData(
   triangulate->PassLinesOff();
   triangulate->Update();
   this->UpdateProgress(0.1);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
 
   lk::TriangleMesh mesh;
   const std::string problem = lkvtk::toTriangleMesh(triangulate->GetOutput(), mesh);
@@ -75,6 +78,8 @@ int vtkLKMeshRepairFilter::RequestData(
     return 0;
   }
   this->UpdateProgress(0.9);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
   output->ShallowCopy(lkvtk::fromTriangleMesh(mesh));
   vtkFieldData* fd = output->GetFieldData();
   addCount(fd, "MergedPoints", report.mergedPoints);

@@ -1,4 +1,5 @@
 #include "vtkLKMetroFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/DistanceStatistics.h"
@@ -222,9 +223,8 @@ int vtkLKMetroFilter::RequestData(
         });
       this->UpdateProgress(
         base + (1.0 - treeShare) / directions * static_cast<double>(b1) / static_cast<double>(n));
-      if (this->GetAbortExecute())
+      if (lkvtk::stopRequested(this, { output }))
       {
-        vtkWarningMacro("Aborted.");
         return 1;
       }
     }

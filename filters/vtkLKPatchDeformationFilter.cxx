@@ -1,4 +1,5 @@
 #include "vtkLKPatchDeformationFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/AdaptivePatchMesh.h"
 #include "vtkLKPolyDataConversion.h"
@@ -162,7 +163,7 @@ int vtkLKPatchDeformationFilter::RequestData(
         else
           work->smoothingDeformation(lk::Vec3(p[0], p[1], p[2]), p[3], static_cast<int>(p[4]));
         this->UpdateProgress(0.9 * static_cast<double>(i + 1 - done) / static_cast<double>(n - done));
-        if (this->GetAbortExecute())
+        if (lkvtk::stopRequested(this, { output }))
         {
           state.reset(); // the kept states are partly deformed
           return 1;
@@ -171,6 +172,8 @@ int vtkLKPatchDeformationFilter::RequestData(
       state.full = std::move(work);
       state.fullList = list;
     }
+    if (lkvtk::stopRequested(this, { output })) // the kept states are whole here
+      return 1;
     const lk::AdaptivePatchMesh& mesh = *state.full;
     const auto tris = mesh.triangles();
     const auto levels = mesh.triangleLevels();

@@ -1,4 +1,5 @@
 #include "vtkLKQuadPairingFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/QuadPairing.h"
 #include "vtkLKPolyDataConversion.h"
@@ -67,6 +68,8 @@ int vtkLKQuadPairingFilter::RequestData(
     return 0;
   }
   this->UpdateProgress(0.8);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
 
   output->SetPoints(input->GetPoints());
   output->GetPointData()->PassData(input->GetPointData());

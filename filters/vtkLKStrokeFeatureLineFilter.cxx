@@ -1,4 +1,5 @@
 #include "vtkLKStrokeFeatureLineFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/StrokeFeatureLine.h"
 #include "vtkLKPolyDataConversion.h"
@@ -253,6 +254,9 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
     vtkErrorMacro("Cannot make a feature line: " << e.what() << ".");
     return 0;
   }
+  this->UpdateProgress(0.8);
+  if (lkvtk::stopRequested(this, { output, lineOut }))
+    return 1;
 
   std::map<std::int64_t, double> gapOf;
   for (std::size_t i = 0; i < r.snapGaps.size(); ++i)

@@ -1,4 +1,5 @@
 #include "vtkLKWrinklySurfaceFilter.h"
+#include "vtkLKAbort.h"
 
 #include "latticekit/WrinklySurface.h"
 
@@ -131,7 +132,7 @@ int vtkLKWrinklySurfaceFilter::RequestData(
       aborted = this->GetAbortExecute() != 0;
       return !aborted;
     });
-    if (aborted)
+    if (aborted && lkvtk::stopRequested(this, { output }))
       return 1;
   }
   catch (const std::exception& e)

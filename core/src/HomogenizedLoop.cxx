@@ -43,7 +43,8 @@ void checkWeights(const std::vector<double>& w, std::size_t count, const char* w
 }
 } // namespace
 
-HomogenizedLoopOutput homogenizedLoop(const HomogenizedLoopInput& in, int levels)
+HomogenizedLoopOutput homogenizedLoop(
+  const HomogenizedLoopInput& in, int levels, const std::function<bool(double)>& progress)
 {
   if (levels < 0 || levels > 6)
     throw std::invalid_argument("the number of subdivisions must lie in 0..6 (each level has 4 times the triangles)");
@@ -260,6 +261,9 @@ HomogenizedLoopOutput homogenizedLoop(const HomogenizedLoopInput& in, int levels
     faceW.swap(nextW);
     parent.swap(nextParent);
     edgeW.swap(nextEdgeW);
+    // Level k costs 4^k of the first level's work.
+    if (progress && !progress((std::pow(4.0, level + 1) - 1.0) / (std::pow(4.0, levels) - 1.0)))
+      return {};
   }
 
   HomogenizedLoopOutput result;

@@ -639,6 +639,111 @@ class ErrorTest(unittest.TestCase):
         self.assertEqual(len(errors), 1)
 
 
+class AbortTest(unittest.TestCase):
+    def test_every_filter_stops_when_asked(self):
+        """VTK's way to stop a long run: a progress observer sets AbortExecute.
+        Every filter then stops at its next check with empty outputs and the
+        warning "Aborted."; after Modified() the next Update runs in full.
+        (Loop subdivision, the repair, quad pairing, the cut, the stroke and
+        the IFS ran to the end and gave their whole output; the lattice surface
+        and the bone surface stopped without a word.)"""
+        import math
+
+        import latticekit
+        from vtkmodules.util.misc import calldata_type
+        from vtkmodules.util.vtkConstants import VTK_STRING
+        from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+        from vtkmodules.vtkFiltersCore import vtkTriangleFilter
+        from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+
+        sphere = vtkSphereSource()
+        sphere.SetThetaResolution(24)
+        sphere.SetPhiResolution(24)
+        sphere.Update()
+        ball = sphere.GetOutput()
+        circle = vtkPoints()
+        for k in range(41):
+            a = 2 * 3.14159265358979 * k / 40
+            circle.InsertNextPoint(0.48 * math.cos(a), 0.48 * math.sin(a), 0.14)
+        stroke = vtkPolyData()
+        stroke.SetPoints(circle)
+        control = vtkPolyData()
+        control_points = vtkPoints()
+        for p in ((0, 0, 0), (1, 2, 0), (3, 2, 1), (4, 0, 0)):
+            control_points.InsertNextPoint(p)
+        control.SetPoints(control_points)
+        net = latticekit.vtkLKWrinklyNetSource()  # kept alive: a connection does not hold its producer
+        plane = vtkPlaneSource()
+        plane.SetResolution(8, 8)
+        flat = vtkTriangleFilter()
+        flat.SetInputConnection(plane.GetOutputPort())
+
+        def bone():
+            reader = latticekit.vtkLKMedicalImageReader()
+            reader.SetFileName(MANDIBLE)
+            f = latticekit.vtkLKBoneSurfaceFilter()
+            f.SetInputConnection(reader.GetOutputPort())
+            return f
+
+        def split():
+            f = latticekit.vtkLKStrokeFeatureLineFilter()
+            f.SetInputData(ball)
+            f.SetStrokeData(stroke)
+            f.SetModeToSplit()
+            return f
+
+        def cut():
+            line = split()  # its output carries the closed line as line cells
+            f = latticekit.vtkLKClosedLineCutFilter()
+            f.SetInputConnection(line.GetOutputPort())
+            f.CappingOn()
+            return f
+
+        def made(cls, **settings):
+            def make():
+                f = cls()
+                for name, value in settings.items():
+                    getattr(f, "Set" + name)(value)
+                return f
+            return make
+
+        cases = {
+            "bone surface": bone,
+            "mesh repair": made(latticekit.vtkLKMeshRepairFilter, InputData=ball),
+            "Metro": made(latticekit.vtkLKMetroFilter, InputData=ball, TargetData=ball),
+            "lattice fit": made(latticekit.vtkLKLatticeFitFilter, InputData=ball, TargetNumberOfVertices=100),
+            "lattice surface": made(latticekit.vtkLKLatticeSurfaceFilter, InputData=ball),
+            "quad pairing": made(latticekit.vtkLKQuadPairingFilter, InputData=ball),
+            "homogenized Loop": made(latticekit.vtkLKHomogenizedLoopFilter, InputData=ball, NumberOfSubdivisions=2),
+            "stroke (split)": split,
+            "closed-line cut": cut,
+            "Bezier IFS": made(latticekit.vtkLKBezierIFSFilter, InputData=control),
+            "wrinkly surface": made(latticekit.vtkLKWrinklySurfaceFilter, InputConnection=net.GetOutputPort()),
+            "patch deformation": made(latticekit.vtkLKPatchDeformationFilter, InputConnection=flat.GetOutputPort()),
+        }
+        for name, make in cases.items():
+            f = make()
+            warnings = []
+
+            @calldata_type(VTK_STRING)
+            def warned(caller, event, text):
+                warnings.append(text)
+
+            f.AddObserver(vtkCommand.WarningEvent, warned)
+            stop = [True]
+            f.AddObserver(vtkCommand.ProgressEvent, lambda caller, event: caller.SetAbortExecute(1) if stop[0] else None)
+            f.Update()
+            outputs = [f.GetOutputDataObject(port) for port in range(f.GetNumberOfOutputPorts())]
+            for port, out in enumerate(outputs):
+                self.assertEqual(out.GetNumberOfPoints(), 0, "%s: output %d after the stop" % (name, port))
+            self.assertTrue(any("Aborted." in w for w in warnings), "%s: %s" % (name, warnings))
+            stop[0] = False
+            f.Modified()
+            f.Update()
+            self.assertGreater(f.GetOutputDataObject(0).GetNumberOfPoints(), 0, name + ": the run after the stop")
+
+
 class ExampleTest(unittest.TestCase):
     def test_example_script_runs(self):
         example = os.path.join(os.path.dirname(__file__), "..", "examples", "ct_to_metro.py")

@@ -39,6 +39,7 @@
 #include "latticekit/LatticeSimplification.h"
 #include "latticekit/TriangleMesh.h"
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -63,10 +64,13 @@ struct HomogenizedLoopOutput
   std::vector<std::int64_t> parentFace;   ///< the input triangle of every output triangle
 };
 
-/// `levels` subdivisions. Throws std::invalid_argument, with the reason, for
-/// a mesh that is not a manifold triangle mesh, weights that are not finite
-/// and above 0, weights of the wrong count or on pairs that are not edges,
-/// or levels outside 0..8.
-HomogenizedLoopOutput homogenizedLoop(const HomogenizedLoopInput& input, int levels);
+/// `levels` subdivisions. `progress` gets the fraction of the work done
+/// after each level (a level has four times the triangles of the one
+/// before) and may return false to stop (the result is then empty). Throws
+/// std::invalid_argument, with the reason, for a mesh that is not a manifold
+/// triangle mesh, weights that are not finite and above 0, weights of the
+/// wrong count or on pairs that are not edges, or levels outside 0..6.
+HomogenizedLoopOutput homogenizedLoop(const HomogenizedLoopInput& input, int levels,
+  const std::function<bool(double)>& progress = {});
 
 } // namespace lk
