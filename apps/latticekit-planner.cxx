@@ -1497,28 +1497,42 @@ int main(int argc, char* argv[])
   Planner planner;
   std::string error;
   const std::string ext = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(input));
+  // The surface: a mesh file through the same repair as the CT's surface
+  // gets (polygons triangulated, a triangle soup such as an STL from
+  // elsewhere merged, non-manifold vertices split, the orientation made
+  // consistent; split mode, the cut and the lattice need that, and refused
+  // such a mesh one step at a time without it), or a volume's bone surface.
+  vtkNew<vtkLKMeshRepairFilter> repair;
+  vtkNew<vtkLKMedicalImageReader> reader;
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  vtkSmartPointer<vtkPolyData> mesh;
+  vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    const auto mesh = lkapp::readMesh(input, error);
+    mesh = lkapp::readMesh(input, error);
     if (!mesh)
     {
       std::cerr << "error: " << error << "\n";
       return 1;
     }
-    // The same repair as the CT's surface gets: polygons triangulated, a
-    // triangle soup (an STL from elsewhere) merged, non-manifold vertices
-    // split, the orientation made consistent. Split mode, the cut and the
-    // lattice need that, and refused the mesh one step at a time without it.
-    vtkNew<vtkLKMeshRepairFilter> repair;
     repair->SetInputData(mesh);
-    repair->Update();
-    if (lkapp::errorCount() > 0 || repair->GetOutput()->GetNumberOfPolys() == 0)
-    {
-      std::cerr << "error: " << (lkapp::errorCount() ? lkapp::errors() : "no surface in " + input) << "\n";
-      return 1;
-    }
-    planner.bone = vtkSmartPointer<vtkPolyData>::New();
-    planner.bone->ShallowCopy(repair->GetOutput());
+    surface = repair;
+  }
+  else
+  {
+    reader->SetFileName(input.c_str());
+    bone->SetInputConnection(reader->GetOutputPort());
+  }
+  surface->Update();
+  if (lkapp::errorCount() > 0 || surface->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    std::cerr << "error: " << (lkapp::errorCount() ? lkapp::errors() : "no surface in " + input) << "\n";
+    return 1;
+  }
+  planner.bone = vtkSmartPointer<vtkPolyData>::New();
+  planner.bone->ShallowCopy(surface->GetOutput());
+  if (mesh)
+  {
     const double merged = lkapp::fieldValue(planner.bone, "MergedPoints"),
                  degenerate = lkapp::fieldValue(planner.bone, "RemovedDegenerateFaces"),
                  split = lkapp::fieldValue(planner.bone, "SplitNonManifoldVertices");
@@ -1528,21 +1542,6 @@ int main(int argc, char* argv[])
       std::cout << " (repaired from " << mesh->GetNumberOfPolys() << " faces: " << merged << " points merged, "
                 << degenerate << " degenerate faces removed, " << split << " non-manifold vertices split)";
     std::cout << "\n";
-  }
-  else
-  {
-    vtkNew<vtkLKMedicalImageReader> reader;
-    reader->SetFileName(input.c_str());
-    vtkNew<vtkLKBoneSurfaceFilter> bone;
-    bone->SetInputConnection(reader->GetOutputPort());
-    bone->Update();
-    if (lkapp::errorCount() > 0 || bone->GetOutput()->GetNumberOfPolys() == 0)
-    {
-      std::cerr << "error: " << (lkapp::errorCount() ? lkapp::errors() : "no bone surface in " + input) << "\n";
-      return 1;
-    }
-    planner.bone = vtkSmartPointer<vtkPolyData>::New();
-    planner.bone->ShallowCopy(bone->GetOutput());
   }
   if (!replay.empty() && !loadSession(replay, planner.session, error))
   {

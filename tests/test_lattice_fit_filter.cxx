@@ -68,6 +68,15 @@ vtkSmartPointer<vtkPolyData> readTestData(const std::string& name)
   vtkSmartPointer<vtkPolyData> pd = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   return pd;
 }
+/// Runs `filter`: no error, exactly one warning, and it contains `text`.
+void expectOneWarning(vtkAlgorithm* filter, const std::string& text)
+{
+  lktest::ErrorRecorder messages(filter);
+  filter->Update();
+  EXPECT_EQ(messages.errors, 0) << messages.messages;
+  EXPECT_EQ(messages.warnings, 1) << messages.warningMessages;
+  EXPECT_NE(messages.warningMessages.find(text), std::string::npos) << messages.warningMessages;
+}
 } // namespace
 
 TEST(LatticeFitFilter, MandibleLatticeWithErrorAndVertexMap)
@@ -368,12 +377,7 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     fit3->SetInputData(bone);
     fit3->SetFeatureLinesData(lines);
     fit3->SetTargetNumberOfVertices(500);
-    lktest::ErrorRecorder messages(fit3);
-    fit3->Update();
-    EXPECT_EQ(messages.errors, 0) << messages.messages;
-    EXPECT_EQ(messages.warnings, 1);
-    EXPECT_NE(messages.warningMessages.find("no edge between two different mesh points"), std::string::npos)
-      << messages.warningMessages;
+    expectOneWarning(fit3, "no edge between two different mesh points");
     EXPECT_EQ(fit3->GetOutput()->GetNumberOfPoints(), 500);
   }
   {
@@ -461,11 +465,7 @@ TEST(LatticeFitFilter, UnreachableTargetIsAWarning)
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(torus);
   fit->SetTargetNumberOfVertices(5);
-  lktest::ErrorRecorder messages(fit);
-  fit->Update();
-  EXPECT_EQ(messages.errors, 0) << messages.messages;
-  EXPECT_EQ(messages.warnings, 1);
-  EXPECT_NE(messages.warningMessages.find("more than the target of 5"), std::string::npos) << messages.warningMessages;
+  expectOneWarning(fit, "more than the target of 5");
   vtkPolyData* lattice = fit->GetOutput();
   EXPECT_GT(lattice->GetNumberOfPoints(), 5);
   // Still a torus: V - E + F = 0.

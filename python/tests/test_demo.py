@@ -140,21 +140,18 @@ class DemoTest(unittest.TestCase):
                 return subprocess.run([DEMO, "--plan", plan, "-o", os.path.join(tmp, "out"), "--no-render", "-q"],
                                       capture_output=True, text=True, check=False, timeout=60)
 
-            result = run_plan('{"cut": {"origin": [0, 0, 0]}}')
-            self.assertNotEqual(result.returncode, 0)
-            self.assertIn("needs a cut plane", result.stderr)
-            # A field of the wrong kind is named (jsoncpp's exception aborted
-            # the demo: a negative return code here, from the signal).
-            result = run_plan('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "latticeVertices": "many"}')
-            self.assertEqual(result.returncode, 1)
-            self.assertIn('"latticeVertices" must be a whole number', result.stderr)
-            result = run_plan('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "crop": [10, 0, 0, 1, 0, 1]}')
-            self.assertEqual(result.returncode, 1)
-            self.assertIn("each min below its max", result.stderr)
-            # A box far outside the volume (its voxel indices overflow an int).
-            result = run_plan('{"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}, "crop": [1e300, 2e300, 0, 1, 0, 1]}')
-            self.assertEqual(result.returncode, 1)
-            self.assertIn("the plan's crop box misses the volume", result.stderr)
+            cut = '"cut": {"origin": [0, 0, 0], "normal": [1, 0, 0]}'
+            for text, message in [
+                    ('{"cut": {"origin": [0, 0, 0]}}', "needs a cut plane"),
+                    # A field of the wrong kind is named (jsoncpp's exception
+                    # aborted the demo: a negative return code, from the signal).
+                    ('{%s, "latticeVertices": "many"}' % cut, '"latticeVertices" must be a whole number'),
+                    ('{%s, "crop": [10, 0, 0, 1, 0, 1]}' % cut, "each min below its max"),
+                    # A box far outside the volume (its voxel indices overflow an int).
+                    ('{%s, "crop": [1e300, 2e300, 0, 1, 0, 1]}' % cut, "the plan's crop box misses the volume")]:
+                result = run_plan(text)
+                self.assertEqual(result.returncode, 1, text + ": " + result.stderr)
+                self.assertIn(message, result.stderr, text)
 
 
 class LatticeExampleTest(unittest.TestCase):
