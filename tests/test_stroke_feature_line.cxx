@@ -178,7 +178,12 @@ TEST(StrokeFeatureLine, BadStrokesAreRefused)
   };
   for (const auto mode : { lk::StrokeMode::NearestEdges, lk::StrokeMode::Snap, lk::StrokeMode::Split })
   {
-    EXPECT_NE(refusal(mode, 0.0).find("a closed line needs at least three vertices"), std::string::npos);
+    // With the reason and what to do, in every mode (split mode said only
+    // "a closed line needs at least three vertices").
+    EXPECT_NE(refusal(mode, 0.0).find("a closed line needs at least three vertices: the stroke's loop covers 1 "),
+      std::string::npos)
+      << refusal(mode, 0.0);
+    EXPECT_NE(refusal(mode, 0.0).find("counts as closed: draw a larger loop"), std::string::npos);
   }
   for (const auto mode : { lk::StrokeMode::NearestEdges, lk::StrokeMode::Snap })
   {

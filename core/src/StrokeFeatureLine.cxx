@@ -120,6 +120,13 @@ void snapPath(const TriangleMesh& mesh, const std::vector<Vec3>& projected, cons
     result.snapGaps[i] = (targets[i] - points[static_cast<std::size_t>(result.movedVertices[i])]).norm();
 }
 
+/// The refusal of a closed stroke whose loop covers fewer than three points.
+std::invalid_argument loopTooSmall(std::size_t points, const char* what, double closeTolerance)
+{
+  return std::invalid_argument("a closed line needs at least three vertices: the stroke's loop covers " +
+    std::to_string(points) + " " + what + " (a stroke whose ends lie within " + std::to_string(closeTolerance) +
+    " of each other counts as closed: draw a larger loop, or an open stroke longer than that)");
+}
 } // namespace
 
 StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& strokeIn, const StrokeOptions& o)
@@ -159,7 +166,12 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     for (std::size_t i = 0; i + (result.closed ? 1 : 0) < stroke.size(); ++i)
       splitter.addPoint(stroke[i]);
     if (result.closed)
+    {
+      const std::set<std::int64_t> distinct(splitter.line().begin(), splitter.line().end());
+      if (distinct.size() < 3)
+        throw loopTooSmall(distinct.size(), "line vertex(es)", closeTol);
       splitter.close();
+    }
     result.mesh = splitter.mesh();
     result.line = splitter.line();
     for (std::size_t i = 0; i + 1 < result.line.size(); ++i)
@@ -279,9 +291,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     // two mesh points; so would a stroke that only goes back and forth.
     const std::size_t distinct = simple.size() - (result.closed && simple.size() > 1 && simple.back() == simple.front());
     if (result.closed && distinct < 3)
-      throw std::invalid_argument("a closed line needs at least three vertices: the stroke's loop covers " +
-        std::to_string(distinct) + " mesh point(s) (a stroke whose ends lie within " + std::to_string(closeTol) +
-        " of each other counts as closed: draw a larger loop, or an open stroke longer than that)");
+      throw loopTooSmall(distinct, "mesh point(s)", closeTol);
     if (distinct < 2)
       throw std::invalid_argument("the stroke covers no mesh edge: all its points are nearest mesh point " +
         std::to_string(simple.empty() ? -1 : simple.front()) + " (draw it across at least one edge)");
