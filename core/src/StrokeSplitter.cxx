@@ -117,6 +117,9 @@ struct StrokeSplitter::Impl
   /// normal `normal`. Does not change the mesh.
   Plan plan(VI a, Vec3 x, VI target, const Vec3& normal) const
   {
+    // What a user can do when a segment cannot be followed across the faces
+    // (it spans a fold or a sharp turn of the surface between two points).
+    static const std::string retry = ": draw it again with its points closer together, or in nearest-edges mode";
     const Vec3 pa = p(a);
     if (target != SMesh::null_vertex())
       x = p(target);
@@ -205,7 +208,7 @@ struct StrokeSplitter::Impl
             best = { score, e, t, f, t >= 1.0 - endTolerance };
         }
         if (best.score <= -2.0)
-          throw std::invalid_argument("the stroke could not be followed from a line vertex (no face ahead)");
+          throw std::invalid_argument("the stroke could not be followed from a line vertex (no face ahead)" + retry);
         if (best.isEnd && target == SMesh::null_vertex())
         {
           if (std::abs(best.t - 1.0) <= endTolerance)
@@ -268,7 +271,7 @@ struct StrokeSplitter::Impl
         return plan;
       }
       if (t < tPrevious - 1e-9)
-        throw std::invalid_argument("the stroke could not be followed (the walk turned back)");
+        throw std::invalid_argument("the stroke could not be followed (the walk turned back)" + retry);
       tPrevious = t;
       plan.events.push_back(e);
       if (e.atVertex)
@@ -279,7 +282,7 @@ struct StrokeSplitter::Impl
       else
         entering = m.opposite(e.edge);
     }
-    throw std::invalid_argument("the stroke could not be followed (the walk did not reach the point)");
+    throw std::invalid_argument("the stroke could not be followed (the walk did not reach the point)" + retry);
   }
 
   /// Triangulates a convex planar face (a triangle cut by straight line
