@@ -115,6 +115,17 @@ struct Session
   std::array<double, 16> segmentMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   /// Applied in order to the pieces after the cut, before the lattice.
   std::vector<Deformation> deformations;
+  /// How a CT's bone surface was made (saved with the session, so that its
+  /// strokes find the same surface on replay): the threshold, the component
+  /// at a seed or the largest, the DICOM series.
+  struct Surface
+  {
+    bool given = false; ///< false: none recorded (a mesh input, an older session)
+    double iso = 300.0;
+    bool seeded = false;
+    std::array<double, 3> seed{};
+    long series = -1; ///< -1: the largest
+  } surface;
 };
 
 Json::Value triple(const std::array<double, 3>& v)
@@ -297,6 +308,14 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
       jd["falloff"] = d.falloff;
     root["deformations"].append(jd);
   }
+  if (s.surface.given)
+  {
+    root["surface"]["iso"] = s.surface.iso;
+    if (s.surface.seeded)
+      root["surface"]["seed"] = triple(s.surface.seed);
+    if (s.surface.series >= 0)
+      root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
+  }
   std::ofstream out(path);
   if (!out)
   {
@@ -433,6 +452,33 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
       }
     }
     s.deformations.push_back(d);
+  }
+  if (root.isMember("surface"))
+  {
+    const Json::Value& js = root["surface"];
+    const std::string where = "the surface of " + session;
+    long long series = -1;
+    const auto seriesIndex = [](const Json::Value& v, long long& out) {
+      return jsonInteger(v, 0, std::numeric_limits<int>::max(), out);
+    };
+    if (!js.isObject() || !jsonMember(js, "iso", s.surface.iso, jsonNumber, where, "a number", error) ||
+      !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error))
+    {
+      if (!js.isObject())
+        error = session + ": \"surface\" must be an object (iso, seed, series)";
+      return false;
+    }
+    if (js.isMember("seed"))
+    {
+      if (!jsonNumbers(js["seed"], s.surface.seed))
+      {
+        error = where + ": \"seed\" must be [x, y, z]";
+        return false;
+      }
+      s.surface.seeded = true;
+    }
+    s.surface.series = static_cast<long>(series);
+    s.surface.given = true;
   }
   return true;
 }
@@ -1453,6 +1499,11 @@ void usage(std::ostream& os)
      << kHelp
      << "\n"
         "\n"
+        "  --iso V              a CT's bone threshold (default 300 HU; a 0/1 label map is found\n"
+        "                       and taken at 0.5)\n"
+        "  --seed X,Y,Z         keep the bone component nearest this patient-space point (mm)\n"
+        "                       instead of the largest (the mandible, where the skull is larger)\n"
+        "  --series I           DICOM: series I of the folder (0 = largest, the default)\n"
         "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro, moved segment,\n"
         "                       deformations)\n"
         "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
@@ -1468,11 +1519,26 @@ void usage(std::ostream& os)
 int main(int argc, char* argv[])
 {
   std::string input, replay, shot, exportFolder, events, sessionOut = "planner_session.json";
+  double iso = 300.0, seed[3] = { 0, 0, 0 };
+  bool isoGiven = false, seeded = false;
+  long series = -1;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
   {
-    if (a == "--replay")
+    if (a == "--iso")
+    {
+      iso = args.number(a, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), "a number");
+      isoGiven = true;
+    }
+    else if (a == "--seed")
+    {
+      args.triple(a, seed);
+      seeded = true;
+    }
+    else if (a == "--series")
+      series = args.integer(a, 0, std::numeric_limits<int>::max(), "an integer >= 0");
+    else if (a == "--replay")
       replay = args.value(a);
     else if (a == "--screenshot")
       shot = args.value(a);
@@ -1497,6 +1563,11 @@ int main(int argc, char* argv[])
   Planner planner;
   std::string error;
   const std::string ext = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(input));
+  if (!replay.empty() && !loadSession(replay, planner.session, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
   // The surface: a mesh file through the same repair as the CT's surface
   // gets (polygons triangulated, a triangle soup such as an STL from
   // elsewhere merged, non-manifold vertices split, the orientation made
@@ -1509,6 +1580,11 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
+    if (isoGiven || seeded || series >= 0)
+    {
+      std::cerr << "error: --iso, --seed and --series are for a CT or label map; '" << input << "' is a mesh\n";
+      return 2;
+    }
     mesh = lkapp::readMesh(input, error);
     if (!mesh)
     {
@@ -1520,8 +1596,28 @@ int main(int argc, char* argv[])
   }
   else
   {
+    // The command line's settings, else the replayed session's, else the
+    // defaults; the session saved later records what was used.
+    Session::Surface& used = planner.session.surface;
+    if (isoGiven)
+      used.iso = iso;
+    if (seeded)
+    {
+      used.seeded = true;
+      used.seed = { seed[0], seed[1], seed[2] };
+    }
+    if (series >= 0)
+      used.series = series;
+    used.given = true;
     reader->SetFileName(input.c_str());
+    reader->SetSeriesIndex(static_cast<int>(used.series));
     bone->SetInputConnection(reader->GetOutputPort());
+    bone->SetIsoValue(used.iso);
+    if (used.seeded)
+    {
+      bone->SetExtractionModeToSeededComponent();
+      bone->SetSeedPoint(used.seed.data());
+    }
   }
   surface->Update();
   if (lkapp::errorCount() > 0 || surface->GetOutput()->GetNumberOfPolys() == 0)
@@ -1531,6 +1627,21 @@ int main(int argc, char* argv[])
   }
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
   planner.bone->ShallowCopy(surface->GetOutput());
+  if (!mesh)
+  {
+    const Session::Surface& used = planner.session.surface;
+    std::cout << "surface: " << planner.bone->GetNumberOfPoints() << " points, "
+              << planner.bone->GetNumberOfPolys() << " triangles ("
+              << (bone->GetTreatedAsLabelMap() ? "label map at level " : "CT at ") << bone->GetEffectiveIsoValue()
+              << (bone->GetTreatedAsLabelMap() ? "" : " HU") << ", ";
+    if (used.seeded)
+      std::cout << "the component nearest (" << used.seed[0] << ", " << used.seed[1] << ", " << used.seed[2] << ")";
+    else
+      std::cout << "the largest component";
+    if (reader->GetNumberOfSeries() > 0)
+      std::cout << ", series " << std::max<long>(0, used.series) << " of " << reader->GetNumberOfSeries();
+    std::cout << ")\n";
+  }
   if (mesh)
   {
     const double merged = lkapp::fieldValue(planner.bone, "MergedPoints"),
@@ -1542,11 +1653,6 @@ int main(int argc, char* argv[])
       std::cout << " (repaired from " << mesh->GetNumberOfPolys() << " faces: " << merged << " points merged, "
                 << degenerate << " degenerate faces removed, " << split << " non-manifold vertices split)";
     std::cout << "\n";
-  }
-  if (!replay.empty() && !loadSession(replay, planner.session, error))
-  {
-    std::cerr << "error: " << error << "\n";
-    return 1;
   }
   // After the input and the session are read, so that their problems are
   // named first.
