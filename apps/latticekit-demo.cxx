@@ -25,14 +25,11 @@
 #include <vtkCutter.h>
 #include <vtkDataArray.h>
 #include <vtkExtractEdges.h>
-#include <vtkExtractVOI.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
-#include <vtkImageConstantPad.h>
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkMath.h>
-#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPlane.h>
@@ -202,45 +199,6 @@ std::string penSpacing(vtkPolyData* stroke)
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", stroke->GetNumberOfPoints() > 1 ? length / (stroke->GetNumberOfPoints() - 1) : 0.0);
   return text;
-}
-
-/// The voxel extent of the plan's crop box. The box is in patient coordinates
-/// (those of the surface, the seed and the cut plane), so its corners are
-/// taken to data coordinates through the inverse of the reader's patient
-/// matrix; the extent holds them all. False when it misses the volume.
-bool cropExtent(vtkImageData* image, vtkMatrix4x4* patient, const std::array<double, 6>& box, int v[6])
-{
-  vtkNew<vtkMatrix4x4> toData;
-  vtkMatrix4x4::Invert(patient, toData);
-  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const double p[4] = { box[(corner & 1) ? 1 : 0], box[(corner & 2) ? 3 : 2], box[(corner & 4) ? 5 : 4], 1.0 };
-    double d[4];
-    toData->MultiplyPoint(p, d);
-    for (int c = 0; c < 3; ++c)
-    {
-      lo[c] = std::min(lo[c], d[c]);
-      hi[c] = std::max(hi[c], d[c]);
-    }
-  }
-  int e[6];
-  double origin[3], spacing[3];
-  image->GetExtent(e);
-  image->GetOrigin(origin);
-  image->GetSpacing(spacing);
-  for (int c = 0; c < 3; ++c)
-  {
-    // Clamped as doubles first: a box far outside would overflow the int.
-    const double a = std::floor((lo[c] - origin[c]) / spacing[c]);
-    const double b = std::ceil((hi[c] - origin[c]) / spacing[c]);
-    v[2 * c] = static_cast<int>(std::max<double>(e[2 * c], std::min<double>(e[2 * c + 1], a)));
-    v[2 * c + 1] = static_cast<int>(std::max<double>(e[2 * c], std::min<double>(e[2 * c + 1], b)));
-    if (!(a < e[2 * c + 1]) || !(b > e[2 * c]) || v[2 * c] >= v[2 * c + 1])
-      return false;
-  }
-  return true;
 }
 
 bool loadPlan(const std::string& path, Plan& plan, std::string& error)
@@ -644,30 +602,13 @@ int main(int argc, char* argv[])
   reader->Update();
   if (lkapp::errorCount() > 0)
     return 1;
-  vtkImageData* image = reader->GetOutput();
-  vtkNew<vtkExtractVOI> voi;
-  voi->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkImageConstantPad> pad;
-  vtkAlgorithmOutput* volume = reader->GetOutputPort();
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
   if (plan.crop)
   {
-    int v[6];
-    if (!cropExtent(image, reader->GetPatientMatrix(), plan.box, v))
-    {
-      std::cerr << "error: the plan's crop box misses the volume (the box is in patient coordinates, mm, "
-                   "as the surface and the seed are)\n";
-      return 1;
-    }
-    voi->SetVOI(v);
-    pad->SetInputConnection(voi->GetOutputPort());
-    pad->SetOutputWholeExtent(v[0] - 1, v[1] + 1, v[2] - 1, v[3] + 1, v[4] - 1, v[5] + 1);
-    double range[2];
-    image->GetScalarRange(range);
-    pad->SetConstant(range[0]);
-    volume = pad->GetOutputPort();
+    bone->CroppingOn();
+    bone->SetCropBox(plan.box.data());
   }
-  vtkNew<vtkLKBoneSurfaceFilter> bone;
-  bone->SetInputConnection(volume);
   bone->SetIsoValue(plan.iso);
   bone->SetLabelMapMode(vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO);
   bone->SetSmoothingIterations(plan.smoothing);

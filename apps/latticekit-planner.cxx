@@ -124,6 +124,8 @@ struct Session
     double iso = 300.0;
     bool seeded = false;
     std::array<double, 3> seed{};
+    bool cropped = false;
+    std::array<double, 6> crop{}; ///< patient coordinates, xmin, xmax, ymin, ymax, zmin, zmax
     long series = -1; ///< -1: the largest
   } surface;
 };
@@ -313,6 +315,9 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
     root["surface"]["iso"] = s.surface.iso;
     if (s.surface.seeded)
       root["surface"]["seed"] = triple(s.surface.seed);
+    if (s.surface.cropped)
+      for (double v : s.surface.crop)
+        root["surface"]["crop"].append(v);
     if (s.surface.series >= 0)
       root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
   }
@@ -476,6 +481,16 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
         return false;
       }
       s.surface.seeded = true;
+    }
+    if (js.isMember("crop"))
+    {
+      const auto& c = s.surface.crop;
+      if (!jsonNumbers(js["crop"], s.surface.crop) || !(c[0] < c[1] && c[2] < c[3] && c[4] < c[5]))
+      {
+        error = where + ": \"crop\" must be [xmin, xmax, ymin, ymax, zmin, zmax], each min below its max";
+        return false;
+      }
+      s.surface.cropped = true;
     }
     s.surface.series = static_cast<long>(series);
     s.surface.given = true;
@@ -1503,6 +1518,9 @@ void usage(std::ostream& os)
         "                       and taken at 0.5)\n"
         "  --seed X,Y,Z         keep the bone component nearest this patient-space point (mm)\n"
         "                       instead of the largest (the mandible, where the skull is larger)\n"
+        "  --crop X0,X1,Y0,Y1,Z0,Z1\n"
+        "                       only the CT inside this patient-space box (mm), padded with air\n"
+        "                       so that the surface closes where the box cuts bone\n"
         "  --series I           DICOM: series I of the folder (0 = largest, the default)\n"
         "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro, moved segment,\n"
         "                       deformations)\n"
@@ -1519,8 +1537,8 @@ void usage(std::ostream& os)
 int main(int argc, char* argv[])
 {
   std::string input, replay, shot, exportFolder, events, sessionOut = "planner_session.json";
-  double iso = 300.0, seed[3] = { 0, 0, 0 };
-  bool isoGiven = false, seeded = false;
+  double iso = 300.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
+  bool isoGiven = false, seeded = false, cropped = false;
   long series = -1;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -1535,6 +1553,11 @@ int main(int argc, char* argv[])
     {
       args.triple(a, seed);
       seeded = true;
+    }
+    else if (a == "--crop")
+    {
+      args.box(a, crop);
+      cropped = true;
     }
     else if (a == "--series")
       series = args.integer(a, 0, std::numeric_limits<int>::max(), "an integer >= 0");
@@ -1580,9 +1603,10 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    if (isoGiven || seeded || series >= 0)
+    if (isoGiven || seeded || cropped || series >= 0)
     {
-      std::cerr << "error: --iso, --seed and --series are for a CT or label map; '" << input << "' is a mesh\n";
+      std::cerr << "error: --iso, --seed, --crop and --series are for a CT or label map; '" << input
+                << "' is a mesh\n";
       return 2;
     }
     mesh = lkapp::readMesh(input, error);
@@ -1606,6 +1630,11 @@ int main(int argc, char* argv[])
       used.seeded = true;
       used.seed = { seed[0], seed[1], seed[2] };
     }
+    if (cropped)
+    {
+      used.cropped = true;
+      std::copy(crop, crop + 6, used.crop.begin());
+    }
     if (series >= 0)
       used.series = series;
     used.given = true;
@@ -1618,6 +1647,8 @@ int main(int argc, char* argv[])
       bone->SetExtractionModeToSeededComponent();
       bone->SetSeedPoint(used.seed.data());
     }
+    bone->SetCropping(used.cropped);
+    bone->SetCropBox(used.crop.data());
   }
   surface->Update();
   if (lkapp::errorCount() > 0 || surface->GetOutput()->GetNumberOfPolys() == 0)
@@ -1634,6 +1665,9 @@ int main(int argc, char* argv[])
               << planner.bone->GetNumberOfPolys() << " triangles ("
               << (bone->GetTreatedAsLabelMap() ? "label map at level " : "CT at ") << bone->GetEffectiveIsoValue()
               << (bone->GetTreatedAsLabelMap() ? "" : " HU") << ", ";
+    if (used.cropped)
+      std::cout << "inside the box x " << used.crop[0] << " to " << used.crop[1] << ", y " << used.crop[2] << " to "
+                << used.crop[3] << ", z " << used.crop[4] << " to " << used.crop[5] << ", ";
     if (used.seeded)
       std::cout << "the component nearest (" << used.seed[0] << ", " << used.seed[1] << ", " << used.seed[2] << ")";
     else

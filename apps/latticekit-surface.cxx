@@ -30,6 +30,9 @@ void usage(std::ostream& os)
         "  --largest          keep the largest component (default)\n"
         "  --all              keep every component\n"
         "  --seed X,Y,Z       keep the component closest to this patient-space point\n"
+        "  --crop X0,X1,Y0,Y1,Z0,Z1\n"
+        "                     only the volume inside this patient-space box (mm), padded with\n"
+        "                     air so that the surface closes where the box cuts bone\n"
         "  --smooth N         windowed-sinc smoothing iterations on the surface (default 0)\n"
         "  --image-smooth S   Gaussian smoothing of the volume, std. dev. in voxels\n"
         "                     (default: 1 for label maps, none for CT)\n"
@@ -49,7 +52,8 @@ void usage(std::ostream& os)
 int main(int argc, char* argv[])
 {
   std::string input, output;
-  double iso = 300.0, imageSmooth = -1.0, seed[3] = { 0, 0, 0 };
+  double iso = 300.0, imageSmooth = -1.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
+  bool cropping = false;
   long smooth = 0, series = -1;
   double sliceSpacing = 0.0;
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
@@ -72,6 +76,11 @@ int main(int argc, char* argv[])
     {
       args.triple(a, seed);
       mode = vtkLKBoneSurfaceFilter::SEEDED_COMPONENT;
+    }
+    else if (a == "--crop")
+    {
+      args.box(a, crop);
+      cropping = true;
     }
     else if (a == "--smooth")
       smooth = args.integer(a, 0, 1000, "an integer from 0 to 1000");
@@ -127,6 +136,8 @@ int main(int argc, char* argv[])
   surface->SetSmoothingIterations(static_cast<int>(smooth));
   surface->SetExtractionMode(mode);
   surface->SetSeedPoint(seed);
+  surface->SetCropping(cropping);
+  surface->SetCropBox(crop);
   surface->SetLabelMapMode(labelMode);
   surface->SetRepair(repair);
   surface->SetFillCavities(fillCavities);

@@ -9,8 +9,10 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkExtractVOI.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageCast.h>
+#include <vtkImageConstantPad.h>
 #include <vtkImageData.h>
 #include <vtkImageGaussianSmooth.h>
 #include <vtkInformation.h>
@@ -27,7 +29,9 @@
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkWindowedSincPolyDataFilter.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkLKBoneSurfaceFilter);
@@ -59,6 +63,46 @@ private:
   double Lo, Hi;
   vtkNew<vtkCallbackCommand> Command;
 };
+
+/// The voxel extent that holds the crop box (patient coordinates) of
+/// `image`, whose data-to-patient matrix is `patient`; a problem, or "".
+std::string cropExtent(vtkImageData* image, vtkMatrix4x4* patient, const double box[6], int v[6])
+{
+  for (int c = 0; c < 3; ++c)
+    if (!std::isfinite(box[2 * c]) || !std::isfinite(box[2 * c + 1]) || !(box[2 * c] < box[2 * c + 1]))
+      return "the crop box must be (xmin, xmax, ymin, ymax, zmin, zmax), finite, each min below its max";
+  vtkNew<vtkMatrix4x4> toData;
+  vtkMatrix4x4::Invert(patient, toData);
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { box[(corner & 1) ? 1 : 0], box[(corner & 2) ? 3 : 2], box[(corner & 4) ? 5 : 4], 1.0 };
+    double d[4];
+    toData->MultiplyPoint(p, d);
+    for (int c = 0; c < 3; ++c)
+    {
+      lo[c] = std::min(lo[c], d[c]);
+      hi[c] = std::max(hi[c], d[c]);
+    }
+  }
+  int e[6];
+  double origin[3], spacing[3];
+  image->GetExtent(e);
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  for (int c = 0; c < 3; ++c)
+  {
+    // Clamped as doubles first: a box far outside would overflow the int.
+    const double a = std::floor((lo[c] - origin[c]) / spacing[c]);
+    const double b = std::ceil((hi[c] - origin[c]) / spacing[c]);
+    v[2 * c] = static_cast<int>(std::max<double>(e[2 * c], std::min<double>(e[2 * c + 1], a)));
+    v[2 * c + 1] = static_cast<int>(std::max<double>(e[2 * c], std::min<double>(e[2 * c + 1], b)));
+    if (!(a < e[2 * c + 1]) || !(b > e[2 * c]) || v[2 * c] >= v[2 * c + 1])
+      return "the crop box misses the volume (the box is in patient coordinates, mm, as the surface is)";
+  }
+  return {};
+}
 
 bool isBinaryLabelMap(vtkImageData* image)
 {
@@ -130,6 +174,9 @@ void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
      << this->SeedPoint[2] << "\n";
   os << indent << "LabelMapMode: " << this->LabelMapMode << "\n";
   os << indent << "Repair: " << this->Repair << "\n";
+  os << indent << "Cropping: " << this->Cropping << "\n";
+  os << indent << "CropBox: " << this->CropBox[0] << " " << this->CropBox[1] << " " << this->CropBox[2] << " "
+     << this->CropBox[3] << " " << this->CropBox[4] << " " << this->CropBox[5] << "\n";
 }
 
 int vtkLKBoneSurfaceFilter::RequestData(
@@ -161,24 +208,6 @@ int vtkLKBoneSurfaceFilter::RequestData(
     return 0;
   }
 
-  this->TreatedAsLabelMap = this->LabelMapMode == LABEL_MAP_ON ||
-    (this->LabelMapMode == LABEL_MAP_AUTO && isBinaryLabelMap(input));
-  this->EffectiveIsoValue = this->TreatedAsLabelMap ? 0.5 : this->IsoValue;
-  double sigma = this->ImageSmoothing;
-  if (sigma < 0.0)
-  {
-    sigma = this->TreatedAsLabelMap ? 1.0 : 0.0;
-  }
-
-  double range[2];
-  input->GetPointData()->GetScalars()->GetRange(range);
-  if (!(this->EffectiveIsoValue > range[0] && this->EffectiveIsoValue < range[1]))
-  {
-    vtkErrorMacro("Iso value " << this->EffectiveIsoValue << " is outside the volume's range ["
-                               << range[0] << ", " << range[1] << "]: no surface.");
-    return 0;
-  }
-
   // Patient matrix: explicit, else the reader's field data, else identity.
   vtkNew<vtkMatrix4x4> matrix;
   if (this->PatientMatrix)
@@ -194,6 +223,48 @@ int vtkLKBoneSurfaceFilter::RequestData(
         matrix->SetElement(i / 4, i % 4, m->GetComponent(i, 0));
       }
     }
+  }
+
+  // The crop: the box's voxels, padded with the volume's smallest value.
+  vtkNew<vtkExtractVOI> voi;
+  vtkNew<vtkImageConstantPad> pad;
+  if (this->Cropping)
+  {
+    int v[6];
+    const std::string problem = cropExtent(input, matrix, this->CropBox, v);
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot crop: " << problem << ".");
+      return 0;
+    }
+    double full[2];
+    input->GetPointData()->GetScalars()->GetRange(full);
+    voi->SetInputData(input);
+    voi->SetVOI(v);
+    pad->SetInputConnection(voi->GetOutputPort());
+    pad->SetOutputWholeExtent(v[0] - 1, v[1] + 1, v[2] - 1, v[3] + 1, v[4] - 1, v[5] + 1);
+    pad->SetConstant(full[0]);
+    pad->Update();
+    input = pad->GetOutput();
+  }
+
+  this->TreatedAsLabelMap = this->LabelMapMode == LABEL_MAP_ON ||
+    (this->LabelMapMode == LABEL_MAP_AUTO && isBinaryLabelMap(input));
+  this->EffectiveIsoValue = this->TreatedAsLabelMap ? 0.5 : this->IsoValue;
+  double sigma = this->ImageSmoothing;
+  if (sigma < 0.0)
+  {
+    sigma = this->TreatedAsLabelMap ? 1.0 : 0.0;
+  }
+
+  double range[2];
+  input->GetPointData()->GetScalars()->GetRange(range);
+  if (!(this->EffectiveIsoValue > range[0] && this->EffectiveIsoValue < range[1]))
+  {
+    vtkErrorMacro("Iso value " << this->EffectiveIsoValue << " is outside the volume's range ["
+                               << range[0] << ", " << range[1] << "]" << (this->Cropping ? " within the crop box" : "")
+                               << ": no surface.");
+    return 0;
   }
 
   vtkNew<vtkImageData> volume;

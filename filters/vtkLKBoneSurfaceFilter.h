@@ -3,6 +3,11 @@
  * @brief   CT volume (or 0/1 label map) to a clean, manifold bone surface in patient space.
  *
  * The steps, each a proven VTK or CGAL piece:
+ *  0. optional crop (Cropping, CropBox in patient coordinates): the voxels
+ *     inside the box (vtkExtractVOI), padded by one voxel of the volume's
+ *     smallest value (vtkImageConstantPad) so that the surface closes where
+ *     the box cuts bone, as a saw would; the mandible below the occlusal
+ *     plane, for one, where the teeth join it to the skull;
  *  1. optional Gaussian smoothing of the volume (vtkImageGaussianSmooth,
  *     ImageSmoothing = standard deviation in voxels);
  *  2. optional filling of enclosed cavities (FillCavities, lk::enclosedBackground):
@@ -108,6 +113,20 @@ public:
   vtkBooleanMacro(FillCavities, bool);
   ///@}
   ///@{
+  /// Crop the volume to CropBox first (default off). The box is
+  /// (xmin, xmax, ymin, ymax, zmin, zmax) in patient coordinates (mm), those
+  /// of the surface and the seed; its corners go to the volume's voxels
+  /// through the inverse of the patient matrix, and the voxels that hold
+  /// them all are kept. A box that misses the volume, or whose min is not
+  /// below its max, is an error.
+  vtkSetMacro(Cropping, bool);
+  vtkGetMacro(Cropping, bool);
+  vtkBooleanMacro(Cropping, bool);
+  vtkSetVector6Macro(CropBox, double);
+  vtkGetVector6Macro(CropBox, double);
+  ///@}
+
+  ///@{
   /// Repair into a CGAL-valid manifold mesh (default on).
   vtkSetMacro(Repair, bool);
   vtkGetMacro(Repair, bool);
@@ -141,6 +160,8 @@ protected:
   int LabelMapMode = LABEL_MAP_AUTO;
   bool Repair = true;
   bool FillCavities = false;
+  bool Cropping = false;
+  double CropBox[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   vtkMatrix4x4* PatientMatrix = nullptr;
   bool TreatedAsLabelMap = false;
   double EffectiveIsoValue = 300.0;

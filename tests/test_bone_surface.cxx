@@ -231,6 +231,54 @@ TEST(BoneSurface, FilledCavitiesLeaveTheOuterSkin)
   EXPECT_GT(volume[1], volume[0]);
 }
 
+TEST(BoneSurface, TheCropBoxIsInPatientCoordinatesAndTheCutIsClosed)
+{
+  // The TCIA mandible's volume has its origin at (-250.4, 155.6, -1178) mm
+  // (LPS): a box in patient coordinates around its left half (x 0 to 70 mm)
+  // keeps that half, closed where the box cuts it (the padding is air).
+  auto crop = [](const double box[6]) {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    reader->SetFileName(mandibles[0].c_str());
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputConnection(reader->GetOutputPort());
+    bone->CroppingOn();
+    bone->SetCropBox(box);
+    Surface s;
+    lktest::ErrorRecorder rec(bone);
+    bone->Update();
+    s.mesh = vtkSmartPointer<vtkPolyData>::New();
+    s.mesh->DeepCopy(bone->GetOutput());
+    s.errors = rec.errors;
+    s.messages = rec.messages;
+    return s;
+  };
+  const double half[6] = { 0, 70, 250, 360, -1000, -900 };
+  const Surface s = crop(half);
+  ASSERT_EQ(s.errors, 0) << s.messages;
+  const Surface whole = extract(mandibles[0], 0.5);
+  double b[6];
+  s.mesh->GetBounds(b);
+  EXPECT_GT(b[0], -2.0); // within two voxels (0.98 mm): the box rounded out to voxels, and the padding
+  EXPECT_LT(b[1], 60.0); // the bone ends at x = 59 mm
+  EXPECT_LT(whole.mesh->GetBounds()[0], -50.0);
+  const lk::TriangleMesh m = lktest::toCore(s.mesh);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_EQ(lk::countBoundaryEdges(m), 0u); // closed at the cut
+  EXPECT_GT(lk::signedVolume(m), 0.3 * lk::signedVolume(lktest::toCore(whole.mesh)));
+  EXPECT_LT(lk::signedVolume(m), 0.7 * lk::signedVolume(lktest::toCore(whole.mesh)));
+
+  // A box beside the volume, one whose voxel indices would overflow an int,
+  // an inverted one, and one that holds only air.
+  const double beside[6] = { 0, 70, 250, 360, 0, 100 }, far[6] = { 1e300, 2e300, 0, 1, 0, 1 },
+               inverted[6] = { 70, 0, 250, 360, -1000, -900 }, air[6] = { 0, 70, 250, 360, -1170, -1100 };
+  EXPECT_NE(crop(beside).messages.find("the crop box misses the volume"), std::string::npos);
+  EXPECT_NE(crop(far).messages.find("the crop box misses the volume"), std::string::npos);
+  EXPECT_NE(crop(inverted).messages.find("each min below its max"), std::string::npos);
+  const Surface empty = crop(air);
+  EXPECT_NE(empty.messages.find("within the crop box"), std::string::npos) << empty.messages;
+  EXPECT_EQ(empty.mesh->GetNumberOfPoints(), 0);
+}
+
 TEST(BoneSurface, IsoValueOutsideTheDataRangeIsAClearError)
 {
   const Surface s = extract(cthead, 5000.0);

@@ -411,17 +411,27 @@ bool parseInt(const std::string& text, long& value)
   return !text.empty() && end && *end == '\0';
 }
 
-bool parseTriple(const std::string& text, double v[3])
+bool parseNumbers(const std::string& text, double* v, int n)
 {
   std::string t = text;
   std::replace(t.begin(), t.end(), ',', ' ');
   std::istringstream is(t);
-  std::string a, b, c, extra;
-  if (!(is >> a >> b >> c) || (is >> extra))
+  std::string word;
+  int k = 0;
+  while (is >> word)
   {
-    return false;
+    if (k == n || !parseDouble(word, v[k]))
+    {
+      return false;
+    }
+    ++k;
   }
-  return parseDouble(a, v[0]) && parseDouble(b, v[1]) && parseDouble(c, v[2]);
+  return k == n;
+}
+
+bool parseTriple(const std::string& text, double v[3])
+{
+  return parseNumbers(text, v, 3);
 }
 
 Arguments::Arguments(int argc, char* argv[], Usage usage)
@@ -486,6 +496,21 @@ void Arguments::triple(const std::string& arg, double v[3])
   if (!parseTriple(text, v))
   {
     std::cerr << "error: " << arg << " needs three numbers X,Y,Z, not '" << text << "'\n";
+    std::exit(2);
+  }
+}
+
+void Arguments::box(const std::string& arg, double v[6])
+{
+  const std::string text = value(arg);
+  if (!parseNumbers(text, v, 6))
+  {
+    std::cerr << "error: " << arg << " needs six numbers XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, not '" << text << "'\n";
+    std::exit(2);
+  }
+  if (!(v[0] < v[1] && v[2] < v[3] && v[4] < v[5]))
+  {
+    std::cerr << "error: " << arg << " needs each min below its max, not '" << text << "'\n";
     std::exit(2);
   }
 }

@@ -79,6 +79,8 @@ bool hasDisplay();
 bool parseDouble(const std::string& text, double& value);
 bool parseInt(const std::string& text, long& value);
 bool parseTriple(const std::string& text, double v[3]);
+/// Exactly `n` numbers, separated by commas or spaces.
+bool parseNumbers(const std::string& text, double* v, int n);
 
 /// Walks a command line. Every method that reads an option's value exits
 /// with status 2 and a one-line message when the value is missing or wrong,
@@ -98,6 +100,8 @@ public:
   double number(const std::string& arg, double lo, double hi, const char* what);
   /// Three numbers X,Y,Z.
   void triple(const std::string& arg, double v[3]);
+  /// A box XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, each min below its max.
+  void box(const std::string& arg, double v[6]);
   /// Stores a positional argument in `slot`; exits 2 with "more than one
   /// WHAT given" when the slot is already taken.
   void positional(const std::string& arg, std::string& slot, const char* what);

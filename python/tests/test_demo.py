@@ -148,7 +148,7 @@ class DemoTest(unittest.TestCase):
                     ('{%s, "latticeVertices": "many"}' % cut, '"latticeVertices" must be a whole number'),
                     ('{%s, "crop": [10, 0, 0, 1, 0, 1]}' % cut, "each min below its max"),
                     # A box far outside the volume (its voxel indices overflow an int).
-                    ('{%s, "crop": [1e300, 2e300, 0, 1, 0, 1]}' % cut, "the plan's crop box misses the volume")]:
+                    ('{%s, "crop": [1e300, 2e300, 0, 1, 0, 1]}' % cut, "the crop box misses the volume")]:
                 result = run_plan(text)
                 self.assertEqual(result.returncode, 1, text + ": " + result.stderr)
                 self.assertIn(message, result.stderr, text)
