@@ -169,6 +169,9 @@ int main(int argc, char* argv[])
               << " mm, gantry tilt " << reader->GetGantryTilt() << " deg, series "
               << (series < 0 ? 0 : series) << " of " << reader->GetNumberOfSeries() << "\n";
   }
+  if (cropping)
+    std::cout << "crop box   x " << crop[0] << " to " << crop[1] << ", y " << crop[2] << " to " << crop[3] << ", z "
+              << crop[4] << " to " << crop[5] << " mm (patient), padded with air\n";
   std::cout << "iso value  " << surface->GetEffectiveIsoValue()
             << (surface->GetTreatedAsLabelMap() ? " (label map)" : "") << "\n";
   std::cout << "surface    " << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfPolys()
