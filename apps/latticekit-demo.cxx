@@ -575,7 +575,8 @@ int main(int argc, char* argv[])
     plan.vertices = vertices;
   if (render && !lkapp::hasDisplay())
   {
-    std::cerr << "error: the pictures need an X display (DISPLAY is not set): run under xvfb-run -a, or pass "
+    std::cerr << "error: the pictures need an X display (DISPLAY is not set, or names no running server): run under "
+                 "xvfb-run -a, or pass "
                  "--no-render\n";
     return 1;
   }

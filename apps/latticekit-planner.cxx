@@ -1692,7 +1692,8 @@ int main(int argc, char* argv[])
   // named first.
   if (!lkapp::hasDisplay())
   {
-    std::cerr << "error: the planner needs an X display (DISPLAY is not set); headless, run it under xvfb-run -a "
+    std::cerr << "error: the planner needs an X display (DISPLAY is not set, or names no running server); headless, "
+                 "run it under xvfb-run -a "
                  "with --screenshot, --export or --events\n";
     return 1;
   }

@@ -583,7 +583,19 @@ long long fileBytes(const std::string& path)
 bool hasDisplay()
 {
   const char* display = std::getenv("DISPLAY");
-  return display && *display;
+  if (!display || !*display)
+    return false;
+  // A local display (":N" or ":N.S") is a socket /tmp/.X11-unix/XN; when it
+  // is not there (a DISPLAY left from a server that is gone) VTK aborts as
+  // well. Other forms (host:N, a launchd path) are taken as they are.
+  const std::string name = display;
+  if (name[0] == ':')
+  {
+    const std::string number = name.substr(1, name.find('.') == std::string::npos ? std::string::npos : name.find('.') - 1);
+    if (!number.empty() && number.find_first_not_of("0123456789") == std::string::npos)
+      return vtksys::SystemTools::FileExists("/tmp/.X11-unix/X" + number);
+  }
+  return true;
 }
 
 double fieldValue(vtkPolyData* pd, const std::string& name)

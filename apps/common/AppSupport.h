@@ -69,7 +69,8 @@ long long fileBytes(const std::string& path);
 /// filters report their measurements there.
 double fieldValue(vtkPolyData* pd, const std::string& name);
 
-/// Whether an X display is named (DISPLAY set): Debian's VTK renders only
+/// Whether an X display is named (DISPLAY set, and for a local display its
+/// socket there): Debian's VTK renders only
 /// through X, and without one it aborts the program in its first render
 /// ("bad X server connection"), after the work and before anything can say
 /// why; the tools check this first.
