@@ -135,12 +135,11 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
       error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax]";
       return false;
     }
-    for (int c = 0; c < 3; ++c)
-      if (!(plan.box[2 * c] < plan.box[2 * c + 1]))
-      {
-        error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax], each min below its max";
-        return false;
-      }
+    if (!lkapp::isOrderedBox(plan.box.data()))
+    {
+      error = "the plan's crop must be [xmin, xmax, ymin, ymax, zmin, zmax], each min below its max";
+      return false;
+    }
     plan.crop = true;
   }
   if (root.isMember("seed"))

@@ -484,8 +484,7 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
     }
     if (js.isMember("crop"))
     {
-      const auto& c = s.surface.crop;
-      if (!jsonNumbers(js["crop"], s.surface.crop) || !(c[0] < c[1] && c[2] < c[3] && c[4] < c[5]))
+      if (!jsonNumbers(js["crop"], s.surface.crop) || !lkapp::isOrderedBox(s.surface.crop.data()))
       {
         error = where + ": \"crop\" must be [xmin, xmax, ymin, ymax, zmin, zmax], each min below its max";
         return false;
@@ -1676,7 +1675,7 @@ int main(int argc, char* argv[])
       std::cout << ", series " << std::max<long>(0, used.series) << " of " << reader->GetNumberOfSeries();
     std::cout << ")\n";
   }
-  if (mesh)
+  else
   {
     const double merged = lkapp::fieldValue(planner.bone, "MergedPoints"),
                  degenerate = lkapp::fieldValue(planner.bone, "RemovedDegenerateFaces"),

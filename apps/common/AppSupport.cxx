@@ -508,7 +508,7 @@ void Arguments::box(const std::string& arg, double v[6])
     std::cerr << "error: " << arg << " needs six numbers XMIN,XMAX,YMIN,YMAX,ZMIN,ZMAX, not '" << text << "'\n";
     std::exit(2);
   }
-  if (!(v[0] < v[1] && v[2] < v[3] && v[4] < v[5]))
+  if (!isOrderedBox(v))
   {
     std::cerr << "error: " << arg << " needs each min below its max, not '" << text << "'\n";
     std::exit(2);
@@ -591,7 +591,7 @@ bool hasDisplay()
   const std::string name = display;
   if (name[0] == ':')
   {
-    const std::string number = name.substr(1, name.find('.') == std::string::npos ? std::string::npos : name.find('.') - 1);
+    const std::string number = name.substr(1, name.find('.') - 1); // npos - 1: to the end
     if (!number.empty() && number.find_first_not_of("0123456789") == std::string::npos)
       return vtksys::SystemTools::FileExists("/tmp/.X11-unix/X" + number);
   }

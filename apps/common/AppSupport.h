@@ -76,6 +76,12 @@ double fieldValue(vtkPolyData* pd, const std::string& name);
 /// why; the tools check this first.
 bool hasDisplay();
 
+/// A box (xmin, xmax, ymin, ymax, zmin, zmax) with each min below its max.
+inline bool isOrderedBox(const double v[6])
+{
+  return v[0] < v[1] && v[2] < v[3] && v[4] < v[5];
+}
+
 /// Command-line helpers.
 bool parseDouble(const std::string& text, double& value);
 bool parseInt(const std::string& text, long& value);
