@@ -69,8 +69,9 @@ long long fileBytes(const std::string& path);
 /// filters report their measurements there.
 double fieldValue(vtkPolyData* pd, const std::string& name);
 
-/// Whether an X display is named (DISPLAY set, and for a local display its
-/// socket there): Debian's VTK renders only
+/// Whether the X display DISPLAY names accepts a connection (a server that has
+/// ended, a host with none, or one refusing this client do not): Debian's VTK
+/// renders only
 /// through X, and without one it aborts the program in its first render
 /// ("bad X server connection"), after the work and before anything can say
 /// why; the tools check this first.
