@@ -414,6 +414,12 @@ TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)
   pinched.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 } };
   pinched.faces = { { 0, 1, 2 }, { 0, 3, 4 } };
   EXPECT_NE(message(pinched).find("pinched vertex"), std::string::npos) << message(pinched);
+  // Two closed tetrahedra that share vertex 0: two closed fans (cycles) there.
+  lk::PolygonMesh bowtie;
+  bowtie.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { -1, 0, 0 }, { 0, -1, 0 }, { 0, 0, -1 } };
+  bowtie.faces = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 }, { 0, 5, 4 }, { 0, 4, 6 }, { 0, 6, 5 },
+    { 4, 5, 6 } };
+  EXPECT_NE(message(bowtie).find("vertex 0 in more than one fan"), std::string::npos) << message(bowtie);
   // Three triangles on one edge.
   lk::PolygonMesh fin;
   fin.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } };

@@ -445,23 +445,23 @@ struct DirectedEdges
     // around a must form one orbit of this map (a cycle inside, a chain at a
     // border): walked from the chain's start, or from any slot, it must
     // visit every slot of a.
+    std::vector<char> reached;
     for (std::size_t a = 0; a + 1 < start.size(); ++a)
     {
       const std::size_t valence = start[a + 1] - start[a];
       if (valence == 0)
         continue;
-      std::size_t first = start[a];
-      for (std::size_t k = start[a]; k < start[a + 1]; ++k)
+      // The chain's start is the slot no other slot's map reaches (the
+      // twin of the edge before a -> c is a -> c, in a's row).
+      reached.assign(valence, 0);
+      for (std::size_t j = start[a]; j < start[a + 1]; ++j)
       {
-        bool reached = false;
-        for (std::size_t j = start[a]; j < start[a + 1] && !reached; ++j)
-          reached = twin[previous[j]] == k;
-        if (!reached)
-        {
-          first = k;
-          break;
-        }
+        const Slot r = twin[previous[j]];
+        if (r != npos && r >= start[a] && r < start[a + 1])
+          reached[r - start[a]] = 1;
       }
+      const std::size_t first =
+        start[a] + static_cast<std::size_t>(std::find(reached.begin(), reached.end(), 0) - reached.begin()) % valence;
       std::size_t visited = 0;
       for (std::size_t k = first; k != npos && visited <= valence; k = twin[previous[k]])
       {
@@ -1190,11 +1190,10 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
   {
     const std::size_t p = faceRegion[f];
     faceLocal[f] = static_cast<std::uint32_t>(result.pieces[p].faces.size());
-    std::vector<std::int64_t> face;
-    face.reserve(mesh.faces[f].size());
-    for (auto v : mesh.faces[f])
-      face.push_back(localId(p, v));
-    result.pieces[p].faces.push_back(std::move(face));
+    const auto& input = mesh.faces[f];
+    auto& face = result.pieces[p].faces.emplace_back(input.size());
+    for (std::size_t i = 0; i < input.size(); ++i)
+      face[i] = localId(p, input[i]);
     result.faceOrigin[p].push_back(static_cast<std::int64_t>(f));
   }
   if (!cap)
