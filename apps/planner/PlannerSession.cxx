@@ -1,0 +1,302 @@
+#include "planner/PlannerSession.h"
+
+#include "common/AppSupport.h"
+#include "common/JsonFields.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace lkplanner
+{
+Json::Value triple(const std::array<double, 3>& v)
+{
+  Json::Value j(Json::arrayValue);
+  for (double c : v)
+    j.append(c);
+  return j;
+}
+
+std::string cutKey(const Session& s)
+{
+  std::ostringstream os;
+  os.precision(17);
+  for (const Stroke& st : s.strokes)
+  {
+    os << st.mode << ":";
+    for (const auto& p : st.points)
+      os << p[0] << "," << p[1] << "," << p[2] << ";";
+    os << "|";
+  }
+  os << s.cut << s.capping;
+  return os.str();
+}
+
+double bumpFalloff(double radius)
+{
+  return std::log(100.0) / (radius * radius);
+}
+
+const char* modeName(int mode)
+{
+  switch (mode)
+  {
+    case vtkLKStrokeFeatureLineFilter::PAINT:
+      return "paint";
+    case vtkLKStrokeFeatureLineFilter::SNAP:
+      return "snap";
+    case vtkLKStrokeFeatureLineFilter::SPLIT:
+      return "split";
+    default:
+      return "nearest";
+  }
+}
+
+int modeOf(const std::string& name)
+{
+  if (name == "paint")
+    return vtkLKStrokeFeatureLineFilter::PAINT;
+  if (name == "snap")
+    return vtkLKStrokeFeatureLineFilter::SNAP;
+  if (name == "split")
+    return vtkLKStrokeFeatureLineFilter::SPLIT;
+  return vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
+}
+
+bool saveSession(const Session& s, const std::string& path, std::string& error)
+{
+  Json::Value root;
+  for (const Stroke& st : s.strokes)
+  {
+    Json::Value js;
+    js["mode"] = modeName(st.mode);
+    for (const auto& p : st.points)
+    {
+      Json::Value jp(Json::arrayValue);
+      for (double c : p)
+        jp.append(c);
+      js["points"].append(jp);
+    }
+    root["strokes"].append(js);
+  }
+  root["cut"] = s.cut;
+  root["capping"] = s.capping;
+  root["lattice"] = s.lattice;
+  root["latticeVertices"] = static_cast<Json::Int64>(s.latticeVertices);
+  root["metro"] = s.metro;
+  if (s.segment >= 0)
+  {
+    root["segment"]["piece"] = s.segment;
+    for (double v : s.segmentMatrix)
+      root["segment"]["matrix"].append(v);
+  }
+  for (const Deformation& d : s.deformations)
+  {
+    Json::Value jd;
+    jd["tool"] = d.tool;
+    jd["piece"] = d.piece;
+    jd["centre"] = triple(d.centre);
+    jd["radius"] = d.radius;
+    if (d.tool == "smooth")
+      jd["iterations"] = d.iterations;
+    else
+    {
+      jd["normal"] = triple(d.normal);
+      jd["amount"] = d.amount;
+    }
+    if (d.tool == "bump")
+      jd["falloff"] = d.falloff;
+    root["deformations"].append(jd);
+  }
+  if (s.surface.given)
+  {
+    root["surface"]["iso"] = s.surface.iso;
+    if (s.surface.seeded)
+      root["surface"]["seed"] = triple(s.surface.seed);
+    if (s.surface.cropped)
+      for (double v : s.surface.crop)
+        root["surface"]["crop"].append(v);
+    if (s.surface.series >= 0)
+      root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
+  }
+  std::ofstream out(path);
+  if (!out)
+  {
+    error = "cannot write '" + path + "'";
+    return false;
+  }
+  Json::StreamWriterBuilder builder;
+  builder["indentation"] = " ";
+  out << Json::writeString(builder, root) << "\n";
+  return static_cast<bool>(out);
+}
+
+bool readSession(const Json::Value& root, const std::string& path, Session& s, std::string& error)
+{
+  using namespace lkapp;
+  const std::string session = "the session '" + path + "'";
+  s = Session();
+  const Json::Value& strokes = root["strokes"];
+  if (!strokes.isNull() && !strokes.isArray())
+  {
+    error = session + ": \"strokes\" must be a list";
+    return false;
+  }
+  for (Json::ArrayIndex i = 0; strokes.isArray() && i < strokes.size(); ++i)
+  {
+    const Json::Value& js = strokes[i];
+    const std::string where = "stroke " + std::to_string(i + 1) + " in '" + path + "'";
+    std::string mode = "nearest";
+    if (!js.isObject())
+    {
+      error = where + " is not an object ({\"mode\": ..., \"points\": [...]})";
+      return false;
+    }
+    if (!jsonMember(js, "mode", mode, jsonString, where, "a string", error))
+      return false;
+    if (mode != "paint" && mode != "nearest" && mode != "snap" && mode != "split")
+    {
+      error = where + " has the mode '" + mode + "' (paint, nearest, snap or split)";
+      return false;
+    }
+    Stroke st;
+    st.mode = modeOf(mode);
+    const Json::Value& points = js["points"];
+    if (!points.isArray())
+    {
+      error = where + " needs \"points\": a list of [x, y, z]";
+      return false;
+    }
+    for (const auto& jp : points)
+    {
+      std::array<double, 3> p{};
+      if (!jsonNumbers(jp, p))
+      {
+        error = "a stroke point in '" + path + "' is not [x, y, z]";
+        return false;
+      }
+      st.points.push_back(p);
+    }
+    s.strokes.push_back(st);
+  }
+  long long vertices = s.latticeVertices;
+  const auto count = [](const Json::Value& v, long long& out) { return jsonInteger(v, 4, 100000000, out); };
+  if (!jsonMember(root, "cut", s.cut, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "capping", s.capping, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "lattice", s.lattice, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "metro", s.metro, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "latticeVertices", vertices, count, session, "a whole number from 4 to 100,000,000", error))
+    return false;
+  s.latticeVertices = static_cast<long>(vertices);
+  if (root.isMember("segment"))
+  {
+    const Json::Value& seg = root["segment"];
+    long long piece = -1;
+    std::array<double, 16> m{};
+    if (!seg.isObject() || !jsonInteger(seg["piece"], 0, std::numeric_limits<int>::max(), piece) ||
+      !jsonNumbers(seg["matrix"], m))
+    {
+      error = "the segment in '" + path + "' needs a piece index and a 16-number matrix";
+      return false;
+    }
+    s.segment = static_cast<int>(piece);
+    s.segmentMatrix = m;
+  }
+  const Json::Value& deformations = root["deformations"];
+  if (!deformations.isNull() && !deformations.isArray())
+  {
+    error = session + ": \"deformations\" must be a list";
+    return false;
+  }
+  for (Json::ArrayIndex i = 0; deformations.isArray() && i < deformations.size(); ++i)
+  {
+    const Json::Value& jd = deformations[i];
+    Deformation d;
+    const std::string where = "deformation " + std::to_string(s.deformations.size()) + " in '" + path + "'";
+    if (!jd.isObject() || !jsonString(jd["tool"], d.tool) || (d.tool != "bump" && d.tool != "box" && d.tool != "smooth"))
+    {
+      error = where + " has the tool '" + (jd.isObject() && jd["tool"].isString() ? jd["tool"].asString() : std::string("?")) +
+        "' (bump, box or smooth)";
+      return false;
+    }
+    long long piece = -1;
+    if (!jsonInteger(jd["piece"], 0, std::numeric_limits<int>::max(), piece) || !jsonNumbers(jd["centre"], d.centre) ||
+      !jsonNumber(jd["radius"], d.radius) || !(d.radius > 0.0))
+    {
+      error = where + " needs a piece index, a centre [x, y, z] and a radius above 0";
+      return false;
+    }
+    d.piece = static_cast<int>(piece);
+    if (d.tool == "smooth")
+    {
+      long long iterations = d.iterations;
+      const auto upTo100 = [](const Json::Value& v, long long& out) { return jsonInteger(v, 1, 100, out); };
+      if (!jsonMember(jd, "iterations", iterations, upTo100, where, "1 to 100", error))
+      {
+        error = where + " needs 1 to 100 smoothing iterations";
+        return false;
+      }
+      d.iterations = static_cast<int>(iterations);
+    }
+    else if (!jsonNumbers(jd["normal"], d.normal) || !jsonNumber(jd["amount"], d.amount))
+    {
+      error = where + " needs a normal [x, y, z] and an amount";
+      return false;
+    }
+    if (d.tool == "bump")
+    {
+      d.falloff = bumpFalloff(d.radius);
+      if (!jsonMember(jd, "falloff", d.falloff, jsonNumber, where, "a number", error) || !(d.falloff >= 0.0))
+      {
+        error = where + " needs a falloff of 0 or more";
+        return false;
+      }
+    }
+    s.deformations.push_back(d);
+  }
+  if (root.isMember("surface"))
+  {
+    const Json::Value& js = root["surface"];
+    const std::string where = "the surface of " + session;
+    long long series = -1;
+    const auto seriesIndex = [](const Json::Value& v, long long& out) {
+      return jsonInteger(v, 0, std::numeric_limits<int>::max(), out);
+    };
+    if (!js.isObject() || !jsonMember(js, "iso", s.surface.iso, jsonNumber, where, "a number", error) ||
+      !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error))
+    {
+      if (!js.isObject())
+        error = session + ": \"surface\" must be an object (iso, seed, series)";
+      return false;
+    }
+    if (js.isMember("seed"))
+    {
+      if (!jsonNumbers(js["seed"], s.surface.seed))
+      {
+        error = where + ": \"seed\" must be [x, y, z]";
+        return false;
+      }
+      s.surface.seeded = true;
+    }
+    if (js.isMember("crop"))
+    {
+      if (!jsonNumbers(js["crop"], s.surface.crop) || !lkapp::isOrderedBox(s.surface.crop.data()))
+      {
+        error = where + ": \"crop\" must be [xmin, xmax, ymin, ymax, zmin, zmax], each min below its max";
+        return false;
+      }
+      s.surface.cropped = true;
+    }
+    s.surface.series = static_cast<long>(series);
+    s.surface.given = true;
+  }
+  return true;
+}
+
+bool loadSession(const std::string& path, Session& s, std::string& error)
+{
+  return lkapp::loadJsonObject(
+    path, "session", [&](const Json::Value& root, std::string& message) { return readSession(root, path, s, message); }, error);
+}
+} // namespace lkplanner

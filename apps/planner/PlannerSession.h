@@ -1,0 +1,115 @@
+// The planner's sessions: what a surgeon did in latticekit-planner (strokes,
+// the cut, the lattice, Metro, the moved segment, deformations, how a CT's
+// surface was made), saved with `w` and replayed with --replay. A session is
+// a JSON object. Every top-level field may be left out (the defaults below);
+// a deformation needs its piece, centre and radius, and bump and box their
+// normal and amount:
+//
+//   "strokes":  [{"mode": "paint" | "nearest" | "snap" | "split",
+//                 "points": [[x, y, z], ...]}, ...]   patient mm, on the surface
+//   "cut": bool, "capping": bool (default true)       the closed lines cut, capped
+//   "lattice": bool, "latticeVertices": 4 to 1e8      a lattice per piece (600)
+//   "metro": bool                                     Metro colours on the lattices
+//   "segment": {"piece": i, "matrix": [16 numbers]}   the moved piece, row-major 4x4
+//   "deformations": [{"tool": "bump" | "box" | "smooth", "piece": i,
+//                     "centre": [x, y, z], "radius": r > 0,
+//                     "normal": [x, y, z], "amount": k,   (bump, box)
+//                     "falloff": a >= 0,                  (bump; ln(100) / r^2)
+//                     "iterations": 1 to 100}, ...]       (smooth; 3)
+//   "surface": {"iso": HU, "seed": [x, y, z],
+//               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i}
+//
+// A field of the wrong kind is refused with a message that names it.
+#ifndef latticekit_apps_PlannerSession_h
+#define latticekit_apps_PlannerSession_h
+
+#include "vtkLKStrokeFeatureLineFilter.h"
+
+#include <vtk_jsoncpp.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace lkplanner
+{
+struct Stroke
+{
+  int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
+  std::vector<std::array<double, 3>> points;
+};
+
+/// One deformation of the adaptive micro planar patches (seed 002) on a
+/// piece, in the piece's own frame (before the segment's move).
+/// - bump: eq. 1, k exp(-a d^2) along the surface normal within `radius` of
+///   the centre; k = amount, a = falloff (the tool uses ln(100) / radius^2,
+///   so the bump has fallen to 1 % of k at the radius);
+/// - box: every vertex in the cube centre +- radius moves by amount * normal
+///   (the paper's range deformation);
+/// - smooth: eq. 2 in the ball (centre, radius), `iterations` times (one dab
+///   of the smoothing brush).
+struct Deformation
+{
+  std::string tool = "bump";
+  int piece = 0;
+  std::array<double, 3> centre{ 0, 0, 0 }, normal{ 0, 0, 1 };
+  double amount = 0.0, radius = 1.0, falloff = 0.0;
+  int iterations = 3;
+};
+
+struct Session
+{
+  std::vector<Stroke> strokes;
+  bool cut = false;
+  bool capping = true;
+  bool lattice = false;
+  long latticeVertices = 600;
+  bool metro = false;
+  /// The moved segment: a piece index (pieces in cut order) and its rigid
+  /// transform, row-major 4x4 (the surgery moves the segment).
+  int segment = -1;
+  std::array<double, 16> segmentMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  /// Applied in order to the pieces after the cut, before the lattice.
+  std::vector<Deformation> deformations;
+  /// How a CT's bone surface was made (saved with the session, so that its
+  /// strokes find the same surface on replay): the threshold, the component
+  /// at a seed or the largest, the DICOM series.
+  struct Surface
+  {
+    bool given = false; ///< false: none recorded (a mesh input, an older session)
+    double iso = 300.0;
+    bool seeded = false;
+    std::array<double, 3> seed{};
+    bool cropped = false;
+    std::array<double, 6> crop{}; ///< patient coordinates, xmin, xmax, ymin, ymax, zmin, zmax
+    long series = -1; ///< -1: the largest
+  } surface;
+};
+
+/// A point as a JSON list [x, y, z].
+Json::Value triple(const std::array<double, 3>& v);
+
+/// The part of a session the cut depends on (strokes, cut, capping), as a
+/// key that changes when they do.
+std::string cutKey(const Session& s);
+
+/// The bump tool's eq. 1 falloff a: the bump is down to 1 % of k at the radius.
+double bumpFalloff(double radius);
+
+/// A stroke mode's name in a session ("paint", "nearest", "snap", "split"),
+/// and back (an unknown name reads as "nearest"; readSession refuses it).
+const char* modeName(int mode);
+int modeOf(const std::string& name);
+
+/// Writes `s` to `path` as JSON; false with `error` if it cannot.
+bool saveSession(const Session& s, const std::string& path, std::string& error);
+
+/// Reads a session, every field's kind checked (a wrong one is refused with
+/// a message naming it and `path`, not an exception).
+bool readSession(const Json::Value& root, const std::string& path, Session& s, std::string& error);
+
+/// Reads the file `path` (a JSON object) into `s`.
+bool loadSession(const std::string& path, Session& s, std::string& error);
+} // namespace lkplanner
+
+#endif
