@@ -3,10 +3,12 @@
 
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
+#include "vtkLKMeshRepairFilter.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtksys/SystemTools.hxx>
 
@@ -27,6 +29,11 @@ void usage(std::ostream& os)
         "surface against MESH. MESH: .vtp, .vtk, .ply, .obj or .stl; LATTICE: .vtp, .vtk, .ply,\n"
         ".obj (feature edges are line cells in .vtp/.vtk).\n"
         "\n"
+        "  --repair               triangulate and repair MESH first (polygons split into\n"
+        "                         triangles, duplicate points merged, degenerate faces\n"
+        "                         removed, non-manifold vertices split, orientation made\n"
+        "                         consistent); the error and --vertex-map are then those\n"
+        "                         of the repaired mesh\n"
         "  --vertices N           lattice vertices (default: 10 % of the input's)\n"
         "  --ratio R              keep this fraction of the vertices instead (0 < R < 1)\n"
         "  --max-error E          or the fewest vertices whose surface stays within E % of\n"
@@ -60,6 +67,22 @@ void usage(std::ostream& os)
         "  -h, --help             this help\n";
 }
 
+/// Whether `b` has the points of `a`, in the same order.
+bool samePoints(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints())
+    return false;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    if (p[0] != q[0] || p[1] != q[1] || p[2] != q[2])
+      return false;
+  }
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -67,7 +90,7 @@ int main(int argc, char* argv[])
   std::string input, output, featuresIn, surfaceOut, mapOut;
   long vertices = 0, iterations = 8, resolution = 8, insertions = -1; // -1: 1 per 100 vertices
   double ratio = 0.0, maxError = 0.0, countTolerance = 0.01, k = 1000.0, kn = 100.0, tail = 10.0;
-  bool lock = false, flat = false, quads = false, refine = false, quiet = false;
+  bool lock = false, flat = false, quads = false, refine = false, quiet = false, repair = false;
   // Options that act only with another: refused without it rather than
   // ignored.
   bool countToleranceGiven = false, featureOptionGiven = false;
@@ -102,6 +125,8 @@ int main(int argc, char* argv[])
     }
     else if (a == "--lock-features")
       lock = featureOptionGiven = true;
+    else if (a == "--repair")
+      repair = true;
     else if (a == "--flat-quadrics")
       flat = true;
     else if (a == "--quads")
@@ -178,6 +203,27 @@ int main(int argc, char* argv[])
     }
   }
   const auto start = std::chrono::steady_clock::now();
+  const vtkIdType inputPoints = mesh->GetNumberOfPoints(), inputPolygons = mesh->GetNumberOfPolys();
+  vtkNew<vtkLKMeshRepairFilter> repairFilter;
+  if (repair)
+  {
+    repairFilter->SetInputData(mesh);
+    repairFilter->Update();
+    if (lkapp::errorCount() > 0)
+      return 1;
+    vtkPolyData* repaired = repairFilter->GetOutput();
+    // Feature lines name the mesh's points (by id or position); a repair
+    // that renumbers or moves them would leave the lines naming others.
+    if (features && !samePoints(mesh, repaired))
+    {
+      std::cerr << "error: --repair changed the points of '" << input << "' (" << inputPoints << " -> "
+                << repaired->GetNumberOfPoints()
+                << "), so the feature lines no longer name them: draw the features on the repaired mesh "
+                   "(--vertex-map writes it) and fit that\n";
+      return 1;
+    }
+    mesh = repaired;
+  }
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(mesh);
   if (features)
@@ -203,7 +249,12 @@ int main(int argc, char* argv[])
     fit->Update();
   }
   if (lkapp::errorCount() > 0)
+  {
+    const std::string why = lkapp::errors();
+    if (!repair && (why.find("only triangles") != std::string::npos || why.find("manifold") != std::string::npos))
+      std::cerr << "hint: --repair triangulates and repairs '" << input << "' first\n";
     return 1;
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   vtkPolyData* lattice = fit->GetOutput();
   if (!lkapp::writeMesh(lattice, output, error) ||
@@ -228,9 +279,15 @@ int main(int argc, char* argv[])
     }
     surfaceBytes = lkapp::fileBytes(surfaceOut);
   }
-  std::printf("input            %lld vertices, %lld triangles (%s, %lld bytes)\n",
-    static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(mesh->GetNumberOfPolys()),
-    input.c_str(), lkapp::fileBytes(input));
+  std::printf("input            %lld vertices, %lld %s (%s, %lld bytes)\n", static_cast<long long>(inputPoints),
+    static_cast<long long>(inputPolygons), repair ? "polygons" : "triangles", input.c_str(), lkapp::fileBytes(input));
+  if (repair)
+    std::printf("repaired         %lld vertices, %lld triangles: %.0f points merged, %.0f degenerate faces removed, "
+                "%.0f non-manifold vertices split\n",
+      static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(mesh->GetNumberOfPolys()),
+      lkapp::fieldValue(repairFilter->GetOutput(), "MergedPoints"),
+      lkapp::fieldValue(repairFilter->GetOutput(), "RemovedDegenerateFaces"),
+      lkapp::fieldValue(repairFilter->GetOutput(), "SplitNonManifoldVertices"));
   std::printf("lattice          %.0f control vertices; faces: %.0f triangles, %.0f quads; %.0f feature edges\n",
     lkapp::fieldValue(lattice, "ControlVertices"), lkapp::fieldValue(lattice, "Triangles"), lkapp::fieldValue(lattice, "Quads"),
     lkapp::fieldValue(lattice, "FeatureEdges"));
