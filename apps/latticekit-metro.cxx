@@ -7,7 +7,9 @@
 #include <vtkFieldData.h>
 #include <vtkMassProperties.h>
 #include <vtkNew.h>
+#include <vtkCellArray.h>
 #include <vtkPolyData.h>
+#include <vtkTriangleFilter.h>
 
 #include <chrono>
 #include <cstdio>
@@ -22,7 +24,8 @@ void usage(std::ostream& os)
   os << "usage: latticekit-metro A B [options]\n"
         "\n"
         "Measures the distance between the surfaces of two triangle meshes the way Metro\n"
-        "(Cignoni, Rocchini, Scopigno 1998) does. A and B: .vtp, .vtk, .stl, .ply or .obj.\n"
+        "(Cignoni, Rocchini, Scopigno 1998) does. A and B: .vtp, .vtk, .stl, .ply or .obj;\n"
+        "polygons and strips are split into triangles first (said in the report).\n"
         "\n"
         "  --samples N      face samples per direction (default: 10 per face of the larger mesh)\n"
         "  --density D      face samples per unit area (overrides --samples)\n"
@@ -38,6 +41,33 @@ void usage(std::ostream& os)
         "  --colored OUT    write A with per-point distance and colours (blue small, red large)\n"
         "  -q, --quiet      no progress bar\n"
         "  -h, --help       this help\n";
+}
+
+/// Whether `pd` has faces other than triangles (polygons, strips).
+bool hasNonTriangles(vtkPolyData* pd)
+{
+  if (pd->GetNumberOfStrips() > 0)
+    return true;
+  vtkCellArray* polys = pd->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+    if (polys->GetCellSize(c) != 3)
+      return true;
+  return false;
+}
+
+/// `pd` with its polygons and strips split into triangles (vtkTriangleFilter;
+/// vertex and line cells kept, for the filter to refuse), or `pd` as it is.
+vtkSmartPointer<vtkPolyData> triangulated(vtkPolyData* pd, const char* label, std::string& note)
+{
+  if (!hasNonTriangles(pd))
+    return pd;
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(pd);
+  triangles->Update();
+  vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
+  note += std::string(" ") + label + ": " + std::to_string(pd->GetNumberOfPolys() + pd->GetNumberOfStrips()) +
+    " faces split into " + std::to_string(out->GetNumberOfPolys()) + " triangles\n";
+  return out;
 }
 
 void printMeshInfo(const char* label, const std::string& path, vtkPolyData* pd)
@@ -128,6 +158,7 @@ int main(int argc, char* argv[])
     return 1;
   }
   vtkSmartPointer<vtkPolyData> meshes[2];
+  std::string triangulation;
   for (int k = 0; k < 2; ++k)
   {
     meshes[k] = lkapp::readMesh(inputs[static_cast<std::size_t>(k)], error);
@@ -136,6 +167,7 @@ int main(int argc, char* argv[])
       std::cerr << "error: " << error << "\n";
       return 1;
     }
+    meshes[k] = triangulated(meshes[k], k == 0 ? "A" : "B", triangulation);
   }
 
   vtkNew<vtkLKMetroFilter> metro;
@@ -164,6 +196,7 @@ int main(int argc, char* argv[])
   vtkPolyData* out = metro->GetOutput();
 
   std::printf("latticekit-metro: Metro-style surface distance\n\nMesh info:\n");
+  std::printf("%s", triangulation.c_str());
   printMeshInfo("A", inputs[0], meshes[0]);
   printMeshInfo("B", inputs[1], meshes[1]);
   std::printf("\tbbox diagonal (A and B together) %.6f\n", lkapp::fieldValue(out, "BoundingBoxDiagonal"));
