@@ -22,6 +22,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
 #include <vtkCommand.h>
@@ -62,6 +63,7 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -192,6 +194,17 @@ public:
   std::vector<double> frameMs, updateMs;  ///< per mouse move: deformation plus render, deformation alone
   std::vector<Session> undoStack, redoStack; ///< whole-session snapshots
   std::vector<std::vector<vtkSmartPointer<vtkActor>>> pieceActors;
+  /// Each piece's lattice and its surface, kept while the piece and the
+  /// vertex count do not change: toggling Metro, a stroke that leaves the
+  /// cut as it was or a deformation of another piece refits nothing.
+  struct FittedLattice
+  {
+    std::uint64_t key = 0;
+    vtkSmartPointer<vtkPolyData> lattice, surface; ///< empty surface: the fit failed
+    std::string errors;
+  };
+  std::vector<FittedLattice> lattices;
+  std::size_t latticeFits = 0, latticesReused = 0;
 
   /// Call before a change: the session as it was goes on the undo stack.
   void remember() { remember(session); }
@@ -488,23 +501,14 @@ public:
       vtkSmartPointer<vtkPolyData> shown = pieces[p];
       if (session.lattice)
       {
-        vtkNew<vtkLKLatticeFitFilter> fit;
-        fit->SetInputData(pieces[p]);
-        fit->SetTargetNumberOfVertices(std::min<vtkIdType>(session.latticeVertices, pieces[p]->GetNumberOfPoints() / 2));
-        fit->QuadPairingOn();
-        fit->ComputeErrorOff();
-        vtkNew<vtkLKLatticeSurfaceFilter> smooth;
-        smooth->SetInputConnection(fit->GetOutputPort());
-        smooth->SetResolution(4);
-        const int before = lkapp::errorCount();
-        smooth->Update();
-        if (lkapp::errorCount() > before)
-          addLine(message, "no lattice for piece " + std::to_string(p) + ": " + lkapp::errorsSince(before));
-        if (smooth->GetOutput()->GetNumberOfPoints() > 0)
+        const FittedLattice& fitted = latticeOf(p);
+        if (!fitted.errors.empty())
+          addLine(message, "no lattice for piece " + std::to_string(p) + ": " + fitted.errors);
+        if (fitted.surface->GetNumberOfPoints() > 0)
         {
-          shown = smooth->GetOutput();
+          shown = fitted.surface;
           vtkNew<vtkExtractEdges> cage;
-          cage->SetInputConnection(fit->GetOutputPort());
+          cage->SetInputData(fitted.lattice);
           addActor(cage->GetOutputPort(), nullptr, { 0.2, 0.2, 0.2 }, false)->PickableOff();
         }
       }
@@ -534,6 +538,72 @@ public:
         std::to_string(pieces.size()) + " piece(s)");
     placeSegment(session.segmentMatrix);
     updateStatus();
+  }
+
+  /// Piece p's lattice (600 vertices or the session's, at most half the
+  /// piece's) and its smooth surface: fitted again only when the piece's
+  /// points or faces, or the count, changed since the last fit.
+  const FittedLattice& latticeOf(std::size_t p)
+  {
+    vtkPolyData* piece = pieces[p];
+    const vtkIdType vertices = std::min<vtkIdType>(session.latticeVertices, piece->GetNumberOfPoints() / 2);
+    const std::uint64_t key = geometryKey(piece, vertices);
+    if (lattices.size() <= p)
+      lattices.resize(p + 1);
+    FittedLattice& fitted = lattices[p];
+    if (fitted.lattice && fitted.key == key)
+    {
+      ++latticesReused;
+      return fitted;
+    }
+    ++latticeFits;
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(piece);
+    fit->SetTargetNumberOfVertices(vertices);
+    fit->QuadPairingOn();
+    fit->ComputeErrorOff();
+    vtkNew<vtkLKLatticeSurfaceFilter> smooth;
+    smooth->SetInputConnection(fit->GetOutputPort());
+    smooth->SetResolution(4);
+    const int before = lkapp::errorCount();
+    smooth->Update();
+    fitted.key = key;
+    fitted.errors = lkapp::errorCount() > before ? lkapp::errorsSince(before) : "";
+    fitted.lattice = vtkSmartPointer<vtkPolyData>::New();
+    fitted.lattice->ShallowCopy(fit->GetOutput());
+    fitted.surface = vtkSmartPointer<vtkPolyData>::New();
+    fitted.surface->ShallowCopy(smooth->GetOutput());
+    return fitted;
+  }
+
+  /// A 64-bit digest (FNV-1a) of a mesh's points and polygons and a count.
+  static std::uint64_t geometryKey(vtkPolyData* pd, vtkIdType count)
+  {
+    std::uint64_t h = 1469598103934665603ULL;
+    auto mix = [&h](const void* data, std::size_t bytes) {
+      const auto* c = static_cast<const unsigned char*>(data);
+      for (std::size_t i = 0; i < bytes; ++i)
+        h = (h ^ c[i]) * 1099511628211ULL;
+    };
+    mix(&count, sizeof count);
+    const vtkIdType n = pd->GetNumberOfPoints();
+    mix(&n, sizeof n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      pd->GetPoint(i, x);
+      mix(x, sizeof x);
+    }
+    auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      it->GetCurrentCell(size, ids);
+      mix(&size, sizeof size);
+      mix(ids, sizeof(vtkIdType) * static_cast<std::size_t>(size));
+    }
+    return h;
   }
 
   /// The surface without its line cells (the feature lines a stroke left on it).
@@ -676,6 +746,8 @@ public:
                   "slowest %.1f ms\n",
         t.size(), u[u.size() / 2], u.back(), t[t.size() / 2], t.back());
     }
+    if (latticeFits + latticesReused > 0)
+      std::printf("lattice fits: %zu (%zu kept from an earlier fit of the same piece)\n", latticeFits, latticesReused);
     std::printf("%s", segmentText().c_str());
     std::istringstream lines(message);
     for (std::string line; std::getline(lines, line);)
