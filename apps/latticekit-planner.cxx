@@ -202,6 +202,9 @@ public:
     std::uint64_t key = 0;
     vtkSmartPointer<vtkPolyData> lattice, surface; ///< empty surface: the fit failed
     std::string errors;
+    /// The surface with its Metro distance to the piece, once asked for.
+    vtkSmartPointer<vtkPolyData> metro;
+    double colourMaximum = 0.0, hausdorff = 0.0;
   };
   std::vector<FittedLattice> lattices;
   std::size_t latticeFits = 0, latticesReused = 0;
@@ -514,18 +517,24 @@ public:
       }
       if (session.metro && shown != pieces[p])
       {
-        vtkNew<vtkLKMetroFilter> metro;
-        metro->SetInputData(shown);
-        metro->SetTargetData(pieces[p]);
-        metro->Update();
-        auto coloured = vtkSmartPointer<vtkPolyData>::New();
-        coloured->ShallowCopy(metro->GetOutput());
-        coloured->GetPointData()->SetActiveScalars("Distance");
-        auto actor = addActorData(coloured, { 1, 1, 1 }, true);
+        FittedLattice& fitted = lattices[p]; // shown is its surface
+        if (!fitted.metro)
+        {
+          vtkNew<vtkLKMetroFilter> metro;
+          metro->SetInputData(shown);
+          metro->SetTargetData(pieces[p]);
+          metro->Update();
+          fitted.metro = vtkSmartPointer<vtkPolyData>::New();
+          fitted.metro->ShallowCopy(metro->GetOutput());
+          fitted.metro->GetPointData()->SetActiveScalars("Distance");
+          fitted.colourMaximum = metro->GetEffectiveColorMaximum();
+          fitted.hausdorff = metro->GetHausdorffDistance();
+        }
+        auto actor = addActorData(fitted.metro, { 1, 1, 1 }, true);
         actor->GetMapper()->SetLookupTable(distanceColours);
         actor->GetMapper()->UseLookupTableScalarRangeOn();
-        colourTop = std::max(colourTop, metro->GetEffectiveColorMaximum());
-        largest = std::max(largest, metro->GetHausdorffDistance());
+        colourTop = std::max(colourTop, fitted.colourMaximum);
+        largest = std::max(largest, fitted.hausdorff);
         scalarBar->SetVisibility(true);
       }
       else
@@ -573,6 +582,7 @@ public:
     fitted.lattice->ShallowCopy(fit->GetOutput());
     fitted.surface = vtkSmartPointer<vtkPolyData>::New();
     fitted.surface->ShallowCopy(smooth->GetOutput());
+    fitted.metro = nullptr;
     return fitted;
   }
 
