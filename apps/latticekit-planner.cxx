@@ -682,7 +682,8 @@ public:
     std::ostringstream s;
     s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
       << " | pieces: " << pieces.size() << (cut.innerWallLines > 0 ? " (cut through the marrow cavity too)" : "")
-      << (session.lattice ? " | lattice" : "");
+      << (session.lattice ? " | lattice" : "")
+      << (session.metro ? (session.lattice ? " | Metro colours" : " | Metro colours (on the lattice: press l)") : "");
     if (tool != NO_TOOL)
     {
       char r[32];
