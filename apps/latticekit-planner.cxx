@@ -1260,6 +1260,9 @@ void usage(std::ostream& os)
         "                       only the CT inside this patient-space box (mm), padded with air\n"
         "                       so that the surface closes where the box cuts bone\n"
         "  --series I           DICOM: series I of the folder (0 = largest, the default)\n"
+        "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 0;\n"
+        "                       20 takes a label map's slice staircase out, moving the surface\n"
+        "                       by about 0.07 mm on average, up to about 1 mm)\n"
         "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro, moved segment,\n"
         "                       deformations)\n"
         "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
@@ -1277,7 +1280,7 @@ int main(int argc, char* argv[])
   std::string input, replay, shot, exportFolder, events, sessionOut = "planner_session.json";
   double iso = 300.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool isoGiven = false, seeded = false, cropped = false;
-  long series = -1;
+  long series = -1, smoothing = -1;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -1299,6 +1302,8 @@ int main(int argc, char* argv[])
     }
     else if (a == "--series")
       series = args.integer(a, 0, std::numeric_limits<int>::max(), "an integer >= 0");
+    else if (a == "--smooth")
+      smoothing = args.integer(a, 0, 1000, "an integer from 0 to 1000");
     else if (a == "--replay")
       replay = args.value(a);
     else if (a == "--screenshot")
@@ -1341,9 +1346,9 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    if (isoGiven || seeded || cropped || series >= 0)
+    if (isoGiven || seeded || cropped || series >= 0 || smoothing >= 0)
     {
-      std::cerr << "error: --iso, --seed, --crop and --series are for a CT or label map; '" << input
+      std::cerr << "error: --iso, --seed, --crop, --series and --smooth are for a CT or label map; '" << input
                 << "' is a mesh\n";
       return 2;
     }
@@ -1375,6 +1380,8 @@ int main(int argc, char* argv[])
     }
     if (series >= 0)
       used.series = series;
+    if (smoothing >= 0)
+      used.smoothing = smoothing;
     used.given = true;
     reader->SetFileName(input.c_str());
     reader->SetSeriesIndex(static_cast<int>(used.series));
@@ -1387,6 +1394,7 @@ int main(int argc, char* argv[])
     }
     bone->SetCropping(used.cropped);
     bone->SetCropBox(used.crop.data());
+    bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
   }
   surface->Update();
   if (lkapp::errorCount() > 0 || surface->GetOutput()->GetNumberOfPolys() == 0)
@@ -1412,6 +1420,8 @@ int main(int argc, char* argv[])
       std::cout << "the largest component";
     if (reader->GetNumberOfSeries() > 0)
       std::cout << ", series " << std::max<long>(0, used.series) << " of " << reader->GetNumberOfSeries();
+    if (used.smoothing > 0)
+      std::cout << ", smoothed (" << used.smoothing << " windowed-sinc iterations)";
     std::cout << ")\n";
   }
   else

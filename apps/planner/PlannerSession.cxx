@@ -119,6 +119,8 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
         root["surface"]["crop"].append(v);
     if (s.surface.series >= 0)
       root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
+    if (s.surface.smoothing > 0)
+      root["surface"]["smooth"] = static_cast<Json::Int64>(s.surface.smoothing);
   }
   std::ofstream out(path);
   if (!out)
@@ -263,11 +265,14 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
     const auto seriesIndex = [](const Json::Value& v, long long& out) {
       return jsonInteger(v, 0, std::numeric_limits<int>::max(), out);
     };
+    long long smoothing = 0;
+    const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 1000, out); };
     if (!js.isObject() || !jsonMember(js, "iso", s.surface.iso, jsonNumber, where, "a number", error) ||
-      !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error))
+      !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error) ||
+      !jsonMember(js, "smooth", smoothing, iterations, where, "a whole number from 0 to 1000", error))
     {
       if (!js.isObject())
-        error = session + ": \"surface\" must be an object (iso, seed, series)";
+        error = session + ": \"surface\" must be an object (iso, seed, crop, series, smooth)";
       return false;
     }
     if (js.isMember("seed"))
@@ -289,6 +294,7 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
       s.surface.cropped = true;
     }
     s.surface.series = static_cast<long>(series);
+    s.surface.smoothing = static_cast<long>(smoothing);
     s.surface.given = true;
   }
   return true;

@@ -17,7 +17,8 @@
 //                     "falloff": a >= 0,                  (bump; ln(100) / r^2)
 //                     "iterations": 1 to 100}, ...]       (smooth; 3)
 //   "surface": {"iso": HU, "seed": [x, y, z],
-//               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i}
+//               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
+//               "smooth": 0 to 1000}                windowed-sinc iterations (0)
 //
 // A field of the wrong kind is refused with a message that names it.
 #ifndef latticekit_apps_PlannerSession_h
@@ -83,6 +84,7 @@ struct Session
     bool cropped = false;
     std::array<double, 6> crop{}; ///< patient coordinates, xmin, xmax, ymin, ymax, zmin, zmax
     long series = -1; ///< -1: the largest
+    long smoothing = 0; ///< windowed-sinc iterations on the surface
   } surface;
 };
 
