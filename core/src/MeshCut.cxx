@@ -791,6 +791,13 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
   if (!plane.flat)
     return out;
   const std::vector<Point2> polygon = projected(points, plane);
+  // A kept section lies inside the loop: crossings whose point falls outside
+  // the loop's box in the plane are not needed (on a large mesh the plane's
+  // whole section would be).
+  const auto box = CGAL::bbox_2(polygon.begin(), polygon.end());
+  auto inBox = [&](const Point2& q) {
+    return q.x() >= box.xmin() && q.x() <= box.xmax() && q.y() >= box.ymin() && q.y() <= box.ymax();
+  };
   // Crossing edges (a < b) and their parameter along a -> b.
   std::vector<double> d(mesh.points.size());
   std::map<std::pair<std::int64_t, std::int64_t>, double> crossing;
@@ -816,6 +823,8 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
         if ((da >= 0.0) == (db >= 0.0))
           continue;
         const double t = da / (da - db);
+        if (!inBox(projected(pointAt(a, b, t), plane)))
+          continue;
         crossing[{ a, b }] = t;
         if (t > 1e-4 && t < 1.0 - 1e-4)
           continue;
@@ -834,9 +843,17 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
   // The section graph: each crossed triangle joins its two crossed edges.
   std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOfEdge;
   auto key = [](std::int64_t a, std::int64_t b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  // Whether the plane passes between the face's vertices: only such faces
+  // have crossed edges (most of a large mesh does not; no lookups there).
+  auto crossesPlane = [&](const std::vector<std::int64_t>& face) {
+    const bool side = d[static_cast<std::size_t>(face[0])] >= 0.0;
+    return std::any_of(face.begin() + 1, face.end(), [&](std::int64_t v) { return (d[static_cast<std::size_t>(v)] >= 0.0) != side; });
+  };
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
   {
     const auto& face = mesh.faces[f];
+    if (!crossesPlane(face))
+      continue;
     for (std::size_t i = 0; i < face.size(); ++i)
     {
       const auto e = key(face[i], face[(i + 1) % face.size()]);
@@ -925,7 +942,7 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
   {
     const auto& face = mesh.faces[f];
     std::size_t lone = 3;
-    if (face.size() == 3)
+    if (face.size() == 3 && crossesPlane(face))
       for (std::size_t i = 0; i < 3; ++i)
       {
         const auto e1 = key(face[i], face[(i + 1) % 3]), e2 = key(face[i], face[(i + 2) % 3]);
@@ -1389,20 +1406,24 @@ std::optional<CutResult> cutThroughInnerWalls(
   for (const auto& loop : loops)
     for (auto v : loop)
       marked[static_cast<std::size_t>(v)] = 1;
-  PolygonMesh current = mesh;
+  // The mesh as split so far: the input itself until a wall is found (no
+  // copy of a large mesh whose loops meet none).
+  PolygonMesh split;
+  const PolygonMesh* current = &mesh;
   std::vector<std::int64_t> faceParent(mesh.faces.size());
   std::iota(faceParent.begin(), faceParent.end(), 0);
   std::vector<std::vector<std::int64_t>> all = loops;
   for (const auto& loop : loops)
   {
-    InnerWalls walls = splitAlongInnerWalls(current, loop, marked);
+    InnerWalls walls = splitAlongInnerWalls(*current, loop, marked);
     if (walls.loops.empty())
       continue;
     for (auto& f : walls.faceParent)
       f = faceParent[static_cast<std::size_t>(f)];
     faceParent = std::move(walls.faceParent);
-    current = std::move(walls.mesh);
-    marked.resize(current.points.size(), 0);
+    split = std::move(walls.mesh);
+    current = &split;
+    marked.resize(current->points.size(), 0);
     for (auto& inner : walls.loops)
     {
       for (auto v : inner)
@@ -1412,7 +1433,7 @@ std::optional<CutResult> cutThroughInnerWalls(
   }
   if (all.size() == loops.size())
     return std::nullopt;
-  CutResult result = cutOnce(current, all, cap);
+  CutResult result = cutOnce(*current, all, cap);
   for (auto& origins : result.vertexOrigin)
     for (auto& v : origins)
       if (v >= static_cast<std::int64_t>(mesh.points.size()))
