@@ -495,6 +495,8 @@ public:
     for (const auto& [line, shade] : cut.lines)
       addLineActor(line, shade);
     applyDeformations();
+    if (lattices.size() > pieces.size())
+      lattices.resize(pieces.size()); // pieces the cut no longer makes
     pieceActors.assign(pieces.size(), {});
     // Every piece's Metro colours share one scale: the largest of their colour maxima.
     double colourTop = 0.0, largest = 0.0;
