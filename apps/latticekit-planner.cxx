@@ -65,6 +65,7 @@
 #include <numeric>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -588,14 +589,24 @@ public:
     return fitted;
   }
 
-  /// A 64-bit digest (FNV-1a) of a mesh's points and polygons and a count.
+  /// A 64-bit digest of a mesh's points and polygons and a count: FNV-1a
+  /// over 8-byte words, each scrambled first (splitmix64's finaliser, so that
+  /// every bit of a word reaches every bit of the digest); the skull's 40 MB
+  /// in a few milliseconds.
   static std::uint64_t geometryKey(vtkPolyData* pd, vtkIdType count)
   {
     std::uint64_t h = 1469598103934665603ULL;
     auto mix = [&h](const void* data, std::size_t bytes) {
       const auto* c = static_cast<const unsigned char*>(data);
-      for (std::size_t i = 0; i < bytes; ++i)
-        h = (h ^ c[i]) * 1099511628211ULL;
+      for (std::size_t i = 0; i < bytes; i += 8)
+      {
+        std::uint64_t word = 0;
+        std::memcpy(&word, c + i, std::min<std::size_t>(8, bytes - i));
+        word = (word ^ (word >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        word = (word ^ (word >> 27)) * 0x94d049bb133111ebULL;
+        word ^= word >> 31;
+        h = (h ^ word) * 1099511628211ULL;
+      }
     };
     mix(&count, sizeof count);
     const vtkIdType n = pd->GetNumberOfPoints();
