@@ -505,39 +505,36 @@ public:
     {
       const std::size_t firstActor = sceneActors.size();
       vtkSmartPointer<vtkPolyData> shown = pieces[p];
-      if (session.lattice)
+      FittedLattice* fitted = session.lattice ? &latticeOf(p) : nullptr;
+      if (fitted && !fitted->errors.empty())
+        addLine(message, "no lattice for piece " + std::to_string(p) + ": " + fitted->errors);
+      const bool latticeShown = fitted && fitted->surface->GetNumberOfPoints() > 0;
+      if (latticeShown)
       {
-        const FittedLattice& fitted = latticeOf(p);
-        if (!fitted.errors.empty())
-          addLine(message, "no lattice for piece " + std::to_string(p) + ": " + fitted.errors);
-        if (fitted.surface->GetNumberOfPoints() > 0)
-        {
-          shown = fitted.surface;
-          vtkNew<vtkExtractEdges> cage;
-          cage->SetInputData(fitted.lattice);
-          addActor(cage->GetOutputPort(), nullptr, { 0.2, 0.2, 0.2 }, false)->PickableOff();
-        }
+        shown = fitted->surface;
+        vtkNew<vtkExtractEdges> cage;
+        cage->SetInputData(fitted->lattice);
+        addActor(cage->GetOutputPort(), nullptr, { 0.2, 0.2, 0.2 }, false)->PickableOff();
       }
-      if (session.metro && shown != pieces[p])
+      if (session.metro && latticeShown)
       {
-        FittedLattice& fitted = lattices[p]; // shown is its surface
-        if (!fitted.metro)
+        if (!fitted->metro)
         {
           vtkNew<vtkLKMetroFilter> metro;
-          metro->SetInputData(shown);
+          metro->SetInputData(fitted->surface);
           metro->SetTargetData(pieces[p]);
           metro->Update();
-          fitted.metro = vtkSmartPointer<vtkPolyData>::New();
-          fitted.metro->ShallowCopy(metro->GetOutput());
-          fitted.metro->GetPointData()->SetActiveScalars("Distance");
-          fitted.colourMaximum = metro->GetEffectiveColorMaximum();
-          fitted.hausdorff = metro->GetHausdorffDistance();
+          fitted->metro = vtkSmartPointer<vtkPolyData>::New();
+          fitted->metro->ShallowCopy(metro->GetOutput());
+          fitted->metro->GetPointData()->SetActiveScalars("Distance");
+          fitted->colourMaximum = metro->GetEffectiveColorMaximum();
+          fitted->hausdorff = metro->GetHausdorffDistance();
         }
-        auto actor = addActorData(fitted.metro, { 1, 1, 1 }, true);
+        auto actor = addActorData(fitted->metro, { 1, 1, 1 }, true);
         actor->GetMapper()->SetLookupTable(distanceColours);
         actor->GetMapper()->UseLookupTableScalarRangeOn();
-        colourTop = std::max(colourTop, fitted.colourMaximum);
-        largest = std::max(largest, fitted.hausdorff);
+        colourTop = std::max(colourTop, fitted->colourMaximum);
+        largest = std::max(largest, fitted->hausdorff);
         scalarBar->SetVisibility(true);
       }
       else
@@ -555,7 +552,7 @@ public:
   /// Piece p's lattice (600 vertices or the session's, at most half the
   /// piece's) and its smooth surface: fitted again only when the piece's
   /// points or faces, or the count, changed since the last fit.
-  const FittedLattice& latticeOf(std::size_t p)
+  FittedLattice& latticeOf(std::size_t p)
   {
     vtkPolyData* piece = pieces[p];
     const vtkIdType vertices = std::min<vtkIdType>(session.latticeVertices, piece->GetNumberOfPoints() / 2);
