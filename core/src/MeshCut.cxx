@@ -1,15 +1,7 @@
 #include "latticekit/MeshCut.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Polygon_mesh_processing/refine.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <Eigen/Eigenvalues>
+#include "CutCaps.h"
+#include "InnerWalls.h"
 
 #include <algorithm>
 #include <array>
@@ -31,10 +23,9 @@ namespace lk
 {
 namespace
 {
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-namespace PMP = CGAL::Polygon_mesh_processing;
+using cut::Cap;
+using cut::LoopOutline;
+using cut::LoopPlane;
 
 std::size_t find(std::vector<std::size_t>& parent, std::size_t x)
 {
@@ -43,326 +34,6 @@ std::size_t find(std::vector<std::size_t>& parent, std::size_t x)
   return x;
 }
 
-/// Pairs of intersecting triangles of a capped piece of which at least one is
-/// a cap triangle (faceOrigin < 0): a cap that crosses the piece's surface or
-/// another cap (nested loops around a hollow bone). Only the caps'
-/// neighbourhood can hold such a pair, so CGAL's test runs on the faces whose
-/// boxes meet the caps' box (on the skull's craniotomy, a few thousand of
-/// 563,000), fanned into triangles; on the whole piece where that subset is
-/// not a manifold surface CGAL can hold.
-/// Pairs that only touch (reaching through each other by less than 1e-6 of
-/// the piece's size) are not counted. With the count, the deepest pair's
-/// overlap: how far each triangle reaches through the other's plane on its
-/// shallower side, the smaller of the two (micrometres where triangles graze
-/// beside a line).
-std::pair<std::size_t, double> capCrossings(const PolygonMesh& piece, const std::vector<std::int64_t>& faceOrigin)
-{
-  auto box = [&](std::size_t f) {
-    CGAL::Bbox_3 b;
-    for (const auto v : piece.faces[f])
-    {
-      const Vec3& q = piece.points[static_cast<std::size_t>(v)];
-      b += CGAL::Bbox_3(q.x(), q.y(), q.z(), q.x(), q.y(), q.z());
-    }
-    return b;
-  };
-  CGAL::Bbox_3 capBox, all;
-  for (std::size_t f = 0; f < piece.faces.size(); ++f)
-    if (faceOrigin[f] < 0)
-      capBox += box(f);
-  for (const Vec3& q : piece.points)
-    all += CGAL::Bbox_3(q.x(), q.y(), q.z(), q.x(), q.y(), q.z());
-  double depth = 0.0;
-  const double touching = 1e-6 * std::sqrt(CGAL::square(all.xmax() - all.xmin()) +
-    CGAL::square(all.ymax() - all.ymin()) + CGAL::square(all.zmax() - all.zmin()));
-  auto count = [&](bool nearOnly, std::size_t& crossings) {
-    Mesh sm;
-    std::vector<Mesh::Vertex_index> id(piece.points.size());
-    std::vector<char> isCap;
-    for (std::size_t f = 0; f < piece.faces.size(); ++f)
-    {
-      if (nearOnly && !CGAL::do_overlap(box(f), capBox))
-        continue;
-      const auto& face = piece.faces[f];
-      for (const auto v : face)
-        if (id[static_cast<std::size_t>(v)] == Mesh::null_vertex())
-        {
-          const Vec3& q = piece.points[static_cast<std::size_t>(v)];
-          id[static_cast<std::size_t>(v)] = sm.add_vertex(Point(q.x(), q.y(), q.z()));
-        }
-      for (std::size_t i = 1; i + 1 < face.size(); ++i)
-      {
-        if (sm.add_face(id[static_cast<std::size_t>(face[0])], id[static_cast<std::size_t>(face[i])],
-              id[static_cast<std::size_t>(face[i + 1])]) == Mesh::null_face())
-          return false;
-        isCap.push_back(faceOrigin[f] < 0);
-      }
-    }
-    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
-    PMP::self_intersections(sm, std::back_inserter(pairs));
-    crossings = 0;
-    depth = 0.0;
-    auto triangle = [&](Mesh::Face_index f) {
-      std::array<Point, 3> t;
-      std::size_t k = 0;
-      for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
-        t[k++] = sm.point(v);
-      return Kernel::Triangle_3(t[0], t[1], t[2]);
-    };
-    for (const auto& [a, b] : pairs)
-    {
-      if (!isCap[static_cast<std::size_t>(a)] && !isCap[static_cast<std::size_t>(b)])
-        continue;
-      const Kernel::Triangle_3 ta = triangle(a), tb = triangle(b);
-      // How far t reaches through the plane of u on its shallower side.
-      auto through = [](const Kernel::Triangle_3& t, const Kernel::Triangle_3& u) {
-        const Kernel::Vector_3 n = CGAL::normal(u.vertex(0), u.vertex(1), u.vertex(2));
-        const double length = std::sqrt(CGAL::to_double(n.squared_length()));
-        if (!(length > 0.0))
-          return 0.0;
-        double above = 0.0, below = 0.0;
-        for (int i = 0; i < 3; ++i)
-        {
-          const double d = CGAL::to_double((t.vertex(i) - u.vertex(0)) * n) / length;
-          above = std::max(above, d);
-          below = std::max(below, -d);
-        }
-        return std::min(above, below);
-      };
-      const double reach = std::min(through(ta, tb), through(tb, ta));
-      if (reach <= touching)
-        continue; // they touch (CGAL counts a shared point), to a millionth of the size
-      ++crossings;
-      depth = std::max(depth, reach);
-    }
-    return true;
-  };
-  std::size_t crossings = 0;
-  if (!count(true, crossings))
-    count(false, crossings); // the piece was checked to be a manifold surface before the cut
-  return { crossings, depth };
-}
-
-/// The cap of a loop: new points and triangles (indices: < 0 means loop
-/// vertex -(i+1), >= 0 a new point), oriented so that the loop runs
-/// a -> b -> ... along the triangles' boundary. Empty on failure.
-struct Cap
-{
-  std::vector<Vec3> points;
-  std::vector<std::array<std::int64_t, 3>> triangles;
-};
-
-/// Loops within this fraction of their bounding-box diagonal of their
-/// fitting plane get a flat cap.
-constexpr double kFlatCapTolerance = 0.05;
-
-/// A loop's least-squares plane, and whether the loop is near it.
-struct LoopPlane
-{
-  Vec3 centre = Vec3::Zero();
-  Vec3 normal = Vec3::UnitZ();
-  Vec3 u = Vec3::UnitX(), v = Vec3::UnitY(); ///< in the plane, u x v = normal
-  double deviation = 0.0;                    ///< the farthest loop point from the plane
-  double tolerance = 0.0;                    ///< kFlatCapTolerance x the loop's box diagonal
-  bool flat = false;
-};
-
-LoopPlane fitLoopPlane(const std::vector<Vec3>& loop)
-{
-  LoopPlane plane;
-  for (const Vec3& p : loop)
-    plane.centre += p;
-  plane.centre /= static_cast<double>(loop.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  Eigen::AlignedBox3d box;
-  for (const Vec3& p : loop)
-  {
-    cov += (p - plane.centre) * (p - plane.centre).transpose();
-    box.extend(p);
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(cov);
-  plane.normal = eigen.eigenvectors().col(0);
-  plane.u = eigen.eigenvectors().col(2);
-  plane.v = plane.normal.cross(plane.u);
-  for (const Vec3& p : loop)
-    plane.deviation = std::max(plane.deviation, std::abs(plane.normal.dot(p - plane.centre)));
-  plane.tolerance = kFlatCapTolerance * box.diagonal().norm();
-  plane.flat = plane.deviation <= plane.tolerance;
-  return plane;
-}
-
-using Point2 = Kernel::Point_2;
-
-/// A point in the plane's coordinates (u, v).
-Point2 projected(const Vec3& p, const LoopPlane& plane)
-{
-  return { plane.u.dot(p - plane.centre), plane.v.dot(p - plane.centre) };
-}
-
-std::vector<Point2> projected(const std::vector<Vec3>& loop, const LoopPlane& plane)
-{
-  std::vector<Point2> out;
-  out.reserve(loop.size());
-  for (const Vec3& p : loop)
-    out.push_back(projected(p, plane));
-  return out;
-}
-
-/// The cap made of `faces` of `m`: the loops' vertices `loop` become ids
-/// -(i+1), the vertices `added` by the filling new points.
-template <typename Faces>
-Cap capOf(const Mesh& m, const std::vector<Mesh::Vertex_index>& loop, const std::vector<Mesh::Vertex_index>& added,
-  const Faces& faces)
-{
-  Cap cap;
-  std::map<Mesh::Vertex_index, std::int64_t> id;
-  for (std::size_t i = 0; i < loop.size(); ++i)
-    id[loop[i]] = -static_cast<std::int64_t>(i) - 1;
-  for (auto v : added)
-  {
-    id[v] = static_cast<std::int64_t>(cap.points.size());
-    const Point& p = m.point(v);
-    cap.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto face : faces)
-  {
-    std::array<std::int64_t, 3> t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(m.halfedge(face), m))
-      if (k < 3)
-        t[static_cast<std::size_t>(k++)] = id.at(v);
-    if (k == 3)
-      cap.triangles.push_back(t);
-  }
-  return cap;
-}
-
-/// One flat cap for loops nested in one plane (the outer and the inner wall
-/// of a hollow bone: an annulus): a 2D constrained Delaunay triangulation of
-/// the part of the plane inside an odd number of loops, then refined inside
-/// (CGAL's Liepa refinement, which keeps the loops' edges). Ids < 0 are
-/// -(k+1) for vertex k of the loops taken one after another. Empty when the
-/// loops' projections touch or cross.
-Cap makeNestedCap(const std::vector<std::vector<Vec3>>& loops, const LoopPlane& plane)
-{
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Kernel>;
-  using Fbi = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;
-  using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel, Fbi>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-  using CDT = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
-  CDT cdt;
-  std::vector<Vec3> points;
-  for (const auto& loop : loops)
-  {
-    const std::vector<Point2> flat = projected(loop, plane);
-    std::vector<CDT::Vertex_handle> handles;
-    for (std::size_t i = 0; i < loop.size(); ++i)
-    {
-      const auto h = cdt.insert(flat[i]);
-      h->info() = points.size();
-      points.push_back(loop[i]);
-      handles.push_back(h);
-    }
-    for (std::size_t i = 0; i < handles.size(); ++i)
-      cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
-  }
-  if (cdt.number_of_vertices() != points.size())
-    return {}; // two loop points project onto one, or constraints crossed
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    if (v->info() >= points.size())
-      return {};
-  // Nesting level of each face: 0 outside every loop, +1 across each loop
-  // (flood fills that stop at constrained edges, as in CGAL's examples).
-  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-    f->info() = -1;
-  std::deque<CDT::Edge> border;
-  auto fill = [&](CDT::Face_handle start, int level) {
-    std::deque<CDT::Face_handle> queue{ start };
-    while (!queue.empty())
-    {
-      const CDT::Face_handle f = queue.front();
-      queue.pop_front();
-      if (f->info() != -1)
-        continue;
-      f->info() = level;
-      for (int i = 0; i < 3; ++i)
-      {
-        const CDT::Face_handle n = f->neighbor(i);
-        if (n->info() != -1)
-          continue;
-        if (cdt.is_constrained(CDT::Edge(f, i)))
-          border.emplace_back(f, i);
-        else
-          queue.push_back(n);
-      }
-    }
-  };
-  fill(cdt.infinite_face(), 0);
-  while (!border.empty())
-  {
-    const CDT::Edge e = border.front();
-    border.pop_front();
-    const CDT::Face_handle n = e.first->neighbor(e.second);
-    if (n->info() == -1)
-      fill(n, e.first->info() + 1);
-  }
-  Mesh m;
-  std::vector<Mesh::Vertex_index> vs;
-  for (const Vec3& p : points)
-    vs.push_back(m.add_vertex(Point(p.x(), p.y(), p.z())));
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (f->info() % 2 == 1)
-      if (m.add_face(vs[f->vertex(0)->info()], vs[f->vertex(1)->info()], vs[f->vertex(2)->info()]) ==
-        Mesh::null_face())
-        return {};
-  std::vector<Mesh::Face_index> faces(m.faces().begin(), m.faces().end());
-  std::vector<Mesh::Face_index> newFaces;
-  std::vector<Mesh::Vertex_index> newVertices;
-  PMP::refine(m, faces, std::back_inserter(newFaces), std::back_inserter(newVertices),
-    CGAL::parameters::density_control_factor(0.7));
-  return capOf(m, vs, newVertices, m.faces());
-}
-
-/// The cap of one loop; `plane` is the loop's fitted plane (fitLoopPlane).
-Cap makeCap(const std::vector<Vec3>& loop, const LoopPlane& plane)
-{
-  // The hole is the border of a single fan-free face: build the loop as a mesh
-  // with one polygon face, then fill its other side.
-  Mesh m;
-  std::vector<Mesh::Vertex_index> vs;
-  for (const Vec3& p : loop)
-    vs.push_back(m.add_vertex(Point(p.x(), p.y(), p.z())));
-  // The polygon face runs against the loop; the hole (border) runs along it.
-  std::vector<Mesh::Vertex_index> reversed(vs.rbegin(), vs.rend());
-  const auto f = m.add_face(reversed);
-  if (f == Mesh::null_face())
-    return {};
-  Mesh::Halfedge_index border;
-  for (auto h : m.halfedges())
-    if (m.is_border(h))
-    {
-      border = h;
-      break;
-    }
-  std::vector<Mesh::Face_index> faces;
-  std::vector<Mesh::Vertex_index> newVertices;
-  // A near-planar loop (an osteotomy's section: a saw cut is flat) gets a
-  // flat cap: a 2D constrained Delaunay triangulation in the loop's fitting
-  // plane, refined. Its projection onto the plane cannot overlap itself, so
-  // the cap cannot fold. Other loops get CGAL's minimal-weight triangulation,
-  // refined. Neither is faired: fairing (a bi-Laplacian solve with cotangent
-  // weights) folded the caps: 118 and 90 pairs of crossing triangles on the
-  // main job's pieces, 134 and 149 on a wavy loop on a sphere; 0 now.
-  PMP::triangulate_and_refine_hole(m, border, std::back_inserter(faces), std::back_inserter(newVertices),
-    CGAL::parameters::density_control_factor(0.7)
-      .use_2d_constrained_delaunay_triangulation(plane.flat)
-      .threshold_distance(plane.tolerance));
-  return capOf(m, vs, newVertices, faces);
-}
-} // namespace
-
-namespace
-{
 /// Directed edges grouped by their source vertex (compressed rows): the
 /// face of a -> b in O(valence), without a tree or hash of all edges.
 struct DirectedEdges
@@ -683,9 +354,7 @@ std::vector<std::vector<std::size_t>> nestedLoopGroups(
       if (!std::all_of(loops[i].begin(), loops[i].end(),
             [&](const Vec3& p) { return std::abs(pj.normal.dot(p - pj.centre)) <= pj.tolerance; }))
         continue;
-      const std::vector<Point2> polygon = projected(loops[j], pj);
-      if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), projected(loops[i].front(), pj), Kernel()) !=
-        CGAL::ON_BOUNDED_SIDE)
+      if (LoopOutline(loops[j], pj).side(loops[i].front()) != LoopOutline::Side::Inside)
         continue;
       if (root[i] == i || pj.tolerance > planes[root[i]].tolerance)
         root[i] = j; // the largest loop around it
@@ -764,208 +433,6 @@ std::optional<CapSides> nestedCapSides(Cap& cap, const std::vector<std::size_t>&
   return CapSides{ { along.begin(), along.end() }, { against.begin(), against.end() } };
 }
 
-/// A mesh split along the inner walls that a loop goes around, and those
-/// walls' new loops.
-struct InnerWalls
-{
-  PolygonMesh mesh;                      ///< the input's points first, then the new ones
-  std::vector<std::int64_t> faceParent;  ///< the input face of each face
-  std::vector<std::vector<std::int64_t>> loops;
-};
-
-/// The sections of the mesh by a flat loop's plane that lie inside the loop
-/// (projected onto the plane) and away from it: on a hollow bone, the inner
-/// wall (the marrow cavity or a canal) that a line drawn around the outside
-/// does not reach. Each becomes a loop of new vertices where triangle edges
-/// cross the plane; the triangles it crosses are split. Where a vertex lies
-/// on the plane the plane is moved by a hair, so that no new vertex falls on
-/// an old one. Sections through faces that are not triangles are left out.
-InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::int64_t>& loop,
-  const std::vector<char>& onLoop)
-{
-  InnerWalls out;
-  std::vector<Vec3> points;
-  for (auto v : loop)
-    points.push_back(mesh.points[static_cast<std::size_t>(v)]);
-  const LoopPlane plane = fitLoopPlane(points);
-  if (!plane.flat)
-    return out;
-  const std::vector<Point2> polygon = projected(points, plane);
-  // A kept section lies inside the loop: crossings whose point falls outside
-  // the loop's box in the plane are not needed (on a large mesh the plane's
-  // whole section would be).
-  const auto box = CGAL::bbox_2(polygon.begin(), polygon.end());
-  auto inBox = [&](const Point2& q) {
-    return q.x() >= box.xmin() && q.x() <= box.xmax() && q.y() >= box.ymin() && q.y() <= box.ymax();
-  };
-  // Crossing edges (a < b) and their parameter along a -> b.
-  std::vector<double> d(mesh.points.size());
-  std::map<std::pair<std::int64_t, std::int64_t>, double> crossing;
-  auto pointAt = [&](std::int64_t a, std::int64_t b, double t) -> Vec3 {
-    return (1.0 - t) * mesh.points[static_cast<std::size_t>(a)] + t * mesh.points[static_cast<std::size_t>(b)];
-  };
-  auto inside = [&](const Vec3& q) {
-    return CGAL::bounded_side_2(polygon.begin(), polygon.end(), projected(q, plane), Kernel());
-  };
-  for (int attempt = 0; attempt < 8; ++attempt)
-  {
-    const double offset = attempt * 1e-3 * plane.tolerance;
-    for (std::size_t v = 0; v < mesh.points.size(); ++v)
-      d[v] = plane.normal.dot(mesh.points[v] - plane.centre) - offset;
-    crossing.clear();
-    bool clean = true;
-    for (const auto& face : mesh.faces)
-      for (std::size_t i = 0; i < face.size(); ++i)
-      {
-        const auto a = std::min(face[i], face[(i + 1) % face.size()]);
-        const auto b = std::max(face[i], face[(i + 1) % face.size()]);
-        const double da = d[static_cast<std::size_t>(a)], db = d[static_cast<std::size_t>(b)];
-        if ((da >= 0.0) == (db >= 0.0))
-          continue;
-        const double t = da / (da - db);
-        if (!inBox(projected(pointAt(a, b, t), plane)))
-          continue;
-        crossing[{ a, b }] = t;
-        if (t > 1e-4 && t < 1.0 - 1e-4)
-          continue;
-        // A new vertex would fall on an old one; it matters only where a
-        // section could be kept: inside the loop, away from it.
-        if (onLoop[static_cast<std::size_t>(a)] || onLoop[static_cast<std::size_t>(b)])
-          continue;
-        if (inside(pointAt(a, b, t)) != CGAL::ON_UNBOUNDED_SIDE)
-          clean = false;
-      }
-    if (clean)
-      break;
-    if (attempt == 7)
-      return out;
-  }
-  // The section graph: each crossed triangle joins its two crossed edges.
-  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOfEdge;
-  auto key = [](std::int64_t a, std::int64_t b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
-  // Whether the plane passes between the face's vertices: only such faces
-  // have crossed edges (most of a large mesh does not; no lookups there).
-  auto crossesPlane = [&](const std::vector<std::int64_t>& face) {
-    const bool side = d[static_cast<std::size_t>(face[0])] >= 0.0;
-    return std::any_of(face.begin() + 1, face.end(), [&](std::int64_t v) { return (d[static_cast<std::size_t>(v)] >= 0.0) != side; });
-  };
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-  {
-    const auto& face = mesh.faces[f];
-    if (!crossesPlane(face))
-      continue;
-    for (std::size_t i = 0; i < face.size(); ++i)
-    {
-      const auto e = key(face[i], face[(i + 1) % face.size()]);
-      if (crossing.count(e))
-        facesOfEdge[e].push_back(f);
-    }
-  }
-  std::set<std::pair<std::int64_t, std::int64_t>> visited;
-  std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> cycles;
-  for (const auto& [start, startFaces] : facesOfEdge)
-  {
-    if (visited.count(start) || startFaces.size() != 2)
-      continue;
-    std::vector<std::pair<std::int64_t, std::int64_t>> cycle{ start };
-    visited.insert(start);
-    std::size_t through = startFaces[0];
-    auto edge = start;
-    bool closed = false;
-    for (;;)
-    {
-      const auto& face = mesh.faces[through];
-      if (face.size() != 3)
-        break;
-      std::pair<std::int64_t, std::int64_t> next{ -1, -1 };
-      for (std::size_t i = 0; i < 3; ++i)
-      {
-        const auto e = key(face[i], face[(i + 1) % 3]);
-        if (e != edge && crossing.count(e))
-          next = e;
-      }
-      if (next.first < 0)
-        break;
-      if (next == start)
-      {
-        closed = true;
-        break;
-      }
-      if (!visited.insert(next).second)
-        break;
-      const auto& fs = facesOfEdge[next];
-      if (fs.size() != 2)
-        break;
-      cycle.push_back(next);
-      edge = next;
-      through = fs[0] == through ? fs[1] : fs[0];
-    }
-    if (closed)
-      cycles.push_back(std::move(cycle));
-  }
-  // Keep the sections inside the loop that do not come near it.
-  auto crossingPoint = [&](const std::pair<std::int64_t, std::int64_t>& e) {
-    return pointAt(e.first, e.second, crossing.at(e));
-  };
-  std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> kept;
-  for (const auto& cycle : cycles)
-  {
-    bool keep = true;
-    for (const auto& e : cycle)
-    {
-      keep = keep && inside(crossingPoint(e)) == CGAL::ON_BOUNDED_SIDE;
-      for (auto f : facesOfEdge[e])
-        for (auto v : mesh.faces[f]) // the crossed triangles, hence the edge's ends too
-          keep = keep && !onLoop[static_cast<std::size_t>(v)];
-    }
-    if (keep)
-      kept.push_back(cycle);
-  }
-  if (kept.empty())
-    return out;
-  out.mesh.points = mesh.points;
-  std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> newVertex;
-  for (const auto& cycle : kept)
-  {
-    std::vector<std::int64_t> ids;
-    for (const auto& e : cycle)
-    {
-      newVertex[e] = static_cast<std::int64_t>(out.mesh.points.size());
-      ids.push_back(newVertex[e]);
-      out.mesh.points.push_back(crossingPoint(e));
-    }
-    out.loops.push_back(std::move(ids));
-  }
-  // Split every triangle that a kept section crosses: the vertex alone on its
-  // side keeps a triangle, the other two a quad, cut in two.
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-  {
-    const auto& face = mesh.faces[f];
-    std::size_t lone = 3;
-    if (face.size() == 3 && crossesPlane(face))
-      for (std::size_t i = 0; i < 3; ++i)
-      {
-        const auto e1 = key(face[i], face[(i + 1) % 3]), e2 = key(face[i], face[(i + 2) % 3]);
-        if (newVertex.count(e1) && newVertex.count(e2))
-          lone = i;
-      }
-    if (lone == 3)
-    {
-      out.mesh.faces.push_back(face);
-      out.faceParent.push_back(static_cast<std::int64_t>(f));
-      continue;
-    }
-    const auto a = face[lone], b = face[(lone + 1) % 3], c = face[(lone + 2) % 3];
-    const auto p = newVertex.at(key(a, b)), q = newVertex.at(key(a, c));
-    for (const auto& t : { std::vector<std::int64_t>{ a, p, q }, std::vector<std::int64_t>{ p, b, c },
-           std::vector<std::int64_t>{ p, c, q } })
-    {
-      out.mesh.faces.push_back(t);
-      out.faceParent.push_back(static_cast<std::int64_t>(f));
-    }
-  }
-  return out;
-}
 } // namespace
 
 namespace
@@ -1083,7 +550,7 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
   std::vector<LoopPlane> planes(loops.size());
   std::vector<std::vector<std::size_t>> groups;
   auto capOfLoop = [&](std::size_t l) {
-    Cap c = makeCap(loopPoints[l], planes[l]);
+    Cap c = cut::makeCap(loopPoints[l], planes[l]);
     if (c.triangles.empty())
       throw std::invalid_argument("a loop could not be capped (CGAL's hole filling failed)");
     return c;
@@ -1095,7 +562,7 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
     {
       for (auto v : loops[l])
         loopPoints[l].push_back(mesh.points[static_cast<std::size_t>(v)]);
-      planes[l] = fitLoopPlane(loopPoints[l]);
+      planes[l] = cut::fitLoopPlane(loopPoints[l]);
     }
     groups = nestedLoopGroups(loopPoints, planes);
     capsMade = std::async(std::launch::async, [&]() {
@@ -1110,7 +577,7 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
         std::vector<std::vector<Vec3>> points;
         for (auto l : group)
           points.push_back(loopPoints[l]);
-        made.push_back(makeNestedCap(points, planes[group.front()]));
+        made.push_back(cut::makeNestedCap(points, planes[group.front()]));
       }
       return made;
     });
@@ -1385,7 +852,7 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
     splitOverfullCapEdges(result.pieces[p], result.faceOrigin[p], result.vertexOrigin[p], onLoop, near);
     result.capNonManifoldEdges[p] = nonManifoldCapEdges(result.pieces[p], near);
     std::tie(result.capCrossings[p], result.capCrossingDepths[p]) =
-      capCrossings(result.pieces[p], result.faceOrigin[p]);
+      cut::capCrossings(result.pieces[p], result.faceOrigin[p]);
   }
   return result;
 }
@@ -1415,7 +882,7 @@ std::optional<CutResult> cutThroughInnerWalls(
   std::vector<std::vector<std::int64_t>> all = loops;
   for (const auto& loop : loops)
   {
-    InnerWalls walls = splitAlongInnerWalls(*current, loop, marked);
+    cut::InnerWalls walls = cut::splitAlongInnerWalls(*current, loop, marked);
     if (walls.loops.empty())
       continue;
     for (auto& f : walls.faceParent)
