@@ -1,0 +1,719 @@
+#include "planner/Planner.h"
+
+#include "common/AppSupport.h"
+#include "common/DistanceColourBar.h"
+#include "common/JsonFields.h"
+
+#include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKLatticeFitFilter.h"
+#include "vtkLKLatticeSurfaceFilter.h"
+#include "vtkLKMetroFilter.h"
+#include "vtkLKPatchDeformationFilter.h"
+#include "vtkLKStrokeFeatureLineFilter.h"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkExtractEdges.h>
+#include <vtkFieldData.h>
+#include <vtkGeometryFilter.h>
+#include <vtkIdTypeArray.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkTextProperty.h>
+#include <vtkThreshold.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkMatrix4x4.h>
+#include <vtkWindowToImageFilter.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace lkplanner
+{
+namespace
+{
+bool isIdentity(const std::array<double, 16>& m)
+{
+  for (int i = 0; i < 16; ++i)
+    if (m[static_cast<std::size_t>(i)] != (i % 5 == 0 ? 1.0 : 0.0))
+      return false;
+  return true;
+}
+
+std::string matrixText(const std::array<double, 16>& m)
+{
+  std::ostringstream os;
+  os.precision(6);
+  os << std::fixed;
+  for (int r = 0; r < 4; ++r)
+  {
+    os << "  ";
+    for (int c = 0; c < 4; ++c)
+      os << (c ? " " : "") << m[static_cast<std::size_t>(4 * r + c)];
+    os << "\n";
+  }
+  return os.str();
+}
+
+/// `text` with every line broken at spaces to at most `width` characters
+/// (a longer word stays whole).
+std::string wrapped(const std::string& text, std::size_t width)
+{
+  std::string out;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+  {
+    std::string current;
+    std::istringstream words(line);
+    for (std::string word; words >> word;)
+    {
+      if (!current.empty() && current.size() + 1 + word.size() > width)
+      {
+        out += current + "\n";
+        current = "  "; // continuation lines are indented
+      }
+      current += (current.empty() || current == "  " ? "" : " ") + word;
+    }
+    out += current + "\n";
+  }
+  if (!out.empty())
+    out.pop_back();
+  return out;
+}
+
+/// Appends `line` to a message of several lines.
+void addLine(std::string& message, const std::string& line)
+{
+  message += (message.empty() ? "" : "\n") + line;
+}
+
+/// Each line of `text` as its own line of `message`, after `prefix`.
+void addLines(std::string& message, const std::string& prefix, const std::string& text)
+{
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty())
+      addLine(message, prefix + line);
+}
+} // namespace
+
+const char* const kHelp = "d: draw on/off | 1 paint 2 nearest 3 snap 4 split | x: cut (capped) | l: lattice | m: Metro colours\n"
+                    "n: pick the segment (smallest piece first) | g: move it (drag; shift+drag rotates) | r: reset its move\n"
+                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius\n"
+                    "z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
+
+const char* toolName(int tool)
+{
+  return tool == BUMP ? "bump" : tool == BOX ? "box" : tool == SMOOTH ? "smooth" : "off";
+}
+
+std::array<double, 3> pieceColour(std::size_t p)
+{
+  const double colours[4][3] = { { 0.93, 0.85, 0.65 }, { 0.6, 0.75, 0.93 }, { 0.7, 0.9, 0.7 }, { 0.95, 0.7, 0.7 } };
+  return { colours[p % 4][0], colours[p % 4][1], colours[p % 4][2] };
+}
+
+void Planner::remember(const Session& before)
+{
+  undoStack.push_back(before);
+  redoStack.clear();
+}
+
+vtkSmartPointer<vtkMatrix4x4> Planner::segmentMatrix() const
+{
+  auto m = vtkSmartPointer<vtkMatrix4x4>::New();
+  m->DeepCopy(session.segmentMatrix.data());
+  return m;
+}
+
+void Planner::placeSegment(const std::array<double, 16>& matrix)
+{
+  for (std::size_t p = 0; p < pieceActors.size(); ++p)
+    for (auto& a : pieceActors[p])
+    {
+      if (static_cast<int>(p) == session.segment)
+      {
+        vtkNew<vtkMatrix4x4> m;
+        m->DeepCopy(matrix.data());
+        a->SetUserMatrix(m);
+      }
+      else
+        a->SetUserMatrix(nullptr);
+    }
+}
+
+std::string Planner::segmentText() const
+{
+  if (!hasSegment())
+    return "";
+  const auto& m = session.segmentMatrix;
+  const double trace = m[0] + m[5] + m[10];
+  const double angle = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979;
+  char line[200];
+  std::snprintf(line, sizeof line, "segment: piece %d moved, translation %.2f %.2f %.2f mm, rotation %.2f deg\n",
+    session.segment, m[3], m[7], m[11], angle);
+  return line + matrixText(m);
+}
+
+void Planner::setup()
+{
+  window->AddRenderer(renderer);
+  window->SetSize(1000, 750);
+  window->SetWindowName("latticekit planner");
+  renderer->SetBackground(1, 1, 1);
+  help->SetInput(kHelp);
+  help->GetTextProperty()->SetFontSize(13);
+  help->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  help->SetDisplayPosition(8, 8);
+  renderer->AddViewProp(help);
+  status->GetTextProperty()->SetFontSize(15);
+  status->GetTextProperty()->SetColor(0.1, 0.1, 0.4);
+  status->SetDisplayPosition(8, 78);
+  renderer->AddViewProp(status);
+  // Problems and warnings, at the top where they are seen while drawing.
+  messages->GetTextProperty()->SetFontSize(14);
+  messages->GetTextProperty()->SetColor(0.6, 0.1, 0.0);
+  messages->GetTextProperty()->SetVerticalJustificationToTop();
+  messages->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  messages->GetPositionCoordinate()->SetValue(0.01, 0.985);
+  renderer->AddViewProp(messages);
+  scalarBar->SetVisibility(false);
+  renderer->AddViewProp(scalarBar);
+  vtkNew<vtkPolyDataMapper> sm;
+  sm->SetInputData(strokePd);
+  strokeActor->SetMapper(sm);
+  strokeActor->GetProperty()->SetColor(0.9, 0.1, 0.1);
+  strokeActor->GetProperty()->SetLineWidth(3);
+  strokeActor->GetProperty()->SetPointSize(6);
+  strokeActor->PickableOff(); // strokes are picked on the bone, never on themselves
+  renderer->AddActor(strokeActor);
+  preview->SetVisibility(false);
+  preview->PickableOff();
+  renderer->AddActor(preview);
+  radius = 0.05 * bone->GetLength();
+}
+
+void Planner::computeCut()
+{
+  const std::string key = cutKey(session);
+  if (!cut.pieces.empty() && cut.key == key)
+    return;
+  cut = CutStage();
+  cut.key = key;
+  deformers.clear();
+  vtkSmartPointer<vtkPolyData> surface = bone;
+  std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
+  for (std::size_t i = 0; i < session.strokes.size(); ++i)
+  {
+    const Stroke& st = session.strokes[i];
+    const std::string which = "stroke " + std::to_string(i + 1) + " (" + modeName(st.mode) + ")";
+    vtkNew<vtkPoints> pts;
+    for (const auto& p : st.points)
+      pts->InsertNextPoint(p.data());
+    vtkNew<vtkPolyData> stroke;
+    stroke->SetPoints(pts);
+    vtkNew<vtkLKStrokeFeatureLineFilter> f;
+    f->SetInputData(facesOnly(surface));
+    f->SetStrokeData(stroke);
+    f->SetMode(st.mode);
+    const int errorsBefore = lkapp::errorCount(), warningsBefore = lkapp::warningCount();
+    f->Update();
+    const std::string warned = lkapp::warningsSince(warningsBefore);
+    if (!warned.empty())
+      addLines(cut.message, which + ": ", warned);
+    if (lkapp::errorCount() > errorsBefore || f->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      const std::string why = lkapp::errorsSince(errorsBefore);
+      addLine(cut.message, which + " failed: " + (why.empty() ? "no feature line" : why));
+      continue; // the stroke stays in the session; the message says why
+    }
+    auto next = vtkSmartPointer<vtkPolyData>::New();
+    next->ShallowCopy(f->GetOutput());
+    surface = next;
+    // The earlier lines onto the new surface: a split stroke that crosses
+    // one cuts its edges (the cut needs its loops along the mesh's edges).
+    for (auto& earlier : cut.lines)
+    {
+      vtkNew<vtkPolyData> carried;
+      if (f->CarryLine(earlier.first, carried))
+        earlier.first->DeepCopy(carried);
+    }
+    auto line = vtkSmartPointer<vtkPolyData>::New();
+    line->DeepCopy(f->GetFeatureLineOutput());
+    cut.lines.emplace_back(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);
+    if (line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5 &&
+      st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
+      closedLines.push_back(line);
+  }
+  vtkSmartPointer<vtkPolyData> faces = facesOnly(surface);
+  if (session.cut && !closedLines.empty())
+  {
+    vtkNew<vtkPolyData> loops;
+    vtkNew<vtkPoints> lp;
+    vtkNew<vtkCellArray> lc;
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetName("MeshPointId");
+    for (const auto& l : closedLines)
+    {
+      vtkDataArray* mid = l->GetPointData()->GetArray("MeshPointId");
+      lc->InsertNextCell(l->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < l->GetNumberOfPoints(); ++i)
+      {
+        lc->InsertCellPoint(lp->InsertNextPoint(l->GetPoint(i)));
+        ids->InsertNextValue(static_cast<vtkIdType>(mid->GetComponent(i, 0)));
+      }
+    }
+    loops->SetPoints(lp);
+    loops->SetLines(lc);
+    loops->GetPointData()->AddArray(ids);
+    vtkNew<vtkLKClosedLineCutFilter> cutter;
+    cutter->SetInputData(faces);
+    cutter->SetLinesData(loops);
+    cutter->SetCapping(session.capping);
+    const int before = lkapp::errorCount(), warningsBefore = lkapp::warningCount();
+    cutter->Update();
+    const std::string warned = lkapp::warningsSince(warningsBefore);
+    if (!warned.empty())
+      addLines(cut.message, "the cut: ", warned);
+    if (lkapp::errorCount() == before)
+    {
+      for (int r = 0; r < cutter->GetNumberOfPieces(); ++r)
+        cut.pieces.push_back(region(cutter->GetOutput(), r));
+      cut.innerWallLines = cutter->GetNumberOfInnerWallLines();
+    }
+    else
+    {
+      addLine(cut.message, "the cut failed: " + lkapp::errorsSince(before));
+      cut.failed = true;
+    }
+  }
+  else if (session.cut)
+    addLine(cut.message, "no closed line to cut along: draw a stroke whose ends meet");
+  if (cut.pieces.empty())
+  {
+    auto whole = vtkSmartPointer<vtkPolyData>::New();
+    whole->ShallowCopy(faces);
+    cut.pieces.push_back(whole);
+  }
+}
+
+void Planner::addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
+{
+  const auto& c = d.centre;
+  const double r = d.radius;
+  if (d.tool == "bump")
+    f->AddFunctionalDeformation(c[0], c[1], c[2], d.amount, d.falloff, r);
+  else if (d.tool == "box")
+    f->AddRangeDeformation(c[0] - r, c[0] + r, c[1] - r, c[1] + r, c[2] - r, c[2] + r, d.amount * d.normal[0],
+      d.amount * d.normal[1], d.amount * d.normal[2]);
+  else
+    f->AddSmoothingDeformation(c[0], c[1], c[2], r, d.iterations);
+}
+
+vtkLKPatchDeformationFilter* Planner::deformer(std::size_t p)
+{
+  deformers.resize(cut.pieces.size());
+  if (!deformers[p])
+  {
+    deformers[p] = vtkSmartPointer<vtkLKPatchDeformationFilter>::New();
+    deformers[p]->SetInputData(cut.pieces[p]);
+  }
+  return deformers[p];
+}
+
+void Planner::applyDeformations()
+{
+  pieces = cut.pieces;
+  std::vector<std::vector<const Deformation*>> perPiece(pieces.size());
+  for (std::size_t i = 0; i < session.deformations.size(); ++i)
+  {
+    const Deformation& d = session.deformations[i];
+    if (d.piece < static_cast<int>(pieces.size()))
+      perPiece[static_cast<std::size_t>(d.piece)].push_back(&d);
+    else
+      addLine(message, "deformation " + std::to_string(i) + " is on piece " + std::to_string(d.piece) +
+        ", which does not exist: the plan has " + std::to_string(pieces.size()) + " piece(s)");
+  }
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    if (perPiece[p].empty())
+    {
+      if (p < deformers.size() && deformers[p])
+        deformers[p]->RemoveAllDeformations(); // undone: the next drag starts from the cut piece
+      continue;
+    }
+    vtkLKPatchDeformationFilter* f = deformer(p);
+    f->RemoveAllDeformations();
+    for (const Deformation* d : perPiece[p])
+      addTo(f, *d);
+    const int before = lkapp::errorCount();
+    f->Update(); // only what changed is redone (the filter keeps its state)
+    if (lkapp::errorCount() > before)
+    {
+      addLine(message, "cannot deform piece " + std::to_string(p) + ": " + lkapp::errorsSince(before));
+      continue;
+    }
+    auto deformed = vtkSmartPointer<vtkPolyData>::New();
+    deformed->ShallowCopy(f->GetOutput());
+    pieces[p] = deformed;
+  }
+}
+
+void Planner::rebuild()
+{
+  for (auto& a : sceneActors)
+    renderer->RemoveActor(a);
+  sceneActors.clear();
+  scalarBar->SetVisibility(false);
+  computeCut();
+  message = cut.message;
+  cutFailed = cut.failed;
+  for (const auto& [line, shade] : cut.lines)
+    addLineActor(line, shade);
+  applyDeformations();
+  if (lattices.size() > pieces.size())
+    lattices.resize(pieces.size()); // pieces the cut no longer makes
+  pieceActors.assign(pieces.size(), {});
+  // Every piece's Metro colours share one scale: the largest of their colour maxima.
+  double colourTop = 0.0, largest = 0.0;
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    const std::size_t firstActor = sceneActors.size();
+    vtkSmartPointer<vtkPolyData> shown = pieces[p];
+    FittedLattice* fitted = session.lattice ? &latticeOf(p) : nullptr;
+    if (fitted && !fitted->errors.empty())
+      addLine(message, "no lattice for piece " + std::to_string(p) + ": " + fitted->errors);
+    const bool latticeShown = fitted && fitted->surface->GetNumberOfPoints() > 0;
+    if (latticeShown)
+    {
+      shown = fitted->surface;
+      vtkNew<vtkExtractEdges> cage;
+      cage->SetInputData(fitted->lattice);
+      addActor(cage->GetOutputPort(), nullptr, { 0.2, 0.2, 0.2 }, false)->PickableOff();
+    }
+    if (session.metro && latticeShown)
+    {
+      if (!fitted->metro)
+      {
+        vtkNew<vtkLKMetroFilter> metro;
+        metro->SetInputData(fitted->surface);
+        metro->SetTargetData(pieces[p]);
+        metro->Update();
+        fitted->metro = vtkSmartPointer<vtkPolyData>::New();
+        fitted->metro->ShallowCopy(metro->GetOutput());
+        fitted->metro->GetPointData()->SetActiveScalars("Distance");
+        fitted->colourMaximum = metro->GetEffectiveColorMaximum();
+        fitted->hausdorff = metro->GetHausdorffDistance();
+      }
+      auto actor = addActorData(fitted->metro, { 1, 1, 1 }, true);
+      actor->GetMapper()->SetLookupTable(distanceColours);
+      actor->GetMapper()->UseLookupTableScalarRangeOn();
+      colourTop = std::max(colourTop, fitted->colourMaximum);
+      largest = std::max(largest, fitted->hausdorff);
+      scalarBar->SetVisibility(true);
+    }
+    else
+      addActorData(shown, pieceColour(p), false);
+    pieceActors[p].assign(sceneActors.begin() + static_cast<std::ptrdiff_t>(firstActor), sceneActors.end());
+  }
+  lkapp::distanceColourBar(colourTop, largest, distanceColours, scalarBar);
+  if (session.segment >= static_cast<int>(pieces.size()))
+    addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
+      std::to_string(pieces.size()) + " piece(s)");
+  placeSegment(session.segmentMatrix);
+  updateStatus();
+}
+
+Planner::FittedLattice& Planner::latticeOf(std::size_t p)
+{
+  vtkPolyData* piece = pieces[p];
+  const vtkIdType vertices = std::min<vtkIdType>(session.latticeVertices, piece->GetNumberOfPoints() / 2);
+  const std::uint64_t key = geometryKey(piece, vertices);
+  if (lattices.size() <= p)
+    lattices.resize(p + 1);
+  FittedLattice& fitted = lattices[p];
+  if (fitted.lattice && fitted.key == key)
+  {
+    ++latticesReused;
+    return fitted;
+  }
+  ++latticeFits;
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputData(piece);
+  fit->SetTargetNumberOfVertices(vertices);
+  fit->QuadPairingOn();
+  fit->ComputeErrorOff();
+  vtkNew<vtkLKLatticeSurfaceFilter> smooth;
+  smooth->SetInputConnection(fit->GetOutputPort());
+  smooth->SetResolution(4);
+  const int before = lkapp::errorCount();
+  smooth->Update();
+  fitted.key = key;
+  fitted.errors = lkapp::errorCount() > before ? lkapp::errorsSince(before) : "";
+  fitted.lattice = vtkSmartPointer<vtkPolyData>::New();
+  fitted.lattice->ShallowCopy(fit->GetOutput());
+  fitted.surface = vtkSmartPointer<vtkPolyData>::New();
+  fitted.surface->ShallowCopy(smooth->GetOutput());
+  fitted.metro = nullptr;
+  return fitted;
+}
+
+std::uint64_t Planner::geometryKey(vtkPolyData* pd, vtkIdType count)
+{
+  std::uint64_t h = 1469598103934665603ULL;
+  auto mix = [&h](const void* data, std::size_t bytes) {
+    const auto* c = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; i += 8)
+    {
+      std::uint64_t word = 0;
+      std::memcpy(&word, c + i, std::min<std::size_t>(8, bytes - i));
+      word = (word ^ (word >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      word = (word ^ (word >> 27)) * 0x94d049bb133111ebULL;
+      word ^= word >> 31;
+      h = (h ^ word) * 1099511628211ULL;
+    }
+  };
+  mix(&count, sizeof count);
+  const vtkIdType n = pd->GetNumberOfPoints();
+  mix(&n, sizeof n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    pd->GetPoint(i, x);
+    mix(x, sizeof x);
+  }
+  auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    it->GetCurrentCell(size, ids);
+    mix(&size, sizeof size);
+    mix(ids, sizeof(vtkIdType) * static_cast<std::size_t>(size));
+  }
+  return h;
+}
+
+vtkSmartPointer<vtkPolyData> Planner::facesOnly(vtkPolyData* surface)
+{
+  auto faces = vtkSmartPointer<vtkPolyData>::New();
+  faces->ShallowCopy(surface);
+  vtkNew<vtkCellArray> none;
+  faces->SetLines(none);
+  return faces;
+}
+
+vtkSmartPointer<vtkPolyData> Planner::region(vtkPolyData* cut, int r)
+{
+  vtkNew<vtkThreshold> t;
+  t->SetInputData(cut);
+  t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "RegionId");
+  t->SetLowerThreshold(r - 0.5);
+  t->SetUpperThreshold(r + 0.5);
+  vtkNew<vtkGeometryFilter> g;
+  g->SetInputConnection(t->GetOutputPort());
+  g->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(g->GetOutput());
+  out->GetPointData()->Initialize();
+  out->GetCellData()->Initialize();
+  return out;
+}
+
+vtkSmartPointer<vtkActor> Planner::addActorData(vtkPolyData* pd, std::array<double, 3> colour, bool scalars)
+{
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(pd);
+  return addActor(normals->GetOutputPort(), pd, colour, scalars);
+}
+
+vtkSmartPointer<vtkActor> Planner::addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars)
+{
+  vtkNew<vtkPolyDataMapper> m;
+  m->SetInputConnection(port);
+  m->SetScalarVisibility(scalars);
+  auto a = vtkSmartPointer<vtkActor>::New();
+  a->SetMapper(m);
+  a->GetProperty()->SetColor(colour.data());
+  renderer->AddActor(a);
+  sceneActors.push_back(a);
+  return a;
+}
+
+void Planner::addLineActor(vtkPolyData* line, double shade)
+{
+  vtkNew<vtkPolyDataMapper> m;
+  m->SetInputData(line);
+  m->ScalarVisibilityOff();
+  auto a = vtkSmartPointer<vtkActor>::New();
+  a->SetMapper(m);
+  a->GetProperty()->SetColor(0.1 + shade, 0.5, 0.1);
+  a->GetProperty()->SetLineWidth(3);
+  a->PickableOff(); // the lines lie on the bone; strokes and presses pick the bone
+  renderer->AddActor(a);
+  sceneActors.push_back(a);
+}
+
+void Planner::updateStatus()
+{
+  std::ostringstream s;
+  s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
+    << " | pieces: " << pieces.size() << (cut.innerWallLines > 0 ? " (cut through the marrow cavity too)" : "")
+    << (session.lattice ? " | lattice" : "")
+    << (session.metro ? (session.lattice ? " | Metro colours" : " | Metro colours (on the lattice: press l)") : "");
+  if (tool != NO_TOOL)
+  {
+    char r[32];
+    std::snprintf(r, sizeof r, "%.1f", radius);
+    s << " | DEFORM " << toolName(tool) << ", radius " << r
+      << (tool == SMOOTH ? " (drag to brush)" : " (drag up/down)");
+  }
+  if (!session.deformations.empty())
+    s << " | deformations: " << session.deformations.size();
+  if (moving)
+    s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
+  else if (hasSegment())
+    s << " | segment: piece " << session.segment << (isIdentity(session.segmentMatrix) ? "" : " (moved)");
+  if (!notice.empty())
+    s << " | " << notice;
+  status->SetInput(s.str().c_str());
+  messages->SetInput(wrapped(message, 120).c_str());
+}
+
+void Planner::showStroke()
+{
+  // A line cell needs two points: a stroke of one point (a click) is a
+  // vertex cell, and an empty one has no cell (a line of fewer points
+  // leaves the polydata's cell map unbuildable, which crashed a pick).
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines, verts;
+  vtkCellArray* cells = current.size() >= 2 ? lines.Get() : verts.Get();
+  if (!current.empty())
+    cells->InsertNextCell(static_cast<vtkIdType>(current.size()));
+  for (const auto& p : current)
+    cells->InsertCellPoint(pts->InsertNextPoint(p.data()));
+  strokePd->SetPoints(pts);
+  strokePd->SetLines(lines);
+  strokePd->SetVerts(verts);
+  strokePd->Modified();
+}
+
+void Planner::report()
+{
+  std::printf("strokes: %zu\npieces: %zu\n", session.strokes.size(), pieces.size());
+  if (cut.innerWallLines > 0)
+    std::printf("inner wall lines: %d (the cut went through the marrow cavity too)\n", cut.innerWallLines);
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    std::printf("piece %zu: %lld points, %lld faces", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
+      static_cast<long long>(pieces[p]->GetNumberOfPolys()));
+    if (vtkDataArray* d = pieces[p]->GetPointData()->GetArray("Displacement"))
+    {
+      std::printf(", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
+        static_cast<int>(pieces[p]->GetCellData()->GetArray("Level")->GetRange()[1]));
+    }
+    std::printf("\n");
+  }
+  for (std::size_t i = 0; i < session.deformations.size(); ++i)
+  {
+    const Deformation& d = session.deformations[i];
+    std::printf("deformation %zu: %s on piece %d at (%.2f, %.2f, %.2f), radius %.2f", i, d.tool.c_str(), d.piece,
+      d.centre[0], d.centre[1], d.centre[2], d.radius);
+    if (d.tool == "smooth")
+      std::printf(", %d iterations\n", d.iterations);
+    else
+      std::printf(", amount %.3f\n", d.amount);
+  }
+  if (!frameMs.empty())
+  {
+    // What a user waits for per mouse move (printed, never asserted).
+    std::vector<double> t = frameMs, u = updateMs;
+    std::sort(t.begin(), t.end());
+    std::sort(u.begin(), u.end());
+    std::printf("deformation frames: %zu; deformation median %.1f ms, slowest %.1f ms; with render median %.1f ms, "
+                "slowest %.1f ms\n",
+      t.size(), u[u.size() / 2], u.back(), t[t.size() / 2], t.back());
+  }
+  if (latticeFits + latticesReused > 0)
+    std::printf("lattice fits: %zu (%zu kept from an earlier fit of the same piece)\n", latticeFits, latticesReused);
+  std::printf("%s", segmentText().c_str());
+  std::istringstream lines(message);
+  for (std::string line; std::getline(lines, line);)
+    std::printf("message: %s\n", line.c_str());
+}
+
+bool Planner::exportPieces(const std::string& folder, std::string& error)
+{
+  vtksys::SystemTools::MakeDirectory(folder);
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    // The segment goes where the plan moves it.
+    vtkSmartPointer<vtkPolyData> piece = pieces[p];
+    if (static_cast<int>(p) == session.segment && !isIdentity(session.segmentMatrix))
+    {
+      vtkNew<vtkTransform> t;
+      t->SetMatrix(session.segmentMatrix.data());
+      vtkNew<vtkTransformPolyDataFilter> move;
+      move->SetInputData(pieces[p]);
+      move->SetTransform(t);
+      move->Update();
+      piece = move->GetOutput();
+    }
+    for (const char* ext : { ".stl", ".vtp", ".obj" })
+    {
+      const std::string path = folder + "/piece" + std::to_string(p) + ext;
+      if (!lkapp::writeMesh(piece, path, error))
+        return false;
+    }
+  }
+  if (hasSegment())
+  {
+    std::ofstream out(folder + "/segment_transform.txt");
+    out << segmentText();
+    if (!out)
+    {
+      error = "cannot write '" + folder + "/segment_transform.txt'";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Planner::screenshot(const std::string& path)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  vtkNew<vtkPNGWriter> w;
+  w->SetInputConnection(grab->GetOutputPort());
+  w->SetFileName(path.c_str());
+  w->Write();
+  return vtksys::SystemTools::FileExists(path);
+}
+
+} // namespace lkplanner

@@ -1,0 +1,182 @@
+#pragma once
+/// \file Planner.h
+/// latticekit-planner's plan and scene: the bone, the session
+/// (PlannerSession.h), and what is rebuilt from them: the feature lines, the
+/// cut pieces, their deformations, each piece's lattice and Metro colours,
+/// the actors, the status line, the report, the export and the screenshot.
+/// The window's mouse and keys are PlannerStyle.h; the command line is
+/// apps/latticekit-planner.cxx.
+
+#include "planner/PlannerSession.h"
+
+#include "vtkLKPatchDeformationFilter.h"
+#include "vtkLKStrokeFeatureLineFilter.h"
+
+#include <vtkActor.h>
+#include <vtkLookupTable.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkAlgorithmOutput;
+
+namespace lkplanner
+{
+
+/// The keys, as the window's help text and --help list them.
+extern const char* const kHelp;
+
+/// The planner's deformation tools, in the order `f` cycles through them.
+enum Tool
+{
+  NO_TOOL,
+  BUMP,
+  BOX,
+  SMOOTH,
+  TOOL_COUNT
+};
+
+/// The name of a Tool, as the status line shows it.
+const char* toolName(int tool);
+
+/// The colour of piece p (four colours, repeated).
+std::array<double, 3> pieceColour(std::size_t p);
+
+/// The plan and its scene. rebuild() redoes, from the bone and the session,
+/// what changed: the strokes and the cut only when they changed, each
+/// piece's lattice only when that piece did.
+class Planner
+{
+public:
+  vtkSmartPointer<vtkPolyData> bone;
+  Session session;
+  int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
+  bool drawing = false;
+  std::vector<std::array<double, 3>> current;
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkTextActor> help, status, messages;
+  vtkNew<vtkScalarBarActor> scalarBar;
+  vtkNew<vtkLookupTable> distanceColours; ///< the Metro colours of every piece
+  vtkNew<vtkActor> strokeActor;
+  vtkNew<vtkPolyData> strokePd;
+  std::vector<vtkSmartPointer<vtkActor>> sceneActors;
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+  std::string message; ///< a problem: shown, and reported as "message:" in batch runs
+  std::string notice;  ///< an outcome (saved, exported): shown only
+  bool cutFailed = false;
+  bool moving = false;                    ///< the mouse moves the segment
+  int tool = NO_TOOL;                     ///< the deformation tool the mouse uses
+  double radius = 1.0;                    ///< the tool's radius (set from the bone's size)
+  vtkNew<vtkActor> preview;               ///< the piece being deformed, live
+  std::vector<double> frameMs, updateMs;  ///< per mouse move: deformation plus render, deformation alone
+  std::vector<Session> undoStack, redoStack; ///< whole-session snapshots
+  std::vector<std::vector<vtkSmartPointer<vtkActor>>> pieceActors;
+  /// Each piece's lattice and its surface, kept while the piece and the
+  /// vertex count do not change: toggling Metro, a stroke that leaves the
+  /// cut as it was or a deformation of another piece refits nothing.
+  struct FittedLattice
+  {
+    std::uint64_t key = 0;
+    vtkSmartPointer<vtkPolyData> lattice, surface; ///< empty surface: the fit failed
+    std::string errors;
+    /// The surface with its Metro distance to the piece, once asked for.
+    vtkSmartPointer<vtkPolyData> metro;
+    double colourMaximum = 0.0, hausdorff = 0.0;
+  };
+  std::vector<FittedLattice> lattices;
+  std::size_t latticeFits = 0, latticesReused = 0;
+
+  /// Call before a change: the session as it was goes on the undo stack.
+  void remember() { remember(session); }
+  /// After a drag that changed the session live: the session before it.
+  void remember(const Session& before);
+
+  bool hasSegment() const { return session.segment >= 0 && session.segment < static_cast<int>(pieces.size()); }
+
+  vtkSmartPointer<vtkMatrix4x4> segmentMatrix() const;
+
+  /// Shows the segment where its transform puts it.
+  void placeSegment(const std::array<double, 16>& matrix);
+
+  /// The segment's transform as the surgery plan states it: which piece, the
+  /// matrix, its translation and rotation angle.
+  std::string segmentText() const;
+
+  void setup();
+
+  /// The strokes and the cut, kept while they do not change (the lattice,
+  /// Metro, segment and deformation keys do not redo them).
+  struct CutStage
+  {
+    std::string key;
+    std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>> lines; ///< feature lines, shade
+    std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+    std::string message;
+    bool failed = false;
+    int innerWallLines = 0; ///< lines the cut added on a hollow bone's inner walls
+  } cut;
+  /// One deformation filter per piece: it keeps the refined mesh between
+  /// updates, so a drag or a brush dab costs one deformation.
+  std::vector<vtkSmartPointer<vtkLKPatchDeformationFilter>> deformers;
+
+  void computeCut();
+
+  /// The filter call for one deformation.
+  static void addTo(vtkLKPatchDeformationFilter* f, const Deformation& d);
+
+  /// The deformation filter of piece p (made on first use).
+  vtkLKPatchDeformationFilter* deformer(std::size_t p);
+
+  /// The session's deformations applied to the cut pieces, in order.
+  void applyDeformations();
+
+  /// Re-runs the plan from the bone: strokes, cut (kept while unchanged),
+  /// deformations, lattices, colours.
+  void rebuild();
+
+  /// Piece p's lattice (600 vertices or the session's, at most half the
+  /// piece's) and its smooth surface: fitted again only when the piece's
+  /// points or faces, or the count, changed since the last fit.
+  FittedLattice& latticeOf(std::size_t p);
+
+  /// A 64-bit digest of a mesh's points and polygons and a count: FNV-1a
+  /// over 8-byte words, each scrambled first (splitmix64's finaliser, so that
+  /// every bit of a word reaches every bit of the digest); the skull's 40 MB
+  /// in a few milliseconds.
+  static std::uint64_t geometryKey(vtkPolyData* pd, vtkIdType count);
+
+  /// The surface without its line cells (the feature lines a stroke left on it).
+  static vtkSmartPointer<vtkPolyData> facesOnly(vtkPolyData* surface);
+
+  vtkSmartPointer<vtkPolyData> region(vtkPolyData* cut, int r);
+
+  vtkSmartPointer<vtkActor> addActorData(vtkPolyData* pd, std::array<double, 3> colour, bool scalars);
+
+  vtkSmartPointer<vtkActor> addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars);
+
+  void addLineActor(vtkPolyData* line, double shade);
+
+  void updateStatus();
+
+  void showStroke();
+
+  void report();
+
+  bool exportPieces(const std::string& folder, std::string& error);
+
+  bool screenshot(const std::string& path);
+};
+
+} // namespace lkplanner

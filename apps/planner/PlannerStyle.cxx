@@ -1,0 +1,437 @@
+#include "planner/PlannerStyle.h"
+
+#include "common/AppSupport.h"
+
+#include "vtkLKPatchDeformationFilter.h"
+
+#include <vtkCamera.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkTransform.h>
+#include <vtkMatrix4x4.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace lkplanner
+{
+vtkStandardNewMacro(PlannerStyle);
+
+void PlannerStyle::displayToWorld(double x, double y, double world[3])
+{
+  vtkRenderer* ren = planner->renderer;
+  ren->SetWorldPoint(centre[0], centre[1], centre[2], 1.0);
+  ren->WorldToDisplay();
+  const double depth = ren->GetDisplayPoint()[2];
+  ren->SetDisplayPoint(x, y, depth);
+  ren->DisplayToWorld();
+  const double* w = ren->GetWorldPoint();
+  for (int i = 0; i < 3; ++i)
+    world[i] = w[i] / w[3];
+}
+
+void PlannerStyle::startMove()
+{
+  pressed = true;
+  beforeMove = planner->session;
+  const int* pos = this->Interactor->GetEventPosition();
+  dragStart[0] = pos[0];
+  dragStart[1] = pos[1];
+  double b[6];
+  planner->pieces[static_cast<std::size_t>(planner->session.segment)]->GetBounds(b);
+  const double c[4] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]), 1.0 };
+  double moved[4];
+  planner->segmentMatrix()->MultiplyPoint(c, moved);
+  std::copy(moved, moved + 3, centre);
+  dragMatrix = planner->session.segmentMatrix;
+}
+
+void PlannerStyle::drag()
+{
+  const int* pos = this->Interactor->GetEventPosition();
+  vtkNew<vtkTransform> t;
+  t->PostMultiply();
+  t->SetMatrix(beforeMove.segmentMatrix.data());
+  if (this->Interactor->GetShiftKey())
+  {
+    // Rotate about the view direction through the segment's centre.
+    double axis[3];
+    planner->renderer->GetActiveCamera()->GetDirectionOfProjection(axis);
+    t->Translate(-centre[0], -centre[1], -centre[2]);
+    t->RotateWXYZ(0.5 * (pos[0] - dragStart[0]), axis);
+    t->Translate(centre);
+  }
+  else
+  {
+    double a[3], b[3];
+    displayToWorld(dragStart[0], dragStart[1], a);
+    displayToWorld(pos[0], pos[1], b);
+    t->Translate(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+  }
+  vtkMatrix4x4* m = t->GetMatrix();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      dragMatrix[static_cast<std::size_t>(4 * r + c)] = m->GetElement(r, c);
+  planner->placeSegment(dragMatrix);
+  this->Interactor->Render();
+}
+
+void PlannerStyle::endMove()
+{
+  pressed = false;
+  planner->remember(beforeMove);
+  planner->session.segmentMatrix = dragMatrix;
+  std::printf("%s", planner->segmentText().c_str());
+  std::fflush(stdout);
+  planner->updateStatus();
+  this->Interactor->Render();
+}
+
+void PlannerStyle::pick()
+{
+  int* pos = this->Interactor->GetEventPosition();
+  picker->SetTolerance(0.0005);
+  if (picker->Pick(pos[0], pos[1], 0, planner->renderer) && picker->GetCellId() >= 0)
+  {
+    double p[3];
+    picker->GetPickPosition(p);
+    planner->current.push_back({ p[0], p[1], p[2] });
+    planner->showStroke();
+    this->Interactor->Render();
+  }
+}
+
+int PlannerStyle::pickPiece(int x, int y, std::array<double, 3>& point, std::array<double, 3>& normal)
+{
+  piecePicker->InitializePickList();
+  piecePicker->PickFromListOn();
+  piecePicker->SetTolerance(0.0005);
+  for (auto& actors : planner->pieceActors)
+    for (auto& a : actors)
+      piecePicker->AddPickList(a);
+  if (planner->preview->GetVisibility())
+    piecePicker->AddPickList(planner->preview);
+  if (!piecePicker->Pick(x, y, 0, planner->renderer) || piecePicker->GetCellId() < 0)
+    return -1;
+  vtkProp3D* hit = piecePicker->GetProp3D();
+  int piece = hit == planner->preview.GetPointer() ? deformPiece : -1;
+  for (std::size_t p = 0; p < planner->pieceActors.size() && piece < 0; ++p)
+    for (auto& a : planner->pieceActors[p])
+      if (a.GetPointer() == hit)
+        piece = static_cast<int>(p);
+  if (piece < 0)
+    return -1;
+  double w[4] = { 0, 0, 0, 1 }, n[4] = { 0, 0, 0, 0 };
+  piecePicker->GetPickPosition(w);
+  piecePicker->GetPickNormal(n);
+  if (piece == planner->session.segment)
+  {
+    vtkNew<vtkMatrix4x4> inverse;
+    vtkMatrix4x4::Invert(planner->segmentMatrix(), inverse);
+    inverse->MultiplyPoint(w, w);
+    inverse->MultiplyPoint(n, n);
+  }
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int i = 0; i < 3; ++i)
+  {
+    point[static_cast<std::size_t>(i)] = w[i];
+    normal[static_cast<std::size_t>(i)] = length > 0.0 ? n[i] / length : (i == 2 ? 1.0 : 0.0);
+  }
+  return piece;
+}
+
+void PlannerStyle::startDeform()
+{
+  const int* pos = this->Interactor->GetEventPosition();
+  std::array<double, 3> c, n;
+  deformPiece = -1;
+  const int piece = pickPiece(pos[0], pos[1], c, n);
+  if (piece < 0)
+  {
+    planner->message = "the deformation tools need a press on the bone";
+    planner->updateStatus();
+    this->Interactor->Render();
+    return;
+  }
+  pressed = true;
+  deformPiece = piece;
+  beforeDeform = planner->session;
+  deformStart[0] = pos[0];
+  deformStart[1] = pos[1];
+  // One pixel, in world units, on the plane through the picked point.
+  piecePicker->GetPickPosition(centre);
+  double a[3], b[3];
+  displayToWorld(pos[0], pos[1], a);
+  displayToWorld(pos[0], pos[1] + 100, b);
+  worldPerPixel = std::sqrt(vtkMath::Distance2BetweenPoints(a, b)) / 100.0;
+  const double r = planner->radius;
+  dragged = Deformation();
+  dragged.tool = toolName(planner->tool);
+  dragged.piece = piece;
+  dragged.centre = c;
+  dragged.normal = n;
+  dragged.radius = r;
+  dragged.falloff = planner->tool == BUMP ? bumpFalloff(r) : 0.0;
+  dabs.assign(1, dragged);
+  vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(piece));
+  Planner::addTo(f, dragged); // a bump or box of amount 0 until the mouse moves
+  // The live piece: the filter's output, shown in place of the piece's actors.
+  vtkNew<vtkPolyDataMapper> m;
+  m->SetInputConnection(f->GetOutputPort());
+  m->ScalarVisibilityOff();
+  planner->preview->SetMapper(m);
+  planner->preview->GetProperty()->SetColor(pieceColour(static_cast<std::size_t>(piece)).data());
+  planner->preview->SetUserMatrix(piece == planner->session.segment ? planner->segmentMatrix().GetPointer() : nullptr);
+  planner->preview->SetVisibility(true);
+  planner->preview->PickableOn();
+  for (auto& actor : planner->pieceActors[static_cast<std::size_t>(piece)])
+    actor->SetVisibility(false);
+  this->Interactor->Render();
+}
+
+void PlannerStyle::dragDeform()
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const int* pos = this->Interactor->GetEventPosition();
+  vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(deformPiece));
+  if (planner->tool == SMOOTH)
+  {
+    // The brush: a new dab once the pointer has moved a third of the radius.
+    std::array<double, 3> c, n;
+    if (pickPiece(pos[0], pos[1], c, n) != deformPiece)
+      return;
+    const auto& last = dabs.back().centre;
+    const double step = std::sqrt(vtkMath::Distance2BetweenPoints(c.data(), last.data()));
+    if (step < dabs.back().radius / 3.0)
+      return;
+    Deformation dab = dabs.back();
+    dab.centre = c;
+    dab.normal = n;
+    dabs.push_back(dab);
+    Planner::addTo(f, dab);
+  }
+  else
+  {
+    // Up raises along the normal at the press, down lowers.
+    dragged.amount = (pos[1] - deformStart[1]) * worldPerPixel;
+    f->RemoveLastDeformation();
+    Planner::addTo(f, dragged);
+  }
+  f->Update();
+  const auto t1 = std::chrono::steady_clock::now();
+  this->Interactor->Render();
+  using ms = std::chrono::duration<double, std::milli>;
+  planner->updateMs.push_back(ms(t1 - t0).count());
+  planner->frameMs.push_back(ms(std::chrono::steady_clock::now() - t0).count());
+}
+
+void PlannerStyle::endDeform()
+{
+  pressed = false;
+  planner->preview->SetVisibility(false);
+  planner->preview->PickableOff();
+  planner->preview->SetMapper(nullptr);
+  if (planner->tool == SMOOTH)
+    planner->session.deformations.insert(planner->session.deformations.end(), dabs.begin(), dabs.end());
+  else if (dragged.amount != 0.0)
+    planner->session.deformations.push_back(dragged);
+  if (planner->session.deformations.size() == beforeDeform.deformations.size())
+  {
+    // A click without a drag: nothing to remember.
+    planner->deformer(static_cast<std::size_t>(deformPiece))->RemoveLastDeformation();
+    for (auto& actor : planner->pieceActors[static_cast<std::size_t>(deformPiece)])
+      actor->SetVisibility(true);
+    this->Interactor->Render();
+    return;
+  }
+  planner->remember(beforeDeform);
+  planner->rebuild(); // the same list: the filter keeps its result; lattices are refitted
+  this->Interactor->Render();
+}
+
+void PlannerStyle::OnLeftButtonDown()
+{
+  if (planner->tool != NO_TOOL)
+    return startDeform();
+  if (planner->moving && planner->hasSegment())
+    return startMove();
+  if (!planner->drawing)
+    return vtkInteractorStyleTrackballCamera::OnLeftButtonDown();
+  pressed = true;
+  planner->current.clear();
+  pick();
+}
+
+void PlannerStyle::OnMouseMove()
+{
+  if (planner->tool != NO_TOOL && pressed)
+    return dragDeform();
+  if (planner->moving && pressed)
+    return drag();
+  if (planner->drawing && pressed)
+    return pick();
+  vtkInteractorStyleTrackballCamera::OnMouseMove();
+}
+
+void PlannerStyle::OnLeftButtonUp()
+{
+  if (planner->tool != NO_TOOL && pressed)
+    return endDeform();
+  if (planner->moving && pressed)
+    return endMove();
+  if (!planner->drawing || !pressed)
+    return vtkInteractorStyleTrackballCamera::OnLeftButtonUp();
+  pressed = false;
+  if (planner->current.size() >= 2)
+  {
+    planner->remember();
+    planner->session.strokes.push_back({ planner->mode, planner->current });
+    planner->rebuild();
+  }
+  planner->current.clear();
+  planner->showStroke();
+  this->Interactor->Render();
+}
+
+void PlannerStyle::OnChar()
+{
+  const std::string key = this->Interactor->GetKeySym() ? this->Interactor->GetKeySym() : "";
+  Session& s = planner->session;
+  std::string error;
+  bool rebuild = true;
+  planner->notice.clear();
+  if (key == "d")
+  {
+    planner->drawing = !planner->drawing;
+    planner->moving = false;
+    planner->tool = NO_TOOL;
+    rebuild = false;
+  }
+  else if (key == "f")
+  {
+    planner->tool = (planner->tool + 1) % TOOL_COUNT; // bump, box, smooth, off
+    planner->drawing = false;
+    planner->moving = false;
+    rebuild = false;
+  }
+  else if (key == "bracketleft" || key == "bracketright")
+  {
+    planner->radius *= key == "bracketleft" ? 0.8 : 1.25;
+    rebuild = false;
+  }
+  else if (key == "1" || key == "2" || key == "3" || key == "4")
+  {
+    planner->mode = key[0] - '1';
+    rebuild = false;
+  }
+  else if (key == "x" || key == "l" || key == "m")
+  {
+    planner->remember();
+    bool& flag = key == "x" ? s.cut : key == "l" ? s.lattice : s.metro;
+    flag = !flag;
+  }
+  else if (key == "n")
+  {
+    // The next segment, smallest piece first (the part a surgeon moves).
+    rebuild = false;
+    if (planner->pieces.size() < 2)
+      planner->message = "no segment to pick: cut first (x)";
+    else
+    {
+      std::vector<int> bySize(planner->pieces.size());
+      std::iota(bySize.begin(), bySize.end(), 0);
+      std::stable_sort(bySize.begin(), bySize.end(), [&](int a, int b) {
+        return planner->pieces[static_cast<std::size_t>(a)]->GetNumberOfPolys() <
+          planner->pieces[static_cast<std::size_t>(b)]->GetNumberOfPolys();
+      });
+      const auto at = std::find(bySize.begin(), bySize.end(), s.segment);
+      planner->remember();
+      s.segment = at == bySize.end() || at + 1 == bySize.end() ? bySize.front() : *(at + 1);
+      s.segmentMatrix = Session().segmentMatrix;
+      planner->placeSegment(s.segmentMatrix);
+      planner->message.clear();
+    }
+  }
+  else if (key == "g")
+  {
+    rebuild = false;
+    if (!planner->hasSegment())
+      planner->message = "pick a segment first (n)";
+    else
+    {
+      planner->moving = !planner->moving;
+      planner->drawing = false;
+      planner->tool = NO_TOOL;
+    }
+  }
+  else if (key == "r")
+  {
+    rebuild = false;
+    if (planner->hasSegment())
+    {
+      planner->remember();
+      s.segmentMatrix = Session().segmentMatrix;
+      planner->placeSegment(s.segmentMatrix);
+    }
+  }
+  else if (key == "z" && !planner->undoStack.empty())
+  {
+    planner->redoStack.push_back(s);
+    s = planner->undoStack.back();
+    planner->undoStack.pop_back();
+  }
+  else if (key == "y" && !planner->redoStack.empty())
+  {
+    planner->undoStack.push_back(s);
+    s = planner->redoStack.back();
+    planner->redoStack.pop_back();
+  }
+  else if (key == "w")
+  {
+    if (saveSession(s, sessionPath, error))
+      planner->notice = "saved " + vtksys::SystemTools::GetFilenameName(sessionPath);
+    else
+      planner->message = error;
+    rebuild = false;
+  }
+  else if (key == "e")
+  {
+    if (planner->exportPieces(exportFolder, error))
+      planner->notice = "exported to " + exportFolder;
+    else
+      planner->message = error;
+    rebuild = false;
+  }
+  else if (key == "q" || key == "Escape")
+  {
+    this->Interactor->TerminateApp();
+    return;
+  }
+  else
+    return; // no VTK default keys: 'e' and 'w' mean other things here
+  if (rebuild)
+    planner->rebuild();
+  planner->updateStatus();
+  this->Interactor->Render();
+}
+
+} // namespace lkplanner

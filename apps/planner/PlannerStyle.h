@@ -1,0 +1,77 @@
+#pragma once
+/// \file PlannerStyle.h
+/// latticekit-planner's mouse and keys: drawing strokes (picked onto the
+/// bone), moving the cut segment (drag; shift+drag rotates), the deformation
+/// tools (bump, box, smoothing brush: press and drag up or down), and the
+/// key commands (kHelp). Each change goes to the Planner's session, with an
+/// undo snapshot, and the Planner rebuilds what it changes.
+
+#include "planner/Planner.h"
+
+#include <vtkCellPicker.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkNew.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace lkplanner
+{
+
+/// The interactor style of the planner's window (trackball camera otherwise).
+class PlannerStyle : public vtkInteractorStyleTrackballCamera
+{
+public:
+  static PlannerStyle* New();
+  vtkTypeMacro(PlannerStyle, vtkInteractorStyleTrackballCamera);
+  Planner* planner = nullptr;
+  std::string sessionPath = "planner_session.json", exportFolder = "planner-pieces";
+  bool pressed = false;
+  vtkNew<vtkCellPicker> picker;
+  // Moving the segment: where the drag started, the session then, the
+  // segment's centre (moved) and the matrix being shown.
+  int dragStart[2] = { 0, 0 };
+  Session beforeMove;
+  double centre[3] = { 0, 0, 0 };
+  std::array<double, 16> dragMatrix{};
+
+  /// World point at display (x, y) on the plane through `centre` facing the camera.
+  void displayToWorld(double x, double y, double world[3]);
+
+  void startMove();
+
+  void drag();
+
+  void endMove();
+
+  void pick();
+  // Deforming (seed 002's tools): the piece under the press, the
+  // deformation being dragged (or the brush's dabs), the session before it
+  // (for undo), and the world length of one pixel at the picked point.
+  int deformPiece = -1;
+  Deformation dragged;
+  std::vector<Deformation> dabs;
+  Session beforeDeform;
+  double worldPerPixel = 0.0;
+  int deformStart[2] = { 0, 0 };
+  vtkNew<vtkCellPicker> piecePicker;
+
+  /// The piece under display (x, y), with the picked point and the surface
+  /// normal there in the piece's own frame (before the segment's move); -1
+  /// when no piece is there.
+  int pickPiece(int x, int y, std::array<double, 3>& point, std::array<double, 3>& normal);
+
+  void startDeform();
+
+  void dragDeform();
+
+  void endDeform();
+
+  void OnLeftButtonDown() override;
+  void OnMouseMove() override;
+  void OnLeftButtonUp() override;
+  void OnChar() override;
+};
+
+} // namespace lkplanner
