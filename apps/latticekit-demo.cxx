@@ -76,8 +76,9 @@ void usage(std::ostream& os)
         "closed pen stroke around one side of the mandible body (split mode), the capped cut into\n"
         "two pieces, a lattice for each piece with the cut line kept exactly, and a Metro report\n"
         "like the paper's Table 2 (no cut / cut / cut with quads). Writes to FOLDER (default\n"
-        "latticekit-output): mandible.vtp/.stl, the cut line, piece0/1 (.stl .vtp .obj), the\n"
-        "lattices and their surfaces, report.md and plan.png, pieces.png, error.png.\n"
+        "latticekit-output): mandible.vtp/.stl (with the cut line split in), cut_line.vtp (its\n"
+        "MeshPointId name mandible.vtp's points), piece0/1 (.stl .vtp .obj), the lattices and\n"
+        "their surfaces, report.md and plan.png, pieces.png, error.png.\n"
         "INPUT defaults to the bundled CT head and PLAN to its plan\n"
         "(sample_data/cthead/mandible_plan.json: crop box, seed, iso value, cut plane, lattice\n"
         "size, view; see that file).\n"
@@ -670,9 +671,12 @@ int main(int argc, char* argv[])
     borders.push_back(border);
   }
 
-  // 4. Files of the plan.
+  // 4. Files of the plan. The mandible is written with the cut line split
+  // in (the same surface, with the line's vertices and edges), because the
+  // line's MeshPointId names those points: the two files cut again, or fit
+  // with the line kept, as they are.
   for (const auto& [mesh, stem] : std::vector<std::pair<vtkPolyData*, std::string>>{
-         { mandible, "mandible.vtp" }, { mandible, "mandible.stl" }, { line, "cut_line.vtp" }, { stroke, "stroke.vtp" } })
+         { marked, "mandible.vtp" }, { marked, "mandible.stl" }, { line, "cut_line.vtp" }, { stroke, "stroke.vtp" } })
     if (!lkapp::writeMesh(mesh, folder + "/" + stem, error))
     {
       std::cerr << "error: " << error << "\n";
@@ -735,7 +739,10 @@ int main(int argc, char* argv[])
          << stroke->GetNumberOfPoints() << " points " << penSpacing(stroke) << " mm apart on average (every "
          << plan.penStep << " mm or more along the section's own points), " << plan.penOffset
          << " mm off the surface; split mode: a closed cut line of " << line->GetNumberOfPoints() - 1
-         << " vertices whose edges follow the stroke.\n"
+         << " vertices whose edges follow the stroke, split into the surface ("
+         << marked->GetNumberOfPoints() - mandible->GetNumberOfPoints()
+         << " new vertices; `mandible.vtp` is the surface with them, and `cut_line.vtp` names its points by "
+            "MeshPointId).\n"
          << "- Capped cut: " << pieces.size() << " pieces, each closed by the same flat cap"
          << (cut->GetNumberOfInnerWallLines() > 0
                 ? " (the bone is hollow there: the cut also takes the plane's section of the marrow cavity, " +

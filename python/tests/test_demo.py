@@ -58,6 +58,23 @@ class DemoTest(unittest.TestCase):
                 self.assertEqual(open_edges(read("piece%d.vtp" % p)).GetNumberOfCells(), 0, "piece %d is not closed" % p)
             self.assertIsNotNone(read("lattice_surface_quads.vtp").GetPointData().GetArray("Distance"))
 
+            # The saved surface and cut line fit together: the line's MeshPointId
+            # name mandible.vtp's points (the surface with the line split in), so
+            # the two files cut again into the same pieces.
+            import latticekit
+            mandible, line = read("mandible.vtp"), read("cut_line.vtp")
+            self.assertEqual(mandible.GetNumberOfLines(), 0)
+            cut = latticekit.vtkLKClosedLineCutFilter()
+            cut.SetInputData(mandible)
+            cut.SetLinesData(line)
+            cut.CappingOn()
+            cut.Update()
+            self.assertEqual(cut.GetNumberOfPieces(), 2)
+            regions = cut.GetOutput().GetCellData().GetArray("RegionId")
+            for p in range(2):
+                faces = sum(1 for c in range(regions.GetNumberOfTuples()) if regions.GetValue(c) == p)
+                self.assertEqual(faces, read("piece%d.vtp" % p).GetNumberOfPolys(), "piece %d" % p)
+
             png = vtkPNGReader()
             png.SetFileName(os.path.join(out, "error.png"))
             png.Update()
