@@ -2,9 +2,12 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellData.h>
 #include <vtkCommand.h>
+#include <vtkDataObject.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkGeometryFilter.h>
 #include <vtkGLTFWriter.h>
 #include <vtkLogger.h>
 #include <vtkMultiBlockDataSet.h>
@@ -21,6 +24,7 @@
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
+#include <vtkThreshold.h>
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -601,6 +605,26 @@ double fieldValue(vtkPolyData* pd, const std::string& name)
 {
   vtkDataArray* a = pd->GetFieldData()->GetArray(name.c_str());
   return a ? a->GetTuple1(0) : 0.0;
+}
+
+vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes)
+{
+  vtkNew<vtkThreshold> t;
+  t->SetInputData(cut);
+  t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "RegionId");
+  t->SetLowerThreshold(region - 0.5);
+  t->SetUpperThreshold(region + 0.5);
+  vtkNew<vtkGeometryFilter> g;
+  g->SetInputConnection(t->GetOutputPort());
+  g->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(g->GetOutput());
+  if (!attributes)
+  {
+    out->GetPointData()->Initialize();
+    out->GetCellData()->Initialize();
+  }
+  return out;
 }
 
 } // namespace lkapp

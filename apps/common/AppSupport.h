@@ -69,6 +69,12 @@ long long fileBytes(const std::string& path);
 /// filters report their measurements there.
 double fieldValue(vtkPolyData* pd, const std::string& name);
 
+/// Piece `region` of a vtkLKClosedLineCutFilter output: its cells (cell data
+/// RegionId == region), with only the points they use. Without
+/// `attributes`, point and cell data are dropped (a piece to show or print);
+/// with them, the cut's InputPointId, InputCellId, RegionId and Cap stay.
+vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes = false);
+
 /// Whether the X display DISPLAY names accepts a connection (a server that has
 /// ended, a host with none, or one refusing this client do not): Debian's VTK
 /// renders only

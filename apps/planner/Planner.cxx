@@ -19,7 +19,6 @@
 #include <vtkDataObject.h>
 #include <vtkExtractEdges.h>
 #include <vtkFieldData.h>
-#include <vtkGeometryFilter.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -30,7 +29,6 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkTextProperty.h>
-#include <vtkThreshold.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkMatrix4x4.h>
@@ -303,7 +301,7 @@ void Planner::computeCut()
     if (lkapp::errorCount() == before)
     {
       for (int r = 0; r < cutter->GetNumberOfPieces(); ++r)
-        cut.pieces.push_back(region(cutter->GetOutput(), r));
+        cut.pieces.push_back(lkapp::cutPiece(cutter->GetOutput(), r));
       cut.innerWallLines = cutter->GetNumberOfInnerWallLines();
     }
     else
@@ -526,23 +524,6 @@ vtkSmartPointer<vtkPolyData> Planner::facesOnly(vtkPolyData* surface)
   vtkNew<vtkCellArray> none;
   faces->SetLines(none);
   return faces;
-}
-
-vtkSmartPointer<vtkPolyData> Planner::region(vtkPolyData* cut, int r)
-{
-  vtkNew<vtkThreshold> t;
-  t->SetInputData(cut);
-  t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "RegionId");
-  t->SetLowerThreshold(r - 0.5);
-  t->SetUpperThreshold(r + 0.5);
-  vtkNew<vtkGeometryFilter> g;
-  g->SetInputConnection(t->GetOutputPort());
-  g->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(g->GetOutput());
-  out->GetPointData()->Initialize();
-  out->GetCellData()->Initialize();
-  return out;
 }
 
 vtkSmartPointer<vtkActor> Planner::addActorData(vtkPolyData* pd, std::array<double, 3> colour, bool scalars)

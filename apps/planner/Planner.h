@@ -160,8 +160,6 @@ public:
   /// The surface without its line cells (the feature lines a stroke left on it).
   static vtkSmartPointer<vtkPolyData> facesOnly(vtkPolyData* surface);
 
-  vtkSmartPointer<vtkPolyData> region(vtkPolyData* cut, int r);
-
   vtkSmartPointer<vtkActor> addActorData(vtkPolyData* pd, std::array<double, 3> colour, bool scalars);
 
   vtkSmartPointer<vtkActor> addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars);

@@ -1,0 +1,210 @@
+// latticekit-cut: a bone surface (or a fitted lattice) cut along closed lines
+// into pieces (vtkLKClosedLineCutFilter), capped for printing by default.
+#include "common/AppSupport.h"
+
+#include "vtkLKClosedLineCutFilter.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkMassProperties.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkTriangleFilter.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+void usage(std::ostream& os)
+{
+  os << "usage: latticekit-cut MESH -o CUT [options]\n"
+        "\n"
+        "Cuts a surface along closed lines into pieces (vtkLKClosedLineCutFilter): a bone surface\n"
+        "(latticekit-surface) or a fitted lattice (latticekit-fit). By default each piece is closed\n"
+        "by a cap (flat for a near-planar line, as a saw cut is), so it can be printed; on hollow\n"
+        "bone the cut also takes the line's plane through the inner walls it meets.\n"
+        "MESH: .vtp, .vtk, .stl, .ply or .obj, polygons; the lines are its line cells unless\n"
+        "--lines gives them. CUT: every piece in one mesh, with cell data RegionId (the piece)\n"
+        "and Cap (1 on cap triangles), point data InputPointId.\n"
+        "\n"
+        "  --lines LINES      the closed lines: polylines along edges of MESH whose points name\n"
+        "                     MESH's points by point data MeshPointId or by equal coordinates\n"
+        "                     (latticekit-demo writes mandible.vtp and cut_line.vtp so)\n"
+        "  --open             no caps: the pieces keep open borders along the lines\n"
+        "  --no-inner-walls   only the lines themselves are cut, never the inner walls\n"
+        "  --pieces FOLDER    also write each piece as FOLDER/pieceN.stl, .vtp and .obj\n"
+        "  -q, --quiet        no progress bar\n"
+        "  -h, --help         this help\n";
+}
+
+/// Edges used by one face only, and the piece's closed volume where there are none.
+struct PieceFacts
+{
+  vtkIdType faces = 0, capFaces = 0, openEdges = 0;
+  double volume = 0.0;
+};
+
+PieceFacts factsOf(vtkPolyData* piece)
+{
+  PieceFacts facts;
+  facts.faces = piece->GetNumberOfPolys();
+  vtkDataArray* cap = piece->GetCellData()->GetArray("Cap");
+  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
+  auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
+  vtkIdType cell = piece->GetNumberOfVerts() + piece->GetNumberOfLines();
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+      ++uses[{ std::min(ids[k], ids[(k + 1) % n]), std::max(ids[k], ids[(k + 1) % n]) }];
+    if (cap && cap->GetTuple1(cell) > 0.5)
+      ++facts.capFaces;
+  }
+  for (const auto& [edge, count] : uses)
+    if (count == 1)
+      ++facts.openEdges;
+  if (facts.openEdges == 0)
+  {
+    vtkNew<vtkTriangleFilter> triangles; // a lattice's quads
+    triangles->SetInputData(piece);
+    vtkNew<vtkMassProperties> mass;
+    mass->SetInputConnection(triangles->GetOutputPort());
+    mass->Update();
+    facts.volume = mass->GetVolume();
+  }
+  return facts;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::string input, output, linesPath, piecesFolder;
+  bool quiet = false, capping = true, innerWalls = true;
+  lkapp::Arguments args(argc, argv, usage);
+  std::string a;
+  while (args.next(a))
+  {
+    if (a == "-o" || a == "--output")
+      output = args.value(a);
+    else if (a == "--lines")
+      linesPath = args.value(a);
+    else if (a == "--open")
+      capping = false;
+    else if (a == "--no-inner-walls")
+      innerWalls = false;
+    else if (a == "--pieces")
+      piecesFolder = args.value(a);
+    else if (a == "-q" || a == "--quiet")
+      quiet = true;
+    else if (lkapp::Arguments::isOption(a))
+      args.unknown(a);
+    else
+      args.positional(a, input, "mesh");
+  }
+  if (input.empty() || output.empty())
+  {
+    std::cerr << "error: a MESH and -o CUT are required\n";
+    usage(std::cerr);
+    return 2;
+  }
+  lkapp::installMessageHandler(quiet);
+  if (!lkapp::checkAllWritable({ output }))
+    return 1;
+  if (!piecesFolder.empty())
+  {
+    // The folder is made now, and a file in it tried, so that a folder that
+    // cannot be written is reported before the cut, not after it.
+    std::string error;
+    if (!vtksys::SystemTools::MakeDirectory(piecesFolder))
+    {
+      std::cerr << "error: cannot make the folder '" << piecesFolder << "' for the pieces\n";
+      return 1;
+    }
+    if (!lkapp::checkWritable(piecesFolder + "/piece0.stl", error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+  }
+  std::string error;
+  vtkSmartPointer<vtkPolyData> mesh = lkapp::readMesh(input, error);
+  vtkSmartPointer<vtkPolyData> lines;
+  if (mesh && !linesPath.empty())
+    lines = lkapp::readMesh(linesPath, error);
+  if (!mesh || (!linesPath.empty() && !lines))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+  if (linesPath.empty() && mesh->GetNumberOfLines() == 0)
+  {
+    std::cerr << "error: '" << input
+              << "' has no line cells to cut along: give the closed lines with --lines LINES\n";
+    return 1;
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputData(mesh);
+  if (lines)
+    cut->SetLinesData(lines);
+  cut->SetCapping(capping);
+  cut->SetCutInnerWalls(innerWalls);
+  {
+    lkapp::ProgressBar bar(cut, "cut", !quiet);
+    cut->Update();
+  }
+  if (lkapp::errorCount() > 0)
+    return 1;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!lkapp::writeMesh(cut->GetOutput(), output, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
+  std::printf("input            %lld points, %lld faces; %s\n", static_cast<long long>(mesh->GetNumberOfPoints()),
+    static_cast<long long>(mesh->GetNumberOfPolys()),
+    lines ? ("lines from " + linesPath).c_str() : "its own line cells");
+  std::printf("cut              %d pieces, %s%s, %.3f s\n", cut->GetNumberOfPieces(), capping ? "capped" : "open",
+    cut->GetNumberOfInnerWallLines() > 0
+      ? (", also through the inner walls (" + std::to_string(cut->GetNumberOfInnerWallLines()) + " lines)").c_str()
+      : "",
+    seconds);
+  for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
+  {
+    vtkSmartPointer<vtkPolyData> piece = lkapp::cutPiece(cut->GetOutput(), p, true);
+    const PieceFacts facts = factsOf(piece);
+    std::printf("piece %-11d %lld points, %lld faces (%lld cap)", p, static_cast<long long>(piece->GetNumberOfPoints()),
+      static_cast<long long>(facts.faces), static_cast<long long>(facts.capFaces));
+    if (facts.openEdges == 0)
+      std::printf(", closed, volume %.4g ml\n", facts.volume / 1000.0);
+    else
+      std::printf(", open: %lld border edges\n", static_cast<long long>(facts.openEdges));
+    if (piecesFolder.empty())
+      continue;
+    vtkSmartPointer<vtkPolyData> plain = lkapp::cutPiece(cut->GetOutput(), p);
+    for (const char* ext : { ".stl", ".vtp", ".obj" })
+      if (!lkapp::writeMesh(ext == std::string(".vtp") ? piece.Get() : plain.Get(),
+            piecesFolder + "/piece" + std::to_string(p) + ext, error))
+      {
+        std::cerr << "error: " << error << "\n";
+        return 1;
+      }
+  }
+  std::printf("written          %s (%lld bytes)%s\n", output.c_str(), lkapp::fileBytes(output),
+    piecesFolder.empty() ? "" : (", and the pieces in " + piecesFolder).c_str());
+  return 0;
+}
