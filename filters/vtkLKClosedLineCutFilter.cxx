@@ -119,7 +119,12 @@ int vtkLKClosedLineCutFilter::RequestData(
     ownLines->GetPointData()->AddArray(ids);
   }
   lk::PolygonMesh mesh;
-  std::string problem = lkvtk::toPolygonMesh(faces, mesh);
+  // A mesh without faces (only the lines, say) is named as what the cut
+  // needs, not as an empty lattice.
+  std::string problem = !input || input->GetNumberOfPolys() == 0
+    ? "the mesh has no polygons to cut (it holds " + std::to_string(input ? input->GetNumberOfPoints() : 0) +
+      " points and " + std::to_string(input ? input->GetNumberOfLines() : 0) + " line cells)"
+    : lkvtk::toPolygonMesh(faces, mesh);
   std::vector<lk::EdgeKey> edges;
   std::vector<std::vector<std::int64_t>> loops;
   if (problem.empty())

@@ -157,6 +157,17 @@ TEST(ClosedLineCut, OpenOrCrossingLinesAreClearErrors)
   lktest::ErrorRecorder errors2(none);
   none->Update();
   EXPECT_NE(errors2.messages.find("no closed line"), std::string::npos) << errors2.messages;
+  // The line without the mesh's faces: named as a mesh with nothing to cut.
+  vtkNew<vtkLKClosedLineCutFilter> linesOnly;
+  linesOnly->SetInputData(loop);
+  lktest::ErrorRecorder errors3(linesOnly);
+  linesOnly->Update();
+  EXPECT_EQ(errors3.errors, 1);
+  EXPECT_NE(errors3.messages.find("the mesh has no polygons to cut (it holds " +
+              std::to_string(loop->GetNumberOfPoints()) + " points and 1 line cells)"),
+    std::string::npos)
+    << errors3.messages;
+  EXPECT_EQ(linesOnly->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 #include "vtkLKStrokeFeatureLineFilter.h"
