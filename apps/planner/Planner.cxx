@@ -269,6 +269,7 @@ void Planner::computeCut()
       closedLines.push_back(line);
   }
   vtkSmartPointer<vtkPolyData> faces = facesOnly(surface);
+  cut.surface = faces;
   if (session.cut && !closedLines.empty())
   {
     vtkNew<vtkPolyData> loops;
@@ -300,6 +301,7 @@ void Planner::computeCut()
       addLines(cut.message, "the cut: ", warned);
     if (lkapp::errorCount() == before)
     {
+      cut.loops = loops;
       for (int r = 0; r < cutter->GetNumberOfPieces(); ++r)
         cut.pieces.push_back(lkapp::cutPiece(cutter->GetOutput(), r));
       cut.innerWallLines = cutter->GetNumberOfInnerWallLines();
@@ -672,6 +674,11 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
         return false;
     }
   }
+  // The surface the cut was made on (before deformations and the segment's
+  // move) and the lines it was cut along.
+  for (const auto& [mesh, name] : { std::make_pair(cut.surface, "surface.vtp"), std::make_pair(cut.loops, "cut_lines.vtp") })
+    if (mesh && !lkapp::writeMesh(mesh, folder + "/" + name, error))
+      return false;
   if (hasSegment())
   {
     std::ofstream out(folder + "/segment_transform.txt");

@@ -123,6 +123,10 @@ public:
     std::string key;
     std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>> lines; ///< feature lines, shade
     std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+    /// The bone with the strokes' lines split in, and the closed lines the
+    /// cut took (MeshPointId into it): exported, so that the CLI tools can
+    /// cut again (latticekit-cut) or fit with the lines kept.
+    vtkSmartPointer<vtkPolyData> surface, loops;
     std::string message;
     bool failed = false;
     int innerWallLines = 0; ///< lines the cut added on a hollow bone's inner walls
