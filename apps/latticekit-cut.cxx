@@ -4,21 +4,13 @@
 
 #include "vtkLKClosedLineCutFilter.h"
 
-#include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
-#include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkMassProperties.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkTriangleFilter.h>
 #include <vtksys/SystemTools.hxx>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,46 +37,6 @@ void usage(std::ostream& os)
         "  --pieces FOLDER    also write each piece as FOLDER/pieceN.stl, .vtp and .obj\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
-}
-
-/// Edges used by one face only, and the piece's closed volume where there are none.
-struct PieceFacts
-{
-  vtkIdType faces = 0, capFaces = 0, openEdges = 0;
-  double volume = 0.0;
-};
-
-PieceFacts factsOf(vtkPolyData* piece)
-{
-  PieceFacts facts;
-  facts.faces = piece->GetNumberOfPolys();
-  vtkDataArray* cap = piece->GetCellData()->GetArray("Cap");
-  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
-  auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
-  vtkIdType cell = piece->GetNumberOfVerts() + piece->GetNumberOfLines();
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-      ++uses[{ std::min(ids[k], ids[(k + 1) % n]), std::max(ids[k], ids[(k + 1) % n]) }];
-    if (cap && cap->GetTuple1(cell) > 0.5)
-      ++facts.capFaces;
-  }
-  for (const auto& [edge, count] : uses)
-    if (count == 1)
-      ++facts.openEdges;
-  if (facts.openEdges == 0)
-  {
-    vtkNew<vtkTriangleFilter> triangles; // a lattice's quads
-    triangles->SetInputData(piece);
-    vtkNew<vtkMassProperties> mass;
-    mass->SetInputConnection(triangles->GetOutputPort());
-    mass->Update();
-    facts.volume = mass->GetVolume();
-  }
-  return facts;
 }
 
 } // namespace
@@ -186,13 +138,10 @@ int main(int argc, char* argv[])
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
   {
     vtkSmartPointer<vtkPolyData> piece = lkapp::cutPiece(cut->GetOutput(), p, true);
-    const PieceFacts facts = factsOf(piece);
-    std::printf("piece %-11d %lld points, %lld faces (%lld cap)", p, static_cast<long long>(piece->GetNumberOfPoints()),
-      static_cast<long long>(facts.faces), static_cast<long long>(facts.capFaces));
-    if (facts.openEdges == 0)
-      std::printf(", closed, volume %.4g ml\n", facts.volume / 1000.0);
-    else
-      std::printf(", open: %lld border edges\n", static_cast<long long>(facts.openEdges));
+    const lkapp::PieceFacts facts = lkapp::pieceFacts(piece);
+    std::printf("piece %-11d %lld points, %lld faces (%lld cap)%s\n", p,
+      static_cast<long long>(piece->GetNumberOfPoints()), static_cast<long long>(facts.faces),
+      static_cast<long long>(facts.capFaces), lkapp::pieceFactsText(facts).c_str());
     if (piecesFolder.empty())
       continue;
     vtkSmartPointer<vtkPolyData> plain = lkapp::cutPiece(cut->GetOutput(), p);

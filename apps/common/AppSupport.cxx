@@ -2,6 +2,8 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataObject.h>
@@ -10,6 +12,7 @@
 #include <vtkGeometryFilter.h>
 #include <vtkGLTFWriter.h>
 #include <vtkLogger.h>
+#include <vtkMassProperties.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
@@ -41,6 +44,8 @@
 #include <iostream>
 #include <sstream>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace lkapp
 {
@@ -605,6 +610,57 @@ double fieldValue(vtkPolyData* pd, const std::string& name)
 {
   vtkDataArray* a = pd->GetFieldData()->GetArray(name.c_str());
   return a ? a->GetTuple1(0) : 0.0;
+}
+
+PieceFacts pieceFacts(vtkPolyData* piece)
+{
+  PieceFacts facts;
+  facts.faces = piece->GetNumberOfPolys();
+  vtkDataArray* cap = piece->GetCellData()->GetArray("Cap");
+  // Each edge once per face that uses it, sorted: a key seen once is a border.
+  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
+  auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
+  vtkIdType cell = piece->GetNumberOfVerts() + piece->GetNumberOfLines();
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+      edges.emplace_back(std::min(ids[k], ids[(k + 1) % n]), std::max(ids[k], ids[(k + 1) % n]));
+    if (cap && cap->GetTuple1(cell) > 0.5)
+      ++facts.capFaces;
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i])
+      ++j;
+    if (j - i == 1)
+      ++facts.openEdges;
+    i = j;
+  }
+  if (facts.openEdges == 0 && facts.faces > 0)
+  {
+    vtkNew<vtkTriangleFilter> triangles; // a lattice's quads and n-gons
+    triangles->SetInputData(piece);
+    vtkNew<vtkMassProperties> mass;
+    mass->SetInputConnection(triangles->GetOutputPort());
+    mass->Update();
+    facts.volume = mass->GetVolume();
+  }
+  return facts;
+}
+
+std::string pieceFactsText(const PieceFacts& facts)
+{
+  char text[128];
+  if (facts.openEdges == 0)
+    std::snprintf(text, sizeof text, ", closed, volume %.4g ml", facts.volume / 1000.0);
+  else
+    std::snprintf(text, sizeof text, ", open: %lld border edges", static_cast<long long>(facts.openEdges));
+  return text;
 }
 
 vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes)

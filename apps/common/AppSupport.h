@@ -75,6 +75,18 @@ double fieldValue(vtkPolyData* pd, const std::string& name);
 /// with them, the cut's InputPointId, InputCellId, RegionId and Cap stay.
 vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes = false);
 
+/// What a surgeon asks of a cut piece before printing it: its faces (and
+/// how many are cap faces: cell data Cap), whether it is closed (no edge
+/// with one face only), and then the volume it encloses.
+struct PieceFacts
+{
+  vtkIdType faces = 0, capFaces = 0, openEdges = 0;
+  double volume = 0.0; ///< closed pieces only (mesh units cubed)
+};
+PieceFacts pieceFacts(vtkPolyData* piece);
+/// ", closed, volume V ml" or ", open: N border edges" (a surface in mm).
+std::string pieceFactsText(const PieceFacts& facts);
+
 /// Whether the X display DISPLAY names accepts a connection (a server that has
 /// ended, a host with none, or one refusing this client do not): Debian's VTK
 /// renders only

@@ -613,8 +613,8 @@ void Planner::report()
     std::printf("inner wall lines: %d (the cut went through the marrow cavity too)\n", cut.innerWallLines);
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
-    std::printf("piece %zu: %lld points, %lld faces", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
-      static_cast<long long>(pieces[p]->GetNumberOfPolys()));
+    std::printf("piece %zu: %lld points, %lld faces%s", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
+      static_cast<long long>(pieces[p]->GetNumberOfPolys()), lkapp::pieceFactsText(lkapp::pieceFacts(pieces[p])).c_str());
     if (vtkDataArray* d = pieces[p]->GetPointData()->GetArray("Displacement"))
     {
       std::printf(", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
