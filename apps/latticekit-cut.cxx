@@ -135,6 +135,7 @@ int main(int argc, char* argv[])
       ? (", also through the inner walls (" + std::to_string(cut->GetNumberOfInnerWallLines()) + " lines)").c_str()
       : "",
     seconds);
+  std::printf("%s", lkapp::lineFactsText(lkapp::lineFacts(lines ? lines.Get() : mesh.Get())).c_str());
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
   {
     vtkSmartPointer<vtkPolyData> piece = lkapp::cutPiece(cut->GetOutput(), p, true);

@@ -177,6 +177,27 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
   return true;
 }
 
+/// Where the cut line lies against the plan's cut plane: its length, the
+/// plane it lies in (the angle between that plane and the plan's, and the
+/// distance of its centre from the plan's plane), how flat it is.
+std::string lineAgainstPlan(vtkPolyData* line, const Plan& plan)
+{
+  const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(line);
+  if (facts.empty())
+    return "";
+  const lkapp::LineFacts& f = facts.front();
+  double n[3] = { plan.normal[0], plan.normal[1], plan.normal[2] };
+  vtkMath::Normalize(n);
+  const double angle = vtkMath::DegreesFromRadians(std::acos(std::min(1.0, std::abs(vtkMath::Dot(n, f.normal)))));
+  const double offset = std::abs(vtkMath::Dot(n, f.centre) - vtkMath::Dot(n, plan.origin.data()));
+  char text[300];
+  std::snprintf(text, sizeof text,
+    "The line is %.1f mm long; its best-fitting plane is %.2f deg from the plan's cut plane, its centre %.2f mm "
+    "from it, and every vertex within %.2f mm of its own plane.",
+    f.length, angle, offset, f.flatness);
+  return text;
+}
+
 /// A number as a stream writes it (6 significant digits).
 std::string number(double x)
 {
@@ -742,7 +763,8 @@ int main(int argc, char* argv[])
          << " vertices whose edges follow the stroke, split into the surface ("
          << marked->GetNumberOfPoints() - mandible->GetNumberOfPoints()
          << " new vertices; `mandible.vtp` is the surface with them, and `cut_line.vtp` names its points by "
-            "MeshPointId).\n"
+            "MeshPointId). "
+         << lineAgainstPlan(line, plan) << "\n"
          << "- Capped cut: " << pieces.size() << " pieces, each closed by the same flat cap"
          << (cut->GetNumberOfInnerWallLines() > 0
                 ? " (the bone is hollow there: the cut also takes the plane's section of the marrow cavity, " +

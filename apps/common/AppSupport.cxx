@@ -13,6 +13,7 @@
 #include <vtkGLTFWriter.h>
 #include <vtkLogger.h>
 #include <vtkMassProperties.h>
+#include <vtkMath.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
@@ -21,7 +22,9 @@
 #include <vtkOutputWindow.h>
 #include <vtkPLYReader.h>
 #include <vtkPLYWriter.h>
+#include <vtkPlane.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
@@ -660,6 +663,88 @@ std::string pieceFactsText(const PieceFacts& facts)
     std::snprintf(text, sizeof text, ", closed, volume %.4g ml", facts.volume / 1000.0);
   else
     std::snprintf(text, sizeof text, ", open: %lld border edges", static_cast<long long>(facts.openEdges));
+  return text;
+}
+
+std::vector<LineFacts> lineFacts(vtkPolyData* lines)
+{
+  std::vector<LineFacts> out;
+  if (!lines || !lines->GetLines())
+    return out;
+  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    LineFacts f;
+    // Closed: it ends where it starts (the same point, or a copy of it).
+    double first[3], last[3];
+    if (n > 0)
+    {
+      lines->GetPoint(ids[0], first);
+      lines->GetPoint(ids[n - 1], last);
+    }
+    f.closed = n > 3 && (ids[0] == ids[n - 1] || vtkMath::Distance2BetweenPoints(first, last) == 0.0);
+    const vtkIdType m = f.closed ? n - 1 : n; // the closing repeat once
+    f.vertices = m;
+    vtkNew<vtkPoints> pts;
+    for (vtkIdType k = 0; k < m; ++k)
+      pts->InsertNextPoint(lines->GetPoint(ids[k]));
+    double weighted[3] = { 0, 0, 0 };
+    for (vtkIdType k = 0; k + 1 < n; ++k)
+    {
+      double a[3], b[3];
+      lines->GetPoint(ids[k], a);
+      lines->GetPoint(ids[k + 1], b);
+      const double l = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      f.length += l;
+      for (int i = 0; i < 3; ++i)
+        weighted[i] += 0.5 * l * (a[i] + b[i]);
+    }
+    double origin[3];
+    vtkPlane::ComputeBestFittingPlane(pts, origin, f.normal);
+    for (int i = 0; i < 3; ++i)
+      f.centre[i] = f.length > 0.0 ? weighted[i] / f.length : origin[i];
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      double p[3];
+      pts->GetPoint(k, p);
+      f.flatness = std::max(f.flatness,
+        std::abs(vtkMath::Dot(f.normal, p) - vtkMath::Dot(f.normal, f.centre)));
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
+std::string lineFactsText(const std::vector<LineFacts>& facts)
+{
+  std::string text;
+  char line[400];
+  for (std::size_t k = 0; k < facts.size(); ++k)
+  {
+    const LineFacts& f = facts[k];
+    if (!f.closed)
+      continue;
+    std::snprintf(line, sizeof line,
+      "cut line %zu: %lld vertices, %.2f mm long, centre (%.2f, %.2f, %.2f), plane normal (%.3f, %.3f, %.3f), "
+      "every vertex within %.2f mm of that plane\n",
+      k + 1, static_cast<long long>(f.vertices), f.length, f.centre[0], f.centre[1], f.centre[2], f.normal[0],
+      f.normal[1], f.normal[2], f.flatness);
+    text += line;
+  }
+  for (std::size_t j = 0; j < facts.size(); ++j)
+    for (std::size_t k = j + 1; k < facts.size(); ++k)
+    {
+      if (!facts[j].closed || !facts[k].closed)
+        continue;
+      const double d = std::sqrt(vtkMath::Distance2BetweenPoints(facts[j].centre, facts[k].centre));
+      const double c = std::min(1.0, std::abs(vtkMath::Dot(facts[j].normal, facts[k].normal)));
+      std::snprintf(line, sizeof line, "cut lines %zu and %zu: centres %.2f mm apart, planes %.2f deg apart\n", j + 1,
+        k + 1, d, vtkMath::DegreesFromRadians(std::acos(c)));
+      text += line;
+    }
   return text;
 }
 

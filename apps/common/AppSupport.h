@@ -87,6 +87,28 @@ PieceFacts pieceFacts(vtkPolyData* piece);
 /// ", closed, volume V ml" or ", open: N border edges" (a surface in mm).
 std::string pieceFactsText(const PieceFacts& facts);
 
+/// The geometry of one cut line (a line cell): what places a saw cut. Its
+/// vertices (the closing repeat not counted), length, centre (of the line
+/// itself, weighted by length), the normal of its best-fitting plane
+/// (vtkPlane::ComputeBestFittingPlane; its sign is arbitrary) and how far its
+/// farthest vertex lies from that plane.
+struct LineFacts
+{
+  vtkIdType vertices = 0;
+  bool closed = false;
+  double length = 0.0;
+  double centre[3] = { 0, 0, 0 };
+  double normal[3] = { 0, 0, 1 };
+  double flatness = 0.0;
+};
+/// One per line cell of `lines`, in order.
+std::vector<LineFacts> lineFacts(vtkPolyData* lines);
+/// The report's lines for them: "cut line k: ..." for each closed line, then
+/// for each pair "cut lines j and k: centres D mm apart, planes A deg apart"
+/// (the planes' angle in 0-90 degrees: the length and the wedge of a segment
+/// cut out between two lines). Open lines are left out.
+std::string lineFactsText(const std::vector<LineFacts>& facts);
+
 /// Whether the X display DISPLAY names accepts a connection (a server that has
 /// ended, a host with none, or one refusing this client do not): Debian's VTK
 /// renders only

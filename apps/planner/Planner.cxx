@@ -622,6 +622,8 @@ void Planner::report()
     }
     std::printf("\n");
   }
+  if (cut.loops)
+    std::printf("%s", lkapp::lineFactsText(lkapp::lineFacts(cut.loops)).c_str());
   for (std::size_t i = 0; i < session.deformations.size(); ++i)
   {
     const Deformation& d = session.deformations[i];

@@ -1,5 +1,6 @@
 """The main job end to end under Xvfb: files, report and a PNG that shows the error map."""
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -36,6 +37,11 @@ class DemoTest(unittest.TestCase):
                 self.assertTrue(os.path.getsize(os.path.join(out, name)) > 0, name)
             report = read_text(os.path.join(out, "report.md"))
             self.assertIn("Capped cut: 2 pieces", report)
+            # The cut line lies in the plan's cut plane (the section it was drawn along, 0.3 mm off).
+            m = re.search(r"best-fitting plane is ([0-9.]+) deg from the plan's cut plane, its centre ([0-9.]+) mm", report)
+            self.assertIsNotNone(m, report)
+            self.assertLess(float(m.group(1)), 1.0)
+            self.assertLess(float(m.group(2)), 0.5)
             rows = {}
             for line in report.splitlines():
                 cells = [c.strip() for c in line.strip("|").split("|")]
