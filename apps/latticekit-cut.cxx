@@ -1,6 +1,7 @@
 // latticekit-cut: a bone surface (or a fitted lattice) cut along closed lines
 // into pieces (vtkLKClosedLineCutFilter), capped for printing by default.
 #include "common/AppSupport.h"
+#include "common/CutReport.h"
 
 #include "vtkLKClosedLineCutFilter.h"
 

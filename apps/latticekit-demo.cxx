@@ -5,6 +5,7 @@
 // paper's Table 2 (no cut / cut / cut with quads), exported pieces and
 // lattices, and PNG pictures.
 #include "common/AppSupport.h"
+#include "common/CutReport.h"
 #include "common/JsonFields.h"
 #include "common/DistanceColourBar.h"
 

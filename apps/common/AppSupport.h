@@ -69,46 +69,6 @@ long long fileBytes(const std::string& path);
 /// filters report their measurements there.
 double fieldValue(vtkPolyData* pd, const std::string& name);
 
-/// Piece `region` of a vtkLKClosedLineCutFilter output: its cells (cell data
-/// RegionId == region), with only the points they use. Without
-/// `attributes`, point and cell data are dropped (a piece to show or print);
-/// with them, the cut's InputPointId, InputCellId, RegionId and Cap stay.
-vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes = false);
-
-/// What a surgeon asks of a cut piece before printing it: its faces (and
-/// how many are cap faces: cell data Cap), whether it is closed (no edge
-/// with one face only), and then the volume it encloses.
-struct PieceFacts
-{
-  vtkIdType faces = 0, capFaces = 0, openEdges = 0;
-  double volume = 0.0; ///< closed pieces only (mesh units cubed)
-};
-PieceFacts pieceFacts(vtkPolyData* piece);
-/// ", closed, volume V ml" or ", open: N border edges" (a surface in mm).
-std::string pieceFactsText(const PieceFacts& facts);
-
-/// The geometry of one cut line (a line cell): what places a saw cut. Its
-/// vertices (the closing repeat not counted), length, centre (of the line
-/// itself, weighted by length), the normal of its best-fitting plane
-/// (vtkPlane::ComputeBestFittingPlane; its sign is arbitrary) and how far its
-/// farthest vertex lies from that plane.
-struct LineFacts
-{
-  vtkIdType vertices = 0;
-  bool closed = false;
-  double length = 0.0;
-  double centre[3] = { 0, 0, 0 };
-  double normal[3] = { 0, 0, 1 };
-  double flatness = 0.0;
-};
-/// One per line cell of `lines`, in order.
-std::vector<LineFacts> lineFacts(vtkPolyData* lines);
-/// The report's lines for them: "cut line k: ..." for each closed line, then
-/// for each pair "cut lines j and k: centres D mm apart, planes A deg apart"
-/// (the planes' angle in 0-90 degrees: the length and the wedge of a segment
-/// cut out between two lines). Open lines are left out.
-std::string lineFactsText(const std::vector<LineFacts>& facts);
-
 /// Whether the X display DISPLAY names accepts a connection (a server that has
 /// ended, a host with none, or one refusing this client do not): Debian's VTK
 /// renders only

@@ -1,6 +1,7 @@
 #include "planner/Planner.h"
 
 #include "common/AppSupport.h"
+#include "common/CutReport.h"
 #include "common/DistanceColourBar.h"
 #include "common/JsonFields.h"
 

@@ -1,0 +1,179 @@
+#include "CutReport.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkGeometryFilter.h>
+#include <vtkMassProperties.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPlane.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkThreshold.h>
+#include <vtkTriangleFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace lkapp
+{
+
+PieceFacts pieceFacts(vtkPolyData* piece)
+{
+  PieceFacts facts;
+  facts.faces = piece->GetNumberOfPolys();
+  vtkDataArray* cap = piece->GetCellData()->GetArray("Cap");
+  // Each edge once per face that uses it, sorted: a key seen once is a border.
+  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
+  auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
+  vtkIdType cell = piece->GetNumberOfVerts() + piece->GetNumberOfLines();
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+      edges.emplace_back(std::min(ids[k], ids[(k + 1) % n]), std::max(ids[k], ids[(k + 1) % n]));
+    if (cap && cap->GetTuple1(cell) > 0.5)
+      ++facts.capFaces;
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i])
+      ++j;
+    if (j - i == 1)
+      ++facts.openEdges;
+    i = j;
+  }
+  if (facts.openEdges == 0 && facts.faces > 0)
+  {
+    vtkNew<vtkTriangleFilter> triangles; // a lattice's quads and n-gons
+    triangles->SetInputData(piece);
+    vtkNew<vtkMassProperties> mass;
+    mass->SetInputConnection(triangles->GetOutputPort());
+    mass->Update();
+    facts.volume = mass->GetVolume();
+  }
+  return facts;
+}
+
+std::string pieceFactsText(const PieceFacts& facts)
+{
+  char text[128];
+  if (facts.openEdges == 0)
+    std::snprintf(text, sizeof text, ", closed, volume %.4g ml", facts.volume / 1000.0);
+  else
+    std::snprintf(text, sizeof text, ", open: %lld border edges", static_cast<long long>(facts.openEdges));
+  return text;
+}
+
+std::vector<LineFacts> lineFacts(vtkPolyData* lines)
+{
+  std::vector<LineFacts> out;
+  if (!lines || !lines->GetLines())
+    return out;
+  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    LineFacts f;
+    // Closed: it ends where it starts (the same point, or a copy of it).
+    double first[3], last[3];
+    if (n > 0)
+    {
+      lines->GetPoint(ids[0], first);
+      lines->GetPoint(ids[n - 1], last);
+    }
+    f.closed = n > 3 && (ids[0] == ids[n - 1] || vtkMath::Distance2BetweenPoints(first, last) == 0.0);
+    const vtkIdType m = f.closed ? n - 1 : n; // the closing repeat once
+    f.vertices = m;
+    vtkNew<vtkPoints> pts;
+    for (vtkIdType k = 0; k < m; ++k)
+      pts->InsertNextPoint(lines->GetPoint(ids[k]));
+    double weighted[3] = { 0, 0, 0 };
+    for (vtkIdType k = 0; k + 1 < n; ++k)
+    {
+      double a[3], b[3];
+      lines->GetPoint(ids[k], a);
+      lines->GetPoint(ids[k + 1], b);
+      const double l = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      f.length += l;
+      for (int i = 0; i < 3; ++i)
+        weighted[i] += 0.5 * l * (a[i] + b[i]);
+    }
+    double origin[3];
+    vtkPlane::ComputeBestFittingPlane(pts, origin, f.normal);
+    for (int i = 0; i < 3; ++i)
+      f.centre[i] = f.length > 0.0 ? weighted[i] / f.length : origin[i];
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      double p[3];
+      pts->GetPoint(k, p);
+      f.flatness = std::max(f.flatness,
+        std::abs(vtkMath::Dot(f.normal, p) - vtkMath::Dot(f.normal, f.centre)));
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
+std::string lineFactsText(const std::vector<LineFacts>& facts)
+{
+  std::string text;
+  char line[400];
+  for (std::size_t k = 0; k < facts.size(); ++k)
+  {
+    const LineFacts& f = facts[k];
+    if (!f.closed)
+      continue;
+    std::snprintf(line, sizeof line,
+      "cut line %zu: %lld vertices, %.2f mm long, centre (%.2f, %.2f, %.2f), plane normal (%.3f, %.3f, %.3f), "
+      "every vertex within %.2f mm of that plane\n",
+      k + 1, static_cast<long long>(f.vertices), f.length, f.centre[0], f.centre[1], f.centre[2], f.normal[0],
+      f.normal[1], f.normal[2], f.flatness);
+    text += line;
+  }
+  for (std::size_t j = 0; j < facts.size(); ++j)
+    for (std::size_t k = j + 1; k < facts.size(); ++k)
+    {
+      if (!facts[j].closed || !facts[k].closed)
+        continue;
+      const double d = std::sqrt(vtkMath::Distance2BetweenPoints(facts[j].centre, facts[k].centre));
+      const double c = std::min(1.0, std::abs(vtkMath::Dot(facts[j].normal, facts[k].normal)));
+      std::snprintf(line, sizeof line, "cut lines %zu and %zu: centres %.2f mm apart, planes %.2f deg apart\n", j + 1,
+        k + 1, d, vtkMath::DegreesFromRadians(std::acos(c)));
+      text += line;
+    }
+  return text;
+}
+
+vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes)
+{
+  vtkNew<vtkThreshold> t;
+  t->SetInputData(cut);
+  t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "RegionId");
+  t->SetLowerThreshold(region - 0.5);
+  t->SetUpperThreshold(region + 0.5);
+  vtkNew<vtkGeometryFilter> g;
+  g->SetInputConnection(t->GetOutputPort());
+  g->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(g->GetOutput());
+  if (!attributes)
+  {
+    out->GetPointData()->Initialize();
+    out->GetCellData()->Initialize();
+  }
+  return out;
+}
+
+} // namespace lkapp

@@ -1,0 +1,58 @@
+#pragma once
+/// \file CutReport.h
+/// What the command-line tools report about a cut (latticekit-cut, the
+/// planner, the main job): its pieces, taken out of a
+/// vtkLKClosedLineCutFilter output, whether each is closed and its volume,
+/// and where each cut line lies (length, centre, plane), with the distance
+/// and angle between two lines.
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <string>
+#include <vector>
+
+namespace lkapp
+{
+
+/// Piece `region` of a vtkLKClosedLineCutFilter output: its cells (cell data
+/// RegionId == region), with only the points they use. Without
+/// `attributes`, point and cell data are dropped (a piece to show or print);
+/// with them, the cut's InputPointId, InputCellId, RegionId and Cap stay.
+vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes = false);
+
+/// What a surgeon asks of a cut piece before printing it: its faces (and
+/// how many are cap faces: cell data Cap), whether it is closed (no edge
+/// with one face only), and then the volume it encloses.
+struct PieceFacts
+{
+  vtkIdType faces = 0, capFaces = 0, openEdges = 0;
+  double volume = 0.0; ///< closed pieces only (mesh units cubed)
+};
+PieceFacts pieceFacts(vtkPolyData* piece);
+/// ", closed, volume V ml" or ", open: N border edges" (a surface in mm).
+std::string pieceFactsText(const PieceFacts& facts);
+
+/// The geometry of one cut line (a line cell): what places a saw cut. Its
+/// vertices (the closing repeat not counted), length, centre (of the line
+/// itself, weighted by length), the normal of its best-fitting plane
+/// (vtkPlane::ComputeBestFittingPlane; its sign is arbitrary) and how far its
+/// farthest vertex lies from that plane.
+struct LineFacts
+{
+  vtkIdType vertices = 0;
+  bool closed = false;
+  double length = 0.0;
+  double centre[3] = { 0, 0, 0 };
+  double normal[3] = { 0, 0, 1 };
+  double flatness = 0.0;
+};
+/// One per line cell of `lines`, in order.
+std::vector<LineFacts> lineFacts(vtkPolyData* lines);
+/// The report's lines for them: "cut line k: ..." for each closed line, then
+/// for each pair "cut lines j and k: centres D mm apart, planes A deg apart"
+/// (the planes' angle in 0-90 degrees: the length and the wedge of a segment
+/// cut out between two lines). Open lines are left out.
+std::string lineFactsText(const std::vector<LineFacts>& facts);
+
+} // namespace lkapp
