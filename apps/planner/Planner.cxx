@@ -397,6 +397,7 @@ void Planner::rebuild()
   for (const auto& [line, shade] : cut.lines)
     addLineActor(line, shade);
   applyDeformations();
+  cutSummary = summaryOfCut();
   if (lattices.size() > pieces.size())
     lattices.resize(pieces.size()); // pieces the cut no longer makes
   pieceActors.assign(pieces.size(), {});
@@ -448,6 +449,39 @@ void Planner::rebuild()
       std::to_string(pieces.size()) + " piece(s)");
   placeSegment(session.segmentMatrix);
   updateStatus();
+}
+
+std::string Planner::summaryOfCut() const
+{
+  if (!cut.loops)
+    return "";
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  const std::vector<lkapp::LineFacts> lines = lkapp::lineFacts(cut.loops);
+  s.precision(1);
+  s << "cut lines:";
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    s << (k ? "," : "") << " " << k + 1 << ": " << lines[k].length << " mm";
+  for (std::size_t j = 0; j < lines.size(); ++j)
+    for (std::size_t k = j + 1; k < lines.size(); ++k)
+    {
+      const double d = std::sqrt(vtkMath::Distance2BetweenPoints(lines[j].centre, lines[k].centre));
+      const double c = std::min(1.0, std::abs(vtkMath::Dot(lines[j].normal, lines[k].normal)));
+      s << " | " << j + 1 << "-" << k + 1 << ": " << d << " mm apart, " << vtkMath::DegreesFromRadians(std::acos(c))
+        << " deg";
+    }
+  s.precision(2);
+  s << " | pieces:";
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    const lkapp::PieceFacts f = lkapp::pieceFacts(pieces[p]);
+    s << (p ? "," : "") << " " << p << ": ";
+    if (f.openEdges == 0)
+      s << f.volume / 1000.0 << " ml";
+    else
+      s << "open";
+  }
+  return s.str();
 }
 
 Planner::FittedLattice& Planner::latticeOf(std::size_t p)
@@ -585,6 +619,8 @@ void Planner::updateStatus()
     s << " | segment: piece " << session.segment << (isIdentity(session.segmentMatrix) ? "" : " (moved)");
   if (!notice.empty())
     s << " | " << notice;
+  if (!cutSummary.empty())
+    s << "\n" << cutSummary;
   status->SetInput(s.str().c_str());
   messages->SetInput(wrapped(message, 120).c_str());
 }

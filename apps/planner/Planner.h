@@ -96,6 +96,9 @@ public:
     double colourMaximum = 0.0, hausdorff = 0.0;
   };
   std::vector<FittedLattice> lattices;
+  /// Under the status line, after a cut: each cut line's length, the
+  /// distance and angle between two lines, each piece's volume.
+  std::string cutSummary;
   std::size_t latticeFits = 0, latticesReused = 0;
 
   /// Call before a change: the session as it was goes on the undo stack.
@@ -169,6 +172,9 @@ public:
   vtkSmartPointer<vtkActor> addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars);
 
   void addLineActor(vtkPolyData* line, double shade);
+
+  /// cutSummary's text for the current cut and pieces.
+  std::string summaryOfCut() const;
 
   void updateStatus();
 
