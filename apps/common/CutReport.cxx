@@ -126,6 +126,15 @@ std::vector<LineFacts> lineFacts(vtkPolyData* lines)
   return out;
 }
 
+LinesApart linesApart(const LineFacts& a, const LineFacts& b)
+{
+  LinesApart apart;
+  apart.distance = std::sqrt(vtkMath::Distance2BetweenPoints(a.centre, b.centre));
+  apart.degrees =
+    vtkMath::DegreesFromRadians(std::acos(std::min(1.0, std::abs(vtkMath::Dot(a.normal, b.normal)))));
+  return apart;
+}
+
 std::string lineFactsText(const std::vector<LineFacts>& facts)
 {
   std::string text;
@@ -147,10 +156,9 @@ std::string lineFactsText(const std::vector<LineFacts>& facts)
     {
       if (!facts[j].closed || !facts[k].closed)
         continue;
-      const double d = std::sqrt(vtkMath::Distance2BetweenPoints(facts[j].centre, facts[k].centre));
-      const double c = std::min(1.0, std::abs(vtkMath::Dot(facts[j].normal, facts[k].normal)));
+      const LinesApart apart = linesApart(facts[j], facts[k]);
       std::snprintf(line, sizeof line, "cut lines %zu and %zu: centres %.2f mm apart, planes %.2f deg apart\n", j + 1,
-        k + 1, d, vtkMath::DegreesFromRadians(std::acos(c)));
+        k + 1, apart.distance, apart.degrees);
       text += line;
     }
   return text;

@@ -47,6 +47,13 @@ struct LineFacts
   double normal[3] = { 0, 0, 1 };
   double flatness = 0.0;
 };
+/// How two cut lines stand to each other: the distance between their centres
+/// and the angle between their planes (0-90 degrees).
+struct LinesApart
+{
+  double distance = 0.0, degrees = 0.0;
+};
+LinesApart linesApart(const LineFacts& a, const LineFacts& b);
 /// One per line cell of `lines`, in order.
 std::vector<LineFacts> lineFacts(vtkPolyData* lines);
 /// The report's lines for them: "cut line k: ..." for each closed line, then

@@ -465,10 +465,8 @@ std::string Planner::summaryOfCut() const
   for (std::size_t j = 0; j < lines.size(); ++j)
     for (std::size_t k = j + 1; k < lines.size(); ++k)
     {
-      const double d = std::sqrt(vtkMath::Distance2BetweenPoints(lines[j].centre, lines[k].centre));
-      const double c = std::min(1.0, std::abs(vtkMath::Dot(lines[j].normal, lines[k].normal)));
-      s << " | " << j + 1 << "-" << k + 1 << ": " << d << " mm apart, " << vtkMath::DegreesFromRadians(std::acos(c))
-        << " deg";
+      const lkapp::LinesApart apart = lkapp::linesApart(lines[j], lines[k]);
+      s << " | " << j + 1 << "-" << k + 1 << ": " << apart.distance << " mm apart, " << apart.degrees << " deg";
     }
   s.precision(2);
   s << " | pieces:";
