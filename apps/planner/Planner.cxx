@@ -451,7 +451,7 @@ void Planner::rebuild()
   updateStatus();
 }
 
-std::string Planner::summaryOfCut() const
+std::string Planner::summaryOfCut()
 {
   if (!cut.loops)
     return "";
@@ -472,7 +472,7 @@ std::string Planner::summaryOfCut() const
   s << " | pieces:";
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
-    const lkapp::PieceFacts f = lkapp::pieceFacts(pieces[p]);
+    const lkapp::PieceFacts& f = factsOf(p);
     s << (p ? "," : "") << " " << p << ": ";
     if (f.openEdges == 0)
       s << f.volume / 1000.0 << " ml";
@@ -480,6 +480,22 @@ std::string Planner::summaryOfCut() const
       s << "open";
   }
   return s.str();
+}
+
+const lkapp::PieceFacts& Planner::factsOf(std::size_t p)
+{
+  if (pieceFacts.size() != pieces.size())
+    pieceFacts.resize(pieces.size());
+  KeptFacts& kept = pieceFacts[p];
+  // The MTime is global and only grows: a new object never repeats an old
+  // one's pointer and time together.
+  if (kept.piece != pieces[p].Get() || kept.time != pieces[p]->GetMTime())
+  {
+    kept.piece = pieces[p];
+    kept.time = pieces[p]->GetMTime();
+    kept.facts = lkapp::pieceFacts(pieces[p]);
+  }
+  return kept.facts;
 }
 
 Planner::FittedLattice& Planner::latticeOf(std::size_t p)
@@ -649,7 +665,7 @@ void Planner::report()
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     std::printf("piece %zu: %lld points, %lld faces%s", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
-      static_cast<long long>(pieces[p]->GetNumberOfPolys()), lkapp::pieceFactsText(lkapp::pieceFacts(pieces[p])).c_str());
+      static_cast<long long>(pieces[p]->GetNumberOfPolys()), lkapp::pieceFactsText(factsOf(p)).c_str());
     if (vtkDataArray* d = pieces[p]->GetPointData()->GetArray("Displacement"))
     {
       std::printf(", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
