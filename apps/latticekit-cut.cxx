@@ -5,7 +5,9 @@
 
 #include "vtkLKClosedLineCutFilter.h"
 
+#include <vtkCellData.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtksys/SystemTools.hxx>
 
@@ -146,7 +148,11 @@ int main(int argc, char* argv[])
       static_cast<long long>(facts.capFaces), lkapp::pieceFactsText(facts).c_str());
     if (piecesFolder.empty())
       continue;
-    vtkSmartPointer<vtkPolyData> plain = lkapp::cutPiece(cut->GetOutput(), p);
+    // For STL and OBJ the piece alone, without the cut's arrays.
+    vtkNew<vtkPolyData> plain;
+    plain->ShallowCopy(piece);
+    plain->GetPointData()->Initialize();
+    plain->GetCellData()->Initialize();
     for (const char* ext : { ".stl", ".vtp", ".obj" })
       if (!lkapp::writeMesh(ext == std::string(".vtp") ? piece.Get() : plain.Get(),
             piecesFolder + "/piece" + std::to_string(p) + ext, error))

@@ -18,20 +18,14 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
-#include <cmath>
-#include <numeric>
-#include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <limits>
 #include <sstream>
 #include <string>
-#include <vector>
 
 namespace
 {

@@ -30,8 +30,9 @@ PieceFacts pieceFacts(vtkPolyData* piece)
   facts.faces = piece->GetNumberOfPolys();
   vtkDataArray* cap = piece->GetCellData()->GetArray("Cap");
   // Each edge once per face that uses it, as one 64-bit key (smaller id
-  // high), sorted: a key seen once is a border edge. The skull's 1.7 million
-  // in about a tenth of a second.
+  // high), sorted: a key seen once is a border edge. On the skull's 560,686
+  // faces 130-220 ms, against 270-340 ms for vtkFeatureEdges' boundary edges
+  // (the same 430 edges), hence not that filter.
   std::vector<std::uint64_t> edges;
   edges.reserve(static_cast<std::size_t>(3 * facts.faces));
   auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());

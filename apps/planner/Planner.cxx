@@ -40,14 +40,10 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <cstdlib>
 #include <fstream>
-#include <iostream>
-#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>

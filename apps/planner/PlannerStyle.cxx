@@ -21,14 +21,8 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
-#include <cstdint>
 #include <cstdio>
-#include <cstring>
-#include <cstdlib>
 #include <fstream>
-#include <iostream>
-#include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 

@@ -7,8 +7,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <deque>
-#include <functional>
 #include <future>
 #include <limits>
 #include <map>
