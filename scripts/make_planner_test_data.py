@@ -11,11 +11,17 @@
 # uncut mandible: a bump dragged up on the chin, a box pushed down on the left
 # body, a smoothing brush over the bump, undo and redo, the session saved.
 # Run from the repository root after a build:
-#   xvfb-run -a /usr/bin/python3 scripts/make_planner_test_data.py [session] [events] [deform]
-# (no argument: all three).
+#   xvfb-run -a /usr/bin/python3 scripts/make_planner_test_data.py [session] [events] [deform] [around]
+# (no argument: all four).
+# tests/data/mandible_around_events.log: a split-mode line drawn all round the
+# chin in three drags, the view turned with the right button between them
+# (from above, from the front, from below: no view shows the whole loop),
+# the second drag starting at the open line's end, the third at its start
+# and ending at its end, which closes it; undo and redo of the third; then
+# the cut and the session saved.
 import json
 import sys
-parts = set(sys.argv[1:]) or {'session', 'events', 'deform'}
+parts = set(sys.argv[1:]) or {'session', 'events', 'deform', 'around'}
 sys.path.insert(0, 'build/python')
 import latticekit
 from vtkmodules.vtkCommonDataModel import vtkPlane
@@ -185,3 +191,73 @@ if 'deform' in parts:
         ev('MouseMoveEvent', 300, 562 + 5 * k)
     ev('LeftButtonReleaseEvent', 300, 592)
     open('tests/data/mandible_segment_deform_events.log', 'w').write('\n'.join(lines) + '\n')
+
+# The line all round the chin (see the top). The planner's camera is
+# followed through the right-button drags exactly as
+# vtkInteractorStyleTrackballCamera::Rotate turns it, one mouse move at a time.
+if 'around' in parts:
+    bone = b.GetOutput()
+    polys = bone.GetPolys(); polys.InitTraversal()
+    from vtkmodules.vtkCommonCore import vtkIdList
+    ids = vtkIdList(); total = 0.0; count = 0
+    while polys.GetNextCell(ids):
+        for i in range(ids.GetNumberOfIds()):
+            total += math.dist(bone.GetPoint(ids.GetId(i)), bone.GetPoint(ids.GetId((i + 1) % ids.GetNumberOfIds())))
+            count += 1
+    join = 2.0 * total / count  # the planner's joinTolerance
+    cam = ren.GetActiveCamera()
+    ren.ResetCamera(); win.Render()
+    lines = ['# StreamVersion 1.1',
+             '# A split-mode line all round the chin in three drags (from above, the front, below),',
+             '# the view turned with the right button between them (the third from the line start to its end);',
+             '# undo and redo of the third, then the cut and the session saved.']
+    key('4'); key('d')
+    def column():
+        win.Render()
+        hits = []
+        for y in range(0, 750):
+            if picker.Pick(500, y, 0, ren) and picker.GetCellId() >= 0:
+                hits.append((y, picker.GetPickPosition()))
+        return hits
+    def drag(hits, start, end):
+        # Press at hits[start], move every second hit to hits[end], release.
+        step = 1 if end >= start else -1
+        chosen = list(range(start, end + step, step))
+        chosen = chosen[::2] + ([chosen[-1]] if (len(chosen) - 1) % 2 else [])
+        ev('LeftButtonPressEvent', 500, hits[chosen[0]][0])
+        for k in chosen[1:]:
+            ev('MouseMoveEvent', 500, hits[k][0])
+        ev('LeftButtonReleaseEvent', 500, hits[chosen[-1]][0])
+        return hits[chosen[0]][1], hits[chosen[-1]][1]
+    def turn(dy):
+        # The right button held and the mouse moved dy pixels up, 12 at a time.
+        x, y = 500, 100
+        ev('RightButtonPressEvent', x, y)
+        for k in range(abs(dy) // 12):
+            y += 12 if dy > 0 else -12
+            ev('MouseMoveEvent', x, y)
+            cam.Elevation((12 if dy > 0 else -12) * -20.0 / 750 * 10)
+            cam.OrthogonalizeViewUp()
+            ren.ResetCameraClippingRange()
+        ev('RightButtonReleaseEvent', x, y)
+    def nearest(hits, p):
+        return min(range(len(hits)), key=lambda i: math.dist(hits[i][1], p))
+    above = column()
+    first, end = drag(above, len(above) - 1, 0)   # lingual up to the front of the crest
+    turn(336)                                     # to the front: about -90 degrees of elevation
+    front = column()
+    i = nearest(front, end)
+    print('front view: starts %.2f mm from the line end (join %.2f)' % (math.dist(front[i][1], end), join))
+    far = 0 if abs(0 - i) > abs(len(front) - 1 - i) else len(front) - 1
+    _, end = drag(front, i, far)
+    turn(336)                                     # on to below
+    below = column()
+    # This drag starts at the line's first end (it goes before it, reversed)
+    # and ends at its other end, which closes the line.
+    i = nearest(below, first); j = nearest(below, end)
+    print('below: starts %.2f mm from the line start, ends %.2f mm from its end' % (math.dist(below[i][1], first), math.dist(below[j][1], end)))
+    assert math.dist(below[i][1], first) < 0.8 * join and math.dist(below[j][1], end) < 0.8 * join
+    drag(below, i, j)
+    key('z'); key('y')                            # the last part undone and redone
+    key('x'); key('w')
+    open('tests/data/mandible_around_events.log', 'w').write('\n'.join(lines) + '\n')

@@ -28,6 +28,8 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkSphereSource.h>
+#include <vtkMath.h>
 #include <vtkProperty.h>
 #include <vtkTextProperty.h>
 #include <vtkTransform.h>
@@ -117,8 +119,8 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 }
 } // namespace
 
-const char* const kHelp = "d: draw on/off | 1 paint 2 nearest 3 snap 4 split | x: cut (capped) | l: lattice | m: Metro colours\n"
-                    "n: pick the segment (smallest piece first) | g: move it (drag; shift+drag rotates) | r: reset its move\n"
+const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split\n"
+                    "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | r: reset\n"
                     "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius\n"
                     "z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
@@ -211,6 +213,67 @@ void Planner::setup()
   preview->PickableOff();
   renderer->AddActor(preview);
   radius = 0.05 * bone->GetLength();
+  // The stroke filter's "ends meet": twice the mean edge length, each
+  // triangle's three edges counted (lkStroke's closeTolerance default).
+  double edges = 0.0;
+  std::size_t count = 0;
+  if (vtkCellArray* polys = bone->GetPolys())
+  {
+    auto it = vtk::TakeSmartPointer(polys->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        double a[3], b[3];
+        bone->GetPoint(ids[i], a);
+        bone->GetPoint(ids[(i + 1) % n], b);
+        edges += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+        ++count;
+      }
+    }
+  }
+  if (count > 0 && edges > 0.0)
+    joinTolerance = 2.0 * edges / static_cast<double>(count);
+}
+
+namespace
+{
+double distance(const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+  return std::sqrt(vtkMath::Distance2BetweenPoints(a.data(), b.data()));
+}
+} // namespace
+
+std::vector<std::array<double, 3>> Planner::openEnds() const
+{
+  if (!cut.lastLineOpen || session.strokes.empty() || session.strokes.back().points.size() < 2)
+    return {};
+  const auto& points = session.strokes.back().points;
+  return { points.front(), points.back() };
+}
+
+bool Planner::addStroke(const std::vector<std::array<double, 3>>& points)
+{
+  const std::vector<std::array<double, 3>> ends = openEnds();
+  if (!points.empty() && !ends.empty() && session.strokes.back().mode == mode)
+  {
+    auto& last = session.strokes.back().points;
+    if (distance(points.front(), ends[1]) <= joinTolerance)
+    {
+      last.insert(last.end(), points.begin(), points.end());
+      return true;
+    }
+    if (distance(points.front(), ends[0]) <= joinTolerance)
+    {
+      last.insert(last.begin(), points.rbegin(), points.rend());
+      return true;
+    }
+  }
+  session.strokes.push_back({ mode, points });
+  return false;
 }
 
 void Planner::computeCut()
@@ -225,6 +288,7 @@ void Planner::computeCut()
   std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
   for (std::size_t i = 0; i < session.strokes.size(); ++i)
   {
+    cut.lastLineOpen = false;
     const Stroke& st = session.strokes[i];
     const std::string which = "stroke " + std::to_string(i + 1) + " (" + modeName(st.mode) + ")";
     vtkNew<vtkPoints> pts;
@@ -261,9 +325,13 @@ void Planner::computeCut()
     auto line = vtkSmartPointer<vtkPolyData>::New();
     line->DeepCopy(f->GetFeatureLineOutput());
     cut.lines.emplace_back(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);
-    if (line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5 &&
-      st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
-      closedLines.push_back(line);
+    const bool closed = line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5;
+    if (st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
+    {
+      if (closed)
+        closedLines.push_back(line);
+      cut.lastLineOpen = !closed;
+    }
   }
   vtkSmartPointer<vtkPolyData> faces = facesOnly(surface);
   cut.surface = faces;
@@ -392,6 +460,19 @@ void Planner::rebuild()
   cutFailed = cut.failed;
   for (const auto& [line, shade] : cut.lines)
     addLineActor(line, shade);
+  // Where an open line can be continued: a drag that starts in a marker.
+  for (const auto& end : openEnds())
+  {
+    vtkNew<vtkSphereSource> ball;
+    ball->SetCenter(end.data());
+    ball->SetRadius(joinTolerance);
+    ball->SetThetaResolution(16);
+    ball->SetPhiResolution(12);
+    ball->Update();
+    auto marker = addActorData(ball->GetOutput(), { 0.95, 0.55, 0.1 }, false);
+    marker->GetProperty()->SetOpacity(0.6);
+    marker->PickableOff(); // a drag that starts in it picks the bone under it
+  }
   applyDeformations();
   cutSummary = summaryOfCut();
   if (lattices.size() > pieces.size())

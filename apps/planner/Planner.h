@@ -65,6 +65,10 @@ public:
   int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
   bool drawing = false;
   std::vector<std::array<double, 3>> current;
+  /// How near a drag must start to an open line's end to continue it: twice
+  /// the bone's mean edge length, the stroke filter's tolerance for a stroke
+  /// whose ends meet (set by setup()).
+  double joinTolerance = 1.0;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkTextActor> help, status, messages;
@@ -120,6 +124,19 @@ public:
 
   void setup();
 
+  /// A drawn stroke into the session. A loop around a bone is never seen
+  /// whole from one side, so a stroke can be drawn in parts, the view turned
+  /// between them: points that start within joinTolerance of an end of the
+  /// last stroke's line, while that line is open (and not paint) and the mode
+  /// is the same, continue that stroke (appended at its end, or put reversed
+  /// before its start) instead of starting a new one; the stroke closes when
+  /// its ends meet. Returns true when they continued it.
+  bool addStroke(const std::vector<std::array<double, 3>>& points);
+
+  /// The ends of the last stroke while its line is open and can be continued
+  /// (empty otherwise): shown as markers of joinTolerance's radius.
+  std::vector<std::array<double, 3>> openEnds() const;
+
   /// The strokes and the cut, kept while they do not change (the lattice,
   /// Metro, segment and deformation keys do not redo them).
   struct CutStage
@@ -134,6 +151,7 @@ public:
     std::string message;
     bool failed = false;
     int innerWallLines = 0; ///< lines the cut added on a hollow bone's inner walls
+    bool lastLineOpen = false; ///< the last stroke gave an open line (not paint), which a drag can continue
   } cut;
   /// One deformation filter per piece: it keeps the refined mesh between
   /// updates, so a drag or a brush dab costs one deformation.

@@ -4,6 +4,7 @@
 
 #include "vtkLKPatchDeformationFilter.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkMath.h>
@@ -298,12 +299,36 @@ void PlannerStyle::OnLeftButtonUp()
   if (planner->current.size() >= 2)
   {
     planner->remember();
-    planner->session.strokes.push_back({ planner->mode, planner->current });
+    const bool continued = planner->addStroke(planner->current);
+    planner->notice = continued ? "stroke " + std::to_string(planner->session.strokes.size()) + " continued" : "";
     planner->rebuild();
   }
   planner->current.clear();
   planner->showStroke();
   this->Interactor->Render();
+}
+
+void PlannerStyle::OnRightButtonDown()
+{
+  if (!planner->drawing && !planner->moving && planner->tool == NO_TOOL)
+    return vtkInteractorStyleTrackballCamera::OnRightButtonDown();
+  if (pressed)
+    return; // the left button's drag first
+  const int* pos = this->Interactor->GetEventPosition();
+  this->FindPokedRenderer(pos[0], pos[1]);
+  if (!this->CurrentRenderer)
+    return;
+  this->GrabFocus(this->EventCallbackCommand);
+  this->StartRotate();
+}
+
+void PlannerStyle::OnRightButtonUp()
+{
+  if (this->State != VTKIS_ROTATE)
+    return vtkInteractorStyleTrackballCamera::OnRightButtonUp();
+  this->EndRotate();
+  if (this->Interactor)
+    this->ReleaseFocus();
 }
 
 void PlannerStyle::OnChar()

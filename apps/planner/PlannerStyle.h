@@ -3,7 +3,9 @@
 /// latticekit-planner's mouse and keys: drawing strokes (picked onto the
 /// bone), moving the cut segment (drag; shift+drag rotates), the deformation
 /// tools (bump, box, smoothing brush: press and drag up or down), and the
-/// key commands (kHelp). Each change goes to the Planner's session, with an
+/// key commands (kHelp). While the left button draws, moves or deforms, the
+/// right button turns the view (a line around a bone is drawn in parts, the
+/// view turned between them; Planner::addStroke). Each change goes to the Planner's session, with an
 /// undo snapshot, and the Planner rebuilds what it changes.
 
 #include "planner/Planner.h"
@@ -71,6 +73,10 @@ public:
   void OnLeftButtonDown() override;
   void OnMouseMove() override;
   void OnLeftButtonUp() override;
+  /// The view turns with the right button while the left one has a tool
+  /// (draw, move, deform); otherwise the trackball's (zoom).
+  void OnRightButtonDown() override;
+  void OnRightButtonUp() override;
   void OnChar() override;
 };
 
