@@ -6,6 +6,7 @@
 // lattices, and PNG pictures.
 #include "common/AppSupport.h"
 #include "common/CutReport.h"
+#include "common/PlaneSection.h"
 #include "common/JsonFields.h"
 #include "common/DistanceColourBar.h"
 
@@ -23,7 +24,6 @@
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
-#include <vtkCutter.h>
 #include <vtkDataArray.h>
 #include <vtkExtractEdges.h>
 #include <vtkFieldData.h>
@@ -33,7 +33,6 @@
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -43,7 +42,6 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
-#include <vtkStripper.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTubeFilter.h>
@@ -234,76 +232,16 @@ bool loadPlan(const std::string& path, Plan& plan, std::string& error)
 /// penOffset mm off the surface, as a pen held just above the bone.
 vtkSmartPointer<vtkPolyData> scriptedStroke(vtkPolyData* surface, const Plan& plan, std::string& error)
 {
-  vtkNew<vtkPlane> plane;
-  plane->SetOrigin(plan.origin.data());
-  plane->SetNormal(plan.normal.data());
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(surface);
-  cutter->SetCutFunction(plane);
-  vtkNew<vtkStripper> strip;
-  strip->SetInputConnection(cutter->GetOutputPort());
-  strip->JoinContiguousSegmentsOn();
-  strip->Update();
-  vtkPolyData* sections = strip->GetOutput();
-  std::vector<std::array<double, 3>> loop;
-  double best = 1e300;
-  auto it = vtk::TakeSmartPointer(sections->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    if (n < 8 || ids[0] != ids[n - 1])
-      continue; // open sections (at the volume's edge) are not loops
-    std::vector<std::array<double, 3>> pts(static_cast<std::size_t>(n));
-    double d = 1e300;
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      sections->GetPoint(ids[k], pts[static_cast<std::size_t>(k)].data());
-      double dd = 0;
-      for (int c = 0; c < 3; ++c)
-        dd += (pts[static_cast<std::size_t>(k)][c] - plan.origin[c]) * (pts[static_cast<std::size_t>(k)][c] - plan.origin[c]);
-      d = std::min(d, dd);
-    }
-    if (d < best)
-    {
-      best = d;
-      loop = pts;
-    }
-  }
-  if (loop.empty())
+  const auto loops = lkapp::planeSectionLoops(surface, plan.origin, plan.normal);
+  const int nearest = lkapp::nearestLoop(loops, plan.origin);
+  if (nearest < 0)
   {
     error = "the plan's cut plane does not cross the mandible in a closed loop";
     return nullptr;
   }
-  std::array<double, 3> centre{ 0, 0, 0 };
-  for (const auto& p : loop)
-    for (int c = 0; c < 3; ++c)
-      centre[c] += p[c] / static_cast<double>(loop.size());
   vtkNew<vtkPoints> pts;
-  double run = 1e300;
-  for (std::size_t i = 0; i + 1 < loop.size(); ++i)
-  {
-    double step = 0;
-    for (int c = 0; c < 3; ++c)
-      step += (loop[i + 1][c] - loop[i][c]) * (loop[i + 1][c] - loop[i][c]);
-    run += std::sqrt(step);
-    if (run < plan.penStep)
-      continue;
-    run = 0;
-    double out[3], len = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      out[c] = loop[i][c] - centre[c];
-      len += out[c] * out[c];
-    }
-    len = std::sqrt(len);
-    double p[3];
-    for (int c = 0; c < 3; ++c)
-      p[c] = loop[i][c] + (len > 0 ? plan.penOffset * out[c] / len : 0.0);
-    pts->InsertNextPoint(p);
-  }
-  pts->InsertNextPoint(pts->GetPoint(0)); // the pen comes back to where it started
+  for (const auto& p : lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], plan.penStep, plan.penOffset))
+    pts->InsertNextPoint(p.data());
   auto stroke = vtkSmartPointer<vtkPolyData>::New();
   stroke->SetPoints(pts);
   return stroke;

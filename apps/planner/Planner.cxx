@@ -4,6 +4,7 @@
 #include "common/CutReport.h"
 #include "common/DistanceColourBar.h"
 #include "common/JsonFields.h"
+#include "common/PlaneSection.h"
 
 #include "vtkLKClosedLineCutFilter.h"
 #include "vtkLKLatticeFitFilter.h"
@@ -27,6 +28,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkPolyDataMapper2D.h>
+#include <vtkProperty2D.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkSphereSource.h>
 #include <vtkMath.h>
@@ -119,7 +122,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 }
 } // namespace
 
-const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split\n"
+const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | r: reset\n"
                     "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius\n"
                     "z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
@@ -209,6 +212,13 @@ void Planner::setup()
   strokeActor->GetProperty()->SetPointSize(6);
   strokeActor->PickableOff(); // strokes are picked on the bone, never on themselves
   renderer->AddActor(strokeActor);
+  vtkNew<vtkPolyDataMapper2D> sawMapper;
+  sawMapper->SetInputData(sawPd);
+  sawActor->SetMapper(sawMapper);
+  sawActor->GetProperty()->SetColor(0.85, 0.1, 0.1);
+  sawActor->GetProperty()->SetLineWidth(2);
+  sawActor->SetVisibility(false);
+  renderer->AddViewProp(sawActor);
   preview->SetVisibility(false);
   preview->PickableOff();
   renderer->AddActor(preview);
@@ -253,6 +263,27 @@ std::vector<std::array<double, 3>> Planner::openEnds() const
     return {};
   const auto& points = session.strokes.back().points;
   return { points.front(), points.back() };
+}
+
+bool Planner::addSawStroke(const std::array<double, 3>& origin, const std::array<double, 3>& normal,
+  const std::array<double, 3>& onBone, std::string& why)
+{
+  const auto loops = lkapp::planeSectionLoops(bone, origin, normal);
+  const int nearest = lkapp::nearestLoop(loops, onBone);
+  // The point under the line lies on the plane and on the bone, so on the
+  // section: a loop farther away is another part of the bone.
+  double gap = VTK_DOUBLE_MAX;
+  if (nearest >= 0)
+    for (const auto& q : loops[static_cast<std::size_t>(nearest)])
+      gap = std::min(gap, distance(q, onBone));
+  if (nearest < 0 || gap > joinTolerance)
+  {
+    why = "the saw line's plane meets the bone there in no closed loop (at an open border of the surface?)";
+    return false;
+  }
+  const auto stroke = lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], 0.5 * joinTolerance, 0.0);
+  session.strokes.push_back({ vtkLKStrokeFeatureLineFilter::SPLIT, stroke });
+  return true;
 }
 
 bool Planner::addStroke(const std::vector<std::array<double, 3>>& points)
@@ -691,7 +722,7 @@ void Planner::addLineActor(vtkPolyData* line, double shade)
 void Planner::updateStatus()
 {
   std::ostringstream s;
-  s << (drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
+  s << (sawing ? "SAW (drag across the bone)" : drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
     << " | pieces: " << pieces.size() << (cut.innerWallLines > 0 ? " (cut through the marrow cavity too)" : "")
     << (session.lattice ? " | lattice" : "")
     << (session.metro ? (session.lattice ? " | Metro colours" : " | Metro colours (on the lattice: press l)") : "");

@@ -14,6 +14,7 @@
 #include "vtkLKStrokeFeatureLineFilter.h"
 
 #include <vtkActor.h>
+#include <vtkActor2D.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
@@ -64,6 +65,7 @@ public:
   Session session;
   int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
   bool drawing = false;
+  bool sawing = false; ///< the mouse draws saw lines (straight, across the bone)
   std::vector<std::array<double, 3>> current;
   /// How near a drag must start to an open line's end to continue it: twice
   /// the bone's mean edge length, the stroke filter's tolerance for a stroke
@@ -76,6 +78,8 @@ public:
   vtkNew<vtkLookupTable> distanceColours; ///< the Metro colours of every piece
   vtkNew<vtkActor> strokeActor;
   vtkNew<vtkPolyData> strokePd;
+  vtkNew<vtkActor2D> sawActor; ///< the saw line being dragged, on the screen
+  vtkNew<vtkPolyData> sawPd;
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   std::string message; ///< a problem: shown, and reported as "message:" in batch runs
@@ -132,6 +136,15 @@ public:
   /// before its start) instead of starting a new one; the stroke closes when
   /// its ends meet. Returns true when they continued it.
   bool addStroke(const std::vector<std::array<double, 3>>& points);
+
+  /// A saw line: the osteotomy plane (origin, normal) seen edge-on, and a
+  /// point on the bone under the line. The plane's section of the bone
+  /// nearest that point becomes a closed split-mode stroke (a point about
+  /// every mean edge length, on the section), so the cut is flat and its
+  /// cap too. Returns false, with the reason, when the plane meets the bone
+  /// there in no closed loop.
+  bool addSawStroke(const std::array<double, 3>& origin, const std::array<double, 3>& normal,
+    const std::array<double, 3>& onBone, std::string& why);
 
   /// The ends of the last stroke while its line is open and can be continued
   /// (empty otherwise): shown as markers of joinTolerance's radius.

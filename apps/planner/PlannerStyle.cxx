@@ -6,6 +6,8 @@
 
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
@@ -263,12 +265,103 @@ void PlannerStyle::endDeform()
   this->Interactor->Render();
 }
 
+void PlannerStyle::showSawLine(int x, int y)
+{
+  vtkNew<vtkPoints> pts;
+  pts->InsertNextPoint(sawStart[0], sawStart[1], 0.0);
+  pts->InsertNextPoint(x, y, 0.0);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType ends[2] = { 0, 1 };
+  lines->InsertNextCell(2, ends);
+  planner->sawPd->SetPoints(pts);
+  planner->sawPd->SetLines(lines);
+  planner->sawPd->Modified();
+  planner->sawActor->SetVisibility(true);
+  this->Interactor->Render();
+}
+
+void PlannerStyle::endSaw()
+{
+  const int* end = this->Interactor->GetEventPosition();
+  planner->sawActor->SetVisibility(false);
+  const double dx = end[0] - sawStart[0], dy = end[1] - sawStart[1];
+  const double pixels = std::sqrt(dx * dx + dy * dy);
+  if (pixels < 5.0)
+  {
+    this->Interactor->Render(); // a click: no line
+    return;
+  }
+  // The line's ends at the depth of the focal point, and the plane through
+  // them that holds the eye (or the view direction).
+  vtkCamera* camera = planner->renderer->GetActiveCamera();
+  double focal[4], display[3], a[4], b[4];
+  camera->GetFocalPoint(focal);
+  vtkInteractorObserver::ComputeWorldToDisplay(planner->renderer, focal[0], focal[1], focal[2], display);
+  vtkInteractorObserver::ComputeDisplayToWorld(planner->renderer, sawStart[0], sawStart[1], display[2], a);
+  vtkInteractorObserver::ComputeDisplayToWorld(planner->renderer, end[0], end[1], display[2], b);
+  double along[3], towards[3], normal[3];
+  for (int c = 0; c < 3; ++c)
+    along[c] = b[c] - a[c];
+  if (camera->GetParallelProjection())
+    camera->GetDirectionOfProjection(towards);
+  else
+  {
+    const double* eye = camera->GetPosition();
+    for (int c = 0; c < 3; ++c)
+      towards[c] = a[c] - eye[c];
+  }
+  vtkMath::Cross(along, towards, normal);
+  // A point of the bone under the line, from its middle outwards.
+  std::array<double, 3> onBone{};
+  bool hit = false;
+  const int steps = static_cast<int>(pixels);
+  for (int k = 0; k <= steps && !hit; ++k)
+  {
+    const double t = 0.5 + (k % 2 ? 1 : -1) * 0.5 * ((k + 1) / 2) / std::max(1, steps / 2);
+    if (t < 0.0 || t > 1.0)
+      continue;
+    const int x = static_cast<int>(std::lround(sawStart[0] + t * dx)), y = static_cast<int>(std::lround(sawStart[1] + t * dy));
+    if (picker->Pick(x, y, 0, planner->renderer) && picker->GetCellId() >= 0)
+    {
+      picker->GetPickPosition(onBone.data());
+      hit = true;
+    }
+  }
+  std::string why;
+  if (!hit || vtkMath::Norm(normal) == 0.0)
+    why = "the saw line does not cross the bone: drag it across the bone";
+  else
+  {
+    const Session before = planner->session;
+    if (planner->addSawStroke({ a[0], a[1], a[2] }, { normal[0], normal[1], normal[2] }, onBone, why))
+    {
+      planner->remember(before);
+      planner->notice = "saw line: stroke " + std::to_string(planner->session.strokes.size());
+      planner->rebuild();
+    }
+  }
+  if (!why.empty())
+  {
+    planner->message = why;
+    planner->updateStatus();
+  }
+  this->Interactor->Render();
+}
+
 void PlannerStyle::OnLeftButtonDown()
 {
   if (planner->tool != NO_TOOL)
     return startDeform();
   if (planner->moving && planner->hasSegment())
     return startMove();
+  if (planner->sawing)
+  {
+    pressed = true;
+    const int* pos = this->Interactor->GetEventPosition();
+    sawStart[0] = pos[0];
+    sawStart[1] = pos[1];
+    return;
+  }
   if (!planner->drawing)
     return vtkInteractorStyleTrackballCamera::OnLeftButtonDown();
   pressed = true;
@@ -282,6 +375,8 @@ void PlannerStyle::OnMouseMove()
     return dragDeform();
   if (planner->moving && pressed)
     return drag();
+  if (planner->sawing && pressed)
+    return showSawLine(this->Interactor->GetEventPosition()[0], this->Interactor->GetEventPosition()[1]);
   if (planner->drawing && pressed)
     return pick();
   vtkInteractorStyleTrackballCamera::OnMouseMove();
@@ -293,6 +388,11 @@ void PlannerStyle::OnLeftButtonUp()
     return endDeform();
   if (planner->moving && pressed)
     return endMove();
+  if (planner->sawing && pressed)
+  {
+    pressed = false;
+    return endSaw();
+  }
   if (!planner->drawing || !pressed)
     return vtkInteractorStyleTrackballCamera::OnLeftButtonUp();
   pressed = false;
@@ -310,7 +410,7 @@ void PlannerStyle::OnLeftButtonUp()
 
 void PlannerStyle::OnRightButtonDown()
 {
-  if (!planner->drawing && !planner->moving && planner->tool == NO_TOOL)
+  if (!planner->drawing && !planner->sawing && !planner->moving && planner->tool == NO_TOOL)
     return vtkInteractorStyleTrackballCamera::OnRightButtonDown();
   if (pressed)
     return; // the left button's drag first
@@ -338,9 +438,11 @@ void PlannerStyle::OnChar()
   std::string error;
   bool rebuild = true;
   planner->notice.clear();
-  if (key == "d")
+  if (key == "d" || key == "p")
   {
-    planner->drawing = !planner->drawing;
+    bool& on = key == "d" ? planner->drawing : planner->sawing;
+    on = !on;
+    (key == "d" ? planner->sawing : planner->drawing) = false;
     planner->moving = false;
     planner->tool = NO_TOOL;
     rebuild = false;
@@ -349,6 +451,7 @@ void PlannerStyle::OnChar()
   {
     planner->tool = (planner->tool + 1) % TOOL_COUNT; // bump, box, smooth, off
     planner->drawing = false;
+    planner->sawing = false;
     planner->moving = false;
     rebuild = false;
   }
@@ -399,6 +502,7 @@ void PlannerStyle::OnChar()
     {
       planner->moving = !planner->moving;
       planner->drawing = false;
+      planner->sawing = false;
       planner->tool = NO_TOOL;
     }
   }

@@ -3,7 +3,8 @@
 /// latticekit-planner's mouse and keys: drawing strokes (picked onto the
 /// bone), moving the cut segment (drag; shift+drag rotates), the deformation
 /// tools (bump, box, smoothing brush: press and drag up or down), and the
-/// key commands (kHelp). While the left button draws, moves or deforms, the
+/// key commands (kHelp); a saw line (p: a straight drag across the bone,
+/// which cuts it in the plane that holds the line and the eye). While the left button draws, moves or deforms, the
 /// right button turns the view (a line around a bone is drawn in parts, the
 /// view turned between them; Planner::addStroke). Each change goes to the Planner's session, with an
 /// undo snapshot, and the Planner rebuilds what it changes.
@@ -48,6 +49,14 @@ public:
   void endMove();
 
   void pick();
+
+  /// The saw line: where it started on the screen, the line shown while the
+  /// mouse moves, and on release the plane through it and the eye (the
+  /// camera's view direction, for a parallel projection) handed to
+  /// Planner::addSawStroke.
+  int sawStart[2] = { 0, 0 };
+  void showSawLine(int x, int y);
+  void endSaw();
   // Deforming (seed 002's tools): the piece under the press, the
   // deformation being dragged (or the brush's dabs), the session before it
   // (for undo), and the world length of one pixel at the picked point.

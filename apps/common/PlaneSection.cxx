@@ -1,0 +1,96 @@
+#include "common/PlaneSection.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCutter.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPlane.h>
+#include <vtkStripper.h>
+
+#include <cmath>
+
+namespace lkapp
+{
+
+std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const Point3& origin, const Point3& normal)
+{
+  std::vector<std::vector<Point3>> loops;
+  if (!surface || surface->GetNumberOfPolys() == 0)
+    return loops;
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(origin.data());
+  plane->SetNormal(normal.data());
+  vtkNew<vtkCutter> cutter;
+  cutter->SetInputData(surface);
+  cutter->SetCutFunction(plane);
+  vtkNew<vtkStripper> strip;
+  strip->SetInputConnection(cutter->GetOutputPort());
+  strip->JoinContiguousSegmentsOn();
+  strip->Update();
+  vtkPolyData* sections = strip->GetOutput();
+  if (!sections->GetLines())
+    return loops;
+  auto it = vtk::TakeSmartPointer(sections->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    if (n < 8 || ids[0] != ids[n - 1])
+      continue; // open sections (at an open surface's border) are not loops
+    std::vector<Point3>& loop = loops.emplace_back(static_cast<std::size_t>(n));
+    for (vtkIdType k = 0; k < n; ++k)
+      sections->GetPoint(ids[k], loop[static_cast<std::size_t>(k)].data());
+  }
+  return loops;
+}
+
+int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p)
+{
+  int best = -1;
+  double nearest = VTK_DOUBLE_MAX;
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (const Point3& q : loops[l])
+    {
+      const double d = vtkMath::Distance2BetweenPoints(p.data(), q.data());
+      if (d < nearest)
+      {
+        nearest = d;
+        best = static_cast<int>(l);
+      }
+    }
+  return best;
+}
+
+std::vector<Point3> strokeAlongLoop(const std::vector<Point3>& loop, double step, double offset)
+{
+  std::vector<Point3> stroke;
+  if (loop.size() < 2)
+    return stroke;
+  Point3 centre{ 0, 0, 0 };
+  for (const Point3& p : loop)
+    for (int c = 0; c < 3; ++c)
+      centre[c] += p[c] / static_cast<double>(loop.size());
+  double run = VTK_DOUBLE_MAX;
+  for (std::size_t i = 0; i + 1 < loop.size(); ++i)
+  {
+    run += std::sqrt(vtkMath::Distance2BetweenPoints(loop[i + 1].data(), loop[i].data()));
+    if (run < step)
+      continue;
+    run = 0;
+    Point3 out{ 0, 0, 0 };
+    for (int c = 0; c < 3; ++c)
+      out[c] = loop[i][c] - centre[c];
+    const double length = vtkMath::Norm(out.data());
+    Point3 p = loop[i];
+    for (int c = 0; c < 3; ++c)
+      p[c] += length > 0 ? offset * out[c] / length : 0.0;
+    stroke.push_back(p);
+  }
+  if (!stroke.empty())
+    stroke.push_back(stroke.front()); // the pen comes back to where it started
+  return stroke;
+}
+
+} // namespace lkapp

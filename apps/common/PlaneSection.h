@@ -1,0 +1,32 @@
+#pragma once
+/// \file PlaneSection.h
+/// Where a plane cuts a surface: the closed loops of the section (vtkCutter,
+/// vtkStripper), which the main job traces as its scripted pen stroke and
+/// the planner's saw line turns into a stroke: a flat osteotomy.
+
+#include <vtkPolyData.h>
+
+#include <array>
+#include <vector>
+
+namespace lkapp
+{
+
+using Point3 = std::array<double, 3>;
+
+/// The closed loops in which the plane (origin, normal) cuts the surface's
+/// polygons, each as its points, the last repeating the first. Open sections
+/// (where the plane leaves an open surface at its border) and loops of fewer
+/// than 7 points are left out.
+std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const Point3& origin, const Point3& normal);
+
+/// The loop with the point nearest p; -1 when there is none.
+int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p);
+
+/// A stroke along a loop (its last point repeating the first): a point at
+/// least `step` from the one before, each moved `offset` away from the
+/// loop's centre (a pen held just above the bone; 0 keeps the points on it),
+/// and back to where it started.
+std::vector<Point3> strokeAlongLoop(const std::vector<Point3>& loop, double step, double offset);
+
+} // namespace lkapp
