@@ -12,6 +12,7 @@
 // and vtkPolyDataConnectivityFilter on the same mesh (VTK's region split).
 //
 // usage: bench_osteotomy SAMPLE_DATA_DIR
+#include "common/PlaneSection.h"
 #include "latticekit/MeshCut.h"
 #include "latticekit/StrokeSplitter.h"
 
@@ -21,9 +22,7 @@
 #include "vtkLKPolyDataConversion.h"
 
 #include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkCellLocator.h>
-#include <vtkCutter.h>
 #include <vtkIdTypeArray.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
@@ -32,7 +31,6 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkSphere.h>
-#include <vtkStripper.h>
 
 #include <algorithm>
 #include <chrono>
@@ -89,39 +87,22 @@ int main(int argc, char* argv[])
   vtkNew<vtkSphere> sphere;
   sphere->SetCenter(centre.data());
   sphere->SetRadius(20.0);
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(skull);
-  cutter->SetCutFunction(sphere);
-  vtkNew<vtkStripper> strip;
-  strip->SetInputConnection(cutter->GetOutputPort());
-  strip->JoinContiguousSegmentsOn();
-  strip->Update();
-  vtkPolyData* sections = strip->GetOutput();
+  // The outer surface's loop: its points lie above (smaller z than) the inner table's.
   std::vector<lk::Vec3> loop;
   double best = 1e300;
-  const vtkIdType* ids = nullptr;
-  vtkIdType n = 0;
-  auto it = vtk::TakeSmartPointer(sections->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  for (const auto& section : lkapp::sectionLoops(skull, sphere))
   {
-    it->GetCurrentCell(n, ids);
-    if (n < 20)
+    if (section.size() < 20)
       continue;
-    double p[3];
-    sections->GetPoint(ids[0], p);
-    // The outer surface's loop: its points lie above (smaller z than) the inner table's.
     double z = 0;
-    std::vector<lk::Vec3> pts;
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      sections->GetPoint(ids[k], p);
-      pts.emplace_back(p[0], p[1], p[2]);
-      z += p[2] / static_cast<double>(n);
-    }
-    if (z < best && (pts.front() - pts.back()).norm() < 1e-6)
+    for (const auto& p : section)
+      z += p[2] / static_cast<double>(section.size());
+    if (z < best)
     {
       best = z;
-      loop = pts;
+      loop.clear();
+      for (const auto& p : section)
+        loop.emplace_back(p[0], p[1], p[2]);
     }
   }
   if (loop.empty())

@@ -13,17 +13,14 @@
 namespace lkapp
 {
 
-std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const Point3& origin, const Point3& normal)
+std::vector<std::vector<Point3>> sectionLoops(vtkPolyData* surface, vtkImplicitFunction* function)
 {
   std::vector<std::vector<Point3>> loops;
-  if (!surface || surface->GetNumberOfPolys() == 0)
+  if (!surface || !function || surface->GetNumberOfPolys() == 0)
     return loops;
-  vtkNew<vtkPlane> plane;
-  plane->SetOrigin(origin.data());
-  plane->SetNormal(normal.data());
   vtkNew<vtkCutter> cutter;
   cutter->SetInputData(surface);
-  cutter->SetCutFunction(plane);
+  cutter->SetCutFunction(function);
   vtkNew<vtkStripper> strip;
   strip->SetInputConnection(cutter->GetOutputPort());
   strip->JoinContiguousSegmentsOn();
@@ -44,6 +41,14 @@ std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const P
       sections->GetPoint(ids[k], loop[static_cast<std::size_t>(k)].data());
   }
   return loops;
+}
+
+std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const Point3& origin, const Point3& normal)
+{
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(origin.data());
+  plane->SetNormal(normal.data());
+  return sectionLoops(surface, plane);
 }
 
 int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p)

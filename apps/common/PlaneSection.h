@@ -4,6 +4,7 @@
 /// vtkStripper), which the main job traces as its scripted pen stroke and
 /// the planner's saw line turns into a stroke: a flat osteotomy.
 
+#include <vtkImplicitFunction.h>
 #include <vtkPolyData.h>
 
 #include <array>
@@ -13,6 +14,11 @@ namespace lkapp
 {
 
 using Point3 = std::array<double, 3>;
+
+/// The closed loops in which the zero set of `function` (a plane, a sphere)
+/// cuts the surface's polygons, each as its points, the last repeating the
+/// first. Open sections and loops of fewer than 7 points are left out.
+std::vector<std::vector<Point3>> sectionLoops(vtkPolyData* surface, vtkImplicitFunction* function);
 
 /// The closed loops in which the plane (origin, normal) cuts the surface's
 /// polygons, each as its points, the last repeating the first. Open sections
