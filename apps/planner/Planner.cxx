@@ -743,7 +743,7 @@ void Planner::updateStatus()
     s << " | " << notice;
   if (!cutSummary.empty())
     s << "\n" << cutSummary;
-  status->SetInput(s.str().c_str());
+  status->SetInput(wrapped(s.str(), 130).c_str()); // the window is 1000 pixels wide
   messages->SetInput(wrapped(message, 120).c_str());
 }
 
