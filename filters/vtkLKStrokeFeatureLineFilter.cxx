@@ -417,6 +417,20 @@ int vtkLKStrokeFeatureLineFilter::CarryLine(vtkPolyData* line, vtkPolyData* carr
   return 1;
 }
 
+double vtkLKStrokeFeatureLineFilter::DefaultCloseTolerance(vtkPolyData* surface)
+{
+  if (!surface)
+    return 0.0;
+  vtkNew<vtkPolyData> faces; // without the earlier lines, as RequestData takes it
+  faces->ShallowCopy(surface);
+  vtkNew<vtkCellArray> none;
+  faces->SetLines(none);
+  lk::TriangleMesh mesh;
+  if (!lkvtk::toTriangleMesh(faces, mesh).empty())
+    return 0.0;
+  return lk::defaultCloseTolerance(mesh);
+}
+
 void vtkLKStrokeFeatureLineFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

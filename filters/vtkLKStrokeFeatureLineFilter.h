@@ -89,6 +89,11 @@ public:
   vtkGetMacro(CloseTolerance, double);
   ///@}
 
+  /// The close tolerance a stroke on `surface` gets when CloseTolerance is 0
+  /// (twice its mean edge length); 0 for a surface the filter would refuse
+  /// (no triangles, other polygons).
+  static double DefaultCloseTolerance(vtkPolyData* surface);
+
   ///@{
   /// Screen strokes (see above): the camera that showed the mesh and the
   /// viewport's size in pixels. SetCamera(nullptr) goes back to world points.

@@ -136,3 +136,39 @@ TEST(ScreenStroke, MissesAndMissingViewportAreReported)
     EXPECT_NE(errors.messages.find("viewport size"), std::string::npos) << errors.messages;
   }
 }
+
+// The default close tolerance the filter reports is the one it closes with:
+// an equator stroke whose ends are 0.9 of it apart is closed, 1.1 is open.
+// The planner continues a stroke drawn in parts within the same distance.
+TEST(ScreenStroke, DefaultCloseToleranceIsWhereAStrokeCloses)
+{
+  auto ball = sphere();
+  const double tolerance = vtkLKStrokeFeatureLineFilter::DefaultCloseTolerance(ball);
+  ASSERT_GT(tolerance, 0.0);
+  EXPECT_LT(tolerance, 0.2); // twice the mean edge of a 96 x 64 unit sphere
+  for (const double fraction : { 0.9, 1.1 })
+  {
+    // The gap is a chord of the unit equator: 2 sin(gap angle / 2).
+    const double gapAngle = 2.0 * std::asin(0.5 * fraction * tolerance);
+    std::vector<lk::Vec3> stroke;
+    const int n = 200;
+    for (int k = 0; k <= n; ++k)
+    {
+      const double a = (2.0 * M_PI - gapAngle) * k / n;
+      stroke.emplace_back(std::cos(a), std::sin(a), 0.0);
+    }
+    vtkNew<vtkLKStrokeFeatureLineFilter> f;
+    f->SetInputData(ball);
+    f->SetStrokeData(pointsPd(stroke));
+    f->SetModeToNearestEdges();
+    lktest::ErrorRecorder errors(f);
+    f->Update();
+    ASSERT_EQ(errors.errors, 0) << errors.messages;
+    const double closed = f->GetFeatureLineOutput()->GetFieldData()->GetArray("Closed")->GetComponent(0, 0);
+    EXPECT_EQ(closed > 0.5, fraction < 1.0) << "ends " << fraction << " of the tolerance apart";
+  }
+  // Surfaces the filter refuses have none.
+  vtkNew<vtkPolyData> empty;
+  EXPECT_EQ(vtkLKStrokeFeatureLineFilter::DefaultCloseTolerance(empty), 0.0);
+  EXPECT_EQ(vtkLKStrokeFeatureLineFilter::DefaultCloseTolerance(nullptr), 0.0);
+}

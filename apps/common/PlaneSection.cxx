@@ -51,7 +51,7 @@ std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const P
   return sectionLoops(surface, plane);
 }
 
-int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p)
+int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p, double* distance)
 {
   int best = -1;
   double nearest = VTK_DOUBLE_MAX;
@@ -65,6 +65,8 @@ int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p)
         best = static_cast<int>(l);
       }
     }
+  if (distance)
+    *distance = best < 0 ? VTK_DOUBLE_MAX : std::sqrt(nearest);
   return best;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 /// \file PlaneSection.h
-/// Where a plane cuts a surface: the closed loops of the section (vtkCutter,
-/// vtkStripper), which the main job traces as its scripted pen stroke and
-/// the planner's saw line turns into a stroke: a flat osteotomy.
+/// Where a plane (or another implicit function) cuts a surface: the closed
+/// loops of the section (vtkCutter, vtkStripper). The main job traces a
+/// plane's as its scripted pen stroke, the planner's saw line turns one into
+/// a stroke (a flat osteotomy), and the osteotomy benchmark takes a sphere's
+/// as its craniotomy outline.
 
 #include <vtkImplicitFunction.h>
 #include <vtkPolyData.h>
@@ -20,14 +22,13 @@ using Point3 = std::array<double, 3>;
 /// first. Open sections and loops of fewer than 7 points are left out.
 std::vector<std::vector<Point3>> sectionLoops(vtkPolyData* surface, vtkImplicitFunction* function);
 
-/// The closed loops in which the plane (origin, normal) cuts the surface's
-/// polygons, each as its points, the last repeating the first. Open sections
-/// (where the plane leaves an open surface at its border) and loops of fewer
-/// than 7 points are left out.
+/// sectionLoops for the plane (origin, normal). A plane leaves an open
+/// surface's section open at its border: such sections are not loops.
 std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const Point3& origin, const Point3& normal);
 
-/// The loop with the point nearest p; -1 when there is none.
-int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p);
+/// The loop with the point nearest p; -1 when there is none. `distance`, if
+/// given, gets how far that point is from p.
+int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p, double* distance = nullptr);
 
 /// A stroke along a loop (its last point repeating the first): a point at
 /// least `step` from the one before, each moved `offset` away from the

@@ -223,30 +223,9 @@ void Planner::setup()
   preview->PickableOff();
   renderer->AddActor(preview);
   radius = 0.05 * bone->GetLength();
-  // The stroke filter's "ends meet": twice the mean edge length, each
-  // triangle's three edges counted (lkStroke's closeTolerance default).
-  double edges = 0.0;
-  std::size_t count = 0;
-  if (vtkCellArray* polys = bone->GetPolys())
-  {
-    auto it = vtk::TakeSmartPointer(polys->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      vtkIdType n = 0;
-      const vtkIdType* ids = nullptr;
-      it->GetCurrentCell(n, ids);
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        double a[3], b[3];
-        bone->GetPoint(ids[i], a);
-        bone->GetPoint(ids[(i + 1) % n], b);
-        edges += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-        ++count;
-      }
-    }
-  }
-  if (count > 0 && edges > 0.0)
-    joinTolerance = 2.0 * edges / static_cast<double>(count);
+  // The stroke filter's "ends meet" is also how near a drag continues a line.
+  if (const double tolerance = vtkLKStrokeFeatureLineFilter::DefaultCloseTolerance(bone); tolerance > 0.0)
+    joinTolerance = tolerance;
 }
 
 namespace
@@ -269,13 +248,10 @@ bool Planner::addSawStroke(const std::array<double, 3>& origin, const std::array
   const std::array<double, 3>& onBone, std::string& why)
 {
   const auto loops = lkapp::planeSectionLoops(bone, origin, normal);
-  const int nearest = lkapp::nearestLoop(loops, onBone);
   // The point under the line lies on the plane and on the bone, so on the
   // section: a loop farther away is another part of the bone.
-  double gap = VTK_DOUBLE_MAX;
-  if (nearest >= 0)
-    for (const auto& q : loops[static_cast<std::size_t>(nearest)])
-      gap = std::min(gap, distance(q, onBone));
+  double gap = 0.0;
+  const int nearest = lkapp::nearestLoop(loops, onBone, &gap);
   if (nearest < 0 || gap > joinTolerance)
   {
     why = "the saw line's plane meets the bone there in no closed loop (at an open border of the surface?)";

@@ -314,12 +314,13 @@ void PlannerStyle::endSaw()
   // A point of the bone under the line, from its middle outwards.
   std::array<double, 3> onBone{};
   bool hit = false;
-  const int steps = static_cast<int>(pixels);
+  const int steps = static_cast<int>(pixels), middle = steps / 2;
   for (int k = 0; k <= steps && !hit; ++k)
   {
-    const double t = 0.5 + (k % 2 ? 1 : -1) * 0.5 * ((k + 1) / 2) / std::max(1, steps / 2);
-    if (t < 0.0 || t > 1.0)
+    const int i = middle + (k % 2 ? (k + 1) / 2 : -(k / 2)); // middle, +1, -1, +2, -2, ...
+    if (i < 0 || i > steps)
       continue;
+    const double t = static_cast<double>(i) / steps;
     const int x = static_cast<int>(std::lround(sawStart[0] + t * dx)), y = static_cast<int>(std::lround(sawStart[1] + t * dy));
     if (picker->Pick(x, y, 0, planner->renderer) && picker->GetCellId() >= 0)
     {

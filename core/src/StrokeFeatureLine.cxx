@@ -129,6 +129,29 @@ std::invalid_argument loopTooSmall(std::size_t points, const char* what, double 
 }
 } // namespace
 
+namespace
+{
+constexpr double kCloseEdges = 2.0; ///< the default closeTolerance, in mean edge lengths
+} // namespace
+
+double meanEdgeLength(const TriangleMesh& mesh)
+{
+  if (mesh.triangles.empty())
+    return 0.0;
+  double total = 0.0;
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      total += (mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>(i)])] -
+                 mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>((i + 1) % 3)])])
+                 .norm();
+  return total / (3.0 * static_cast<double>(mesh.triangles.size()));
+}
+
+double defaultCloseTolerance(const TriangleMesh& mesh)
+{
+  return kCloseEdges * meanEdgeLength(mesh);
+}
+
 StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& strokeIn, const StrokeOptions& o)
 {
   const std::string problem = validateTriangleMesh(mesh);
@@ -139,16 +162,10 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
   for (const Vec3& p : strokeIn)
     if (!p.allFinite())
       throw std::invalid_argument("a stroke point is not finite");
-  double meanEdge = 0.0;
-  for (const Triangle& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      meanEdge += (mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>(i)])] -
-                    mesh.points[static_cast<std::size_t>(t[static_cast<std::size_t>((i + 1) % 3)])])
-                    .norm();
-  meanEdge /= 3.0 * static_cast<double>(mesh.triangles.size());
+  const double meanEdge = meanEdgeLength(mesh);
   const double spacing = o.spacing > 0 ? o.spacing : 0.25 * meanEdge;
   const double radius = o.brushRadius > 0 ? o.brushRadius : 0.5 * meanEdge;
-  const double closeTol = o.closeTolerance > 0 ? o.closeTolerance : 2.0 * meanEdge;
+  const double closeTol = o.closeTolerance > 0 ? o.closeTolerance : kCloseEdges * meanEdge;
   const double maxDist = o.maxDistance > 0 ? o.maxDistance : 5.0 * meanEdge;
 
   StrokeResult result;

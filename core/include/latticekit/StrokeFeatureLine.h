@@ -71,6 +71,16 @@ struct StrokeResult
   bool closed = false;
 };
 
+/// The mean length of the mesh's edges, each triangle's three counted: the
+/// unit of StrokeOptions' defaults (0 for a mesh without triangles).
+double meanEdgeLength(const TriangleMesh& mesh);
+
+/// The closeTolerance a stroke on this mesh gets when it is 0: twice the
+/// mean edge length. (The planner continues a stroke drawn in parts from a
+/// press this near an end of its open line, so that continues and closes
+/// mean the same nearness.)
+double defaultCloseTolerance(const TriangleMesh& mesh);
+
 /// Throws std::invalid_argument for an invalid mesh, a stroke of fewer than
 /// two points or with non-finite points, or a stroke that misses the surface.
 StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& stroke, const StrokeOptions& options);
