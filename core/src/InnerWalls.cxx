@@ -32,6 +32,12 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
   auto pointAt = [&](std::int64_t a, std::int64_t b, double t) -> Vec3 {
     return (1.0 - t) * mesh.points[static_cast<std::size_t>(a)] + t * mesh.points[static_cast<std::size_t>(b)];
   };
+  // Whether the plane passes between the face's vertices: only such faces
+  // have crossed edges (most of a large mesh does not; no lookups there).
+  auto crossesPlane = [&](const std::vector<std::int64_t>& face) {
+    const bool side = d[static_cast<std::size_t>(face[0])] >= 0.0;
+    return std::any_of(face.begin() + 1, face.end(), [&](std::int64_t v) { return (d[static_cast<std::size_t>(v)] >= 0.0) != side; });
+  };
   for (int attempt = 0; attempt < 8; ++attempt)
   {
     const double offset = attempt * 1e-3 * plane.tolerance;
@@ -40,6 +46,9 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
     crossing.clear();
     bool clean = true;
     for (const auto& face : mesh.faces)
+    {
+      if (!crossesPlane(face))
+        continue;
       for (std::size_t i = 0; i < face.size(); ++i)
       {
         const auto a = std::min(face[i], face[(i + 1) % face.size()]);
@@ -60,6 +69,7 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
         if (outline.side(pointAt(a, b, t)) != LoopOutline::Side::Outside)
           clean = false;
       }
+    }
     if (clean)
       break;
     if (attempt == 7)
@@ -68,12 +78,6 @@ InnerWalls splitAlongInnerWalls(const PolygonMesh& mesh, const std::vector<std::
   // The section graph: each crossed triangle joins its two crossed edges.
   std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOfEdge;
   auto key = [](std::int64_t a, std::int64_t b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
-  // Whether the plane passes between the face's vertices: only such faces
-  // have crossed edges (most of a large mesh does not; no lookups there).
-  auto crossesPlane = [&](const std::vector<std::int64_t>& face) {
-    const bool side = d[static_cast<std::size_t>(face[0])] >= 0.0;
-    return std::any_of(face.begin() + 1, face.end(), [&](std::int64_t v) { return (d[static_cast<std::size_t>(v)] >= 0.0) != side; });
-  };
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
   {
     const auto& face = mesh.faces[f];

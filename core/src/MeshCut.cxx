@@ -50,9 +50,15 @@ struct DirectedEdges
   explicit DirectedEdges(const PolygonMesh& mesh)
     : start(mesh.points.size() + 1, 0)
   {
+    // The ids are checked here too: the index check runs beside this.
+    const auto n = static_cast<std::int64_t>(mesh.points.size());
     for (const auto& f : mesh.faces)
       for (auto v : f)
+      {
+        if (v < 0 || v >= n)
+          throw std::invalid_argument("a face refers to a point outside the mesh");
         ++start[static_cast<std::size_t>(v) + 1];
+      }
     for (std::size_t i = 1; i < start.size(); ++i)
       start[i] += start[i - 1];
     if (start.back() >= npos || mesh.points.size() >= npos || mesh.faces.size() >= npos)
@@ -486,16 +492,42 @@ void checkLoops(
 /// One cut along the loops (without closing vertices, openLoops).
 CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::int64_t>>& loops, bool cap)
 {
-  std::string problem = polygonIndexProblem(mesh);
-  if (!problem.empty())
-    throw std::invalid_argument(problem);
   if (loops.empty())
     throw std::invalid_argument("no loop to cut along");
-  DirectedEdges directed(mesh);
-  problem = directed.problem();
+  // The two checks of the input run on a second thread, each beside the step
+  // that comes before its answer is needed (on the skull: the index check,
+  // 14 ms, beside the directed edges, 45 ms; the manifold check, 16 ms,
+  // beside the loop check and the regions). Their messages come first, as if
+  // they had run before.
+  std::future<std::string> indexProblem = std::async(std::launch::async, [&]() { return polygonIndexProblem(mesh); });
+  std::optional<DirectedEdges> built;
+  try
+  {
+    built.emplace(mesh);
+  }
+  catch (const std::invalid_argument&)
+  {
+    const std::string problem = indexProblem.get();
+    if (!problem.empty())
+      throw std::invalid_argument(problem);
+    throw;
+  }
+  std::string problem = indexProblem.get();
   if (!problem.empty())
     throw std::invalid_argument(problem);
-  checkLoops(mesh, loops, directed);
+  DirectedEdges& directed = *built;
+  std::future<std::string> manifoldProblem = std::async(std::launch::async, [&]() { return directed.problem(); });
+  try
+  {
+    checkLoops(mesh, loops, directed);
+  }
+  catch (const std::invalid_argument&)
+  {
+    problem = manifoldProblem.get();
+    if (!problem.empty())
+      throw std::invalid_argument(problem);
+    throw;
+  }
   std::vector<char> onLoop(mesh.points.size(), 0);
   for (const auto& loop : loops)
     for (auto v : loop)
@@ -515,6 +547,9 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
       const std::size_t f = find(parent, directed.face[k]), g = find(parent, directed.face[back]);
       parent[std::max(f, g)] = std::min(f, g); // a region's root is its first face
     }
+  problem = manifoldProblem.get();
+  if (!problem.empty())
+    throw std::invalid_argument(problem);
   std::vector<std::size_t> faceRegion(mesh.faces.size());
   std::size_t pieces = 0;
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
