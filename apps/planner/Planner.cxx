@@ -741,34 +741,56 @@ void Planner::showStroke()
   strokePd->Modified();
 }
 
-void Planner::report()
+std::string Planner::planText()
 {
-  std::printf("strokes: %zu\npieces: %zu\n", session.strokes.size(), pieces.size());
+  std::string text;
+  char line[400];
+  std::snprintf(line, sizeof line, "strokes: %zu\npieces: %zu\n", session.strokes.size(), pieces.size());
+  text += line;
   if (cut.innerWallLines > 0)
-    std::printf("inner wall lines: %d (the cut went through the marrow cavity too)\n", cut.innerWallLines);
+  {
+    std::snprintf(line, sizeof line, "inner wall lines: %d (the cut went through the marrow cavity too)\n",
+      cut.innerWallLines);
+    text += line;
+  }
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
-    std::printf("piece %zu: %lld points, %lld faces%s", p, static_cast<long long>(pieces[p]->GetNumberOfPoints()),
-      static_cast<long long>(pieces[p]->GetNumberOfPolys()), lkapp::pieceFactsText(factsOf(p)).c_str());
+    std::snprintf(line, sizeof line, "piece %zu: %lld points, %lld faces%s", p,
+      static_cast<long long>(pieces[p]->GetNumberOfPoints()), static_cast<long long>(pieces[p]->GetNumberOfPolys()),
+      lkapp::pieceFactsText(factsOf(p)).c_str());
+    text += line;
     if (vtkDataArray* d = pieces[p]->GetPointData()->GetArray("Displacement"))
     {
-      std::printf(", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
+      std::snprintf(line, sizeof line, ", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
         static_cast<int>(pieces[p]->GetCellData()->GetArray("Level")->GetRange()[1]));
+      text += line;
     }
-    std::printf("\n");
+    text += "\n";
   }
   if (cut.loops)
-    std::printf("%s", lkapp::lineFactsText(lkapp::lineFacts(cut.loops)).c_str());
+    text += lkapp::lineFactsText(lkapp::lineFacts(cut.loops));
   for (std::size_t i = 0; i < session.deformations.size(); ++i)
   {
     const Deformation& d = session.deformations[i];
-    std::printf("deformation %zu: %s on piece %d at (%.2f, %.2f, %.2f), radius %.2f", i, d.tool.c_str(), d.piece,
-      d.centre[0], d.centre[1], d.centre[2], d.radius);
+    std::snprintf(line, sizeof line, "deformation %zu: %s on piece %d at (%.2f, %.2f, %.2f), radius %.2f", i,
+      d.tool.c_str(), d.piece, d.centre[0], d.centre[1], d.centre[2], d.radius);
+    text += line;
     if (d.tool == "smooth")
-      std::printf(", %d iterations\n", d.iterations);
+      std::snprintf(line, sizeof line, ", %d iterations\n", d.iterations);
     else
-      std::printf(", amount %.3f\n", d.amount);
+      std::snprintf(line, sizeof line, ", amount %.3f\n", d.amount);
+    text += line;
   }
+  text += segmentText();
+  std::istringstream lines(message);
+  for (std::string m; std::getline(lines, m);)
+    text += "message: " + m + "\n";
+  return text;
+}
+
+void Planner::report()
+{
+  std::printf("%s", planText().c_str());
   if (!frameMs.empty())
   {
     // What a user waits for per mouse move (printed, never asserted).
@@ -781,10 +803,6 @@ void Planner::report()
   }
   if (latticeFits + latticesReused > 0)
     std::printf("lattice fits: %zu (%zu kept from an earlier fit of the same piece)\n", latticeFits, latticesReused);
-  std::printf("%s", segmentText().c_str());
-  std::istringstream lines(message);
-  for (std::string line; std::getline(lines, line);)
-    std::printf("message: %s\n", line.c_str());
 }
 
 bool Planner::exportPieces(const std::string& folder, std::string& error)
@@ -816,17 +834,22 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   for (const auto& [mesh, name] : { std::make_pair(cut.surface, "surface.vtp"), std::make_pair(cut.loops, "cut_lines.vtp") })
     if (mesh && !lkapp::writeMesh(mesh, folder + "/" + name, error))
       return false;
+  // What the plan is, and the session that replays it beside the files.
+  std::vector<std::pair<std::string, std::string>> texts{ { "plan.txt", planText() } };
   if (hasSegment())
+    texts.emplace_back("segment_transform.txt", segmentText());
+  for (const auto& [name, text] : texts)
   {
-    std::ofstream out(folder + "/segment_transform.txt");
-    out << segmentText();
+    std::ofstream out(folder + "/" + name);
+    out << text;
+    out.close();
     if (!out)
     {
-      error = "cannot write '" + folder + "/segment_transform.txt'";
+      error = "cannot write '" + folder + "/" + name + "'";
       return false;
     }
   }
-  return true;
+  return saveSession(session, folder + "/session.json", error);
 }
 
 bool Planner::screenshot(const std::string& path)

@@ -224,7 +224,21 @@ public:
 
   void showStroke();
 
+  /// The plan as the batch report and the export give it: the strokes, each
+  /// piece (closed, volume, deformation), each cut line's length, centre and
+  /// plane with the distances and angles between them, the deformations, the
+  /// segment's move, and the messages. No timings.
+  std::string planText();
+
+  /// Prints planText(), then what the run cost (deformation frames, lattice
+  /// fits reused).
   void report();
+
+  /// Writes every piece (STL, VTP, OBJ; the segment where the plan moved it),
+  /// the surface the cut was made on (surface.vtp), the lines it took
+  /// (cut_lines.vtp), the plan (plan.txt, planText()), the session that
+  /// replays it (session.json) and, with a moved segment, its transform
+  /// (segment_transform.txt).
 
   bool exportPieces(const std::string& folder, std::string& error);
 
