@@ -257,9 +257,26 @@ bool Planner::addSawStroke(const std::array<double, 3>& origin, const std::array
     why = "the saw line's plane meets the bone there in no closed loop (at an open border of the surface?)";
     return false;
   }
-  const auto stroke = lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], 0.5 * joinTolerance, 0.0);
-  session.strokes.push_back({ vtkLKStrokeFeatureLineFilter::SPLIT, stroke });
+  Stroke saw;
+  saw.mode = vtkLKStrokeFeatureLineFilter::SPLIT;
+  saw.points = lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], 0.5 * joinTolerance, 0.0);
+  saw.saw = true;
+  saw.sawOrigin = origin;
+  saw.sawNormal = normal;
+  session.strokes.push_back(saw);
   return true;
+}
+
+std::vector<std::array<double, 3>> Planner::sawPoints(const Stroke& st, std::string& why) const
+{
+  const auto loops = lkapp::planeSectionLoops(bone, st.sawOrigin, st.sawNormal);
+  const int nearest = lkapp::nearestLoop(loops, st.points.empty() ? st.sawOrigin : st.points.front());
+  if (nearest < 0)
+  {
+    why = "its plane meets this bone in no closed loop; the line as it was drawn is used";
+    return st.points;
+  }
+  return lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], 0.5 * joinTolerance, 0.0);
 }
 
 bool Planner::addStroke(const std::vector<std::array<double, 3>>& points)
@@ -297,9 +314,15 @@ void Planner::computeCut()
   {
     cut.lastLineOpen = false;
     const Stroke& st = session.strokes[i];
-    const std::string which = "stroke " + std::to_string(i + 1) + " (" + modeName(st.mode) + ")";
+    const std::string which = "stroke " + std::to_string(i + 1) + " (" + (st.saw ? "saw line" : modeName(st.mode)) + ")";
+    // A saw line follows its plane's section of this bone (the same points
+    // as when it was drawn on the same bone).
+    std::string sawWhy;
+    const std::vector<std::array<double, 3>> points = st.saw ? sawPoints(st, sawWhy) : st.points;
+    if (!sawWhy.empty())
+      addLine(cut.message, which + ": " + sawWhy);
     vtkNew<vtkPoints> pts;
-    for (const auto& p : st.points)
+    for (const auto& p : points)
       pts->InsertNextPoint(p.data());
     vtkNew<vtkPolyData> stroke;
     stroke->SetPoints(pts);
@@ -769,6 +792,17 @@ std::string Planner::planText()
   }
   if (cut.loops)
     text += lkapp::lineFactsText(lkapp::lineFacts(cut.loops));
+  for (std::size_t i = 0; i < session.strokes.size(); ++i)
+  {
+    const Stroke& st = session.strokes[i];
+    if (!st.saw)
+      continue;
+    const double length = std::hypot(st.sawNormal[0], st.sawNormal[1], st.sawNormal[2]);
+    std::snprintf(line, sizeof line, "saw plane of stroke %zu: through (%.2f, %.2f, %.2f), normal (%.3f, %.3f, %.3f)\n",
+      i + 1, st.sawOrigin[0], st.sawOrigin[1], st.sawOrigin[2], st.sawNormal[0] / length, st.sawNormal[1] / length,
+      st.sawNormal[2] / length);
+    text += line;
+  }
   for (std::size_t i = 0; i < session.deformations.size(); ++i)
   {
     const Deformation& d = session.deformations[i];

@@ -146,6 +146,11 @@ public:
   bool addSawStroke(const std::array<double, 3>& origin, const std::array<double, 3>& normal,
     const std::array<double, 3>& onBone, std::string& why);
 
+  /// A saw line's points on this bone: its plane's section, the loop through
+  /// (or nearest) its first point, traced as addSawStroke does. Without a
+  /// loop, its stored points, and `why` says so.
+  std::vector<std::array<double, 3>> sawPoints(const Stroke& st, std::string& why) const;
+
   /// The ends of the last stroke while its line is open and can be continued
   /// (empty otherwise): shown as markers of joinTolerance's radius.
   std::vector<std::array<double, 3>> openEnds() const;

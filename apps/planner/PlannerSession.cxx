@@ -27,6 +27,9 @@ std::string cutKey(const Session& s)
     os << st.mode << ":";
     for (const auto& p : st.points)
       os << p[0] << "," << p[1] << "," << p[2] << ";";
+    if (st.saw)
+      os << "saw" << st.sawOrigin[0] << "," << st.sawOrigin[1] << "," << st.sawOrigin[2] << "," << st.sawNormal[0]
+         << "," << st.sawNormal[1] << "," << st.sawNormal[2];
     os << "|";
   }
   os << s.cut << s.capping;
@@ -77,6 +80,11 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
       for (double c : p)
         jp.append(c);
       js["points"].append(jp);
+    }
+    if (st.saw)
+    {
+      js["saw"]["origin"] = triple(st.sawOrigin);
+      js["saw"]["normal"] = triple(st.sawNormal);
     }
     root["strokes"].append(js);
   }
@@ -179,6 +187,22 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
         return false;
       }
       st.points.push_back(p);
+    }
+    if (js.isMember("saw"))
+    {
+      const Json::Value& saw = js["saw"];
+      if (!saw.isObject() || !jsonNumbers(saw["origin"], st.sawOrigin) || !jsonNumbers(saw["normal"], st.sawNormal) ||
+        !(std::hypot(st.sawNormal[0], st.sawNormal[1], st.sawNormal[2]) > 0.0))
+      {
+        error = where + ": \"saw\" must be {\"origin\": [x, y, z], \"normal\": [x, y, z]} with a non-zero normal";
+        return false;
+      }
+      if (st.mode != vtkLKStrokeFeatureLineFilter::SPLIT)
+      {
+        error = where + " is a saw line, which cuts in split mode, but its mode is '" + mode + "'";
+        return false;
+      }
+      st.saw = true;
     }
     s.strokes.push_back(st);
   }

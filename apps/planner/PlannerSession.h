@@ -6,7 +6,10 @@
 // normal and amount:
 //
 //   "strokes":  [{"mode": "paint" | "nearest" | "snap" | "split",
-//                 "points": [[x, y, z], ...]}, ...]   patient mm, on the surface
+//                 "points": [[x, y, z], ...],         patient mm, on the surface
+//                 "saw": {"origin": [x, y, z],        a saw line (split mode): its
+//                         "normal": [x, y, z]}}, ...] plane; the points are the
+//                                                     bone's section there
 //   "cut": bool, "capping": bool (default true)       the closed lines cut, capped
 //   "lattice": bool, "latticeVertices": 4 to 1e8      a lattice per piece (600)
 //   "metro": bool                                     Metro colours on the lattices
@@ -38,6 +41,12 @@ struct Stroke
 {
   int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
   std::vector<std::array<double, 3>> points;
+  /// A saw line's plane (split mode): the cut follows the bone's section by
+  /// it, traced again on the bone at every replay (the loop through the
+  /// first point, or nearest it), so the cut stays flat on a surface made
+  /// again with other settings. The points are the section when it was drawn.
+  bool saw = false;
+  std::array<double, 3> sawOrigin{ 0, 0, 0 }, sawNormal{ 0, 0, 1 };
 };
 
 /// One deformation of the adaptive micro planar patches (seed 002) on a
