@@ -37,7 +37,8 @@ void usage(std::ostream& os)
         "                     (latticekit-demo writes mandible.vtp and cut_line.vtp so)\n"
         "  --open             no caps: the pieces keep open borders along the lines\n"
         "  --no-inner-walls   only the lines themselves are cut, never the inner walls\n"
-        "  --pieces FOLDER    also write each piece as FOLDER/pieceN.stl, .vtp and .obj\n"
+        "  --pieces FOLDER    also write each piece as FOLDER/pieceN.stl, .vtp and .obj (and\n"
+        "                     remove pieceN files an earlier run left there beyond this cut's)\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
 }
@@ -160,6 +161,12 @@ int main(int argc, char* argv[])
         std::cerr << "error: " << error << "\n";
         return 1;
       }
+  }
+  if (!piecesFolder.empty() &&
+    !lkapp::removeStaleExports(piecesFolder, static_cast<std::size_t>(cut->GetNumberOfPieces()), {}, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
   }
   std::printf("written          %s (%lld bytes)%s\n", output.c_str(), lkapp::fileBytes(output),
     piecesFolder.empty() ? "" : (", and the pieces in " + piecesFolder).c_str());

@@ -303,6 +303,36 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   return result;
 }
 
+bool removeStaleExports(const std::string& folder, std::size_t pieces, const std::vector<std::string>& others,
+  std::string& error)
+{
+  std::vector<std::string> stale;
+  for (std::size_t p = pieces;; ++p)
+  {
+    bool any = false;
+    for (const char* ext : { ".stl", ".vtp", ".obj" })
+    {
+      const std::string path = folder + "/piece" + std::to_string(p) + ext;
+      if (vtksys::SystemTools::FileExists(path, true))
+      {
+        stale.push_back(path);
+        any = true;
+      }
+    }
+    if (!any)
+      break;
+  }
+  for (const std::string& name : others)
+    stale.push_back(folder + "/" + name);
+  for (const std::string& path : stale)
+    if (vtksys::SystemTools::FileExists(path, true) && !vtksys::SystemTools::RemoveFile(path))
+    {
+      error = "cannot remove '" + path + "', which an earlier export left and this one does not make";
+      return false;
+    }
+  return true;
+}
+
 bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
 {
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));

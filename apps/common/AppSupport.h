@@ -63,6 +63,14 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
 bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error);
 /// The extensions writeMesh accepts, for help texts.
 const char* meshExtensions();
+/// Removes what an earlier export left in `folder` of the pieces a tool
+/// writes there (pieceN.stl, .vtp, .obj) with N >= `pieces`, from N = `pieces`
+/// on while any of the three exists, and the files in `others` (names in
+/// the folder) that exist: a re-export of a plan with fewer pieces must not
+/// leave the old ones beside its own. Nothing else is touched. False with
+/// `error` if a file cannot be removed.
+bool removeStaleExports(const std::string& folder, std::size_t pieces, const std::vector<std::string>& others,
+  std::string& error);
 /// Size of a file in bytes (0 when it does not exist).
 long long fileBytes(const std::string& path);
 /// The first value of a field-data array of `pd` (0 when there is none): the

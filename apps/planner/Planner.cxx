@@ -887,36 +887,15 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     return false;
   // An earlier export to the same folder can have left files this plan does
   // not make (more pieces, cut lines, a moved segment's transform): they go,
-  // so that the folder holds this plan only. Only names written here count.
-  std::vector<std::string> stale;
-  for (std::size_t p = pieces.size();; ++p)
-  {
-    bool any = false;
-    for (const char* ext : { ".stl", ".vtp", ".obj" })
-    {
-      const std::string path = folder + "/piece" + std::to_string(p) + ext;
-      if (vtksys::SystemTools::FileExists(path, true))
-      {
-        stale.push_back(path);
-        any = true;
-      }
-    }
-    if (!any)
-      break;
-  }
+  // so that the folder holds this plan only.
+  std::vector<std::string> others;
   if (!cut.surface)
-    stale.push_back(folder + "/surface.vtp");
+    others.push_back("surface.vtp");
   if (!cut.loops)
-    stale.push_back(folder + "/cut_lines.vtp");
+    others.push_back("cut_lines.vtp");
   if (!hasSegment())
-    stale.push_back(folder + "/segment_transform.txt");
-  for (const std::string& path : stale)
-    if (vtksys::SystemTools::FileExists(path, true) && !vtksys::SystemTools::RemoveFile(path))
-    {
-      error = "cannot remove '" + path + "', which an earlier export left and this plan does not have";
-      return false;
-    }
-  return true;
+    others.push_back("segment_transform.txt");
+  return lkapp::removeStaleExports(folder, pieces.size(), others, error);
 }
 
 bool Planner::screenshot(const std::string& path)
