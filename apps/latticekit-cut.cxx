@@ -134,7 +134,8 @@ int main(int argc, char* argv[])
   std::printf("input            %lld points, %lld faces; %s\n", static_cast<long long>(mesh->GetNumberOfPoints()),
     static_cast<long long>(mesh->GetNumberOfPolys()),
     lines ? ("lines from " + linesPath).c_str() : "its own line cells");
-  std::printf("cut              %d pieces, %s%s, %.3f s\n", cut->GetNumberOfPieces(), capping ? "capped" : "open",
+  std::printf("cut              %d %s, %s%s, %.3f s\n", cut->GetNumberOfPieces(),
+    cut->GetNumberOfPieces() == 1 ? "piece" : "pieces", capping ? "capped" : "open",
     cut->GetNumberOfInnerWallLines() > 0
       ? (", also through the inner walls (" + std::to_string(cut->GetNumberOfInnerWallLines()) + " lines)").c_str()
       : "",

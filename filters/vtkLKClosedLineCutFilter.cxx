@@ -155,6 +155,10 @@ int vtkLKClosedLineCutFilter::RequestData(
                       << " through each other), so the piece is not a valid solid. A cap crosses the "
                          "surface where a line is far from planar, and two caps overlap where nested lines could "
                          "not share one cap.");
+  if (cut.emptyPieces > 0)
+    vtkWarningMacro(<< cut.emptyPieces << (cut.emptyPieces == 1 ? " region" : " regions")
+                    << " between the lines held only faces that their cap covers exactly (a line around one or two "
+                       "triangles encloses nothing): no piece for them.");
   for (std::size_t p = 0; p < cut.capNonManifoldEdges.size(); ++p)
     if (cut.capNonManifoldEdges[p] > 0)
       vtkWarningMacro(<< "Piece " << p << ": " << cut.capNonManifoldEdges[p]

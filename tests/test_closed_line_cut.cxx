@@ -6,10 +6,12 @@
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKMedicalImageReader.h"
 
+#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkThreshold.h>
+#include <vtkXMLPolyDataReader.h>
 
 #include <set>
 
@@ -168,6 +170,60 @@ TEST(ClosedLineCut, OpenOrCrossingLinesAreClearErrors)
     std::string::npos)
     << errors3.messages;
   EXPECT_EQ(linesOnly->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+// A cut the planner's random sessions crashed on (tests/data/torus_saw_cut*):
+// on the coarse torus a saw line's loop and a loop of four vertices around
+// two triangles. The cap of the small loop covers the two triangles exactly
+// (its region is left with no face), and a cap triangle of the other lay on
+// two edges with more than two faces: split for the first, it was then
+// searched for the second, past its three vertices. Now the piece without a
+// face is no piece (warned), and every face of the result is a valid one.
+TEST(ClosedLineCut, ALoopAroundTwoTrianglesGivesNoEmptyPiece)
+{
+  auto read = [](const std::string& name) {
+    vtkNew<vtkXMLPolyDataReader> r;
+    r->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/" + name).c_str());
+    r->Update();
+    vtkSmartPointer<vtkPolyData> pd = r->GetOutput();
+    return pd;
+  };
+  auto mesh = read("torus_saw_cut.vtp");
+  auto lines = read("torus_saw_cut_lines.vtp");
+  ASSERT_GT(mesh->GetNumberOfPolys(), 0);
+  ASSERT_EQ(lines->GetNumberOfLines(), 2);
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputData(mesh);
+  cut->SetLinesData(lines);
+  cut->SetCapping(true);
+  lktest::ErrorRecorder errors(cut);
+  cut->Update();
+  ASSERT_EQ(errors.errors, 0) << errors.messages;
+  EXPECT_EQ(cut->GetNumberOfPieces(), 1);
+  EXPECT_NE(errors.warningMessages.find("held only faces that their cap covers exactly"), std::string::npos)
+    << errors.warningMessages;
+  vtkPolyData* out = cut->GetOutput();
+  vtkDataArray* region = out->GetCellData()->GetArray("RegionId");
+  ASSERT_NE(region, nullptr);
+  EXPECT_EQ(region->GetRange()[0], 0.0);
+  EXPECT_EQ(region->GetRange()[1], 0.0);
+  auto it = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
+  vtkIdType faces = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++faces)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    ASSERT_EQ(n, 3);
+    const std::set<vtkIdType> distinct(ids, ids + n);
+    EXPECT_EQ(distinct.size(), 3u) << "face " << faces;
+    for (vtkIdType k = 0; k < n; ++k)
+      ASSERT_TRUE(ids[k] >= 0 && ids[k] < out->GetNumberOfPoints()) << "face " << faces;
+  }
+  EXPECT_GT(faces, mesh->GetNumberOfPolys());
+  // The field data has one value per piece returned.
+  ASSERT_NE(out->GetFieldData()->GetArray("CapNonManifoldEdges"), nullptr);
+  EXPECT_EQ(out->GetFieldData()->GetArray("CapNonManifoldEdges")->GetNumberOfTuples(), 1);
 }
 
 #include "vtkLKStrokeFeatureLineFilter.h"

@@ -222,45 +222,68 @@ void markCapPockets(const PolygonMesh& piece, const std::vector<std::int64_t>& f
 void splitOverfullCapEdges(PolygonMesh& piece, std::vector<std::int64_t>& faceOrigin,
   std::vector<std::int64_t>& vertexOrigin, const std::vector<char>& inputOnLoop, std::vector<std::size_t>& near)
 {
-  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOf;
-  {
-    const LoopVertices onLoop{ vertexOrigin, inputOnLoop };
-    for (const auto f : near)
+  // Whether face f runs along the edge {a, b} (either way).
+  auto holds = [&](std::size_t f, std::int64_t a, std::int64_t b) {
+    const auto& face = piece.faces[f];
+    for (std::size_t k = 0; k < face.size(); ++k)
     {
-      const auto& face = piece.faces[f];
-      for (std::size_t k = 0; k < face.size(); ++k)
+      const auto u = face[k], v = face[(k + 1) % face.size()];
+      if ((u == a && v == b) || (u == b && v == a))
+        return true;
+    }
+    return false;
+  };
+  // A cap triangle can lie on two such edges: split for the first, it no
+  // longer holds the second, whose faces are then found again in the next
+  // round (the new vertex is on no loop, so each round has fewer edges).
+  for (bool again = true; again;)
+  {
+    again = false;
+    std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> facesOf;
+    {
+      const LoopVertices onLoop{ vertexOrigin, inputOnLoop };
+      for (const auto f : near)
       {
-        const auto a = face[k], b = face[(k + 1) % face.size()];
-        if (onLoop(a) && onLoop(b))
-          facesOf[{ std::min(a, b), std::max(a, b) }].push_back(f);
+        const auto& face = piece.faces[f];
+        for (std::size_t k = 0; k < face.size(); ++k)
+        {
+          const auto a = face[k], b = face[(k + 1) % face.size()];
+          if (onLoop(a) && onLoop(b))
+            facesOf[{ std::min(a, b), std::max(a, b) }].push_back(f);
+        }
       }
     }
-  }
-  for (const auto& [edge, fs] : facesOf)
-  {
-    if (fs.size() <= 2)
-      continue;
-    std::vector<std::size_t> capFaces;
-    for (const auto f : fs)
-      if (faceOrigin[f] < 0 && piece.faces[f].size() == 3)
-        capFaces.push_back(f);
-    if (capFaces.empty() || capFaces.size() == fs.size())
-      continue;
-    const auto m = static_cast<std::int64_t>(piece.points.size());
-    piece.points.push_back(0.5 * (piece.points[static_cast<std::size_t>(edge.first)] +
-                              piece.points[static_cast<std::size_t>(edge.second)]));
-    vertexOrigin.push_back(-1);
-    for (const auto f : capFaces)
+    for (const auto& [edge, fs] : facesOf)
     {
-      const auto t = piece.faces[f];
-      std::size_t k = 0;
-      while (!((t[k] == edge.first || t[k] == edge.second) && (t[(k + 1) % 3] == edge.first || t[(k + 1) % 3] == edge.second)))
-        ++k;
-      const auto u = t[k], v = t[(k + 1) % 3], w = t[(k + 2) % 3];
-      piece.faces[f] = { u, m, w };
-      near.push_back(piece.faces.size());
-      piece.faces.push_back({ m, v, w });
-      faceOrigin.push_back(-1);
+      if (fs.size() <= 2)
+        continue;
+      if (!std::all_of(fs.begin(), fs.end(), [&](std::size_t f) { return holds(f, edge.first, edge.second); }))
+      {
+        again = true; // a face here was split this round
+        continue;
+      }
+      std::vector<std::size_t> capFaces;
+      for (const auto f : fs)
+        if (faceOrigin[f] < 0 && piece.faces[f].size() == 3)
+          capFaces.push_back(f);
+      if (capFaces.empty() || capFaces.size() == fs.size())
+        continue;
+      const auto m = static_cast<std::int64_t>(piece.points.size());
+      piece.points.push_back(0.5 * (piece.points[static_cast<std::size_t>(edge.first)] +
+                                piece.points[static_cast<std::size_t>(edge.second)]));
+      vertexOrigin.push_back(-1);
+      for (const auto f : capFaces)
+      {
+        const auto t = piece.faces[f];
+        std::size_t k = 0;
+        while (!((t[k] == edge.first || t[k] == edge.second) && (t[(k + 1) % 3] == edge.first || t[(k + 1) % 3] == edge.second)))
+          ++k; // holds() found it: k < 3
+        const auto u = t[k], v = t[(k + 1) % 3], w = t[(k + 2) % 3];
+        piece.faces[f] = { u, m, w };
+        near.push_back(piece.faces.size());
+        piece.faces.push_back({ m, v, w });
+        faceOrigin.push_back(-1);
+      }
     }
   }
 }
@@ -887,6 +910,33 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
     std::tie(result.capCrossings[p], result.capCrossingDepths[p]) =
       cut::capCrossings(result.pieces[p], result.faceOrigin[p]);
   }
+  // A piece whose faces all coincided with its cap's triangles (a loop
+  // around one or two triangles) has none left: it is no piece.
+  std::size_t kept = 0;
+  for (std::size_t p = 0; p < result.pieces.size(); ++p)
+  {
+    if (result.pieces[p].faces.empty())
+    {
+      ++result.emptyPieces;
+      continue;
+    }
+    if (kept != p)
+    {
+      result.pieces[kept] = std::move(result.pieces[p]);
+      result.vertexOrigin[kept] = std::move(result.vertexOrigin[p]);
+      result.faceOrigin[kept] = std::move(result.faceOrigin[p]);
+      result.capCrossings[kept] = result.capCrossings[p];
+      result.capCrossingDepths[kept] = result.capCrossingDepths[p];
+      result.capNonManifoldEdges[kept] = result.capNonManifoldEdges[p];
+    }
+    ++kept;
+  }
+  result.capCrossings.resize(kept);
+  result.capNonManifoldEdges.resize(kept);
+  result.pieces.resize(kept);
+  result.vertexOrigin.resize(kept);
+  result.faceOrigin.resize(kept);
+  result.capCrossingDepths.resize(kept);
   return result;
 }
 

@@ -57,6 +57,10 @@ struct CutResult
   std::vector<std::size_t> capNonManifoldEdges;
   /// Loops added on inner walls (see throughInnerWalls); 0 when none were needed.
   std::size_t innerWallLoops = 0;
+  /// Capped pieces left without a face, which are not returned: every face
+  /// of the region was spanned by loop vertices and coincided with a cap
+  /// triangle (a loop around one or two triangles encloses nothing).
+  std::size_t emptyPieces = 0;
 };
 
 /// Cuts along the loops (vertex ids; a loop may repeat its first vertex at
