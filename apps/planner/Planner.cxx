@@ -259,7 +259,7 @@ bool Planner::addSawStroke(const std::array<double, 3>& origin, const std::array
   }
   Stroke saw;
   saw.mode = vtkLKStrokeFeatureLineFilter::SPLIT;
-  saw.points = lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], 0.5 * joinTolerance, 0.0);
+  saw.points = lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], sawStep(), 0.0);
   saw.saw = true;
   saw.sawOrigin = origin;
   saw.sawNormal = normal;
@@ -276,7 +276,7 @@ std::vector<std::array<double, 3>> Planner::sawPoints(const Stroke& st, std::str
     why = "its plane meets this bone in no closed loop; the line as it was drawn is used";
     return st.points;
   }
-  return lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], 0.5 * joinTolerance, 0.0);
+  return lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], sawStep(), 0.0);
 }
 
 bool Planner::addStroke(const std::vector<std::array<double, 3>>& points)

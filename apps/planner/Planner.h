@@ -139,8 +139,8 @@ public:
 
   /// A saw line: the osteotomy plane (origin, normal) seen edge-on, and a
   /// point on the bone under the line. The plane's section of the bone
-  /// nearest that point becomes a closed split-mode stroke (a point about
-  /// every mean edge length, on the section), so the cut is flat and its
+  /// nearest that point becomes a closed split-mode stroke (every point of
+  /// the section: sawStep), so the cut is flat and its
   /// cap too. Returns false, with the reason, when the plane meets the bone
   /// there in no closed loop.
   bool addSawStroke(const std::array<double, 3>& origin, const std::array<double, 3>& normal,
@@ -150,6 +150,14 @@ public:
   /// (or nearest) its first point, traced as addSawStroke does. Without a
   /// loop, its stored points, and `why` says so.
   std::vector<std::array<double, 3>> sawPoints(const Stroke& st, std::string& why) const;
+
+  /// The spacing of a saw line's points: none, every point of the section
+  /// (where the plane crosses a mesh edge) is kept. Consecutive points then
+  /// share a face, and the split follows the plane exactly. With fewer (one
+  /// every half join radius, or only those a hundredth of it apart) the
+  /// split's walk between points turned back, or found no face ahead, where
+  /// the plane passes close to vertices (a capped piece's rim).
+  static constexpr double sawStep() { return 0.0; }
 
   /// The ends of the last stroke while its line is open and can be continued
   /// (empty otherwise): shown as markers of joinTolerance's radius.
