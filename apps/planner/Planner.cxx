@@ -32,6 +32,7 @@
 #include <vtkProperty2D.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkSphereSource.h>
+#include <vtkStaticPointLocator.h>
 #include <vtkMath.h>
 #include <vtkProperty.h>
 #include <vtkTextProperty.h>
@@ -486,6 +487,7 @@ void Planner::rebuild()
   sceneActors.clear();
   scalarBar->SetVisibility(false);
   computeCut();
+  followSegment();
   message = cut.message;
   cutFailed = cut.failed;
   for (const auto& [line, shade] : cut.lines)
@@ -556,6 +558,69 @@ void Planner::rebuild()
       std::to_string(pieces.size()) + " piece(s)");
   placeSegment(session.segmentMatrix);
   updateStatus();
+}
+
+std::array<double, 3> Planner::anchorOf(std::size_t p) const
+{
+  // The point of the piece farthest from every other piece: away from the
+  // cut lines and caps (whose points the pieces beside share), so that no
+  // other piece of a cut made anew lies as near it.
+  vtkNew<vtkPoints> others;
+  for (std::size_t q = 0; q < cut.pieces.size(); ++q)
+    if (q != p)
+      for (vtkIdType i = 0; i < cut.pieces[q]->GetNumberOfPoints(); ++i)
+        others->InsertNextPoint(cut.pieces[q]->GetPoint(i));
+  vtkPolyData* piece = cut.pieces[p];
+  std::array<double, 3> best{ 0, 0, 0 };
+  if (piece->GetNumberOfPoints() == 0)
+    return best;
+  piece->GetPoint(0, best.data());
+  if (others->GetNumberOfPoints() == 0)
+    return best;
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(others);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  double farthest = -1.0;
+  for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+  {
+    double x[3], y[3];
+    piece->GetPoint(i, x);
+    others->GetPoint(locator->FindClosestPoint(x), y);
+    const double d = vtkMath::Distance2BetweenPoints(x, y);
+    if (d > farthest)
+    {
+      farthest = d;
+      best = { x[0], x[1], x[2] };
+    }
+  }
+  return best;
+}
+
+void Planner::followSegment()
+{
+  if (session.segment < 0 || !session.segmentAnchored || cut.pieces.empty())
+    return;
+  int best = -1;
+  double nearest = VTK_DOUBLE_MAX;
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p)
+    for (vtkIdType i = 0; i < cut.pieces[p]->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      cut.pieces[p]->GetPoint(i, x);
+      const double d = vtkMath::Distance2BetweenPoints(x, session.segmentAnchor.data());
+      if (d < nearest)
+      {
+        nearest = d;
+        best = static_cast<int>(p);
+      }
+    }
+  if (best >= 0 && best != session.segment)
+  {
+    notice = "the cut numbers its pieces anew: the segment is now piece " + std::to_string(best);
+    session.segment = best;
+  }
 }
 
 std::string Planner::summaryOfCut()

@@ -117,6 +117,15 @@ public:
 
   bool hasSegment() const { return session.segment >= 0 && session.segment < static_cast<int>(pieces.size()); }
 
+  /// Where piece p of the cut lies: its point farthest from every other
+  /// piece (on its surface, before deformations and the segment's move).
+  std::array<double, 3> anchorOf(std::size_t p) const;
+
+  /// After a changed cut: the segment becomes the piece nearest its anchor
+  /// (its number can change when a line is added or taken away), and the
+  /// notice says so. Nothing without an anchor (an older session).
+  void followSegment();
+
   vtkSmartPointer<vtkMatrix4x4> segmentMatrix() const;
 
   /// Shows the segment where its transform puts it.

@@ -98,6 +98,8 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
     root["segment"]["piece"] = s.segment;
     for (double v : s.segmentMatrix)
       root["segment"]["matrix"].append(v);
+    if (s.segmentAnchored)
+      root["segment"]["at"] = triple(s.segmentAnchor);
   }
   for (const Deformation& d : s.deformations)
   {
@@ -228,6 +230,15 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
     }
     s.segment = static_cast<int>(piece);
     s.segmentMatrix = m;
+    if (seg.isMember("at"))
+    {
+      if (!jsonNumbers(seg["at"], s.segmentAnchor))
+      {
+        error = "the segment in '" + path + "': \"at\" must be [x, y, z]";
+        return false;
+      }
+      s.segmentAnchored = true;
+    }
   }
   const Json::Value& deformations = root["deformations"];
   if (!deformations.isNull() && !deformations.isArray())

@@ -13,7 +13,8 @@
 //   "cut": bool, "capping": bool (default true)       the closed lines cut, capped
 //   "lattice": bool, "latticeVertices": 4 to 1e8      a lattice per piece (600)
 //   "metro": bool                                     Metro colours on the lattices
-//   "segment": {"piece": i, "matrix": [16 numbers]}   the moved piece, row-major 4x4
+//   "segment": {"piece": i, "matrix": [16 numbers],   the moved piece, row-major 4x4,
+//               "at": [x, y, z]}                      and a point of it (see below)
 //   "deformations": [{"tool": "bump" | "box" | "smooth", "piece": i,
 //                     "centre": [x, y, z], "radius": r > 0,
 //                     "normal": [x, y, z], "amount": k,   (bump, box)
@@ -79,6 +80,11 @@ struct Session
   /// transform, row-major 4x4 (the surgery moves the segment).
   int segment = -1;
   std::array<double, 16> segmentMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  /// A point of the segment's surface (before its move), kept when it is
+  /// picked: pieces are numbered in cut order, and a changed cut can number
+  /// them anew, so the segment follows the piece nearest this point.
+  bool segmentAnchored = false;
+  std::array<double, 3> segmentAnchor{ 0, 0, 0 };
   /// Applied in order to the pieces after the cut, before the lattice.
   std::vector<Deformation> deformations;
   /// How a CT's bone surface was made (saved with the session, so that its

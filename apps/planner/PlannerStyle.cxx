@@ -490,6 +490,8 @@ void PlannerStyle::OnChar()
       planner->remember();
       s.segment = at == bySize.end() || at + 1 == bySize.end() ? bySize.front() : *(at + 1);
       s.segmentMatrix = Session().segmentMatrix;
+      s.segmentAnchored = true;
+      s.segmentAnchor = planner->anchorOf(static_cast<std::size_t>(s.segment));
       planner->placeSegment(s.segmentMatrix);
       planner->message.clear();
     }
