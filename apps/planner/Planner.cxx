@@ -248,19 +248,17 @@ std::vector<std::array<double, 3>> Planner::openEnds() const
 bool Planner::addSawStroke(const std::array<double, 3>& origin, const std::array<double, 3>& normal,
   const std::array<double, 3>& onBone, std::string& why)
 {
-  const auto loops = lkapp::planeSectionLoops(bone, origin, normal);
   // The point under the line lies on the plane and on the bone, so on the
   // section: a loop farther away is another part of the bone.
   double gap = 0.0;
-  const int nearest = lkapp::nearestLoop(loops, onBone, &gap);
-  if (nearest < 0 || gap > joinTolerance)
+  Stroke saw;
+  saw.points = sectionStroke(origin, normal, onBone, gap);
+  if (saw.points.empty() || gap > joinTolerance)
   {
     why = "the saw line's plane meets the bone there in no closed loop (at an open border of the surface?)";
     return false;
   }
-  Stroke saw;
   saw.mode = vtkLKStrokeFeatureLineFilter::SPLIT;
-  saw.points = lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], sawStep(), 0.0);
   saw.saw = true;
   saw.sawOrigin = origin;
   saw.sawNormal = normal;
@@ -268,16 +266,27 @@ bool Planner::addSawStroke(const std::array<double, 3>& origin, const std::array
   return true;
 }
 
+std::vector<std::array<double, 3>> Planner::sectionStroke(const std::array<double, 3>& origin,
+  const std::array<double, 3>& normal, const std::array<double, 3>& near, double& gap) const
+{
+  const auto loops = lkapp::planeSectionLoops(bone, origin, normal);
+  const int nearest = lkapp::nearestLoop(loops, near, &gap);
+  if (nearest < 0)
+    return {};
+  return lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], sawStep(), 0.0);
+}
+
 std::vector<std::array<double, 3>> Planner::sawPoints(const Stroke& st, std::string& why) const
 {
-  const auto loops = lkapp::planeSectionLoops(bone, st.sawOrigin, st.sawNormal);
-  const int nearest = lkapp::nearestLoop(loops, st.points.empty() ? st.sawOrigin : st.points.front());
-  if (nearest < 0)
+  double gap = 0.0;
+  std::vector<std::array<double, 3>> points =
+    sectionStroke(st.sawOrigin, st.sawNormal, st.points.empty() ? st.sawOrigin : st.points.front(), gap);
+  if (points.empty())
   {
     why = "its plane meets this bone in no closed loop; the line as it was drawn is used";
     return st.points;
   }
-  return lkapp::strokeAlongLoop(loops[static_cast<std::size_t>(nearest)], sawStep(), 0.0);
+  return points;
 }
 
 bool Planner::addStroke(const std::vector<std::array<double, 3>>& points)
@@ -416,6 +425,7 @@ void Planner::computeCut()
     whole->ShallowCopy(faces);
     cut.pieces.push_back(whole);
   }
+  followSegment(); // the pieces may be numbered anew
 }
 
 void Planner::addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
@@ -487,7 +497,6 @@ void Planner::rebuild()
   sceneActors.clear();
   scalarBar->SetVisibility(false);
   computeCut();
-  followSegment();
   message = cut.message;
   cutFailed = cut.failed;
   for (const auto& [line, shade] : cut.lines)

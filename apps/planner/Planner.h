@@ -121,7 +121,7 @@ public:
   /// piece (on its surface, before deformations and the segment's move).
   std::array<double, 3> anchorOf(std::size_t p) const;
 
-  /// After a changed cut: the segment becomes the piece nearest its anchor
+  /// After a cut made anew (computeCut): the segment becomes the piece nearest its anchor
   /// (its number can change when a line is added or taken away), and the
   /// notice says so. Nothing without an anchor (an older session).
   void followSegment();
@@ -154,6 +154,11 @@ public:
   /// there in no closed loop.
   bool addSawStroke(const std::array<double, 3>& origin, const std::array<double, 3>& normal,
     const std::array<double, 3>& onBone, std::string& why);
+
+  /// The plane's section of the bone as a stroke (sawStep): the loop with the
+  /// point nearest `near`, whose distance goes to `gap`. Empty without a loop.
+  std::vector<std::array<double, 3>> sectionStroke(const std::array<double, 3>& origin,
+    const std::array<double, 3>& normal, const std::array<double, 3>& near, double& gap) const;
 
   /// A saw line's points on this bone: its plane's section, the loop through
   /// (or nearest) its first point, traced as addSawStroke does. Without a
@@ -262,7 +267,6 @@ public:
   /// replays it (session.json) and, with a moved segment, its transform
   /// (segment_transform.txt). Files of these names that an earlier export
   /// left and this plan does not make (more pieces, say) are removed.
-
   bool exportPieces(const std::string& folder, std::string& error);
 
   bool screenshot(const std::string& path);
