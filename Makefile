@@ -8,8 +8,11 @@ DEMO_OUTPUT ?= latticekit-output
 demo: setup
 	xvfb-run -a build/bin/latticekit-demo -o $(DEMO_OUTPUT)
 
+# A failed test runs once more (its failed run stays in the log): a rendering
+# test under Xvfb crashed once in CI before printing anything (NOTES, "A crash
+# under Xvfb in CI"); a test that fails twice fails the run.
 test: setup
-	cd build && ctest --output-on-failure -j 2
+	cd build && ctest --output-on-failure -j 2 --repeat until-pass:2
 
 bench: setup
 	build/bin/bench_metro sample_data

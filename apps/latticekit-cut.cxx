@@ -47,6 +47,7 @@ void usage(std::ostream& os)
 
 int main(int argc, char* argv[])
 {
+  lkapp::installCrashReport("latticekit-cut");
   std::string input, output, linesPath, piecesFolder;
   bool quiet = false, capping = true, innerWalls = true;
   lkapp::Arguments args(argc, argv, usage);

@@ -485,6 +485,7 @@ bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBa
 
 int main(int argc, char* argv[])
 {
+  lkapp::installCrashReport("latticekit-demo");
   std::string input = std::string(LATTICEKIT_SOURCE_DIR) + "/sample_data/cthead/cthead_hu_approx.nii.gz";
   std::string planPath, folder = "latticekit-output";
   long vertices = 0;

@@ -87,6 +87,7 @@ bool samePoints(vtkPolyData* a, vtkPolyData* b)
 
 int main(int argc, char* argv[])
 {
+  lkapp::installCrashReport("latticekit-fit");
   std::string input, output, featuresIn, surfaceOut, mapOut;
   long vertices = 0, iterations = 8, resolution = 8, insertions = -1; // -1: 1 per 100 vertices
   double ratio = 0.0, maxError = 0.0, countTolerance = 0.01, k = 1000.0, kn = 100.0, tail = 10.0;

@@ -40,6 +40,7 @@ void usage(std::ostream& os)
 
 int main(int argc, char* argv[])
 {
+  lkapp::installCrashReport("latticekit-lattice");
   std::string input, output, netOut, latticeOut;
   long resolution = 8;
   bool quiet = false;

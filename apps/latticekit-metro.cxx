@@ -100,6 +100,7 @@ void printDirection(vtkPolyData* out, const char* title, const std::string& p)
 
 int main(int argc, char* argv[])
 {
+  lkapp::installCrashReport("latticekit-metro");
   std::vector<std::string> inputs;
   std::string colored;
   long samples = 0, seed = 5489;

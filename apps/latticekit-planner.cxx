@@ -70,6 +70,7 @@ void usage(std::ostream& os)
 
 int main(int argc, char* argv[])
 {
+  lkapp::installCrashReport("latticekit-planner");
   std::string input, replay, shot, exportFolder, events, sessionOut = "planner_session.json";
   double iso = 300.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool isoGiven = false, seeded = false, cropped = false;

@@ -53,6 +53,7 @@ void usage(std::ostream& os)
 
 int main(int argc, char* argv[])
 {
+  lkapp::installCrashReport("latticekit-surface");
   std::string input, output;
   double iso = 300.0, imageSmooth = -1.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool cropping = false;

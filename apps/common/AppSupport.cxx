@@ -28,6 +28,10 @@
 
 #include <X11/Xlib.h>
 
+#include <execinfo.h>
+#include <csignal>
+#include <cstring>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -43,6 +47,44 @@ namespace lkapp
 
 namespace
 {
+const char* g_tool = "latticekit";
+
+/// Only async-signal-safe calls: write(2), backtrace_symbols_fd (preloaded in
+/// installCrashReport), raise once the default action is back.
+void reportCrash(int signal)
+{
+  const char* name = signal == SIGSEGV ? "SIGSEGV, a bad memory access"
+    : signal == SIGBUS               ? "SIGBUS"
+    : signal == SIGFPE               ? "SIGFPE"
+    : signal == SIGILL               ? "SIGILL"
+                                     : "SIGABRT";
+  char number[8];
+  int n = 0;
+  for (int v = signal; v > 0 && n < 7; v /= 10)
+    number[n++] = static_cast<char>('0' + v % 10);
+  char line[256];
+  std::size_t at = 0;
+  auto add = [&](const char* text) {
+    for (; *text && at + 1 < sizeof(line); ++text)
+      line[at++] = *text;
+  };
+  add("\n");
+  add(g_tool);
+  add(": crashed (signal ");
+  while (n > 0 && at + 1 < sizeof(line))
+    line[at++] = number[--n];
+  add(", ");
+  add(name);
+  add("); the call stack:\n");
+  ssize_t ignored = write(STDERR_FILENO, line, at);
+  (void)ignored;
+  void* frames[64];
+  const int count = backtrace(frames, 64);
+  backtrace_symbols_fd(frames, count, STDERR_FILENO);
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
 std::vector<std::string> g_errors, g_warnings;
 bool g_quiet = false;
 
@@ -118,6 +160,21 @@ public:
 };
 vtkStandardNewMacro(AppOutputWindow);
 } // namespace
+
+void installCrashReport(const char* tool)
+{
+  g_tool = tool;
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
+  void* frame[1];
+  backtrace(frame, 1); // loads libgcc now: the handler must not
+  struct sigaction action;
+  std::memset(&action, 0, sizeof(action));
+  action.sa_handler = reportCrash;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND | SA_NODEFER;
+  for (int signal : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT })
+    sigaction(signal, &action, nullptr);
+}
 
 void installMessageHandler(bool quiet)
 {

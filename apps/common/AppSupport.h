@@ -17,6 +17,13 @@ class vtkPolyData;
 namespace lkapp
 {
 
+/// Makes a crash say where it happened: standard output becomes line-buffered
+/// (so that the lines a tool printed before a crash are not lost in a pipe),
+/// and a fatal signal (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) prints
+/// "TOOL: crashed (signal N, NAME)" and the call stack to standard error before
+/// the tool dies of that signal as it would have. Call first in main.
+void installCrashReport(const char* tool);
+
 /// Routes VTK's messages: errors are collected and printed as "error: ...",
 /// warnings as "warning: ..." (quiet or not), pipeline noise is dropped;
 /// quiet drops VTK's plain text output. Call once in main.
