@@ -32,6 +32,7 @@
 #include <vtkProperty2D.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkSphereSource.h>
+#include <vtkStaticCellLocator.h>
 #include <vtkStaticPointLocator.h>
 #include <vtkMath.h>
 #include <vtkProperty.h>
@@ -426,6 +427,7 @@ void Planner::computeCut()
     cut.pieces.push_back(whole);
   }
   followSegment(); // the pieces may be numbered anew
+  followDeformations();
 }
 
 void Planner::addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
@@ -630,6 +632,48 @@ void Planner::followSegment()
     notice = "the cut numbers its pieces anew: the segment is now piece " + std::to_string(best);
     session.segment = best;
   }
+}
+
+void Planner::followDeformations()
+{
+  if (session.deformations.empty() || cut.pieces.empty())
+    return;
+  std::vector<vtkSmartPointer<vtkStaticCellLocator>> locators;
+  double diagonal = 0.0;
+  for (const auto& piece : cut.pieces)
+  {
+    auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    locator->SetDataSet(piece);
+    locator->BuildLocator();
+    locators.push_back(locator);
+    diagonal = std::max(diagonal, piece->GetLength());
+  }
+  std::string moved;
+  for (std::size_t i = 0; i < session.deformations.size(); ++i)
+  {
+    Deformation& d = session.deformations[i];
+    std::vector<double> distance(cut.pieces.size(), VTK_DOUBLE_MAX);
+    for (std::size_t p = 0; p < cut.pieces.size(); ++p)
+    {
+      if (cut.pieces[p]->GetNumberOfCells() == 0)
+        continue;
+      double closest[3], d2 = 0.0;
+      vtkIdType cell = -1;
+      int sub = 0;
+      locators[p]->FindClosestPoint(d.centre.data(), closest, cell, sub, d2);
+      distance[p] = std::sqrt(d2);
+    }
+    const auto best = static_cast<int>(std::min_element(distance.begin(), distance.end()) - distance.begin());
+    const bool exists = d.piece >= 0 && d.piece < static_cast<int>(distance.size());
+    const double own = exists ? distance[static_cast<std::size_t>(d.piece)] : VTK_DOUBLE_MAX;
+    if (best != d.piece && distance[static_cast<std::size_t>(best)] < own - 1e-9 * diagonal)
+    {
+      moved += (moved.empty() ? "" : ", ") + std::to_string(i) + " to piece " + std::to_string(best);
+      d.piece = best;
+    }
+  }
+  if (!moved.empty())
+    notice += (notice.empty() ? "" : "; ") + std::string("the deformations follow their pieces: ") + moved;
 }
 
 std::string Planner::summaryOfCut()

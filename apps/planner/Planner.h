@@ -126,6 +126,13 @@ public:
   /// notice says so. Nothing without an anchor (an older session).
   void followSegment();
 
+  /// After a cut made anew: each deformation goes to the piece whose surface
+  /// is nearest its centre (a point picked on the piece it was made on), and
+  /// stays on its own piece when that is as near (a centre on a cut line lies
+  /// on both). Without this a changed cut would apply it to whichever piece
+  /// now has its number. The notice says which moved.
+  void followDeformations();
+
   vtkSmartPointer<vtkMatrix4x4> segmentMatrix() const;
 
   /// Shows the segment where its transform puts it.

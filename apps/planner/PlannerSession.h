@@ -24,6 +24,10 @@
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "smooth": 0 to 1000}                windowed-sinc iterations (0)
 //
+// Pieces are numbered in cut order. After a changed cut the segment becomes
+// the piece nearest its "at" point, and each deformation the piece whose
+// surface is nearest its centre (its own when that is as near).
+//
 // A field of the wrong kind is refused with a message that names it.
 #ifndef latticekit_apps_PlannerSession_h
 #define latticekit_apps_PlannerSession_h
