@@ -158,7 +158,7 @@ void Planner::placeSegment(const std::array<double, 16>& matrix)
   for (std::size_t p = 0; p < pieceActors.size(); ++p)
     for (auto& a : pieceActors[p])
     {
-      if (static_cast<int>(p) == session.segment)
+      if (static_cast<int>(p) == movedPiece())
       {
         vtkNew<vtkMatrix4x4> m;
         m->DeepCopy(matrix.data());
@@ -564,7 +564,9 @@ void Planner::rebuild()
     pieceActors[p].assign(sceneActors.begin() + static_cast<std::ptrdiff_t>(firstActor), sceneActors.end());
   }
   lkapp::distanceColourBar(colourTop, largest, distanceColours, scalarBar);
-  if (session.segment >= static_cast<int>(pieces.size()))
+  if (session.segment >= 0 && pieces.size() < 2)
+    addLine(message, "the segment (piece " + std::to_string(session.segment) + ") is not moved: there is no cut");
+  else if (session.segment >= static_cast<int>(pieces.size()))
     addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
       std::to_string(pieces.size()) + " piece(s)");
   placeSegment(session.segmentMatrix);
@@ -611,8 +613,8 @@ std::array<double, 3> Planner::anchorOf(std::size_t p) const
 
 void Planner::followSegment()
 {
-  if (session.segment < 0 || !session.segmentAnchored || cut.pieces.empty())
-    return;
+  if (session.segment < 0 || !session.segmentAnchored || cut.pieces.size() < 2)
+    return; // without a cut the segment keeps its number for the cut's return
   int best = -1;
   double nearest = VTK_DOUBLE_MAX;
   for (std::size_t p = 0; p < cut.pieces.size(); ++p)
@@ -964,7 +966,7 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   {
     // The segment goes where the plan moves it.
     vtkSmartPointer<vtkPolyData> piece = pieces[p];
-    if (static_cast<int>(p) == session.segment && !isIdentity(session.segmentMatrix))
+    if (static_cast<int>(p) == movedPiece() && !isIdentity(session.segmentMatrix))
     {
       vtkNew<vtkTransform> t;
       t->SetMatrix(session.segmentMatrix.data());

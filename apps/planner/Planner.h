@@ -115,7 +115,14 @@ public:
   /// After a drag that changed the session live: the session before it.
   void remember(const Session& before);
 
-  bool hasSegment() const { return session.segment >= 0 && session.segment < static_cast<int>(pieces.size()); }
+  /// A segment is a piece of a cut: without one (the cut off or failed, one
+  /// piece) the session's segment waits, and the whole bone is not moved.
+  bool hasSegment() const
+  {
+    return pieces.size() >= 2 && session.segment >= 0 && session.segment < static_cast<int>(pieces.size());
+  }
+  /// The piece the segment's transform moves; -1 when there is none.
+  int movedPiece() const { return hasSegment() ? session.segment : -1; }
 
   /// Where piece p of the cut lies: its point farthest from every other
   /// piece (on its surface, before deformations and the segment's move).

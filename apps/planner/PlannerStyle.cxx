@@ -140,7 +140,7 @@ int PlannerStyle::pickPiece(int x, int y, std::array<double, 3>& point, std::arr
   double w[4] = { 0, 0, 0, 1 }, n[4] = { 0, 0, 0, 0 };
   piecePicker->GetPickPosition(w);
   piecePicker->GetPickNormal(n);
-  if (piece == planner->session.segment)
+  if (piece == planner->movedPiece())
   {
     vtkNew<vtkMatrix4x4> inverse;
     vtkMatrix4x4::Invert(planner->segmentMatrix(), inverse);
@@ -197,7 +197,7 @@ void PlannerStyle::startDeform()
   m->ScalarVisibilityOff();
   planner->preview->SetMapper(m);
   planner->preview->GetProperty()->SetColor(pieceColour(static_cast<std::size_t>(piece)).data());
-  planner->preview->SetUserMatrix(piece == planner->session.segment ? planner->segmentMatrix().GetPointer() : nullptr);
+  planner->preview->SetUserMatrix(piece == planner->movedPiece() ? planner->segmentMatrix().GetPointer() : nullptr);
   planner->preview->SetVisibility(true);
   planner->preview->PickableOn();
   for (auto& actor : planner->pieceActors[static_cast<std::size_t>(piece)])
