@@ -651,6 +651,7 @@ void Planner::followDeformations()
     diagonal = std::max(diagonal, piece->GetLength());
   }
   std::string moved;
+  std::vector<double> movedBefore(cut.pieces.size(), 0.0); // how far earlier deformations can have moved each piece
   for (std::size_t i = 0; i < session.deformations.size(); ++i)
   {
     Deformation& d = session.deformations[i];
@@ -672,6 +673,21 @@ void Planner::followDeformations()
     {
       moved += (moved.empty() ? "" : ", ") + std::to_string(i) + " to piece " + std::to_string(best);
       d.piece = best;
+    }
+    // Beyond its reach from every piece (a hand-made or stale session), it
+    // would move nothing without a word. A box reaches its corners. It acts
+    // on the piece as the deformations before it left it (a dab picked on a
+    // bump lies off the cut piece), so their largest moves count too.
+    const double away = distance[static_cast<std::size_t>(d.piece)];
+    double& before = movedBefore[static_cast<std::size_t>(d.piece)];
+    const double reach = (d.tool == "box" ? std::sqrt(3.0) * d.radius : d.radius) + before;
+    before += d.tool == "smooth" ? d.radius : std::abs(d.amount);
+    if (away > reach)
+    {
+      char line[200];
+      std::snprintf(line, sizeof line, "deformation %zu (%s) lies %.1f mm from piece %d, beyond its radius %.1f mm: it moves nothing",
+        i, d.tool.c_str(), away, d.piece, d.radius);
+      addLine(cut.message, line);
     }
   }
   if (!moved.empty())
