@@ -189,6 +189,24 @@ TEST(StrokeFeatureLine, BadStrokesAreRefused)
   {
     EXPECT_NE(refusal(mode, 1e-6).find("covers no mesh edge: all its points are nearest mesh point"), std::string::npos);
   }
+  // A short straight split stroke counts as closed (its ends lie within the
+  // closing tolerance), and its line goes out and back along the same edges:
+  // three vertices, but a loop around nothing, which a cut refused as "not
+  // closed", failing every other line's cut with it (a random planner
+  // session on the mandible). It is refused with the reason.
+  {
+    lk::StrokeOptions o;
+    o.mode = lk::StrokeMode::Split;
+    try
+    {
+      const auto r = lk::strokeToFeatureLine(grid, { { 0.43, 0.52, 0 }, { 0.47, 0.52, 0 }, { 0.51, 0.52, 0 }, { 0.45, 0.52, 0 } }, o);
+      ADD_FAILURE() << "a line back along itself was accepted, " << r.line.size() << " vertices";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("the closed line runs back along itself"), std::string::npos) << e.what();
+    }
+  }
   // A small circle around one vertex covers that vertex alone.
   std::vector<lk::Vec3> circle;
   for (int i = 0; i <= 12; ++i)

@@ -188,6 +188,16 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       if (distinct.size() < 3)
         throw loopTooSmall(distinct.size(), "line vertex(es)", closeTol);
       splitter.close();
+      // A short stroke can split in a line that goes out and comes back
+      // along the same edges (a, b, c, b, a): three vertices, but a loop
+      // around nothing, which no cut can take.
+      std::set<EdgeKey> taken;
+      const auto& line = splitter.line();
+      for (std::size_t i = 0; i + 1 < line.size(); ++i)
+        if (!taken.insert(edgeKey(line[i], line[i + 1])).second)
+          throw std::invalid_argument("the closed line runs back along itself (edge " + std::to_string(line[i]) + "-" +
+            std::to_string(line[i + 1]) + " twice), so its loop encloses nothing (a stroke whose ends lie within " +
+            std::to_string(closeTol) + " of each other counts as closed: draw a larger loop, or an open stroke longer than that)");
     }
     result.mesh = splitter.mesh();
     result.line = splitter.line();
