@@ -678,6 +678,8 @@ void Planner::followDeformations()
     // would move nothing without a word. A box reaches its corners. It acts
     // on the piece as the deformations before it left it (a dab picked on a
     // bump lies off the cut piece), so their largest moves count too.
+    if (d.piece < 0 || d.piece >= static_cast<int>(distance.size()) || distance[static_cast<std::size_t>(d.piece)] == VTK_DOUBLE_MAX)
+      continue; // no such piece (applyDeformations says so), or an empty one
     const double away = distance[static_cast<std::size_t>(d.piece)];
     double& before = movedBefore[static_cast<std::size_t>(d.piece)];
     const double reach = (d.tool == "box" ? std::sqrt(3.0) * d.radius : d.radius) + before;
