@@ -954,8 +954,17 @@ std::string Planner::planText()
     text += line;
   }
   text += segmentText();
-  std::istringstream lines(message);
-  for (std::string m; std::getline(lines, m);)
+  // What the cut said (why it failed, a failed stroke) belongs to the plan
+  // even when a later key's answer took its place in the window's message.
+  std::vector<std::string> said;
+  for (const std::string* from : { &cut.message, &message })
+  {
+    std::istringstream lines(*from);
+    for (std::string m; std::getline(lines, m);)
+      if (!m.empty() && std::find(said.begin(), said.end(), m) == said.end())
+        said.push_back(m);
+  }
+  for (const std::string& m : said)
     text += "message: " + m + "\n";
   return text;
 }
