@@ -120,12 +120,18 @@ void snapPath(const TriangleMesh& mesh, const std::vector<Vec3>& projected, cons
     result.snapGaps[i] = (targets[i] - points[static_cast<std::size_t>(result.movedVertices[i])]).norm();
 }
 
+/// Why a short stroke's loop was taken as closed, and what to draw instead.
+std::string closingHint(double closeTolerance)
+{
+  return " (a stroke whose ends lie within " + std::to_string(closeTolerance) +
+    " of each other counts as closed: draw a larger loop, or an open stroke longer than that)";
+}
+
 /// The refusal of a closed stroke whose loop covers fewer than three points.
 std::invalid_argument loopTooSmall(std::size_t points, const char* what, double closeTolerance)
 {
   return std::invalid_argument("a closed line needs at least three vertices: the stroke's loop covers " +
-    std::to_string(points) + " " + what + " (a stroke whose ends lie within " + std::to_string(closeTolerance) +
-    " of each other counts as closed: draw a larger loop, or an open stroke longer than that)");
+    std::to_string(points) + " " + what + closingHint(closeTolerance));
 }
 } // namespace
 
@@ -196,8 +202,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       for (std::size_t i = 0; i + 1 < line.size(); ++i)
         if (!taken.insert(edgeKey(line[i], line[i + 1])).second)
           throw std::invalid_argument("the closed line runs back along itself (edge " + std::to_string(line[i]) + "-" +
-            std::to_string(line[i + 1]) + " twice), so its loop encloses nothing (a stroke whose ends lie within " +
-            std::to_string(closeTol) + " of each other counts as closed: draw a larger loop, or an open stroke longer than that)");
+            std::to_string(line[i + 1]) + " twice), so its loop encloses nothing" + closingHint(closeTol));
     }
     result.mesh = splitter.mesh();
     result.line = splitter.line();
