@@ -426,8 +426,7 @@ void Planner::computeCut()
     whole->ShallowCopy(faces);
     cut.pieces.push_back(whole);
   }
-  followSegment(); // the pieces may be numbered anew
-  followDeformations();
+  followPieces(); // the pieces may be numbered anew
 }
 
 void Planner::addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
@@ -611,65 +610,67 @@ std::array<double, 3> Planner::anchorOf(std::size_t p) const
   return best;
 }
 
-void Planner::followSegment()
+std::vector<std::vector<double>> Planner::pieceDistances(const std::vector<std::array<double, 3>>& points) const
 {
-  if (session.segment < 0 || !session.segmentAnchored || cut.pieces.size() < 2)
-    return; // without a cut the segment keeps its number for the cut's return
-  int best = -1;
-  double nearest = VTK_DOUBLE_MAX;
+  std::vector<std::vector<double>> distances(points.size(), std::vector<double>(cut.pieces.size(), VTK_DOUBLE_MAX));
   for (std::size_t p = 0; p < cut.pieces.size(); ++p)
-    for (vtkIdType i = 0; i < cut.pieces[p]->GetNumberOfPoints(); ++i)
-    {
-      double x[3];
-      cut.pieces[p]->GetPoint(i, x);
-      const double d = vtkMath::Distance2BetweenPoints(x, session.segmentAnchor.data());
-      if (d < nearest)
-      {
-        nearest = d;
-        best = static_cast<int>(p);
-      }
-    }
-  if (best >= 0 && best != session.segment)
   {
-    notice = "the cut numbers its pieces anew: the segment is now piece " + std::to_string(best);
-    session.segment = best;
+    if (cut.pieces[p]->GetNumberOfCells() == 0)
+      continue;
+    vtkNew<vtkStaticCellLocator> locator;
+    locator->SetDataSet(cut.pieces[p]);
+    locator->BuildLocator();
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      double closest[3], d2 = 0.0;
+      vtkIdType cell = -1;
+      int sub = 0;
+      locator->FindClosestPoint(points[k].data(), closest, cell, sub, d2);
+      distances[k][p] = std::sqrt(d2);
+    }
   }
+  return distances;
 }
 
-void Planner::followDeformations()
+void Planner::followPieces()
 {
-  if (session.deformations.empty() || cut.pieces.empty())
-    return;
-  std::vector<vtkSmartPointer<vtkStaticCellLocator>> locators;
+  const bool segmentFollows = session.segment >= 0 && session.segmentAnchored && cut.pieces.size() >= 2;
+  if (!segmentFollows && session.deformations.empty())
+    return; // without a cut the segment keeps its number for the cut's return
+  // One locator per piece serves the segment's point and every centre.
+  std::vector<std::array<double, 3>> points;
+  for (const Deformation& d : session.deformations)
+    points.push_back(d.centre);
+  points.push_back(session.segmentAnchor);
+  const std::vector<std::vector<double>> distances = pieceDistances(points);
   double diagonal = 0.0;
   for (const auto& piece : cut.pieces)
-  {
-    auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-    locator->SetDataSet(piece);
-    locator->BuildLocator();
-    locators.push_back(locator);
     diagonal = std::max(diagonal, piece->GetLength());
+  // The nearest piece, or `own` when that is as near (a point on a cut line
+  // lies on both pieces).
+  auto nearest = [&](const std::vector<double>& distance, int own) {
+    const auto best = static_cast<int>(std::min_element(distance.begin(), distance.end()) - distance.begin());
+    const bool exists = own >= 0 && own < static_cast<int>(distance.size());
+    const double ownDistance = exists ? distance[static_cast<std::size_t>(own)] : VTK_DOUBLE_MAX;
+    return best != own && distance[static_cast<std::size_t>(best)] < ownDistance - 1e-9 * diagonal ? best : own;
+  };
+  if (segmentFollows)
+  {
+    const int best = nearest(distances.back(), session.segment);
+    if (best != session.segment)
+    {
+      notice = "the cut numbers its pieces anew: the segment is now piece " + std::to_string(best);
+      session.segment = best;
+    }
   }
   std::string moved;
   std::vector<double> movedBefore(cut.pieces.size(), 0.0); // how far earlier deformations can have moved each piece
   for (std::size_t i = 0; i < session.deformations.size(); ++i)
   {
     Deformation& d = session.deformations[i];
-    std::vector<double> distance(cut.pieces.size(), VTK_DOUBLE_MAX);
-    for (std::size_t p = 0; p < cut.pieces.size(); ++p)
-    {
-      if (cut.pieces[p]->GetNumberOfCells() == 0)
-        continue;
-      double closest[3], d2 = 0.0;
-      vtkIdType cell = -1;
-      int sub = 0;
-      locators[p]->FindClosestPoint(d.centre.data(), closest, cell, sub, d2);
-      distance[p] = std::sqrt(d2);
-    }
-    const auto best = static_cast<int>(std::min_element(distance.begin(), distance.end()) - distance.begin());
-    const bool exists = d.piece >= 0 && d.piece < static_cast<int>(distance.size());
-    const double own = exists ? distance[static_cast<std::size_t>(d.piece)] : VTK_DOUBLE_MAX;
-    if (best != d.piece && distance[static_cast<std::size_t>(best)] < own - 1e-9 * diagonal)
+    const std::vector<double>& distance = distances[i];
+    const int best = nearest(distance, d.piece);
+    if (best != d.piece)
     {
       moved += (moved.empty() ? "" : ", ") + std::to_string(i) + " to piece " + std::to_string(best);
       d.piece = best;

@@ -128,17 +128,19 @@ public:
   /// piece (on its surface, before deformations and the segment's move).
   std::array<double, 3> anchorOf(std::size_t p) const;
 
-  /// After a cut made anew (computeCut): the segment becomes the piece nearest its anchor
-  /// (its number can change when a line is added or taken away), and the
-  /// notice says so. Nothing without an anchor (an older session).
-  void followSegment();
+  /// The distance from each point to each piece's surface (VTK_DOUBLE_MAX
+  /// for an empty piece), one cell locator per piece.
+  std::vector<std::vector<double>> pieceDistances(const std::vector<std::array<double, 3>>& points) const;
 
-  /// After a cut made anew: each deformation goes to the piece whose surface
-  /// is nearest its centre (a point picked on the piece it was made on), and
-  /// stays on its own piece when that is as near (a centre on a cut line lies
-  /// on both). Without this a changed cut would apply it to whichever piece
-  /// now has its number. The notice says which moved.
-  void followDeformations();
+  /// After a cut made anew (computeCut), as the pieces can be numbered anew
+  /// when a line is added or taken away: the segment becomes the piece
+  /// nearest its anchor (nothing without an anchor, an older session, or
+  /// without a cut), and each deformation the piece whose surface is nearest
+  /// its centre (a point picked on the piece it was made on); each keeps its
+  /// own piece when that is as near (a point on a cut line lies on both).
+  /// The notice says what moved; a deformation out of reach of its piece
+  /// gets a message.
+  void followPieces();
 
   vtkSmartPointer<vtkMatrix4x4> segmentMatrix() const;
 
