@@ -353,3 +353,107 @@ TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
   feature->Update();
   EXPECT_NE(errors.messages.find("misses the surface"), std::string::npos) << errors.messages;
 }
+
+#include "latticekit/StrokeFeatureLine.h"
+
+#include <vtkCleanPolyData.h>
+#include <vtkCutter.h>
+#include <vtkPlane.h>
+#include <vtkStripper.h>
+
+TEST(StrokeFeatureLine, SparseSplitStrokesOnTheMandibleKeepItsSurface)
+{
+  // Split mode joins stroke points far apart by walking the plane of each
+  // segment across the faces. Between points 10-25 mm apart round the bone
+  // that plane's section of the faces can pass the next point on the far
+  // side of a ridge; the walk used to end there anyway and put the point's
+  // vertex into a face it is not on, joined to that face's corners: a spike,
+  // and the mesh no longer the bone's surface, with no error. The walk now
+  // checks that it meets the point, and a segment it cannot follow in one
+  // plane is walked in halves or along an edge first.
+  auto bone = lktest::tciaMandible();
+  const lk::TriangleMesh mesh = lktest::toCore(bone);
+  const double area = lk::surfaceArea(mesh);
+  lk::StrokeOptions split;
+  split.mode = lk::StrokeMode::Split;
+  // Splitting never moves the surface: the same area, a manifold mesh.
+  auto expectSameSurface = [&](const lk::StrokeResult& r, const std::string& what) {
+    EXPECT_NEAR(lk::surfaceArea(r.mesh), area, 1e-9 * area) << what;
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "") << what;
+    EXPECT_TRUE(r.closed) << what;
+  };
+  {
+    // Four points round the ramus (one of 40 random plane sections, every
+    // 48th point): the old walk put a vertex 3.4 mm off its face's corners
+    // and added 45.9 mm^2 to the surface.
+    const std::vector<lk::Vec3> stroke = { { -25.557854890661538, 293.71052864536495, -990.5 },
+      { -32.09452735054932, 290.91257719259977, -975.5 }, { -14.249072843376538, 285.9890636860214, -967.5547815245062 },
+      { -22.050003051757812, 292.5595943372329, -988.2254252736338 }, { -25.557854890661538, 293.71052864536495, -990.5 } };
+    expectSameSurface(lk::strokeToFeatureLine(mesh, stroke, split), "four points round the ramus");
+  }
+  // Plane sections of the bone, every k-th point of each as a closed stroke.
+  double b[6];
+  bone->GetBounds(b);
+  const lk::Vec3 centre(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
+  const std::vector<std::pair<lk::Vec3, lk::Vec3>> planes = { { { 0, 0, 0 }, { 1, 0, 0 } },
+    { { 30, 0, 0 }, { 1, 0.3, 0.2 } }, { { -30, 0, 0 }, { 1, -0.3, 0.2 } }, { { 40, 0, 10 }, { 0.2, 1, 0.1 } },
+    { { -40, 0, 10 }, { -0.2, 1, 0.1 } }, { { 45, 0, 20 }, { 0.1, 0.2, 1 } }, { { -45, 0, 20 }, { 0.3, 0.2, 1 } },
+    { { 0, 0, -5 }, { 0.1, -0.5, 1 } } };
+  int strokes = 0, made = 0;
+  for (const auto& [offset, normal] : planes)
+  {
+    const lk::Vec3 origin = centre + offset;
+    vtkNew<vtkPlane> plane;
+    plane->SetOrigin(origin.data());
+    plane->SetNormal(normal.data());
+    vtkNew<vtkCutter> cutter;
+    cutter->SetInputData(bone);
+    cutter->SetCutFunction(plane);
+    vtkNew<vtkCleanPolyData> clean;
+    clean->SetInputConnection(cutter->GetOutputPort());
+    vtkNew<vtkStripper> stripper;
+    stripper->SetInputConnection(clean->GetOutputPort());
+    stripper->JoinContiguousSegmentsOn();
+    stripper->Update();
+    vtkPolyData* section = stripper->GetOutput();
+    // Its longest closed loop.
+    std::vector<lk::Vec3> loop;
+    auto it = vtk::TakeSmartPointer(section->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      if (n < 4 || ids[0] != ids[n - 1] || static_cast<std::size_t>(n) <= loop.size())
+        continue;
+      loop.clear();
+      for (vtkIdType i = 0; i + 1 < n; ++i)
+        loop.emplace_back(section->GetPoint(ids[i]));
+    }
+    ASSERT_GE(loop.size(), 40u) << "section at " << origin.transpose();
+    for (std::size_t step : { 12, 24, 48 })
+    {
+      std::vector<lk::Vec3> stroke;
+      for (std::size_t i = 0; i < loop.size(); i += step)
+        stroke.push_back(loop[i]);
+      if (stroke.size() < 4)
+        continue;
+      stroke.push_back(stroke.front());
+      const std::string what = "section at " + std::to_string(origin.x()) + ", every " + std::to_string(step) + "th point";
+      ++strokes;
+      try
+      {
+        expectSameSurface(lk::strokeToFeatureLine(mesh, stroke, split), what);
+        ++made;
+      }
+      catch (const std::invalid_argument& e)
+      {
+        // A refusal says what to do.
+        EXPECT_NE(std::string(e.what()).find("draw it again"), std::string::npos) << what << ": " << e.what();
+        EXPECT_GE(step, 24u) << what << ": " << e.what();
+      }
+    }
+  }
+  std::cout << made << " of " << strokes << " sparse split strokes made a line\n";
+  EXPECT_GE(made, strokes - 4);
+}

@@ -43,6 +43,15 @@ struct Plan
 
 struct StrokeSplitter::Impl
 {
+  /// How many ways round a segment whose walk fails may take in a row
+  /// (walkInParts: halves, or a step along an edge).
+  static constexpr int kWaysRound = 6;
+  /// How many ways round one segment may try in all (each halving copies
+  /// the mesh, to go back to when its halves fail), so that a segment that
+  /// cannot be followed is refused in bounded time.
+  static constexpr int kTries = 24;
+  int triesLeft = 0;
+
   SMesh m;
   ClosestPointTree tree;
   std::vector<Vec3> faceNormals; ///< of the input faces (splitting keeps the surface)
@@ -134,8 +143,17 @@ struct StrokeSplitter::Impl
     auto along = [&](const Vec3& y) { return (y - pa).dot(d) / dd; };
     const double endTolerance = 1e-3 * meanEdge / std::sqrt(dd); // in t
     Plan plan;
+    // Where the plane's section passes the end's place along the segment,
+    // the end must be there too: on a curved surface the section can pass
+    // it at a distance (the far side of a ridge or a thin plate), and a
+    // vertex put there would be joined to faces it is not on (a spike).
+    static const std::string missed = "the stroke could not be followed (the walk passed the point without meeting it)";
+    const double onFace = 1e-3 * meanEdge;
     auto endHere = [&](FI f) {
       // The end lies in f: on one of its vertices or edges, or inside.
+      const HI h0 = m.halfedge(f);
+      if ((closestPointOnTriangle(x, p(m.source(h0)), p(m.target(h0)), p(m.target(m.next(h0)))) - x).norm() > onFace)
+        throw std::invalid_argument(missed + retry);
       const Placement at = place(f, x);
       if (at.vertex != SMesh::null_vertex())
         plan.events.push_back({ true, HI(), at.vertex, p(at.vertex) });
@@ -212,7 +230,11 @@ struct StrokeSplitter::Impl
         if (best.isEnd && target == SMesh::null_vertex())
         {
           if (std::abs(best.t - 1.0) <= endTolerance)
+          {
+            if ((best.event.x - x).norm() > onFace)
+              throw std::invalid_argument(missed + retry);
             plan.events.push_back(best.event); // the end is on the crossing
+          }
           else
             endHere(best.face);
           return plan;
@@ -265,7 +287,11 @@ struct StrokeSplitter::Impl
       if (target == SMesh::null_vertex() && t >= 1.0 - endTolerance)
       {
         if (std::abs(t - 1.0) <= endTolerance)
+        {
+          if ((e.x - x).norm() > onFace)
+            throw std::invalid_argument(missed + retry);
           plan.events.push_back(e);
+        }
         else
           endHere(g);
         return plan;
@@ -499,6 +525,130 @@ struct StrokeSplitter::Impl
       triangulateAround(v);
     return line.size() - before;
   }
+
+  /// The walk from the line's last vertex `a` to `x` (or to `target`) in
+  /// one plane, applied when it succeeds: the plane that holds the mean of
+  /// the normals at the ends, then the one of either end's normal alone
+  /// (the mean can make the plane graze a vertex's star). `normalAtX` is
+  /// the surface normal at the end; `added` counts the line vertices added.
+  bool walkInOnePlane(VI a, const Vec3& x, const Vec3& normalAtX, VI target, std::size_t& added)
+  {
+    const Vec3 normalAtA = vertexNormal(a);
+    for (const Vec3& normal : { Vec3(normalAtA + normalAtX), normalAtA, normalAtX })
+    {
+      Plan planned;
+      try
+      {
+        planned = plan(a, x, target, normal);
+      }
+      catch (const std::invalid_argument&)
+      {
+        continue;
+      }
+      added += apply(a, planned);
+      return true;
+    }
+    return false;
+  }
+
+  /// The mesh and the line, to go back to when a way round fails.
+  struct Saved
+  {
+    SMesh mesh;
+    std::vector<std::int64_t> line;
+    std::size_t added;
+  };
+  Saved save(std::size_t added) const { return { m, line, added }; }
+  void restore(const Saved& saved, std::size_t& added)
+  {
+    m = saved.mesh;
+    line = saved.line;
+    added = saved.added;
+  }
+
+  /// walkInOnePlane, and when no plane works, two ways round, each at most
+  /// `depth` times over and tried on its own copy of the mesh:
+  /// - halves: the segment is cut at the surface point nearest its
+  ///   midpoint and each half is walked in its own plane (a segment over a
+  ///   fold, or one whose plane's section of the faces turns back near a
+  ///   vertex);
+  /// - an edge: the line goes on along the edge of `a` that points most
+  ///   nearly at the end and walks on from there (a vertex at a convex
+  ///   corner, where no plane through the segment crosses the faces around
+  ///   it ahead: their corners all lie behind it).
+  /// False when every way fails; the mesh and the line may then hold parts
+  /// already walked, and walk() puts them back.
+  bool walkInParts(VI a, const Vec3& x, const Vec3& normalAtX, VI target, int depth, std::size_t& added)
+  {
+    if (walkInOnePlane(a, x, normalAtX, target, added))
+      return true;
+    if (depth <= 0 || triesLeft <= 0)
+      return false;
+    --triesLeft;
+    const Vec3 pa = p(a);
+    const double snap = 1e-3 * meanEdge;
+    auto reached = [&](VI b) { return b == target || (target == SMesh::null_vertex() && (p(b) - x).norm() <= snap); };
+    // Halves. The midpoint must split the segment, on the side of the
+    // surface its ends face (across a thin plate of bone the nearest
+    // surface point can lie on the far side).
+    const auto middle = tree.closest(0.5 * (pa + x));
+    const Vec3& normalAtMiddle = faceNormals[static_cast<std::size_t>(middle.face)];
+    if ((middle.point - pa).norm() > snap && (middle.point - x).norm() > snap &&
+      normalAtMiddle.dot(vertexNormal(a) + normalAtX) > 0.0)
+    {
+      const Saved saved = save(added);
+      if (walkInParts(a, middle.point, normalAtMiddle, SMesh::null_vertex(), depth - 1, added))
+      {
+        const VI b(static_cast<SMesh::size_type>(line.back()));
+        if (reached(b) || walkInParts(b, x, normalAtX, target, depth - 1, added))
+          return true;
+      }
+      restore(saved, added);
+    }
+    // An edge of a, toward the end (its other vertex nearer the end).
+    VI next = SMesh::null_vertex();
+    double bestScore = -2.0;
+    const Vec3 d = (x - pa).normalized();
+    for (HI h : CGAL::halfedges_around_target(m.halfedge(a), m))
+    {
+      const VI w = m.source(h);
+      const Vec3 e = p(w) - pa;
+      if (!((p(w) - x).norm() < (pa - x).norm()) || e.norm() <= 0.0)
+        continue;
+      const double score = e.normalized().dot(d);
+      if (score > bestScore)
+      {
+        bestScore = score;
+        next = w;
+      }
+    }
+    if (next == SMesh::null_vertex())
+      return false;
+    appendToLine(next);
+    ++added;
+    return reached(next) || walkInParts(next, x, normalAtX, target, depth - 1, added);
+  }
+
+  /// walkInParts as a transaction: on failure the mesh and the line are put
+  /// back and the segment's own error (of the walk in one plane) is thrown.
+  std::size_t walk(VI a, const Vec3& x, const Vec3& normalAtX, VI target)
+  {
+    try
+    {
+      const Plan planned = plan(a, x, target, vertexNormal(a) + normalAtX);
+      return apply(a, planned);
+    }
+    catch (const std::invalid_argument&)
+    {
+      std::size_t added = 0;
+      const Saved saved = save(added);
+      triesLeft = kTries;
+      if (walkInParts(a, x, normalAtX, target, kWaysRound, added))
+        return added;
+      restore(saved, added);
+      throw;
+    }
+  }
 };
 
 StrokeSplitter::StrokeSplitter(const TriangleMesh& mesh, double maxDistance)
@@ -561,9 +711,7 @@ std::size_t StrokeSplitter::addPoint(const Vec3& point)
   const VI a(static_cast<SMesh::size_type>(s.line.back()));
   if ((s.p(a) - hit.point).norm() <= 1e-3 * s.meanEdge)
     return 0;
-  Vec3 normal = s.vertexNormal(a) + s.faceNormals[static_cast<std::size_t>(hit.face)];
-  const Plan plan = s.plan(a, hit.point, SMesh::null_vertex(), normal);
-  return s.apply(a, plan);
+  return s.walk(a, hit.point, s.faceNormals[static_cast<std::size_t>(hit.face)], SMesh::null_vertex());
 }
 
 void StrokeSplitter::close()
@@ -584,8 +732,7 @@ void StrokeSplitter::close()
   }
   const VI a(static_cast<SMesh::size_type>(s.line.back()));
   const VI first(static_cast<SMesh::size_type>(s.line.front()));
-  const Plan plan = s.plan(a, s.p(first), first, s.vertexNormal(a) + s.vertexNormal(first));
-  s.apply(a, plan);
+  s.walk(a, s.p(first), s.vertexNormal(first), first);
   if (s.line.back() != s.line.front())
     s.line.push_back(s.line.front());
   s.closed = true;
