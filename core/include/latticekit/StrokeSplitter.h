@@ -19,6 +19,15 @@
 /// mesh and the new edges follow the stroke (section 3.1.4, eq. 3.13's
 /// crossings).
 ///
+/// The walk ends only on the point itself: where the plane's section passes
+/// the point's place along the segment at a distance (the far side of a
+/// ridge, between points far apart), the plane is refused. A segment that no
+/// plane follows (the mean normal's, or either end's) is walked in halves,
+/// cut at the surface point nearest its midpoint, or first along the edge
+/// that points most nearly at the point, a few levels deep; so sparse
+/// points (a script's, 10-25 mm apart round a mandible) mostly make a line,
+/// and those that cannot are refused in bounded time.
+///
 /// Every addPoint is a transaction: the walk is planned on the unchanged
 /// mesh first and applied only when it succeeds, so a point that misses the
 /// surface or a walk that leaves the mesh at a border throws
