@@ -222,16 +222,18 @@ void markCapPockets(const PolygonMesh& piece, const std::vector<std::int64_t>& f
 void splitOverfullCapEdges(PolygonMesh& piece, std::vector<std::int64_t>& faceOrigin,
   std::vector<std::int64_t>& vertexOrigin, const std::vector<char>& inputOnLoop, std::vector<std::size_t>& near)
 {
-  // Whether face f runs along the edge {a, b} (either way).
-  auto holds = [&](std::size_t f, std::int64_t a, std::int64_t b) {
+  // Where face f runs along the edge {a, b} (either way): the k with
+  // {face[k], face[k + 1]} = {a, b}; the face's size when it does not.
+  auto edgeAt = [&](std::size_t f, std::int64_t a, std::int64_t b) {
     const auto& face = piece.faces[f];
-    for (std::size_t k = 0; k < face.size(); ++k)
+    std::size_t k = 0;
+    for (; k < face.size(); ++k)
     {
       const auto u = face[k], v = face[(k + 1) % face.size()];
       if ((u == a && v == b) || (u == b && v == a))
-        return true;
+        break;
     }
-    return false;
+    return k;
   };
   // A cap triangle can lie on two such edges: split for the first, it no
   // longer holds the second, whose faces are then found again in the next
@@ -257,7 +259,8 @@ void splitOverfullCapEdges(PolygonMesh& piece, std::vector<std::int64_t>& faceOr
     {
       if (fs.size() <= 2)
         continue;
-      if (!std::all_of(fs.begin(), fs.end(), [&](std::size_t f) { return holds(f, edge.first, edge.second); }))
+      if (!std::all_of(fs.begin(), fs.end(),
+            [&](std::size_t f) { return edgeAt(f, edge.first, edge.second) < piece.faces[f].size(); }))
       {
         again = true; // a face here was split this round
         continue;
@@ -275,9 +278,7 @@ void splitOverfullCapEdges(PolygonMesh& piece, std::vector<std::int64_t>& faceOr
       for (const auto f : capFaces)
       {
         const auto t = piece.faces[f];
-        std::size_t k = 0;
-        while (!((t[k] == edge.first || t[k] == edge.second) && (t[(k + 1) % 3] == edge.first || t[(k + 1) % 3] == edge.second)))
-          ++k; // holds() found it: k < 3
+        const std::size_t k = edgeAt(f, edge.first, edge.second); // < 3: checked above
         const auto u = t[k], v = t[(k + 1) % 3], w = t[(k + 2) % 3];
         piece.faces[f] = { u, m, w };
         near.push_back(piece.faces.size());
