@@ -1,7 +1,7 @@
 /**
  * @class   vtkLKStrokeFeatureLineFilter
  * @brief   Turns a pen stroke on a triangle mesh into a feature line (seed
- *          004, section 3.1): paint, nearest edges or snap.
+ *          004, section 3.1): paint, nearest edges, snap or split.
  *
  * Input 0: a triangle mesh. Input 1 (SetStrokeConnection / SetStrokeData):
  * the stroke as world points on or near the surface (the points of the
@@ -16,8 +16,11 @@
  * point data "StrokeGap" of output 1) and SPLIT (new vertices where the
  * stroke crosses edges and at its ends, faces split so that new edges follow
  * the stroke; the mesh stays a manifold triangle mesh; input point data are
- * not passed in this mode, as points are added). A stroke whose ends are
- * within CloseTolerance gives a closed line.
+ * not passed in this mode, as points are added; points far apart are joined
+ * across the faces, walked in parts where one plane does not follow the
+ * surface between them, and a segment that cannot be followed is an error
+ * that says to draw it with its points closer together). A stroke whose ends
+ * are within CloseTolerance gives a closed line.
  *
  * Line cells on input 0 are earlier feature lines (output 0 of another
  * stroke filter, so strokes chain): they are passed to output 0, and where a
