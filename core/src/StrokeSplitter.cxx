@@ -615,6 +615,11 @@ struct StrokeSplitter::Impl
       const Vec3 e = p(w) - pa;
       if (!((p(w) - x).norm() < (pa - x).norm()) || e.norm() <= 0.0)
         continue;
+      // Not back onto the line (it would touch itself there), but for the
+      // first vertex that closes it.
+      const auto id = static_cast<std::int64_t>(static_cast<std::size_t>(w));
+      if (w != target && std::find(line.begin(), line.end(), id) != line.end())
+        continue;
       const double score = e.normalized().dot(d);
       if (score > bestScore)
       {
