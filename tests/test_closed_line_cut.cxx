@@ -355,6 +355,7 @@ TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
 }
 
 #include "latticekit/StrokeFeatureLine.h"
+#include "latticekit/StrokeSplitter.h"
 
 #include <vtkCleanPolyData.h>
 #include <vtkCutter.h>
@@ -399,7 +400,7 @@ TEST(StrokeFeatureLine, SparseSplitStrokesOnTheMandibleKeepItsSurface)
     { { 30, 0, 0 }, { 1, 0.3, 0.2 } }, { { -30, 0, 0 }, { 1, -0.3, 0.2 } }, { { 40, 0, 10 }, { 0.2, 1, 0.1 } },
     { { -40, 0, 10 }, { -0.2, 1, 0.1 } }, { { 45, 0, 20 }, { 0.1, 0.2, 1 } }, { { -45, 0, 20 }, { 0.3, 0.2, 1 } },
     { { 0, 0, -5 }, { 0.1, -0.5, 1 } } };
-  int strokes = 0, made = 0;
+  int strokes = 0, made = 0, refusedPoints = 0;
   for (const auto& [offset, normal] : planes)
   {
     const lk::Vec3 origin = centre + offset;
@@ -451,9 +452,30 @@ TEST(StrokeFeatureLine, SparseSplitStrokesOnTheMandibleKeepItsSurface)
         // A refusal says what to do.
         EXPECT_NE(std::string(e.what()).find("draw it again"), std::string::npos) << what << ": " << e.what();
         EXPECT_GE(step, 24u) << what << ": " << e.what();
+        // The point that failed, after every way round was tried (on copies
+        // of the mesh), left the mesh and the line as they were.
+        lk::StrokeSplitter splitter(mesh);
+        for (const lk::Vec3& point : stroke)
+        {
+          const lk::TriangleMesh before = splitter.mesh();
+          const std::vector<std::int64_t> line = splitter.line();
+          try
+          {
+            splitter.addPoint(point);
+          }
+          catch (const std::invalid_argument&)
+          {
+            EXPECT_EQ(splitter.line(), line) << what;
+            EXPECT_EQ(splitter.mesh().triangles, before.triangles) << what;
+            EXPECT_EQ(splitter.mesh().points, before.points) << what;
+            ++refusedPoints;
+            break;
+          }
+        }
       }
     }
   }
   std::cout << made << " of " << strokes << " sparse split strokes made a line\n";
   EXPECT_GE(made, strokes - 4);
+  EXPECT_EQ(refusedPoints, strokes - made); // each refusal was a point's walk
 }
