@@ -93,16 +93,9 @@ Cap makeNestedCap(const std::vector<std::vector<Vec3>>& loops, const LoopPlane& 
 
 /// Pairs of intersecting triangles of a capped piece of which at least one is
 /// a cap triangle (faceOrigin < 0): a cap that crosses the piece's surface or
-/// another cap (nested loops around a hollow bone). Only the caps'
-/// neighbourhood can hold such a pair, so CGAL's test runs on the faces whose
-/// boxes meet the caps' box (on the skull's craniotomy, a few thousand of
-/// 563,000), fanned into triangles; on the whole piece where that subset is
-/// not a manifold surface CGAL can hold.
-/// Pairs that only touch (reaching through each other by less than 1e-6 of
-/// the piece's size) are not counted. With the count, the deepest pair's
-/// overlap: how far each triangle reaches through the other's plane on its
-/// shallower side, the smaller of the two (micrometres where triangles graze
-/// beside a line).
+/// another cap (nested loops around a hollow bone), and the deepest pair's
+/// overlap; markedFaceCrossings with the caps marked (on the skull's
+/// craniotomy CGAL's test runs on a few thousand of 563,000 faces).
 std::pair<std::size_t, double> capCrossings(const PolygonMesh& piece, const std::vector<std::int64_t>& faceOrigin);
 
 } // namespace cut
