@@ -2,11 +2,14 @@
 #include "vtkLKAbort.h"
 
 #include "latticekit/AdaptivePatchMesh.h"
+#include "latticekit/FaceCrossings.h"
 #include "vtkLKPolyDataConversion.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
@@ -209,6 +212,38 @@ int vtkLKPatchDeformationFilter::RequestData(
     output->GetPointData()->AddArray(displacement);
     output->GetPointData()->AddArray(normals);
     output->GetCellData()->AddArray(level);
+    if (this->CheckCrossings)
+    {
+      // Only faces with a moved corner can cross where the input did not.
+      lk::PolygonMesh surface;
+      surface.points.reserve(static_cast<std::size_t>(np));
+      for (vtkIdType v = 0; v < np; ++v)
+        surface.points.push_back(mesh.position(static_cast<int>(v)));
+      std::vector<char> moved(tris.size(), 0);
+      surface.faces.reserve(tris.size());
+      for (std::size_t t = 0; t < tris.size(); ++t)
+      {
+        surface.faces.push_back({ tris[t][0], tris[t][1], tris[t][2] });
+        for (const auto v : tris[t])
+          moved[t] = moved[t] || mesh.displacement(static_cast<int>(v)).squaredNorm() > 0.0;
+      }
+      const lk::FaceCrossings crossings = lk::markedFaceCrossings(surface, moved);
+      vtkNew<vtkIdTypeArray> count;
+      count->SetName("SelfCrossings");
+      count->InsertNextValue(static_cast<vtkIdType>(crossings.pairs));
+      vtkNew<vtkDoubleArray> depth;
+      depth->SetName("SelfCrossingDepth");
+      depth->InsertNextValue(crossings.depth);
+      output->GetFieldData()->AddArray(count);
+      output->GetFieldData()->AddArray(depth);
+      if (crossings.pairs > 0)
+        vtkWarningMacro("The deformed surface passes through itself: "
+          << crossings.pairs << " pairs of faces cross, up to " << crossings.depth
+          << " through each other (a deformation deeper than the bone is thick, or sharper than its curvature), so it "
+             "is no valid solid (field data SelfCrossings).");
+      else if (!crossings.checked)
+        vtkWarningMacro("The deformed surface could not be checked for places where it passes through itself.");
+    }
   }
   catch (const std::exception& e)
   {
@@ -226,4 +261,5 @@ void vtkLKPatchDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Deformations: " << this->Deformations.size() << "\n";
   os << indent << "MaxLevel: " << this->MaxLevel << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "CheckCrossings: " << (this->CheckCrossings ? "on" : "off") << "\n";
 }

@@ -20,7 +20,8 @@
  *
  * Output: the refined, deformed triangles. Point data "Displacement" (from
  * the original surface) and "BaseNormals" (original normals); cell data
- * "Level" (refinement depth of each triangle).
+ * "Level" (refinement depth of each triangle); field data "SelfCrossings"
+ * and "SelfCrossingDepth" (CheckCrossings).
  *
  * Interactive use. The filter keeps the refined mesh between updates, as
  * the state after all its deformations and after all but the last. While
@@ -73,6 +74,20 @@ public:
   vtkGetMacro(Tolerance, double);
   ///@}
 
+  ///@{
+  /// Whether to look for places where the deformed surface passes through
+  /// itself (default on): a bump or box pushed deeper than the bone is
+  /// thick, or inward sharper than its curvature. The pairs of crossing
+  /// faces with at least one moved go to field data "SelfCrossings" (their
+  /// count) and "SelfCrossingDepth" (how far the deepest pair reaches
+  /// through each other, in mesh units), with a warning when there are any:
+  /// the output is then no valid solid. Off, neither array is written (an
+  /// interactive drag can turn it off until the mouse is released).
+  vtkSetMacro(CheckCrossings, bool);
+  vtkGetMacro(CheckCrossings, bool);
+  vtkBooleanMacro(CheckCrossings, bool);
+  ///@}
+
 protected:
   vtkLKPatchDeformationFilter();
   ~vtkLKPatchDeformationFilter() override;
@@ -93,6 +108,7 @@ protected:
   std::vector<Deformation> Deformations;
   int MaxLevel = 4;
   double Tolerance = 0.0;
+  bool CheckCrossings = true;
 
 private:
   class vtkInternals;

@@ -204,3 +204,60 @@ TEST(PatchDeformationFilter, IncrementalUpdatesEqualFromScratch)
   live->Update();
   expectSameMesh(live->GetOutput(), fromScratch(moved, {}));
 }
+
+#include <vtkFieldData.h>
+#include <vtkSphereSource.h>
+
+#include <string>
+
+TEST(PatchDeformationFilter, ADeformationThroughTheOtherSideIsReported)
+{
+  // A unit sphere pushed in at the north pole along its normal: 0.2 deep it
+  // stays a solid; 2.5 deep (more than its diameter) the dent comes out
+  // through the south side, and the output says so.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(32);
+  sphere->Update();
+  struct Result
+  {
+    vtkSmartPointer<vtkPolyData> out = vtkSmartPointer<vtkPolyData>::New();
+    int warnings = 0;
+    std::string warningMessages;
+    double field(const char* name) const
+    {
+      vtkDataArray* a = out->GetFieldData()->GetArray(name);
+      return a ? a->GetTuple1(0) : -1.0;
+    }
+  };
+  auto deformed = [&](double k, bool check) {
+    vtkNew<vtkLKPatchDeformationFilter> deform;
+    deform->SetInputData(sphere->GetOutput());
+    deform->SetCheckCrossings(check);
+    deform->AddFunctionalDeformation(0.0, 0.0, 1.0, k, 4.0, 0.8);
+    lktest::ErrorRecorder recorder(deform);
+    deform->Update();
+    EXPECT_EQ(recorder.errors, 0) << recorder.messages;
+    Result r;
+    r.out->ShallowCopy(deform->GetOutput());
+    r.warnings = recorder.warnings;
+    r.warningMessages = recorder.warningMessages;
+    return r;
+  };
+  const Result shallow = deformed(-0.2, true);
+  EXPECT_EQ(shallow.field("SelfCrossings"), 0.0);
+  EXPECT_EQ(shallow.field("SelfCrossingDepth"), 0.0);
+  EXPECT_EQ(shallow.warnings, 0) << shallow.warningMessages;
+  const Result deep = deformed(-2.5, true);
+  double bounds[6];
+  deep.out->GetBounds(bounds);
+  EXPECT_LT(bounds[4], -1.2); // the dent's tip is below the south pole
+  EXPECT_GT(deep.field("SelfCrossings"), 10.0);
+  EXPECT_GT(deep.field("SelfCrossingDepth"), 0.01);
+  EXPECT_EQ(deep.warnings, 1);
+  EXPECT_NE(deep.warningMessages.find("passes through itself"), std::string::npos) << deep.warningMessages;
+  const Result unchecked = deformed(-2.5, false);
+  EXPECT_EQ(unchecked.out->GetFieldData()->GetArray("SelfCrossings"), nullptr);
+  EXPECT_EQ(unchecked.warnings, 0);
+}

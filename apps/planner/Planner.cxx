@@ -442,6 +442,17 @@ void Planner::addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
     f->AddSmoothingDeformation(c[0], c[1], c[2], r, d.iterations);
 }
 
+namespace
+{
+/// The pairs of crossing faces a deformed piece holds (its field data
+/// SelfCrossings; 0 without it).
+vtkIdType selfCrossings(vtkPolyData* piece)
+{
+  vtkDataArray* a = piece->GetFieldData()->GetArray("SelfCrossings");
+  return a && a->GetNumberOfTuples() > 0 ? static_cast<vtkIdType>(a->GetTuple1(0)) : 0;
+}
+} // namespace
+
 vtkLKPatchDeformationFilter* Planner::deformer(std::size_t p)
 {
   deformers.resize(cut.pieces.size());
@@ -478,6 +489,7 @@ void Planner::applyDeformations()
     f->RemoveAllDeformations();
     for (const Deformation* d : perPiece[p])
       addTo(f, *d);
+    f->CheckCrossingsOn(); // a drag turns it off
     const int before = lkapp::errorCount();
     f->Update(); // only what changed is redone (the filter keeps its state)
     if (lkapp::errorCount() > before)
@@ -485,6 +497,9 @@ void Planner::applyDeformations()
       addLine(message, "cannot deform piece " + std::to_string(p) + ": " + lkapp::errorsSince(before));
       continue;
     }
+    if (const vtkIdType crossings = selfCrossings(f->GetOutput()))
+      addLine(message, "piece " + std::to_string(p) + " passes through itself after its deformations (" +
+          std::to_string(crossings) + " pairs of faces cross): it is no valid solid to print; undo (z) or deform less");
     auto deformed = vtkSmartPointer<vtkPolyData>::New();
     deformed->ShallowCopy(f->GetOutput());
     pieces[p] = deformed;
@@ -926,6 +941,12 @@ std::string Planner::planText()
       std::snprintf(line, sizeof line, ", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
         static_cast<int>(pieces[p]->GetCellData()->GetArray("Level")->GetRange()[1]));
       text += line;
+      if (const vtkIdType crossings = selfCrossings(pieces[p]))
+      {
+        std::snprintf(line, sizeof line, ", passes through itself: %lld pairs of faces cross",
+          static_cast<long long>(crossings));
+        text += line;
+      }
     }
     text += "\n";
   }

@@ -190,6 +190,7 @@ void PlannerStyle::startDeform()
   dragged.falloff = planner->tool == BUMP ? bumpFalloff(r) : 0.0;
   dabs.assign(1, dragged);
   vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(piece));
+  f->CheckCrossingsOff(); // while dragging; the release's rebuild looks (Planner::applyDeformations)
   Planner::addTo(f, dragged); // a bump or box of amount 0 until the mouse moves
   // The live piece: the filter's output, shown in place of the piece's actors.
   vtkNew<vtkPolyDataMapper> m;
