@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 vtkStandardNewMacro(vtkLKPatchDeformationFilter);
@@ -228,15 +229,56 @@ int vtkLKPatchDeformationFilter::RequestData(
           moved[t] = moved[t] || mesh.displacement(static_cast<int>(v)).squaredNorm() > 0.0;
       }
       const lk::FaceCrossings crossings = lk::markedFaceCrossings(surface, moved);
-      vtkNew<vtkIdTypeArray> count;
+      // Whether the input already crossed itself there (a cut piece whose
+      // cap crosses the bone): its faces that meet the moved faces' box,
+      // before and after the move.
+      lk::FaceCrossings before;
+      if (crossings.pairs > 0)
+      {
+        lk::Vec3 low = lk::Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+        for (std::size_t t = 0; t < tris.size(); ++t)
+          if (moved[t])
+            for (const auto v : tris[t])
+              for (const lk::Vec3& q : { mesh.position(v), lk::Vec3(mesh.position(v) - mesh.displacement(v)) })
+              {
+                low = low.cwiseMin(q);
+                high = high.cwiseMax(q);
+              }
+        lk::PolygonMesh input;
+        input.points = state.base.points;
+        std::vector<char> near(state.base.triangles.size(), 0);
+        input.faces.reserve(state.base.triangles.size());
+        for (std::size_t t = 0; t < state.base.triangles.size(); ++t)
+        {
+          const auto& tri = state.base.triangles[t];
+          input.faces.push_back({ tri[0], tri[1], tri[2] });
+          lk::Vec3 a = lk::Vec3::Constant(std::numeric_limits<double>::infinity()), b = -a;
+          for (const auto v : tri)
+          {
+            a = a.cwiseMin(input.points[static_cast<std::size_t>(v)]);
+            b = b.cwiseMax(input.points[static_cast<std::size_t>(v)]);
+          }
+          near[t] = (a.array() <= high.array()).all() && (b.array() >= low.array()).all();
+        }
+        before = lk::markedFaceCrossings(input, near);
+      }
+      vtkNew<vtkIdTypeArray> count, countBefore;
       count->SetName("SelfCrossings");
       count->InsertNextValue(static_cast<vtkIdType>(crossings.pairs));
+      countBefore->SetName("SelfCrossingsBefore");
+      countBefore->InsertNextValue(static_cast<vtkIdType>(before.pairs));
       vtkNew<vtkDoubleArray> depth;
       depth->SetName("SelfCrossingDepth");
       depth->InsertNextValue(crossings.depth);
       output->GetFieldData()->AddArray(count);
+      output->GetFieldData()->AddArray(countBefore);
       output->GetFieldData()->AddArray(depth);
-      if (crossings.pairs > 0)
+      if (crossings.pairs > 0 && before.pairs > 0)
+        vtkWarningMacro("The deformed surface passes through itself: "
+          << crossings.pairs << " pairs of faces cross, up to " << crossings.depth
+          << " through each other, where the input already did (" << before.pairs
+          << " pairs of its faces there), so it is no valid solid (field data SelfCrossings).");
+      else if (crossings.pairs > 0)
         vtkWarningMacro("The deformed surface passes through itself: "
           << crossings.pairs << " pairs of faces cross, up to " << crossings.depth
           << " through each other (a deformation deeper than the bone is thick, or sharper than its curvature), so it "

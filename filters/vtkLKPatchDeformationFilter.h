@@ -81,7 +81,10 @@ public:
   /// faces with at least one moved go to field data "SelfCrossings" (their
   /// count) and "SelfCrossingDepth" (how far the deepest pair reaches
   /// through each other, in mesh units), with a warning when there are any:
-  /// the output is then no valid solid. Off, neither array is written (an
+  /// the output is then no valid solid. When there are, "SelfCrossingsBefore"
+  /// counts the input's own crossing pairs near the moved faces (a cut piece
+  /// whose cap crosses the bone): the deformation did not make those (0 when
+  /// the output has none). Off, neither array is written (an
   /// interactive drag can turn it off until the mouse is released).
   vtkSetMacro(CheckCrossings, bool);
   vtkGetMacro(CheckCrossings, bool);

@@ -205,6 +205,7 @@ TEST(PatchDeformationFilter, IncrementalUpdatesEqualFromScratch)
   expectSameMesh(live->GetOutput(), fromScratch(moved, {}));
 }
 
+#include <vtkAppendPolyData.h>
 #include <vtkFieldData.h>
 #include <vtkSphereSource.h>
 
@@ -257,7 +258,31 @@ TEST(PatchDeformationFilter, ADeformationThroughTheOtherSideIsReported)
   EXPECT_GT(deep.field("SelfCrossingDepth"), 0.01);
   EXPECT_EQ(deep.warnings, 1);
   EXPECT_NE(deep.warningMessages.find("passes through itself"), std::string::npos) << deep.warningMessages;
+  EXPECT_EQ(deep.field("SelfCrossingsBefore"), 0.0); // the sphere did not cross itself
   const Result unchecked = deformed(-2.5, false);
   EXPECT_EQ(unchecked.out->GetFieldData()->GetArray("SelfCrossings"), nullptr);
   EXPECT_EQ(unchecked.warnings, 0);
+
+  // Crossings the input already had, near the moved faces, are told apart:
+  // two unit spheres through each other (their circle of contact at x = 0.6,
+  // radius 0.8), the first dented slightly beside that circle.
+  vtkNew<vtkSphereSource> second;
+  second->SetCenter(1.2, 0.0, 0.0);
+  second->SetRadius(1.0);
+  second->SetThetaResolution(32);
+  second->SetPhiResolution(32);
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(sphere->GetOutputPort());
+  both->AddInputConnection(second->GetOutputPort());
+  both->Update();
+  vtkNew<vtkLKPatchDeformationFilter> deform;
+  deform->SetInputConnection(both->GetOutputPort());
+  deform->AddFunctionalDeformation(0.55, 0.8, 0.0, -0.05, 20.0, 0.3);
+  lktest::ErrorRecorder recorder(deform);
+  deform->Update();
+  EXPECT_EQ(recorder.errors, 0) << recorder.messages;
+  vtkFieldData* fd = deform->GetOutput()->GetFieldData();
+  EXPECT_GT(fd->GetArray("SelfCrossings")->GetTuple1(0), 0.0);
+  EXPECT_GT(fd->GetArray("SelfCrossingsBefore")->GetTuple1(0), 0.0);
+  EXPECT_NE(recorder.warningMessages.find("where the input already did"), std::string::npos) << recorder.warningMessages;
 }

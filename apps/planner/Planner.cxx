@@ -445,10 +445,11 @@ void Planner::addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
 namespace
 {
 /// The pairs of crossing faces a deformed piece holds (its field data
-/// SelfCrossings; 0 without it).
-vtkIdType selfCrossings(vtkPolyData* piece)
+/// SelfCrossings; 0 without it), or those its input held near the moved
+/// faces (SelfCrossingsBefore).
+vtkIdType selfCrossings(vtkPolyData* piece, const char* name = "SelfCrossings")
 {
-  vtkDataArray* a = piece->GetFieldData()->GetArray("SelfCrossings");
+  vtkDataArray* a = piece->GetFieldData()->GetArray(name);
   return a && a->GetNumberOfTuples() > 0 ? static_cast<vtkIdType>(a->GetTuple1(0)) : 0;
 }
 } // namespace
@@ -498,8 +499,16 @@ void Planner::applyDeformations()
       continue;
     }
     if (const vtkIdType crossings = selfCrossings(f->GetOutput()))
-      addLine(message, "piece " + std::to_string(p) + " passes through itself after its deformations (" +
-          std::to_string(crossings) + " pairs of faces cross): it is no valid solid to print; undo (z) or deform less");
+    {
+      const vtkIdType before = selfCrossings(f->GetOutput(), "SelfCrossingsBefore");
+      if (before > 0)
+        addLine(message, "piece " + std::to_string(p) + " passes through itself where it is deformed (" +
+            std::to_string(crossings) + " pairs of faces cross), as it did there before (" + std::to_string(before) +
+            " pairs): it is no valid solid to print");
+      else
+        addLine(message, "piece " + std::to_string(p) + " passes through itself after its deformations (" +
+            std::to_string(crossings) + " pairs of faces cross): it is no valid solid to print; undo (z) or deform less");
+    }
     auto deformed = vtkSmartPointer<vtkPolyData>::New();
     deformed->ShallowCopy(f->GetOutput());
     pieces[p] = deformed;
@@ -946,6 +955,11 @@ std::string Planner::planText()
         std::snprintf(line, sizeof line, ", passes through itself: %lld pairs of faces cross",
           static_cast<long long>(crossings));
         text += line;
+        if (const vtkIdType before = selfCrossings(pieces[p], "SelfCrossingsBefore"))
+        {
+          std::snprintf(line, sizeof line, " (%lld before its deformations)", static_cast<long long>(before));
+          text += line;
+        }
       }
     }
     text += "\n";
