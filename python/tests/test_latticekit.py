@@ -349,6 +349,14 @@ class PipelineTest(unittest.TestCase):
         deform.RemoveAllDeformations()
         deform.Update()
         self.assertEqual(deform.GetOutput().GetNumberOfPolys(), 512)
+        # A flat patch dented: nothing crosses, and the field data says so.
+        self.assertTrue(deform.GetCheckCrossings())
+        deform.AddFunctionalDeformation(0.0, 0.0, 0.0, -0.1, 20.0, 0.4)
+        deform.Update()
+        self.assertEqual(deform.GetOutput().GetFieldData().GetArray("SelfCrossings").GetValue(0), 0)
+        deform.CheckCrossingsOff()
+        deform.Update()
+        self.assertIsNone(deform.GetOutput().GetFieldData().GetArray("SelfCrossings"))
 
     def test_screen_stroke_with_a_camera(self):
         # Pixels plus the camera that showed the mesh: picked on the visible side.
