@@ -566,8 +566,9 @@ struct StrokeSplitter::Impl
     added = saved.added;
   }
 
-  /// walkInOnePlane, and when no plane works, two ways round, each at most
-  /// `depth` times over and tried on its own copy of the mesh:
+  /// walkInOnePlane, and when no plane works, two ways round, nested at most
+  /// `depth` deep (the halves on a copy of the mesh, put back when they
+  /// fail):
   /// - halves: the segment is cut at the surface point nearest its
   ///   midpoint and each half is walked in its own plane (a segment over a
   ///   fold, or one whose plane's section of the faces turns back near a
