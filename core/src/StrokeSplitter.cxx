@@ -149,6 +149,12 @@ struct StrokeSplitter::Impl
     // vertex put there would be joined to faces it is not on (a spike).
     static const std::string missed = "the stroke could not be followed (the walk passed the point without meeting it)";
     const double onFace = 1e-3 * meanEdge;
+    // The end is on the crossing the walk meets at t = 1.
+    auto endOnCrossing = [&](const Event& e) {
+      if ((e.x - x).norm() > onFace)
+        throw std::invalid_argument(missed + retry);
+      plan.events.push_back(e);
+    };
     auto endHere = [&](FI f) {
       // The end lies in f: on one of its vertices or edges, or inside.
       const HI h0 = m.halfedge(f);
@@ -230,11 +236,7 @@ struct StrokeSplitter::Impl
         if (best.isEnd && target == SMesh::null_vertex())
         {
           if (std::abs(best.t - 1.0) <= endTolerance)
-          {
-            if ((best.event.x - x).norm() > onFace)
-              throw std::invalid_argument(missed + retry);
-            plan.events.push_back(best.event); // the end is on the crossing
-          }
+            endOnCrossing(best.event);
           else
             endHere(best.face);
           return plan;
@@ -287,11 +289,7 @@ struct StrokeSplitter::Impl
       if (target == SMesh::null_vertex() && t >= 1.0 - endTolerance)
       {
         if (std::abs(t - 1.0) <= endTolerance)
-        {
-          if ((e.x - x).norm() > onFace)
-            throw std::invalid_argument(missed + retry);
-          plan.events.push_back(e);
-        }
+          endOnCrossing(e);
         else
           endHere(g);
         return plan;
