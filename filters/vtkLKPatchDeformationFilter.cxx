@@ -246,21 +246,10 @@ int vtkLKPatchDeformationFilter::RequestData(
               }
         lk::PolygonMesh input;
         input.points = state.base.points;
-        std::vector<char> near(state.base.triangles.size(), 0);
         input.faces.reserve(state.base.triangles.size());
-        for (std::size_t t = 0; t < state.base.triangles.size(); ++t)
-        {
-          const auto& tri = state.base.triangles[t];
+        for (const auto& tri : state.base.triangles)
           input.faces.push_back({ tri[0], tri[1], tri[2] });
-          lk::Vec3 a = lk::Vec3::Constant(std::numeric_limits<double>::infinity()), b = -a;
-          for (const auto v : tri)
-          {
-            a = a.cwiseMin(input.points[static_cast<std::size_t>(v)]);
-            b = b.cwiseMax(input.points[static_cast<std::size_t>(v)]);
-          }
-          near[t] = (a.array() <= high.array()).all() && (b.array() >= low.array()).all();
-        }
-        before = lk::markedFaceCrossings(input, near);
+        before = lk::crossingsInBox(input, low, high);
       }
       vtkNew<vtkIdTypeArray> count, countBefore;
       count->SetName("SelfCrossings");

@@ -16,21 +16,24 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
+
+CGAL::Bbox_3 faceBox(const PolygonMesh& mesh, std::size_t f)
+{
+  CGAL::Bbox_3 b;
+  for (const auto v : mesh.faces[f])
+  {
+    const Vec3& q = mesh.points[static_cast<std::size_t>(v)];
+    b += CGAL::Bbox_3(q.x(), q.y(), q.z(), q.x(), q.y(), q.z());
+  }
+  return b;
+}
 } // namespace
 
 FaceCrossings markedFaceCrossings(const PolygonMesh& piece, const std::vector<char>& marked)
 {
   if (marked.size() != piece.faces.size() || std::none_of(marked.begin(), marked.end(), [](char c) { return c != 0; }))
     return {};
-  auto box = [&](std::size_t f) {
-    CGAL::Bbox_3 b;
-    for (const auto v : piece.faces[f])
-    {
-      const Vec3& q = piece.points[static_cast<std::size_t>(v)];
-      b += CGAL::Bbox_3(q.x(), q.y(), q.z(), q.x(), q.y(), q.z());
-    }
-    return b;
-  };
+  auto box = [&](std::size_t f) { return faceBox(piece, f); };
   CGAL::Bbox_3 markedBox, all;
   for (std::size_t f = 0; f < piece.faces.size(); ++f)
     if (marked[f])
@@ -106,6 +109,15 @@ FaceCrossings markedFaceCrossings(const PolygonMesh& piece, const std::vector<ch
   if (!count(true, crossings) && !count(false, crossings))
     return { 0, 0.0, false };
   return { crossings, depth, true };
+}
+
+FaceCrossings crossingsInBox(const PolygonMesh& mesh, const Vec3& low, const Vec3& high)
+{
+  const CGAL::Bbox_3 region(low.x(), low.y(), low.z(), high.x(), high.y(), high.z());
+  std::vector<char> marked(mesh.faces.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    marked[f] = CGAL::do_overlap(faceBox(mesh, f), region);
+  return markedFaceCrossings(mesh, marked);
 }
 
 } // namespace lk

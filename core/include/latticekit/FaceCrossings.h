@@ -33,4 +33,9 @@ struct FaceCrossings
 /// The mesh must have valid face indices (polygonIndexProblem).
 FaceCrossings markedFaceCrossings(const PolygonMesh& mesh, const std::vector<char>& marked);
 
+/// markedFaceCrossings with every face whose box meets the box [low, high]
+/// marked: the crossings a region of the mesh holds (the deformation filter
+/// asks it of its input around the faces it moved).
+FaceCrossings crossingsInBox(const PolygonMesh& mesh, const Vec3& low, const Vec3& high);
+
 } // namespace lk
