@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 
 namespace
@@ -319,6 +320,114 @@ TEST(MedicalImageReader, NiftiWithoutOrientationKeepsDataCoordinatesAndWarns)
   {
     EXPECT_EQ(reader->GetPatientMatrix()->GetElement(i / 4, i % 4), identity->GetElement(i / 4, i % 4));
   }
+}
+
+namespace
+{
+/// A 10 x 12 x 14 int16 NIfTI-1 file, written byte by byte (VTK's writer
+/// cannot make a left-handed qform), with one voxel at (2, 3, 4) set to 1000,
+/// spacing 1, 1.5, 2, a qform turned 0.3 rad about z with offset (10, -20, 30)
+/// (RAS) and the given qfac, and, when sform is given, that sform as well.
+void writeNifti(const std::string& path, float qfac, short qformCode, short sformCode,
+  const std::array<float, 12>& sform)
+{
+  char h[352] = {};
+  auto put = [&h](int offset, const void* value, std::size_t bytes) { std::memcpy(h + offset, value, bytes); };
+  const int size = 348;
+  put(0, &size, 4);
+  const short dim[8] = { 3, 10, 12, 14, 1, 1, 1, 1 };
+  put(40, dim, sizeof(dim));
+  const short datatype = 4, bitpix = 16;
+  put(70, &datatype, 2);
+  put(72, &bitpix, 2);
+  const float pixdim[8] = { qfac, 1.0f, 1.5f, 2.0f, 1, 1, 1, 1 };
+  put(76, pixdim, sizeof(pixdim));
+  const float voxOffset = 352.0f, slope = 1.0f;
+  put(108, &voxOffset, 4);
+  put(112, &slope, 4);
+  put(252, &qformCode, 2);
+  put(254, &sformCode, 2);
+  const float quatern[6] = { 0.0f, 0.0f, static_cast<float>(std::sin(0.15)), 10.0f, -20.0f, 30.0f };
+  put(256, quatern, sizeof(quatern));
+  put(280, sform.data(), sizeof(float) * 12);
+  std::memcpy(h + 344, "n+1", 4);
+  std::vector<short> voxels(10 * 12 * 14, 0);
+  voxels[2 + 10 * (3 + 12 * 4)] = 1000;
+  std::ofstream out(path, std::ios::binary);
+  out.write(h, sizeof(h));
+  out.write(reinterpret_cast<const char*>(voxels.data()), static_cast<std::streamsize>(voxels.size() * sizeof(short)));
+}
+
+/// Where the reader puts the voxel of value 1000: the patient (LPS) point.
+std::array<double, 3> markedVoxelInPatientSpace(vtkLKMedicalImageReader* reader)
+{
+  vtkImageData* image = reader->GetOutput();
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  {
+    if (scalars->GetTuple1(i) == 1000.0)
+    {
+      double p[4] = { 0, 0, 0, 1 };
+      image->GetPoint(i, p);
+      double q[4];
+      reader->GetPatientMatrix()->MultiplyPoint(p, q);
+      return { q[0], q[1], q[2] };
+    }
+  }
+  ADD_FAILURE() << "no marked voxel";
+  return { 0, 0, 0 };
+}
+} // namespace
+
+// NIfTI's qform: RAS = R (i dx, j dy, qfac k dz) + offset. With qfac = -1 the
+// slices run the other way (a left-handed grid, as many converters write
+// axial CTs); VTK's reader flips them, and the patient matrix must put every
+// voxel where the header says. Patient space is LPS, so x and y change sign.
+TEST(MedicalImageReader, NiftiQformAndSformPlaceEveryVoxelInPatientSpace)
+{
+  const std::string dir = tempFolder("nifti_forms");
+  const double a = 0.3;
+  const double ras[2] = { 10.0 + std::cos(a) * 2.0 - std::sin(a) * 4.5, -20.0 + std::sin(a) * 2.0 + std::cos(a) * 4.5 };
+  const std::array<float, 12> noSform = {};
+  for (float qfac : { 1.0f, -1.0f })
+  {
+    const std::string path = dir + (qfac > 0 ? "/right.nii" : "/left.nii");
+    writeNifti(path, qfac, 1, 0, noSform);
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    ASSERT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+    const auto p = markedVoxelInPatientSpace(reader);
+    EXPECT_NEAR(p[0], -ras[0], 1e-4) << "qfac " << qfac;
+    EXPECT_NEAR(p[1], -ras[1], 1e-4) << "qfac " << qfac;
+    EXPECT_NEAR(p[2], 30.0 + qfac * 8.0, 1e-4) << "qfac " << qfac;
+  }
+  // An sform alone (qform_code 0): an oblique, left-handed affine, rows of
+  // [i j k 1] -> RAS, with a shear the qform could not hold.
+  const std::array<float, 12> sform = { -0.9f, 0.2f, 0.1f, 5.0f, 0.3f, 1.4f, 0.0f, -7.0f, 0.0f, 0.25f, 2.0f, 40.0f };
+  const std::string path = dir + "/sform.nii";
+  writeNifti(path, 1.0f, 0, 2, sform);
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  const auto p = markedVoxelInPatientSpace(reader);
+  const double ijk[3] = { 2, 3, 4 };
+  double expected[3];
+  for (int row = 0; row < 3; ++row)
+  {
+    expected[row] = sform[4 * row + 3];
+    for (int c = 0; c < 3; ++c)
+    {
+      expected[row] += sform[4 * row + c] * ijk[c];
+    }
+  }
+  EXPECT_NEAR(p[0], -expected[0], 1e-4);
+  EXPECT_NEAR(p[1], -expected[1], 1e-4);
+  EXPECT_NEAR(p[2], expected[2], 1e-4);
 }
 
 TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
