@@ -19,6 +19,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -28,8 +29,18 @@ vtkStandardNewMacro(vtkLKClosedLineCutFilter);
 namespace
 {
 /// Chains line edges into closed loops; a sentence on failure.
-std::string loopsOf(const std::vector<lk::EdgeKey>& edges, std::vector<std::vector<std::int64_t>>& loops)
+std::string loopsOf(const std::vector<lk::EdgeKey>& edges, vtkPolyData* mesh,
+  std::vector<std::vector<std::int64_t>>& loops)
 {
+  // Where a line goes wrong, the point as well as its id: a user finds a
+  // place, not a number.
+  auto where = [mesh](std::int64_t v) {
+    double p[3];
+    mesh->GetPoint(static_cast<vtkIdType>(v), p);
+    char text[96];
+    std::snprintf(text, sizeof(text), " (at %.2f, %.2f, %.2f", p[0], p[1], p[2]);
+    return std::to_string(v) + text;
+  };
   std::map<std::int64_t, std::vector<std::int64_t>> adj;
   for (const auto& e : edges)
   {
@@ -39,9 +50,9 @@ std::string loopsOf(const std::vector<lk::EdgeKey>& edges, std::vector<std::vect
   for (const auto& [v, n] : adj)
   {
     if (n.size() == 1)
-      return "the line is not closed: it ends at mesh point " + std::to_string(v);
+      return "the line is not closed: it ends at mesh point " + where(v) + ")";
     if (n.size() > 2)
-      return "lines meet or cross at mesh point " + std::to_string(v) + " (" + std::to_string(n.size()) +
+      return "lines meet or cross at mesh point " + where(v) + "; " + std::to_string(n.size()) +
         " line edges there); give separate closed loops";
   }
   std::map<std::int64_t, bool> used;
@@ -132,7 +143,7 @@ int vtkLKClosedLineCutFilter::RequestData(
   if (problem.empty() && edges.empty())
     problem = "no closed line to cut along (give input 1, or line cells on the mesh)";
   if (problem.empty())
-    problem = loopsOf(edges, loops);
+    problem = loopsOf(edges, input, loops);
   if (!problem.empty())
   {
     vtkErrorMacro("Cannot cut: " << problem << ".");

@@ -11,8 +11,10 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkThreshold.h>
+#include <vtkPointData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <cstdio>
 #include <set>
 
 namespace
@@ -153,6 +155,20 @@ TEST(ClosedLineCut, OpenOrCrossingLinesAreClearErrors)
   EXPECT_EQ(errors.errors, 1);
   EXPECT_NE(errors.messages.find("not closed"), std::string::npos) << errors.messages;
   EXPECT_EQ(cut->GetOutput()->GetNumberOfPoints(), 0);
+  // The message names the place as well as the id: one of the line's two ends.
+  {
+    const std::string key = "it ends at mesh point ";
+    const auto at = errors.messages.find(key);
+    ASSERT_NE(at, std::string::npos) << errors.messages;
+    const vtkIdType id = std::stoll(errors.messages.substr(at + key.size()));
+    auto* ids = loop->GetPointData()->GetArray("MeshPointId");
+    EXPECT_TRUE(id == ids->GetComponent(0, 0) || id == ids->GetComponent(n - 1, 0)) << errors.messages;
+    double p[3];
+    bone->GetPoint(id, p);
+    char place[96];
+    std::snprintf(place, sizeof(place), "(at %.2f, %.2f, %.2f)", p[0], p[1], p[2]);
+    EXPECT_NE(errors.messages.find(place), std::string::npos) << place << " in " << errors.messages;
+  }
   // No line at all.
   vtkNew<vtkLKClosedLineCutFilter> none;
   none->SetInputData(bone);
