@@ -51,6 +51,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -311,6 +313,38 @@ bool Planner::addStroke(const std::vector<std::array<double, 3>>& points)
   return false;
 }
 
+namespace
+{
+/// The first two closed lines that share a point of the surface, as a
+/// sentence; empty when they are all apart.
+std::string closedLinesMeeting(const std::vector<vtkSmartPointer<vtkPolyData>>& lines,
+  const std::vector<std::string>& names, vtkPolyData* surface)
+{
+  std::map<vtkIdType, std::size_t> owner; // mesh point -> the first line through it
+  for (std::size_t l = 0; l < lines.size(); ++l)
+  {
+    vtkDataArray* ids = lines[l]->GetPointData()->GetArray("MeshPointId");
+    std::set<vtkIdType> own;
+    for (vtkIdType i = 0; ids && i < ids->GetNumberOfTuples(); ++i)
+      own.insert(static_cast<vtkIdType>(ids->GetComponent(i, 0)));
+    for (vtkIdType v : own)
+    {
+      const auto [it, added] = owner.emplace(v, l);
+      if (added || v < 0 || v >= surface->GetNumberOfPoints())
+        continue;
+      double p[3];
+      surface->GetPoint(v, p);
+      char place[80];
+      std::snprintf(place, sizeof(place), "(%.1f, %.1f, %.1f)", p[0], p[1], p[2]);
+      return names[it->second] + " and " + names[l] + " meet on the bone at " + place +
+        ": each cut needs a closed line apart from the others (two cuts that meet, as a closed wedge's, are "
+        "not supported); undo one (z) or draw it apart";
+    }
+  }
+  return {};
+}
+} // namespace
+
 void Planner::computeCut()
 {
   const std::string key = cutKey(session);
@@ -321,6 +355,7 @@ void Planner::computeCut()
   deformers.clear();
   vtkSmartPointer<vtkPolyData> surface = bone;
   std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
+  std::vector<std::string> closedNames; // "stroke 3 (saw line)", one per closed line
   for (std::size_t i = 0; i < session.strokes.size(); ++i)
   {
     cut.lastLineOpen = false;
@@ -370,13 +405,27 @@ void Planner::computeCut()
     if (st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
     {
       if (closed)
+      {
         closedLines.push_back(line);
+        closedNames.push_back(which);
+      }
       cut.lastLineOpen = !closed;
     }
   }
   vtkSmartPointer<vtkPolyData> faces = facesOnly(surface);
   cut.surface = faces;
-  if (session.cut && !closedLines.empty())
+  // Closed lines that meet: the cut needs them apart, and the surgeon needs to
+  // know which two strokes and where (the cut filter can name only a mesh
+  // point).
+  std::string meeting;
+  if (session.cut)
+    meeting = closedLinesMeeting(closedLines, closedNames, faces);
+  if (!meeting.empty())
+  {
+    addLine(cut.message, "the cut failed: " + meeting);
+    cut.failed = true;
+  }
+  else if (session.cut && !closedLines.empty())
   {
     vtkNew<vtkPolyData> loops;
     vtkNew<vtkPoints> lp;
