@@ -9,6 +9,7 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkExtractVOI.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageCast.h>
@@ -210,6 +211,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
 
   // Patient matrix: explicit, else the reader's field data, else identity.
   vtkNew<vtkMatrix4x4> matrix;
+  std::string space; // the reader's "SPACE" tag, passed on with its matrix
   if (this->PatientMatrix)
   {
     matrix->DeepCopy(this->PatientMatrix);
@@ -218,6 +220,9 @@ int vtkLKBoneSurfaceFilter::RequestData(
   {
     if (m->GetNumberOfTuples() * m->GetNumberOfComponents() == 16)
     {
+      auto* tag = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("SPACE"));
+      if (tag && tag->GetNumberOfValues() == 1)
+        space = tag->GetValue(0);
       for (int i = 0; i < 16; ++i)
       {
         matrix->SetElement(i / 4, i % 4, m->GetComponent(i, 0));
@@ -414,6 +419,16 @@ int vtkLKBoneSurfaceFilter::RequestData(
   }
   output->ShallowCopy(surface);
   output->GetPointData()->Initialize();
+  vtkNew<vtkFieldData> fields; // the output's own copy (the repair's counts), not the last filter's
+  fields->DeepCopy(surface->GetFieldData());
+  if (!space.empty())
+  {
+    vtkNew<vtkStringArray> tag;
+    tag->SetName("SPACE");
+    tag->InsertNextValue(space);
+    fields->AddArray(tag);
+  }
+  output->SetFieldData(fields);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -18,7 +18,10 @@
  *     or the one closest to SeedPoint (patient coordinates);
  *  5. placement in patient coordinates with the input's "PatientMatrix" field
  *     data (from vtkLKMedicalImageReader) or SetPatientMatrix; a mirroring
- *     matrix reverses the triangles so that they stay outward;
+ *     matrix reverses the triangles so that they stay outward; with the
+ *     reader's matrix its "SPACE" tag ("LPS", when the file gives the
+ *     orientation) goes into the output's field data, where the command-line
+ *     tools find it to tag the files they write as 3D Slicer does;
  *  6. repair into a manifold, consistently outward-oriented triangle mesh
  *     that CGAL accepts (vtkLKMeshRepairFilter);
  *  7. optional light smoothing (vtkWindowedSincPolyDataFilter,

@@ -19,6 +19,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkObjectFactoryCollection.h>
 #include <vtkPointData.h>
+#include <vtkStringArray.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtksys/SystemTools.hxx>
 
@@ -259,6 +260,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
   this->NumberOfSeries = 0;
   this->GantryTilt = this->MinimumSliceGap = this->MaximumSliceGap = 0.0;
   this->NumberOfInputSlices = 0;
+  this->OrientationKnown = false;
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro("No FileName given.");
@@ -314,6 +316,9 @@ bool vtkLKMedicalImageReader::ReadVolume()
       std::vector<double> axes = numbers(dirs->second);
       axes.resize(9);
       matrixFromAxes(axes, origin, ras, this->PatientMatrix, spacing);
+      // Directions in a space the header names are patient axes; without a
+      // "space" field (only "space dimension") they are not anatomical.
+      this->OrientationKnown = header.count("space") > 0;
     }
     else
     {
@@ -367,6 +372,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
       }
     }
     matrixFromAxes(axes, origin, false, this->PatientMatrix, spacing);
+    this->OrientationKnown = true; // MetaImage is LPS, identity axes by default (as ITK writes it)
   }
   else if (endsWith(name, ".nii") || endsWith(name, ".nii.gz") || endsWith(name, ".hdr") ||
     endsWith(name, ".img") || endsWith(name, ".img.gz"))
@@ -414,6 +420,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     if (form)
     {
       vtkMatrix4x4::Multiply4x4(ras2lps, tmp, this->PatientMatrix);
+      this->OrientationKnown = true;
     }
     else
     {
@@ -493,6 +500,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     this->MinimumSliceGap = report.minGap;
     this->MaximumSliceGap = report.maxGap;
     this->NumberOfInputSlices = report.inputSlices;
+    this->OrientationKnown = true; // every slice's ImagePositionPatient and ImageOrientationPatient
     image = volume;
     image->GetSpacing(spacing);
   }
@@ -514,6 +522,15 @@ bool vtkLKMedicalImageReader::ReadVolume()
     matrix->SetValue(i, this->PatientMatrix->GetElement(i / 4, i % 4));
   }
   this->Volume->GetFieldData()->AddArray(matrix);
+  if (this->OrientationKnown)
+  {
+    // 3D Slicer's name for a data set's coordinate system (as its model files
+    // carry it); vtkLKBoneSurfaceFilter passes it on to the surface.
+    vtkNew<vtkStringArray> space;
+    space->SetName("SPACE");
+    space->InsertNextValue("LPS");
+    this->Volume->GetFieldData()->AddArray(space);
+  }
   this->VolumeTime = this->GetMTime();
   return true;
 }

@@ -74,6 +74,13 @@ public:
   /// Data coordinates to patient (LPS, mm). Valid after an update.
   vtkMatrix4x4* GetPatientMatrix() { return this->PatientMatrix; }
 
+  /// Whether the file says how its axes lie in the patient (after an update):
+  /// true for DICOM, MetaImage, NRRD with "space" and "space directions",
+  /// NIfTI with a qform or sform. Then the output's field data also holds
+  /// "SPACE" = "LPS" (3D Slicer's tag for a coordinate system), which
+  /// vtkLKBoneSurfaceFilter passes on to its surface; otherwise the patient
+  /// matrix only scales (and shifts) the data coordinates.
+  bool GetOrientationKnown() const { return this->OrientationKnown; }
   /// "DICOM", "NRRD", "MetaImage" or "NIfTI" after an update.
   const char* GetFileFormat() { return this->FileFormat.c_str(); }
 
@@ -110,6 +117,7 @@ protected:
   double MinimumSliceGap = 0.0;
   double MaximumSliceGap = 0.0;
   int NumberOfInputSlices = 0;
+  bool OrientationKnown = false;
 
 private:
   vtkLKMedicalImageReader(const vtkLKMedicalImageReader&) = delete;

@@ -15,11 +15,13 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkSphereSource.h>
+#include <vtkStringArray.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <set>
+#include <string>
 
 namespace
 {
@@ -58,6 +60,13 @@ Surface extract(const std::string& file, double iso, int mode = vtkLKBoneSurface
   return s;
 }
 
+/// The surface's "SPACE" field data (3D Slicer's tag for its coordinate system), or "".
+std::string spaceTag(vtkPolyData* pd)
+{
+  auto* tag = vtkStringArray::SafeDownCast(pd->GetFieldData()->GetAbstractArray("SPACE"));
+  return tag && tag->GetNumberOfValues() == 1 ? tag->GetValue(0) : std::string();
+}
+
 std::size_t components(vtkPolyData* pd)
 {
   vtkNew<vtkPolyDataConnectivityFilter> c;
@@ -88,6 +97,8 @@ TEST(BoneSurface, CtHeadAt300HUIsAManifoldMeshThatCgalAccepts)
     lk::countBoundaryEdges(m));
   // Outward: the enclosed volume (nearly closed) is positive.
   EXPECT_GT(lk::signedVolume(m), 0.0);
+  // The NIfTI gives no orientation: the surface claims no coordinate system.
+  EXPECT_EQ(s.mesh->GetFieldData()->GetAbstractArray("SPACE"), nullptr);
 }
 
 TEST(BoneSurface, TciaLabelMapsGiveClosedSinglePieceMandibles)
@@ -106,6 +117,9 @@ TEST(BoneSurface, TciaLabelMapsGiveClosedSinglePieceMandibles)
     const double ml = lk::signedVolume(m) / 1000.0;
     EXPECT_GT(ml, 20.0) << file;
     EXPECT_LT(ml, 150.0) << file;
+    // The NRRD's LPS axes: the surface says so (3D Slicer's tag), beside the repair's counts.
+    EXPECT_EQ(spaceTag(s.mesh), "LPS") << file;
+    EXPECT_NE(s.mesh->GetFieldData()->GetArray("BoundaryEdges"), nullptr) << file;
   }
 }
 
@@ -255,6 +269,7 @@ TEST(BoneSurface, TheCropBoxIsInPatientCoordinatesAndTheCutIsClosed)
   const double half[6] = { 0, 70, 250, 360, -1000, -900 };
   const Surface s = crop(half);
   ASSERT_EQ(s.errors, 0) << s.messages;
+  EXPECT_EQ(spaceTag(s.mesh), "LPS"); // the crop's padded volume has no field data of its own
   const Surface whole = extract(mandibles[0], 0.5);
   double b[6];
   s.mesh->GetBounds(b);

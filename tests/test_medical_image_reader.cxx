@@ -49,6 +49,13 @@ void copyGESeries(const std::string& dir)
   }
 }
 
+/// The output's "SPACE" field data (3D Slicer's tag), or "".
+std::string spaceTag(vtkImageData* image)
+{
+  auto* tag = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("SPACE"));
+  return tag && tag->GetNumberOfValues() == 1 ? tag->GetValue(0) : std::string();
+}
+
 /// Median of |a - b| over the pairs.
 double medianAbs(std::vector<double> d)
 {
@@ -65,6 +72,8 @@ TEST(MedicalImageReader, GantryTiltedSeriesMatchesEverySlicePosition)
   ASSERT_STREQ(reader->GetFileFormat(), "DICOM");
   EXPECT_EQ(reader->GetNumberOfInputSlices(), 28);
   EXPECT_NEAR(reader->GetGantryTilt(), 18.5, 0.05);
+  EXPECT_TRUE(reader->GetOrientationKnown());
+  EXPECT_EQ(spaceTag(reader->GetOutput()), "LPS");
   EXPECT_LT(reader->GetMinimumSliceGap(), 1.2);
   EXPECT_GT(reader->GetMaximumSliceGap(), 6.5);
   vtkImageData* volume = reader->GetOutput();
@@ -274,6 +283,10 @@ TEST(MedicalImageReader, NrrdGeometryComesFromTheHeader)
   EXPECT_NEAR(m->GetElement(1, 3), 155.61000061035156, 1e-9);
   EXPECT_NEAR(m->GetElement(2, 3), -1178.0, 1e-9);
   EXPECT_NEAR(m->Determinant(), 1.0, 1e-12);
+  // "space: left-posterior-superior": the axes are the patient's, and the
+  // output says so in 3D Slicer's tag.
+  EXPECT_TRUE(reader->GetOrientationKnown());
+  EXPECT_EQ(spaceTag(reader->GetOutput()), "LPS");
 }
 
 TEST(MedicalImageReader, MetaImageRoundTrip)
@@ -315,6 +328,8 @@ TEST(MedicalImageReader, NiftiWithoutOrientationKeepsDataCoordinatesAndWarns)
   EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[2], 2.0);
   EXPECT_EQ(rec.warnings, 1);
   EXPECT_NE(rec.warningMessages.find("orientation is unknown"), std::string::npos);
+  EXPECT_FALSE(reader->GetOrientationKnown());
+  EXPECT_EQ(spaceTag(reader->GetOutput()), ""); // no claim of a patient system
   vtkNew<vtkMatrix4x4> identity;
   for (int i = 0; i < 16; ++i)
   {
@@ -399,6 +414,8 @@ TEST(MedicalImageReader, NiftiQformAndSformPlaceEveryVoxelInPatientSpace)
     reader->Update();
     ASSERT_EQ(rec.errors, 0) << rec.messages;
     EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+    EXPECT_TRUE(reader->GetOrientationKnown());
+    EXPECT_EQ(spaceTag(reader->GetOutput()), "LPS");
     const auto p = markedVoxelInPatientSpace(reader);
     EXPECT_NEAR(p[0], -ras[0], 1e-4) << "qfac " << qfac;
     EXPECT_NEAR(p[1], -ras[1], 1e-4) << "qfac " << qfac;
