@@ -127,7 +127,8 @@ int main(int argc, char* argv[])
   if (lkapp::errorCount() > 0)
     return 1;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!lkapp::writeMesh(cut->GetOutput(), output, error))
+  const std::string space = lkapp::coordinateSpace(mesh); // the input's, for every file written
+  if (!lkapp::writeMesh(cut->GetOutput(), output, error, space))
   {
     std::cerr << "error: " << error << "\n";
     return 1;
@@ -158,7 +159,7 @@ int main(int argc, char* argv[])
     plain->GetCellData()->Initialize();
     for (const char* ext : { ".stl", ".vtp", ".obj" })
       if (!lkapp::writeMesh(ext == std::string(".vtp") ? piece.Get() : plain.Get(),
-            piecesFolder + "/piece" + std::to_string(p) + ext, error))
+            piecesFolder + "/piece" + std::to_string(p) + ext, error, space))
       {
         std::cerr << "error: " << error << "\n";
         return 1;

@@ -377,7 +377,7 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
     row.polygons += lkapp::fieldValue(lattice, "DisplayPolygons");
     const std::string path = folder + "/" + stem + (meshes.size() > 1 ? std::to_string(i) : "") + ".vtp";
     std::string error;
-    if (!lkapp::writeMesh(lattice, path, error))
+    if (!lkapp::writeMesh(lattice, path, error, lkapp::coordinateSpace(meshes[i])))
     {
       std::cerr << "error: " << error << "\n";
       return row;
@@ -587,6 +587,9 @@ int main(int argc, char* argv[])
     return 1;
   auto mandible = vtkSmartPointer<vtkPolyData>::New();
   mandible->ShallowCopy(bone->GetOutput());
+  // "LPS" when the CT gives its orientation (the bundled NIfTI does not):
+  // every file written below names it, as 3D Slicer's do.
+  const std::string space = lkapp::coordinateSpace(mandible);
 
   // 2. The scripted pen stroke, split into the mesh.
   auto stroke = scriptedStroke(mandible, plan, error);
@@ -628,6 +631,7 @@ int main(int argc, char* argv[])
     auto piece = vtkSmartPointer<vtkPolyData>::New();
     auto border = vtkSmartPointer<vtkPolyData>::New();
     extractPiece(cut->GetOutput(), r, piece, border);
+    lkapp::setCoordinateSpace(piece, space);
     pieces.push_back(piece);
     borders.push_back(border);
   }
@@ -638,14 +642,14 @@ int main(int argc, char* argv[])
   // with the line kept, as they are.
   for (const auto& [mesh, stem] : std::vector<std::pair<vtkPolyData*, std::string>>{
          { marked, "mandible.vtp" }, { marked, "mandible.stl" }, { line, "cut_line.vtp" }, { stroke, "stroke.vtp" } })
-    if (!lkapp::writeMesh(mesh, folder + "/" + stem, error))
+    if (!lkapp::writeMesh(mesh, folder + "/" + stem, error, space))
     {
       std::cerr << "error: " << error << "\n";
       return 1;
     }
   for (std::size_t p = 0; p < pieces.size(); ++p)
     for (const char* ext : { ".stl", ".vtp", ".obj" })
-      if (!lkapp::writeMesh(pieces[p], folder + "/piece" + std::to_string(p) + ext, error))
+      if (!lkapp::writeMesh(pieces[p], folder + "/piece" + std::to_string(p) + ext, error, space))
       {
         std::cerr << "error: " << error << "\n";
         return 1;
@@ -679,7 +683,7 @@ int main(int argc, char* argv[])
     return 1;
   for (const auto& [pd, stem] : std::vector<std::pair<vtkPolyData*, std::string>>{
          { surfaceCut, "lattice_surface_cut.vtp" }, { surfaceQuads, "lattice_surface_quads.vtp" } })
-    if (!lkapp::writeMesh(pd, folder + "/" + stem, error))
+    if (!lkapp::writeMesh(pd, folder + "/" + stem, error, space))
     {
       std::cerr << "error: " << error << "\n";
       return 1;

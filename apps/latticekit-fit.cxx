@@ -203,6 +203,7 @@ int main(int argc, char* argv[])
       return 1;
     }
   }
+  const std::string space = lkapp::coordinateSpace(mesh); // the input's, for every file written
   const auto start = std::chrono::steady_clock::now();
   const vtkIdType inputPoints = mesh->GetNumberOfPoints(), inputPolygons = mesh->GetNumberOfPolys();
   vtkNew<vtkLKMeshRepairFilter> repairFilter;
@@ -258,8 +259,8 @@ int main(int argc, char* argv[])
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   vtkPolyData* lattice = fit->GetOutput();
-  if (!lkapp::writeMesh(lattice, output, error) ||
-    (!mapOut.empty() && !lkapp::writeMesh(fit->GetVertexMapOutput(), mapOut, error)))
+  if (!lkapp::writeMesh(lattice, output, error, space) ||
+    (!mapOut.empty() && !lkapp::writeMesh(fit->GetVertexMapOutput(), mapOut, error, space)))
   {
     std::cerr << "error: " << error << "\n";
     return 1;
@@ -273,7 +274,7 @@ int main(int argc, char* argv[])
     surface->Update();
     if (lkapp::errorCount() > 0)
       return 1;
-    if (!lkapp::writeMesh(surface->GetOutput(), surfaceOut, error))
+    if (!lkapp::writeMesh(surface->GetOutput(), surfaceOut, error, space))
     {
       std::cerr << "error: " << error << "\n";
       return 1;

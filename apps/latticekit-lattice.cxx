@@ -92,9 +92,10 @@ int main(int argc, char* argv[])
     return 1;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!lkapp::writeMesh(surface->GetOutput(), output, error) ||
-    (!netOut.empty() && !lkapp::writeMesh(surface->GetControlNetOutput(), netOut, error)) ||
-    (!latticeOut.empty() && !lkapp::writeMesh(lattice, latticeOut, error)))
+  const std::string space = lkapp::coordinateSpace(lattice); // the input's, for every file written
+  if (!lkapp::writeMesh(surface->GetOutput(), output, error, space) ||
+    (!netOut.empty() && !lkapp::writeMesh(surface->GetControlNetOutput(), netOut, error, space)) ||
+    (!latticeOut.empty() && !lkapp::writeMesh(lattice, latticeOut, error, space)))
   {
     std::cerr << "error: " << error << "\n";
     return 1;

@@ -159,6 +159,7 @@ int main(int argc, char* argv[])
     return 1;
   }
   vtkSmartPointer<vtkPolyData> meshes[2];
+  std::string spaces[2];
   std::string triangulation;
   for (int k = 0; k < 2; ++k)
   {
@@ -168,8 +169,15 @@ int main(int argc, char* argv[])
       std::cerr << "error: " << error << "\n";
       return 1;
     }
+    spaces[k] = lkapp::coordinateSpace(meshes[k]);
     meshes[k] = triangulated(meshes[k], k == 0 ? "A" : "B", triangulation);
   }
+  // Files that name different coordinate systems (3D Slicer's tag) lie
+  // mirrored against each other: their distances measure the mirroring.
+  if (!spaces[0].empty() && !spaces[1].empty() && spaces[0] != spaces[1])
+    std::cerr << "warning: '" << inputs[0] << "' is in " << spaces[0] << " coordinates and '" << inputs[1] << "' in "
+              << spaces[1] << " (their SPACE tags): x and y of one are mirrored against the other, and the distances "
+              << "measure that too\n";
 
   vtkNew<vtkLKMetroFilter> metro;
   metro->SetInputData(meshes[0]);
@@ -220,7 +228,7 @@ int main(int argc, char* argv[])
     seconds > 0 ? total / seconds / 1e6 : 0.0);
   if (!colored.empty())
   {
-    if (!lkapp::writeMesh(out, colored, error))
+    if (!lkapp::writeMesh(out, colored, error, spaces[0]))
     {
       std::cerr << "error: " << error << "\n";
       return 1;

@@ -198,6 +198,8 @@ int main(int argc, char* argv[])
   }
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
   planner.bone->ShallowCopy(surface->GetOutput());
+  if (mesh) // the file's coordinate system (3D Slicer's tag), which the export names again
+    lkapp::setCoordinateSpace(planner.bone, lkapp::coordinateSpace(mesh));
   if (!mesh)
   {
     const Session::Surface& used = planner.session.surface;

@@ -205,6 +205,11 @@ int main(int argc, char* argv[])
     std::cout << ", volume " << mass->GetVolume() / 1000.0 << " ml";
   }
   std::cout << "\n";
+  const std::string space = lkapp::coordinateSpace(mesh);
+  std::cout << "space      "
+            << (space.empty() ? "the volume's data coordinates (the file gives no orientation; no SPACE tag written)"
+                              : space + " patient coordinates (tagged SPACE=" + space + ", as 3D Slicer reads it)")
+            << "\n";
   std::cout << "written    " << output << " in " << seconds << " s\n";
   return 0;
 }

@@ -21,6 +21,7 @@
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
+#include <vtkStringArray.h>
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -288,6 +289,68 @@ void ProgressBar::finish()
   finished_ = true;
 }
 
+namespace
+{
+/// "LPS" or "RAS" where a header or comment holds 3D Slicer's tag
+/// ("SPACE=LPS"), else "".
+std::string spaceTagIn(const char* text)
+{
+  const std::string t = text ? text : "";
+  for (const char* space : { "LPS", "RAS" })
+    if (t.find(std::string("SPACE=") + space) != std::string::npos)
+      return space;
+  return {};
+}
+
+/// The leading comment lines of an OBJ file, where 3D Slicer puts its tag.
+std::string objComments(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line, comments;
+  while (std::getline(in, line) && !line.empty() && line[0] == '#' && comments.size() < 4096)
+    comments += line + "\n";
+  return comments;
+}
+
+/// Puts `comment` as the first line of the text file at `path`.
+bool prependLine(const std::string& path, const std::string& comment)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream body;
+  body << in.rdbuf();
+  in.close();
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << comment << "\n" << body.str();
+  return static_cast<bool>(out.flush());
+}
+} // namespace
+
+std::string coordinateSpace(vtkPolyData* mesh)
+{
+  auto* tag = mesh && mesh->GetFieldData()
+    ? vtkStringArray::SafeDownCast(mesh->GetFieldData()->GetAbstractArray("SPACE"))
+    : nullptr;
+  if (!tag || tag->GetNumberOfValues() < 1)
+    return {};
+  const std::string value = tag->GetValue(0);
+  return value == "LPS" || value == "RAS" ? value : std::string();
+}
+
+void setCoordinateSpace(vtkPolyData* mesh, const std::string& space)
+{
+  vtkNew<vtkFieldData> fields; // a copy: the mesh may share its field data with a filter's output
+  fields->DeepCopy(mesh->GetFieldData());
+  fields->RemoveArray("SPACE");
+  if (!space.empty())
+  {
+    vtkNew<vtkStringArray> tag;
+    tag->SetName("SPACE");
+    tag->InsertNextValue(space);
+    fields->AddArray(tag);
+  }
+  mesh->SetFieldData(fields);
+}
+
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& error)
 {
   if (vtksys::SystemTools::FileIsDirectory(path))
@@ -357,6 +420,22 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   }
   auto result = vtkSmartPointer<vtkPolyData>::New();
   result->ShallowCopy(pd);
+  // The coordinate system the file names (3D Slicer's tag), kept as the
+  // field data "SPACE" that .vtp files carry it in, so that what a tool
+  // writes from this mesh names it too.
+  std::string space;
+  if (auto* r = vtkPolyDataReader::SafeDownCast(reader))
+    space = spaceTagIn(r->GetHeader());
+  else if (auto* r = vtkSTLReader::SafeDownCast(reader))
+    space = spaceTagIn(r->GetHeader());
+  else if (auto* r = vtkPLYReader::SafeDownCast(reader))
+    for (vtkIdType i = 0; r->GetComments() && i < r->GetComments()->GetNumberOfValues() && space.empty(); ++i)
+      space = spaceTagIn(r->GetComments()->GetValue(i).c_str());
+  else if (vtkOBJReader::SafeDownCast(reader))
+    space = spaceTagIn(objComments(path).c_str());
+  else
+    space = coordinateSpace(result);
+  setCoordinateSpace(result, space);
   return result;
 }
 
@@ -390,9 +469,22 @@ bool removeStaleExports(const std::string& folder, std::size_t pieces, const std
   return true;
 }
 
-bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
+bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, const std::string& spaceGiven)
 {
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
+  // 3D Slicer's tag for the coordinate system, in each format where Slicer
+  // writes and reads it: a .vtp's field data "SPACE", "SPACE=LPS" in a .vtk
+  // or .stl header, a .ply comment, a leading .obj comment.
+  const std::string space = spaceGiven.empty() ? coordinateSpace(mesh) : spaceGiven;
+  const std::string header = "latticekit output" + (space.empty() ? std::string() : ". SPACE=" + space);
+  vtkSmartPointer<vtkPolyData> tagged = mesh;
+  if (coordinateSpace(mesh) != space)
+  {
+    tagged = vtkSmartPointer<vtkPolyData>::New();
+    tagged->ShallowCopy(mesh);
+    setCoordinateSpace(tagged, space);
+  }
+  mesh = tagged;
   vtkSmartPointer<vtkAlgorithm> writer;
   vtkNew<vtkTriangleFilter> triangles; // STL holds triangles only
   triangles->SetInputData(mesh);
@@ -411,6 +503,7 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
     w->SetFileName(path.c_str());
     w->SetInputData(mesh);
     w->SetFileTypeToBinary();
+    w->SetHeader(header.c_str());
     writer = w;
   }
   else if (ext == ".stl")
@@ -419,6 +512,7 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
     w->SetFileName(path.c_str());
     w->SetInputConnection(triangles->GetOutputPort());
     w->SetFileTypeToBinary();
+    w->SetHeader(header.c_str());
     writer = w;
   }
   else if (ext == ".ply")
@@ -427,6 +521,8 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
     w->SetFileName(path.c_str());
     w->SetInputData(mesh);
     w->SetFileTypeToBinary();
+    if (!space.empty())
+      w->AddComment("SPACE=" + space);
     if (mesh->GetPointData()->GetArray("DistanceColors"))
     {
       w->SetArrayName("DistanceColors");
@@ -476,6 +572,11 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
   if (errorCount() != before || !vtksys::SystemTools::FileExists(path, true))
   {
     error = "cannot write '" + path + "'";
+    return false;
+  }
+  if (ext == ".obj" && !space.empty() && !prependLine(path, "# " + header))
+  {
+    error = "cannot write '" + path + "' (its coordinate system comment)";
     return false;
   }
   return true;

@@ -65,9 +65,20 @@ private:
 };
 
 /// Reads .vtp, .vtk, .stl, .ply or .obj. Returns nullptr and sets error on failure.
+/// A coordinate system the file names as 3D Slicer tags it ("SPACE=LPS" or
+/// "SPACE=RAS" in a .vtk or .stl header, a .ply or leading .obj comment; the
+/// field data "SPACE" of a .vtp) is the mesh's field data "SPACE".
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& error);
-/// Writes .vtp, .vtk, .stl, .ply or .obj (binary where the format allows).
-bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error);
+/// Writes .vtp, .vtk, .stl, .ply, .obj or .gltf (binary where the format allows).
+/// The coordinate system `space` ("LPS", "RAS"; when empty, the mesh's own
+/// field data "SPACE", if any) is written as 3D Slicer writes and reads it, in
+/// every format but glTF, so that Slicer places the model without asking.
+bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, const std::string& space = {});
+/// The coordinate system a mesh's field data "SPACE" names: "LPS", "RAS" or "".
+std::string coordinateSpace(vtkPolyData* mesh);
+/// Sets (or, with "", removes) a mesh's field data "SPACE", on a copy of its
+/// field data.
+void setCoordinateSpace(vtkPolyData* mesh, const std::string& space);
 /// The extensions writeMesh accepts, for help texts.
 const char* meshExtensions();
 /// Removes what an earlier export left in `folder` of the pieces a tool

@@ -1074,6 +1074,7 @@ void Planner::report()
 bool Planner::exportPieces(const std::string& folder, std::string& error)
 {
   vtksys::SystemTools::MakeDirectory(folder);
+  const std::string space = lkapp::coordinateSpace(bone); // "LPS" from an oriented CT; a mesh file's own tag
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     // The segment goes where the plan moves it.
@@ -1091,14 +1092,14 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     for (const char* ext : { ".stl", ".vtp", ".obj" })
     {
       const std::string path = folder + "/piece" + std::to_string(p) + ext;
-      if (!lkapp::writeMesh(piece, path, error))
+      if (!lkapp::writeMesh(piece, path, error, space))
         return false;
     }
   }
   // The surface the cut was made on (before deformations and the segment's
   // move) and the lines it was cut along.
   for (const auto& [mesh, name] : { std::make_pair(cut.surface, "surface.vtp"), std::make_pair(cut.loops, "cut_lines.vtp") })
-    if (mesh && !lkapp::writeMesh(mesh, folder + "/" + name, error))
+    if (mesh && !lkapp::writeMesh(mesh, folder + "/" + name, error, space))
       return false;
   // What the plan is, and the session that replays it beside the files.
   std::vector<std::pair<std::string, std::string>> texts{ { "plan.txt", planText() } };

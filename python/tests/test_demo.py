@@ -35,6 +35,9 @@ class DemoTest(unittest.TestCase):
                           "lattice_piece%d.vtp" % p, "lattice_quads_piece%d.vtp" % p]
             for name in names:
                 self.assertTrue(os.path.getsize(os.path.join(out, name)) > 0, name)
+            # The bundled NIfTI has no orientation: no file claims a coordinate system.
+            with open(os.path.join(out, "mandible.stl"), "rb") as f:
+                self.assertNotIn(b"SPACE=", f.read(80))
             report = read_text(os.path.join(out, "report.md"))
             self.assertIn("Capped cut: 2 pieces", report)
             # The cut line lies in the plan's cut plane (the section it was drawn along, 0.3 mm off).
@@ -152,6 +155,18 @@ class DemoTest(unittest.TestCase):
             self.assertGreater(bounds[0], -1.5)
             self.assertLess(bounds[1], 71.5)
             self.assertGreater(reader.GetOutput().GetNumberOfPoints(), 3000)
+            # The NRRD gives its orientation: the files say LPS, as 3D Slicer's do
+            # (the bundled NIfTI of the main job gives none, and they say nothing).
+            space = reader.GetOutput().GetFieldData().GetAbstractArray("SPACE")
+            self.assertIsNotNone(space)
+            self.assertEqual(space.GetValue(0), "LPS")
+            from vtkmodules.vtkIOGeometry import vtkSTLReader
+            stl = vtkSTLReader()
+            stl.SetFileName(os.path.join(out, "piece1.stl"))
+            stl.Update()
+            self.assertIn("SPACE=LPS", stl.GetHeader())
+            with open(os.path.join(out, "piece0.obj")) as f:
+                self.assertIn("SPACE=LPS", f.readline())
 
     def test_bad_plan_is_refused(self):
         with tempfile.TemporaryDirectory() as tmp:
