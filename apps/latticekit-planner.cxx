@@ -232,6 +232,11 @@ int main(int argc, char* argv[])
                 << degenerate << " degenerate faces removed, " << split << " non-manifold vertices split)";
     std::cout << "\n";
   }
+  if (const std::string space = lkapp::coordinateSpace(planner.bone); !space.empty())
+    std::cout << "space: " << space << " patient coordinates (the cube at the top right shows the patient's sides)\n";
+  else
+    std::cout << "space: unknown, " << (mesh ? "the mesh file names none" : "the volume gives no orientation")
+              << " (no orientation cube)\n";
   // After the input and the session are read, so that their problems are
   // named first.
   if (!lkapp::hasDisplay())

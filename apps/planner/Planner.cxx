@@ -14,9 +14,12 @@
 #include "vtkLKStrokeFeatureLineFilter.h"
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkExtractEdges.h>
@@ -226,10 +229,74 @@ void Planner::setup()
   preview->SetVisibility(false);
   preview->PickableOff();
   renderer->AddActor(preview);
+  // The patient's sides, as medical viewers show them: a mandible is nearly
+  // symmetric, and a cut planned on the wrong side is the error to prevent.
+  // Patient x, y, z point to the left, back and up in LPS; to the right,
+  // front and up in RAS. Without a known system the cube would guess.
+  if (const std::string space = lkapp::coordinateSpace(bone); !space.empty())
+  {
+    const bool lps = space == "LPS";
+    marker->SetXPlusFaceText(lps ? "L" : "R");
+    marker->SetXMinusFaceText(lps ? "R" : "L");
+    marker->SetYPlusFaceText(lps ? "P" : "A");
+    marker->SetYMinusFaceText(lps ? "A" : "P");
+    marker->SetZPlusFaceText("S");
+    marker->SetZMinusFaceText("I");
+    // The S face reads upright seen from above with the front up (the cube
+    // turns with the view; VTK's default text on that face is a quarter turn
+    // off).
+    marker->SetZFaceTextRotation(lps ? 90.0 : -90.0);
+    marker->SetFaceTextScale(0.6);
+    marker->GetCubeProperty()->SetColor(0.92, 0.92, 0.95);
+    marker->GetTextEdgesProperty()->SetColor(0.5, 0.5, 0.6);
+    for (vtkProperty* face : { marker->GetXPlusFaceProperty(), marker->GetXMinusFaceProperty(),
+           marker->GetYPlusFaceProperty(), marker->GetYMinusFaceProperty(), marker->GetZPlusFaceProperty(),
+           marker->GetZMinusFaceProperty() })
+      face->SetColor(0.1, 0.1, 0.4);
+    marker->PickableOff();
+    // Seen face-on the cube shows one letter; arrows to the patient's left,
+    // back and top (the axes' positive ends) say which way the others lie.
+    markerAxes->SetTotalLength(1.3, 1.3, 1.3);
+    markerAxes->SetShaftTypeToCylinder();
+    markerAxes->SetCylinderRadius(0.03);
+    markerAxes->SetXAxisLabelText(lps ? "L" : "R");
+    markerAxes->SetYAxisLabelText(lps ? "P" : "A");
+    markerAxes->SetZAxisLabelText("S");
+    for (vtkCaptionActor2D* label : { markerAxes->GetXAxisCaptionActor2D(), markerAxes->GetYAxisCaptionActor2D(),
+           markerAxes->GetZAxisCaptionActor2D() })
+    {
+      label->GetCaptionTextProperty()->SetFontSize(12);
+      label->GetCaptionTextProperty()->SetColor(0.1, 0.1, 0.4);
+      label->GetCaptionTextProperty()->ShadowOff();
+      label->GetCaptionTextProperty()->ItalicOff();
+    }
+    markerAxes->PickableOff();
+    markerRenderer->AddViewProp(markerAxes);
+    markerRenderer->AddViewProp(marker);
+    markerRenderer->SetViewport(0.87, 0.85, 0.995, 0.995); // top right, above the distance colour bar
+    markerRenderer->SetLayer(1);
+    markerRenderer->InteractiveOff();
+    window->SetNumberOfLayers(2);
+    window->AddRenderer(markerRenderer);
+    renderer->AddObserver(vtkCommand::StartEvent, this, &Planner::followCamera);
+  }
   radius = 0.05 * bone->GetLength();
   // The stroke filter's "ends meet" is also how near a drag continues a line.
   if (const double tolerance = vtkLKStrokeFeatureLineFilter::DefaultCloseTolerance(bone); tolerance > 0.0)
     joinTolerance = tolerance;
+}
+
+void Planner::followCamera()
+{
+  vtkCamera* view = renderer->GetActiveCamera();
+  vtkCamera* cube = markerRenderer->GetActiveCamera();
+  double d[3];
+  view->GetDirectionOfProjection(d);
+  cube->SetFocalPoint(0.0, 0.0, 0.0);
+  cube->SetPosition(-5.0 * d[0], -5.0 * d[1], -5.0 * d[2]);
+  cube->SetViewUp(view->GetViewUp());
+  cube->SetParallelProjection(false);
+  markerRenderer->ResetCamera(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0); // the cube, its arrows and room for their letters
 }
 
 namespace

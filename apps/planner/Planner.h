@@ -20,6 +20,8 @@
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
+#include <vtkAnnotatedCubeActor.h>
+#include <vtkAxesActor.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkSmartPointer.h>
@@ -73,6 +75,13 @@ public:
   double joinTolerance = 1.0;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderWindow> window;
+  /// The patient's sides in the top right corner (a cube whose faces say L,
+  /// R, A, P, S, I), turned with the view; shown only when the bone's
+  /// coordinate system is known (its SPACE tag: an oriented CT, or a tagged
+  /// mesh file).
+  vtkNew<vtkRenderer> markerRenderer;
+  vtkNew<vtkAnnotatedCubeActor> marker;
+  vtkNew<vtkAxesActor> markerAxes; ///< arrows to the patient's left (or right), back (or front) and top
   vtkNew<vtkTextActor> help, status, messages;
   vtkNew<vtkScalarBarActor> scalarBar;
   vtkNew<vtkLookupTable> distanceColours; ///< the Metro colours of every piece
@@ -152,6 +161,8 @@ public:
   std::string segmentText() const;
 
   void setup();
+  /// Turns the corner cube as the view turns (before every render).
+  void followCamera();
 
   /// A drawn stroke into the session. A loop around a bone is never seen
   /// whole from one side, so a stroke can be drawn in parts, the view turned
