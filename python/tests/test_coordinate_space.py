@@ -69,6 +69,28 @@ def space_of(path):
     return None
 
 
+def tagged_sphere(folder, space):
+    """tests/data/sphere_equator.vtp (its equator as line cells) with a SPACE tag."""
+    from vtkmodules.vtkCommonCore import vtkStringArray
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(os.path.join(TEST_DATA, "sphere_equator.vtp"))
+    reader.Update()
+    sphere = reader.GetOutput()
+    assert sphere.GetFieldData().GetAbstractArray("SPACE") is None
+    tag = vtkStringArray()
+    tag.SetName("SPACE")
+    tag.InsertNextValue(space)
+    sphere.GetFieldData().AddArray(tag)
+    path = os.path.join(folder, "sphere_%s.vtp" % space)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(sphere)
+    writer.SetFileName(path)
+    writer.Write()
+    return path
+
+
 class CoordinateSpaceTest(unittest.TestCase):
     def test_a_surface_from_an_oriented_ct_says_lps_in_every_format(self):
         with tempfile.TemporaryDirectory() as tmp:
@@ -100,9 +122,6 @@ class CoordinateSpaceTest(unittest.TestCase):
             self.assertIn("the file gives no orientation; no SPACE tag written", result.stdout)
 
     def test_tools_keep_the_tag_of_the_mesh_they_read(self):
-        from vtkmodules.vtkCommonCore import vtkStringArray
-        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
-
         with tempfile.TemporaryDirectory() as tmp:
             lps = os.path.join(tmp, "mandible.obj")
             self.assertEqual(tool("latticekit-surface", MANDIBLE, "-o", lps).returncode, 0)
@@ -121,20 +140,7 @@ class CoordinateSpaceTest(unittest.TestCase):
 
             # A mesh tagged RAS (as older Slicer wrote its models): the cut's
             # files say RAS, not LPS.
-            reader = vtkXMLPolyDataReader()
-            reader.SetFileName(os.path.join(TEST_DATA, "sphere_equator.vtp"))
-            reader.Update()
-            sphere = reader.GetOutput()
-            self.assertIsNone(sphere.GetFieldData().GetAbstractArray("SPACE"))
-            tag = vtkStringArray()
-            tag.SetName("SPACE")
-            tag.InsertNextValue("RAS")
-            sphere.GetFieldData().AddArray(tag)
-            ras = os.path.join(tmp, "sphere_ras.vtp")
-            writer = vtkXMLPolyDataWriter()
-            writer.SetInputData(sphere)
-            writer.SetFileName(ras)
-            writer.Write()
+            ras = tagged_sphere(tmp, "RAS")
             pieces = os.path.join(tmp, "pieces")
             result = tool("latticekit-cut", ras, "-o", os.path.join(tmp, "cut.vtk"), "--pieces", pieces)
             self.assertEqual(result.returncode, 0, result.stderr)
@@ -156,8 +162,23 @@ class CoordinateSpaceTest(unittest.TestCase):
                                      "--replay", os.path.join(TEST_DATA, "mandible_session.json"),
                                      "--export", folder], capture_output=True, text=True, check=False, timeout=300)
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            self.assertIn("space: LPS patient coordinates (the cube at the top right", result.stdout)
             for name in ("piece0.stl", "piece0.vtp", "piece0.obj", "piece1.stl", "surface.vtp", "cut_lines.vtp"):
                 self.assertEqual(space_of(os.path.join(folder, name)), "LPS", name)
+            # A mesh file's own tag: the cube's letters and the export follow it;
+            # an untagged mesh gets no cube and no tag.
+            for space, path in (("RAS", tagged_sphere(tmp, "RAS")),
+                                (None, os.path.join(TEST_DATA, "sphere_equator.vtp"))):
+                folder = os.path.join(tmp, "sphere_%s" % space)
+                result = subprocess.run(["xvfb-run", "-a", os.path.join(BIN, "latticekit-planner"), path,
+                                         "--export", folder], capture_output=True, text=True, check=False,
+                                        timeout=300)
+                self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+                if space:
+                    self.assertIn("space: RAS patient coordinates", result.stdout)
+                else:
+                    self.assertIn("space: unknown, the mesh file names none (no orientation cube)", result.stdout)
+                self.assertEqual(space_of(os.path.join(folder, "piece0.stl")), space)
 
     def test_metro_warns_when_the_two_files_name_different_systems(self):
         with tempfile.TemporaryDirectory() as tmp:
