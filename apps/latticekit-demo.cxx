@@ -435,8 +435,10 @@ vtkSmartPointer<vtkActor> lineActor(vtkPolyData* pd, const double colour[3], dou
   return actor;
 }
 
+/// `display`: the X connection opened at the start (lkapp::openDisplay),
+/// which every picture's window uses instead of opening its own.
 bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBarActor* bar, const std::string& title,
-  const Plan& plan, const std::string& png)
+  const Plan& plan, const std::string& png, void* display)
 {
   vtkNew<vtkRenderer> renderer;
   for (const auto& a : actors)
@@ -467,6 +469,7 @@ bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBa
   camera->Zoom(1.3);
   renderer->ResetCameraClippingRange();
   vtkNew<vtkRenderWindow> window;
+  window->SetDisplayId(display);
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
   if (bar)
@@ -539,6 +542,13 @@ int main(int argc, char* argv[])
     std::cerr << "error: the pictures need an X display (DISPLAY is not set, or names no running server): run under "
                  "xvfb-run -a, or pass "
                  "--no-render\n";
+    return 1;
+  }
+  // The pictures' windows share one connection, opened now (see openDisplay).
+  void* display = render ? lkapp::openDisplay() : nullptr;
+  if (render && !display)
+  {
+    std::cerr << "error: the X display refused every connection\n";
     return 1;
   }
   // The report is written first as a stub that says the run did not finish:
@@ -749,7 +759,7 @@ int main(int argc, char* argv[])
     auto tubePd = vtkSmartPointer<vtkPolyData>::New();
     tubePd->ShallowCopy(tube->GetOutput());
     bool ok = renderPng({ surfaceActor(mandible, boneColour), surfaceActor(tubePd, red) }, nullptr,
-      "the plan: the osteotomy line (red) from the scripted stroke", plan, folder + "/plan.png");
+      "the plan: the osteotomy line (red) from the scripted stroke", plan, folder + "/plan.png", display);
     std::vector<vtkSmartPointer<vtkActor>> actors;
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
@@ -768,7 +778,7 @@ int main(int argc, char* argv[])
       actors.push_back(lineActor(e, cage, 1.0));
     }
     ok = ok && renderPng(actors, nullptr, "the two pieces: lattice cages and their smooth surfaces", plan,
-                 folder + "/pieces.png");
+                 folder + "/pieces.png", display);
     surfaceQuads->GetPointData()->SetActiveScalars("Distance");
     double range[2];
     surfaceQuads->GetPointData()->GetArray("Distance")->GetRange(range);
@@ -785,7 +795,7 @@ int main(int argc, char* argv[])
     mapper->SelectColorArray("Distance");
     vtkNew<vtkActor> coloured;
     coloured->SetMapper(mapper);
-    ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png");
+    ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png", display);
     if (!ok)
     {
       std::cerr << "error: the pictures could not be rendered (run under xvfb-run -a, or pass --no-render)\n";

@@ -246,6 +246,15 @@ int main(int argc, char* argv[])
                  "with --screenshot, --export or --events\n";
     return 1;
   }
+  // The window's own connection, before anything renders or the interactor
+  // opens one (see openDisplay).
+  void* display = lkapp::openDisplay();
+  if (!display)
+  {
+    std::cerr << "error: the X display refused every connection\n";
+    return 1;
+  }
+  planner.window->SetDisplayId(display);
   planner.setup();
   planner.rebuild();
   planner.renderer->ResetCamera();

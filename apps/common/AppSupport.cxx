@@ -785,6 +785,19 @@ bool hasDisplay()
   return true;
 }
 
+void* openDisplay(int attempts)
+{
+  for (int attempt = 1; attempt <= attempts; ++attempt)
+  {
+    if (Display* connection = XOpenDisplay(nullptr))
+      return connection;
+    std::cerr << "warning: the X display refused a connection (attempt " << attempt << " of " << attempts << ")\n";
+    if (attempt < attempts)
+      usleep(200000);
+  }
+  return nullptr;
+}
+
 double fieldValue(vtkPolyData* pd, const std::string& name)
 {
   vtkDataArray* a = pd->GetFieldData()->GetArray(name.c_str());

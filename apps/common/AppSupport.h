@@ -102,6 +102,13 @@ double fieldValue(vtkPolyData* pd, const std::string& name);
 /// ("bad X server connection"), after the work and before anything can say
 /// why; the tools check this first.
 bool hasDisplay();
+/// A connection to the X display for a render window, to give it with
+/// SetDisplayId before its first render: nullptr if the display refuses it
+/// `attempts` times, 0.2 s apart (each refusal is printed on stderr). VTK
+/// 9.1's interactor opens its own connection when the window has none and
+/// crashes in XSync when that fails; under two Xvfb servers on two cores a
+/// connection was refused now and then, right after hasDisplay's succeeded.
+void* openDisplay(int attempts = 5);
 
 /// A box (xmin, xmax, ymin, ymax, zmin, zmax) with each min below its max.
 inline bool isOrderedBox(const double v[6])
