@@ -207,10 +207,7 @@ int vtkLKLatticeFitFilter::RequestData(
     }
     else
     {
-      fit.lattice.points = r.mesh.points;
-      fit.lattice.faces.clear();
-      for (const auto& t : r.mesh.triangles)
-        fit.lattice.faces.push_back({ t[0], t[1], t[2] });
+      fit.lattice = lk::asPolygonMesh(r.mesh);
     }
     fit.insertions = 0;
     if (refine)

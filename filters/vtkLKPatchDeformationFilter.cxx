@@ -244,12 +244,7 @@ int vtkLKPatchDeformationFilter::RequestData(
                 low = low.cwiseMin(q);
                 high = high.cwiseMax(q);
               }
-        lk::PolygonMesh input;
-        input.points = state.base.points;
-        input.faces.reserve(state.base.triangles.size());
-        for (const auto& tri : state.base.triangles)
-          input.faces.push_back({ tri[0], tri[1], tri[2] });
-        before = lk::crossingsInBox(input, low, high);
+        before = lk::crossingsInBox(lk::asPolygonMesh(state.base), low, high);
       }
       vtkNew<vtkIdTypeArray> count, countBefore;
       count->SetName("SelfCrossings");

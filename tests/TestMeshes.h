@@ -24,16 +24,6 @@ inline std::set<lk::EdgeKey> edgesOf(const lk::TriangleMesh& m)
   return e;
 }
 
-/// A triangle mesh as a polygon mesh (a triangle lattice).
-inline lk::PolygonMesh asPolygonMesh(const lk::TriangleMesh& m)
-{
-  lk::PolygonMesh p;
-  p.points = m.points;
-  for (const auto& t : m.triangles)
-    p.faces.push_back({ t[0], t[1], t[2] });
-  return p;
-}
-
 /// An n x n grid of unit-square cells in the plane z = height, each cell two triangles.
 inline lk::TriangleMesh grid(int n, double size, double height)
 {

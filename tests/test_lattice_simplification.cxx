@@ -89,8 +89,8 @@ TEST(LatticeSimplification, RoundedSurfaceQuadricsFitTheLatticeSurfaceBetter)
   const auto rounded = lk::simplifyLattice(sphere, {}, o);
   o.roundedSurfaceQuadrics = false;
   const auto flat = lk::simplifyLattice(sphere, {}, o);
-  const auto eRounded = sphereError(lk::buildLatticeSurface(lktest::asPolygonMesh(rounded.mesh)), radius);
-  const auto eFlat = sphereError(lk::buildLatticeSurface(lktest::asPolygonMesh(flat.mesh)), radius);
+  const auto eRounded = sphereError(lk::buildLatticeSurface(lk::asPolygonMesh(rounded.mesh)), radius);
+  const auto eFlat = sphereError(lk::buildLatticeSurface(lk::asPolygonMesh(flat.mesh)), radius);
   std::printf("sphere r=10 at 200 vertices: lattice surface mean/max |r - 10|: rounded %.5f/%.5f, flat %.5f/%.5f\n",
     eRounded.first, eRounded.second, eFlat.first, eFlat.second);
   // The flat placement keeps vertices on the sphere, so the rounded surface
@@ -256,7 +256,7 @@ TEST(LatticeRefinement, MovesTheSurfaceOntoTheSamples)
   lk::SimplificationOptions o;
   o.targetVertices = 200;
   o.roundedSurfaceQuadrics = false; // vertices on the sphere: the surface sinks inside
-  lk::PolygonMesh lattice = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
+  lk::PolygonMesh lattice = lk::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
   const auto before = sphereError(lk::buildLatticeSurface(lattice), radius);
   lk::RefinementOptions ro;
   ro.fixed.assign(lattice.points.size(), 0);
@@ -277,7 +277,7 @@ TEST(LatticeRefinement, ReportsProgressTwicePerIterationAndStopsWhenAsked)
   const lk::TriangleMesh sphere = lktest::icosphere(4, 10.0);
   lk::SimplificationOptions o;
   o.targetVertices = 200;
-  const lk::PolygonMesh start = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
+  const lk::PolygonMesh start = lk::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
   lk::RefinementOptions ro;
   ro.iterations = 4;
   std::vector<double> seen;
@@ -315,7 +315,7 @@ TEST(LatticeRefinement, WinsBackTheAccuracyQuadPairingLoses)
   lk::SimplificationOptions o;
   o.targetVertices = 300;
   const auto simplified = lk::simplifyLattice(sphere, {}, o);
-  lk::PolygonMesh tri = lktest::asPolygonMesh(simplified.mesh);
+  lk::PolygonMesh tri = lk::asPolygonMesh(simplified.mesh);
   lk::QuadPairingOptions qo;
   qo.maxDihedralDegrees = 40.0;
   auto paired = lk::pairTrianglesIntoQuads(simplified.mesh, {}, qo, &simplified.edgeCost);
@@ -336,7 +336,7 @@ TEST(LatticeRefinement, WinsBackTheAccuracyQuadPairingLoses)
 
 TEST(LatticeRefinement, BadInputIsRefused)
 {
-  lk::PolygonMesh lattice = lktest::asPolygonMesh(lktest::icosphere(1, 1.0));
+  lk::PolygonMesh lattice = lk::asPolygonMesh(lktest::icosphere(1, 1.0));
   lk::RefinementOptions ro;
   EXPECT_THROW(lk::refineLatticeFit(lattice, {}, ro), std::invalid_argument);
   ro.fixed.assign(3, 0);
@@ -411,7 +411,7 @@ TEST(LatticeRefinement, FitsTheSurfaceOfTheGivenRoundingWeights)
   const lk::TriangleMesh sphere = lktest::icosphere(4, radius);
   lk::SimplificationOptions o;
   o.targetVertices = 200;
-  lk::PolygonMesh lattice = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
+  lk::PolygonMesh lattice = lk::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
   lk::RefinementOptions ro;
   ro.fixed.assign(lattice.points.size(), 0);
   ro.weights.vertex.assign(lattice.points.size(), 1.0);
@@ -453,7 +453,7 @@ struct SpikeSphere
     sphere = lktest::icosphere(4, radius);
     lk::SimplificationOptions o;
     o.targetVertices = 200;
-    start = lktest::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
+    start = lk::asPolygonMesh(lk::simplifyLattice(sphere, {}, o).mesh);
     sphere.points[spike] *= (radius + height) / radius;
   }
 };

@@ -37,7 +37,7 @@ TEST(MeshCut, LoopSplitsTheSphereIntoTwoPiecesWithCoincidingBorders)
 {
   const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
   const auto loop = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
-  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { loop }, false);
+  const auto cut = lk::cutAlongLoops(lk::asPolygonMesh(sphere), { loop }, false);
   ASSERT_EQ(cut.pieces.size(), 2u);
   double area = 0.0;
   std::size_t border = 0;
@@ -69,7 +69,7 @@ TEST(MeshCut, CappedPiecesAreClosedAndTheirVolumesSumToTheWhole)
 {
   const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
   const auto loop = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
-  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { loop }, true);
+  const auto cut = lk::cutAlongLoops(lk::asPolygonMesh(sphere), { loop }, true);
   ASSERT_EQ(cut.pieces.size(), 2u);
   double volume = 0.0;
   for (const auto& p : cut.pieces)
@@ -100,7 +100,7 @@ TEST(MeshCut, AWavyLoopGetsACapThatFollowsItWithoutCrossings)
     stroke.emplace_back(r * std::cos(a), r * std::sin(a), z);
   }
   const auto loop = lk::edgePathThrough(sphere, stroke);
-  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { loop }, true);
+  const auto cut = lk::cutAlongLoops(lk::asPolygonMesh(sphere), { loop }, true);
   ASSERT_EQ(cut.pieces.size(), 2u);
   double volume = 0.0, capLift = 0.0;
   for (std::size_t p = 0; p < 2; ++p)
@@ -124,7 +124,7 @@ TEST(MeshCut, TwoLoopsCutOutASegment)
   const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
   const auto a = circleLoop(sphere, 0.3, std::sqrt(1 - 0.09));
   const auto b = circleLoop(sphere, -0.4, std::sqrt(1 - 0.16));
-  const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { a, b }, true);
+  const auto cut = lk::cutAlongLoops(lk::asPolygonMesh(sphere), { a, b }, true);
   EXPECT_EQ(cut.pieces.size(), 3u);
   for (const auto& p : cut.pieces)
     EXPECT_EQ(lk::countBoundaryEdges(asTriangles(p)), 0u);
@@ -136,7 +136,7 @@ TEST(MeshCut, BadLoopsAreRefused)
   auto message = [&](const std::vector<std::vector<std::int64_t>>& loops) -> std::string {
     try
     {
-      lk::cutAlongLoops(lktest::asPolygonMesh(sphere), loops, false);
+      lk::cutAlongLoops(lk::asPolygonMesh(sphere), loops, false);
     }
     catch (const std::invalid_argument& e)
     {
@@ -227,7 +227,7 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
   std::string message;
   try
   {
-    lk::cutAlongLoops(lktest::asPolygonMesh(torus), { tube(0) }, false);
+    lk::cutAlongLoops(lk::asPolygonMesh(torus), { tube(0) }, false);
   }
   catch (const std::invalid_argument& e)
   {
@@ -235,7 +235,7 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
   }
   EXPECT_NE(message.find("do not separate"), std::string::npos) << message;
   EXPECT_NE(message.find("has 1 handle"), std::string::npos) << message;
-  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(torus), { tube(0), tube(8) }, false).pieces.size(), 2u);
+  EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(torus), { tube(0), tube(8) }, false).pieces.size(), 2u);
 
   // The outer and the inner equator, nested in the plane z = 0, cut the torus
   // into a top and a bottom half, as lines around the outer and the inner
@@ -252,7 +252,7 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
   for (const auto& loops : { std::vector<std::vector<std::int64_t>>{ outer, inner },
          std::vector<std::vector<std::int64_t>>{ innerReversed, outer } })
   {
-    const auto nested = lk::cutAlongLoops(lktest::asPolygonMesh(torus), loops, true);
+    const auto nested = lk::cutAlongLoops(lk::asPolygonMesh(torus), loops, true);
     ASSERT_EQ(nested.pieces.size(), 2u);
     EXPECT_EQ(nested.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
     expectHalvesClosedByAnAnnulus(nested, n, 1e-9);
@@ -262,8 +262,8 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
   // sides, as the marrow cavity does a bone's). Through the inner walls, the
   // cut also takes the torus's section by the equator's plane inside it: the
   // inner equator, moved off the plane by a hair since its vertices lie on it.
-  EXPECT_THROW(lk::cutAlongLoops(lktest::asPolygonMesh(torus), { outer }, true), std::invalid_argument);
-  const auto walls = lk::cutAlongLoops(lktest::asPolygonMesh(torus), { outer }, true, true);
+  EXPECT_THROW(lk::cutAlongLoops(lk::asPolygonMesh(torus), { outer }, true), std::invalid_argument);
+  const auto walls = lk::cutAlongLoops(lk::asPolygonMesh(torus), { outer }, true, true);
   EXPECT_EQ(walls.innerWallLoops, 1u);
   ASSERT_EQ(walls.pieces.size(), 2u);
   EXPECT_EQ(walls.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
@@ -277,7 +277,7 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
     for (auto f : origins)
       EXPECT_LT(f, static_cast<std::int64_t>(torus.triangles.size()));
   // Capped along two tubes, the caps are clean.
-  const auto clean = lk::cutAlongLoops(lktest::asPolygonMesh(torus), { tube(0), tube(8) }, true);
+  const auto clean = lk::cutAlongLoops(lk::asPolygonMesh(torus), { tube(0), tube(8) }, true);
   EXPECT_EQ(clean.capCrossings, std::vector<std::size_t>({ 0u, 0u }));
 }
 
@@ -367,7 +367,7 @@ TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
   std::vector<std::int64_t> ring;
   for (int i = 0; i < n; ++i)
     ring.push_back(2 * n + i); // the profile's third ring: (2, 1)
-  const auto plain = lk::cutAlongLoops(lktest::asPolygonMesh(solid), { ring }, true);
+  const auto plain = lk::cutAlongLoops(lk::asPolygonMesh(solid), { ring }, true);
   ASSERT_EQ(plain.pieces.size(), 2u);
   EXPECT_GT(plain.capCrossings[0] + plain.capCrossings[1], 0u);
 
@@ -375,7 +375,7 @@ TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
   // annulus (radii 0.5 to 2), the top keeps the hole's upper part, and the
   // hole's bottom (z 0.3 to 1) goes with the bottom piece, as a dimple.
   expectClosedPiecesOnEitherSideOfAnAnnulus(
-    lk::cutAlongLoops(lktest::asPolygonMesh(solid), { ring }, true, true), lk::signedVolume(solid));
+    lk::cutAlongLoops(lk::asPolygonMesh(solid), { ring }, true, true), lk::signedVolume(solid));
 
   // A closed cavity (an inner surface of its own, facing inwards) that the
   // plane crosses: before, a third piece, and the caps ran through it. Now
@@ -392,8 +392,8 @@ TEST(MeshCut, ACanalOpenAtOneEndThatCrossesTheCapIsCutThroughToo)
     hollow.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
   ASSERT_LT(lk::signedVolume(cavity), 0.0);
   expectClosedPiecesOnEitherSideOfAnAnnulus(
-    lk::cutAlongLoops(lktest::asPolygonMesh(hollow), { ring }, true, true), lk::signedVolume(hollow));
-  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(hollow), { ring }, true).pieces.size(), 3u);
+    lk::cutAlongLoops(lk::asPolygonMesh(hollow), { ring }, true, true), lk::signedVolume(hollow));
+  EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(hollow), { ring }, true).pieces.size(), 3u);
 }
 
 TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)
@@ -430,7 +430,7 @@ TEST(MeshCut, MeshesThatAreNotManifoldSurfacesAreRefused)
   flat.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } };
   flat.faces = { { 0, 1, 2 } };
   EXPECT_NE(message(flat).find("zero area"), std::string::npos) << message(flat);
-  lk::PolygonMesh isolated = lktest::asPolygonMesh(lktest::icosphere(1, 1.0));
+  lk::PolygonMesh isolated = lk::asPolygonMesh(lktest::icosphere(1, 1.0));
   isolated.points.push_back({ 5, 5, 5 });
   EXPECT_NE(message(isolated).find("isolated"), std::string::npos) << message(isolated);
 }
@@ -504,7 +504,7 @@ TEST(MeshCut, ALoopThatDetoursAroundABoneEdgeGivesManifoldCappedPieces)
     std::vector<std::int64_t> loop = { 12, 24, 25, 13 };
     for (int i = 2; i < 12; ++i)
       loop.push_back(12 + i);
-    const auto cut = lk::cutAlongLoops(lktest::asPolygonMesh(tube), { loop }, true);
+    const auto cut = lk::cutAlongLoops(lk::asPolygonMesh(tube), { loop }, true);
     ASSERT_EQ(cut.pieces.size(), 2u);
     double volume = 0.0;
     for (std::size_t p = 0; p < 2; ++p)

@@ -141,7 +141,7 @@ TEST(StrokeFeatureLine, ClosedStrokeCutsTheSphere)
     EXPECT_TRUE(seen.insert(r.line[i]).second);
   }
   EXPECT_GT(r.line.size(), 30u);
-  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(sphere), { r.line }, false).pieces.size(), 2u);
+  EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(sphere), { r.line }, false).pieces.size(), 2u);
 }
 
 TEST(StrokeFeatureLine, BadStrokesAreRefused)
@@ -257,7 +257,7 @@ TEST(StrokeFeatureLine, ClosedSplitStrokeCutsTheSphere)
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
   EXPECT_EQ(lk::countBoundaryEdges(r.mesh), 0u);
   EXPECT_NEAR(lk::signedVolume(r.mesh), lk::signedVolume(sphere), 1e-12);
-  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(r.mesh), { r.line }, false).pieces.size(), 2u);
+  EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(r.mesh), { r.line }, false).pieces.size(), 2u);
 }
 
 TEST(StrokeFeatureLine, EarlierLinesAreCarriedThroughTheEdgesASplitCuts)
@@ -315,8 +315,8 @@ TEST(StrokeFeatureLine, EarlierLinesAreCarriedThroughTheEdgesASplitCuts)
   EXPECT_EQ(k, first.line.size());
   EXPECT_EQ(carried[1], (std::vector<std::int64_t>{ 0, 1 })); // not cut: as it was
   // The carried ring still cuts the sphere in two; the stale one is refused.
-  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(second.mesh), { ring2 }, false).pieces.size(), 2u);
-  EXPECT_THROW(lk::cutAlongLoops(lktest::asPolygonMesh(second.mesh), { first.line }, false), std::invalid_argument);
+  EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(second.mesh), { ring2 }, false).pieces.size(), 2u);
+  EXPECT_THROW(lk::cutAlongLoops(lk::asPolygonMesh(second.mesh), { first.line }, false), std::invalid_argument);
   // Modes that keep the edges leave lines as they are.
   o.mode = lk::StrokeMode::NearestEdges;
   const auto nearest = lk::strokeToFeatureLine(first.mesh, across, o);

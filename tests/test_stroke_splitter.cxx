@@ -78,7 +78,7 @@ TEST(StrokeSplitter, ClosedStrokeOnTheSphereSplitsItIntoTwoPieces)
   expectConnectedLine(m, line);
   std::set<std::int64_t> once(line.begin(), line.end() - 1);
   EXPECT_EQ(once.size(), line.size() - 1) << "the loop crosses itself";
-  EXPECT_EQ(lk::cutAlongLoops(lktest::asPolygonMesh(m), { line }, false).pieces.size(), 2u);
+  EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(m), { line }, false).pieces.size(), 2u);
 }
 
 TEST(StrokeSplitter, AStrokeAlongARingOfEdgesMakesNoFlatTriangles)

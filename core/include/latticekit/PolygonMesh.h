@@ -17,6 +17,17 @@ struct PolygonMesh
   std::vector<std::vector<std::int64_t>> faces;
 };
 
+/// A triangle mesh as a polygon mesh (a lattice of triangles).
+inline PolygonMesh asPolygonMesh(const TriangleMesh& mesh)
+{
+  PolygonMesh p;
+  p.points = mesh.points;
+  p.faces.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    p.faces.push_back({ t[0], t[1], t[2] });
+  return p;
+}
+
 /// Newell's vector of face f: its unit normal times twice its area.
 inline Vec3 newellVector(const PolygonMesh& mesh, std::size_t f)
 {
