@@ -6,10 +6,10 @@
 #include "latticekit/CavityFill.h"
 
 #include <vtkCallbackCommand.h>
+#include <vtkAbstractArray.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkStringArray.h>
 #include <vtkExtractVOI.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageCast.h>
@@ -211,7 +211,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
 
   // Patient matrix: explicit, else the reader's field data, else identity.
   vtkNew<vtkMatrix4x4> matrix;
-  std::string space; // the reader's "SPACE" tag, passed on with its matrix
+  vtkSmartPointer<vtkAbstractArray> space; // the reader's "SPACE" tag, passed on with its matrix
   if (this->PatientMatrix)
   {
     matrix->DeepCopy(this->PatientMatrix);
@@ -220,9 +220,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
   {
     if (m->GetNumberOfTuples() * m->GetNumberOfComponents() == 16)
     {
-      auto* tag = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("SPACE"));
-      if (tag && tag->GetNumberOfValues() == 1)
-        space = tag->GetValue(0);
+      space = input->GetFieldData()->GetAbstractArray("SPACE");
       for (int i = 0; i < 16; ++i)
       {
         matrix->SetElement(i / 4, i % 4, m->GetComponent(i, 0));
@@ -421,13 +419,8 @@ int vtkLKBoneSurfaceFilter::RequestData(
   output->GetPointData()->Initialize();
   vtkNew<vtkFieldData> fields; // the output's own copy (the repair's counts), not the last filter's
   fields->DeepCopy(surface->GetFieldData());
-  if (!space.empty())
-  {
-    vtkNew<vtkStringArray> tag;
-    tag->SetName("SPACE");
-    tag->InsertNextValue(space);
-    fields->AddArray(tag);
-  }
+  if (space)
+    fields->AddArray(space);
   output->SetFieldData(fields);
   this->UpdateProgress(1.0);
   return 1;
