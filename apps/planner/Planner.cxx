@@ -558,18 +558,6 @@ void Planner::addTo(vtkLKPatchDeformationFilter* f, const Deformation& d)
     f->AddSmoothingDeformation(c[0], c[1], c[2], r, d.iterations);
 }
 
-namespace
-{
-/// The pairs of crossing faces a deformed piece holds (its field data
-/// SelfCrossings; 0 without it), or those its input held near the moved
-/// faces (SelfCrossingsBefore).
-vtkIdType selfCrossings(vtkPolyData* piece, const char* name = "SelfCrossings")
-{
-  vtkDataArray* a = piece->GetFieldData()->GetArray(name);
-  return a && a->GetNumberOfTuples() > 0 ? static_cast<vtkIdType>(a->GetTuple1(0)) : 0;
-}
-} // namespace
-
 vtkLKPatchDeformationFilter* Planner::deformer(std::size_t p)
 {
   deformers.resize(cut.pieces.size());
@@ -614,9 +602,9 @@ void Planner::applyDeformations()
       addLine(message, "cannot deform piece " + std::to_string(p) + ": " + lkapp::errorsSince(before));
       continue;
     }
-    if (const vtkIdType crossings = selfCrossings(f->GetOutput()))
+    if (const vtkIdType crossings = static_cast<vtkIdType>(lkapp::fieldValue(f->GetOutput(), "SelfCrossings")))
     {
-      const vtkIdType before = selfCrossings(f->GetOutput(), "SelfCrossingsBefore");
+      const vtkIdType before = static_cast<vtkIdType>(lkapp::fieldValue(f->GetOutput(), "SelfCrossingsBefore"));
       if (before > 0)
         addLine(message, "piece " + std::to_string(p) + " passes through itself where it is deformed (" +
             std::to_string(crossings) + " pairs of faces cross), as it did there before (" + std::to_string(before) +
@@ -1066,12 +1054,12 @@ std::string Planner::planText()
       std::snprintf(line, sizeof line, ", deformed: largest displacement %.3f, refinement levels 0-%d", d->GetMaxNorm(),
         static_cast<int>(pieces[p]->GetCellData()->GetArray("Level")->GetRange()[1]));
       text += line;
-      if (const vtkIdType crossings = selfCrossings(pieces[p]))
+      if (const vtkIdType crossings = static_cast<vtkIdType>(lkapp::fieldValue(pieces[p], "SelfCrossings")))
       {
         std::snprintf(line, sizeof line, ", passes through itself: %lld pairs of faces cross",
           static_cast<long long>(crossings));
         text += line;
-        if (const vtkIdType before = selfCrossings(pieces[p], "SelfCrossingsBefore"))
+        if (const vtkIdType before = static_cast<vtkIdType>(lkapp::fieldValue(pieces[p], "SelfCrossingsBefore")))
         {
           std::snprintf(line, sizeof line, " (%lld before its deformations)", static_cast<long long>(before));
           text += line;
