@@ -537,18 +537,13 @@ int main(int argc, char* argv[])
   }
   if (vertices > 0)
     plan.vertices = vertices;
-  if (render && !lkapp::hasDisplay())
-  {
-    std::cerr << "error: the pictures need an X display (DISPLAY is not set, or names no running server): run under "
-                 "xvfb-run -a, or pass "
-                 "--no-render\n";
-    return 1;
-  }
   // The pictures' windows share one connection, opened now (see openDisplay).
   void* display = render ? lkapp::openDisplay() : nullptr;
   if (render && !display)
   {
-    std::cerr << "error: the X display refused every connection\n";
+    std::cerr << "error: the pictures need an X display (DISPLAY is not set, or names no running server): run under "
+                 "xvfb-run -a, or pass "
+                 "--no-render\n";
     return 1;
   }
   // The report is written first as a stub that says the run did not finish:

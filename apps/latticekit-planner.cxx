@@ -239,19 +239,14 @@ int main(int argc, char* argv[])
               << " (no orientation cube)\n";
   // After the input and the session are read, so that their problems are
   // named first.
-  if (!lkapp::hasDisplay())
-  {
-    std::cerr << "error: the planner needs an X display (DISPLAY is not set, or names no running server); headless, "
-                 "run it under xvfb-run -a "
-                 "with --screenshot, --export or --events\n";
-    return 1;
-  }
-  // The window's own connection, before anything renders or the interactor
+  // The window's connection, before anything renders or the interactor
   // opens one (see openDisplay).
   void* display = lkapp::openDisplay();
   if (!display)
   {
-    std::cerr << "error: the X display refused every connection\n";
+    std::cerr << "error: the planner needs an X display (DISPLAY is not set, or names no running server); headless, "
+                 "run it under xvfb-run -a "
+                 "with --screenshot, --export or --events\n";
     return 1;
   }
   planner.window->SetDisplayId(display);

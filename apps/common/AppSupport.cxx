@@ -770,29 +770,16 @@ long long fileBytes(const std::string& path)
   return static_cast<long long>(vtksys::SystemTools::FileLength(path));
 }
 
-bool hasDisplay()
+void* openDisplay()
 {
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display)
-    return false;
-  // Open and close a connection, as VTK will: a DISPLAY left from a server
-  // that has ended (":N" with no socket), or one naming a host with no server
-  // or refusing this client, fails here with a null instead of an abort.
-  Display* connection = XOpenDisplay(nullptr);
-  if (!connection)
-    return false;
-  XCloseDisplay(connection);
-  return true;
-}
-
-void* openDisplay(int attempts)
-{
-  for (int attempt = 1; attempt <= attempts; ++attempt)
+    return nullptr;
+  for (int attempt = 1; attempt <= 5; ++attempt)
   {
     if (Display* connection = XOpenDisplay(nullptr))
       return connection;
-    std::cerr << "warning: the X display refused a connection (attempt " << attempt << " of " << attempts << ")\n";
-    if (attempt < attempts)
+    if (attempt < 5)
       usleep(200000);
   }
   return nullptr;

@@ -95,20 +95,18 @@ long long fileBytes(const std::string& path);
 /// filters report their measurements there.
 double fieldValue(vtkPolyData* pd, const std::string& name);
 
-/// Whether the X display DISPLAY names accepts a connection (a server that has
-/// ended, a host with none, or one refusing this client do not): Debian's VTK
-/// renders only
+/// A connection to the X display DISPLAY names. Debian's VTK renders only
 /// through X, and without one it aborts the program in its first render
 /// ("bad X server connection"), after the work and before anything can say
-/// why; the tools check this first.
-bool hasDisplay();
-/// A connection to the X display for a render window, to give it with
-/// SetDisplayId before its first render: nullptr if the display refuses it
-/// `attempts` times, 0.2 s apart (each refusal is printed on stderr). VTK
-/// 9.1's interactor opens its own connection when the window has none and
-/// crashes in XSync when that fails; under two Xvfb servers on two cores a
-/// connection was refused now and then, right after hasDisplay's succeeded.
-void* openDisplay(int attempts = 5);
+/// why; the tools ask for this first. nullptr when DISPLAY is not set or no
+/// server accepts (a server that has ended, a host with none, one refusing
+/// this client) in 5 tries 0.2 s apart: a running Xvfb refused a connection
+/// now and then right after another of the program's had closed. The
+/// connection stays open: give it to every render window (SetDisplayId)
+/// before its first render, so that neither the window nor VTK 9.1's
+/// interactor opens another (the interactor crashes in XSync on a refused
+/// one).
+void* openDisplay();
 
 /// A box (xmin, xmax, ymin, ymax, zmin, zmax) with each min below its max.
 inline bool isOrderedBox(const double v[6])
