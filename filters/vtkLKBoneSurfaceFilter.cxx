@@ -1,11 +1,11 @@
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKAbort.h"
+#include "vtkLKProgressRelay.h"
 
 #include "vtkLKMeshRepairFilter.h"
 
 #include "latticekit/CavityFill.h"
 
-#include <vtkCallbackCommand.h>
 #include <vtkAbstractArray.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -39,32 +39,6 @@ vtkStandardNewMacro(vtkLKBoneSurfaceFilter);
 
 namespace
 {
-/// Forwards a sub-filter's progress into [lo, hi] of the owner's progress.
-class ProgressRelay
-{
-public:
-  ProgressRelay(vtkAlgorithm* owner, vtkAlgorithm* inner, double lo, double hi)
-    : Owner(owner), Lo(lo), Hi(hi)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject* caller, unsigned long, void* cd, void*) {
-      auto* self = static_cast<ProgressRelay*>(cd);
-      const double p = static_cast<vtkAlgorithm*>(caller)->GetProgress();
-      self->Owner->UpdateProgress(self->Lo + (self->Hi - self->Lo) * p);
-      // A stop asked of the owner is passed on: VTK's filters check their
-      // own flag in their loops.
-      if (self->Owner->GetAbortExecute())
-        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-    });
-    inner->AddObserver(vtkCommand::ProgressEvent, this->Command);
-  }
-
-private:
-  vtkAlgorithm* Owner;
-  double Lo, Hi;
-  vtkNew<vtkCallbackCommand> Command;
-};
-
 /// The voxel extent that holds the crop box (patient coordinates) of
 /// `image`, whose data-to-patient matrix is `patient`; a problem, or "".
 std::string cropExtent(vtkImageData* image, vtkMatrix4x4* patient, const double box[6], int v[6])
@@ -274,7 +248,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
   volume->ShallowCopy(input);
   vtkSmartPointer<vtkImageData> smoothed = volume.GetPointer();
   vtkNew<vtkImageGaussianSmooth> gauss;
-  ProgressRelay gaussProgress(this, gauss, 0.0, 0.15);
+  lkvtk::ProgressRelay gaussProgress(this, gauss, 0.0, 0.15);
   vtkNew<vtkImageCast> toFloat;
   if (sigma > 0.0)
   {
@@ -312,7 +286,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
   }
 
   vtkNew<vtkFlyingEdges3D> contour;
-  ProgressRelay contourProgress(this, contour, 0.15, 0.4);
+  lkvtk::ProgressRelay contourProgress(this, contour, 0.15, 0.4);
   contour->SetInputData(smoothed);
   contour->SetValue(0, this->EffectiveIsoValue);
   contour->ComputeNormalsOff();
@@ -332,7 +306,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
   // Component selection in data coordinates.
   vtkSmartPointer<vtkPolyData> surface = contour->GetOutput();
   vtkNew<vtkPolyDataConnectivityFilter> connectivity;
-  ProgressRelay connectivityProgress(this, connectivity, 0.4, 0.5);
+  lkvtk::ProgressRelay connectivityProgress(this, connectivity, 0.4, 0.5);
   if (this->ExtractionMode != ALL_COMPONENTS)
   {
     connectivity->SetInputData(surface);
@@ -380,7 +354,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
   this->UpdateProgress(0.55);
 
   vtkNew<vtkLKMeshRepairFilter> repair;
-  ProgressRelay repairProgress(this, repair, 0.55, 0.85);
+  lkvtk::ProgressRelay repairProgress(this, repair, 0.55, 0.85);
   if (this->Repair)
   {
     repair->SetInputData(surface);
@@ -398,7 +372,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
   }
 
   vtkNew<vtkWindowedSincPolyDataFilter> smoother;
-  ProgressRelay smoothProgress(this, smoother, 0.85, 1.0);
+  lkvtk::ProgressRelay smoothProgress(this, smoother, 0.85, 1.0);
   if (this->SmoothingIterations > 0)
   {
     smoother->SetInputData(surface);

@@ -1,5 +1,6 @@
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKAbort.h"
+#include "vtkLKProgressRelay.h"
 
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/ErrorBoundSearch.h"
@@ -27,6 +28,7 @@
 #include <vtkStaticPointLocator.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -353,8 +355,15 @@ int vtkLKLatticeFitFilter::RequestData(
   vtkNew<vtkLKLatticeSurfaceFilter> surface;
   surface->SetResolution(this->ErrorResolution);
   vtkNew<vtkLKMetroFilter> metro;
-  // The lattice surface, and with `withError` its Metro distance to the input.
-  auto measure = [&](vtkPolyData* latticePd, bool withError) -> bool {
+  lkvtk::ProgressRelay surfaceProgress(this, surface, 0.0, 0.0);
+  lkvtk::ProgressRelay metroProgress(this, metro, 0.0, 0.0);
+  // The lattice surface, and with `withError` its Metro distance to the
+  // input; their progress fills [p0, p1] (on a 600,000-triangle input the
+  // two take most of a minute).
+  auto measure = [&](vtkPolyData* latticePd, bool withError, double p0, double p1) -> bool {
+    const double pm = withError ? p0 + 0.2 * (p1 - p0) : p1;
+    surfaceProgress.SetRange(p0, pm);
+    metroProgress.SetRange(pm, p1);
     surface->SetInputData(latticePd);
     surface->Update();
     if (surface->GetOutput()->GetNumberOfPolys() == 0)
@@ -434,11 +443,15 @@ int vtkLKLatticeFitFilter::RequestData(
           // bar never runs back however many trials the search takes.
           const double p0 = 0.85 * (1.0 - std::pow(0.8, step)), p1 = 0.85 * (1.0 - std::pow(0.8, step + 1));
           ++step;
-          if (!fitAt(count, p0, p1, trial))
+          const double pm = p0 + 0.8 * (p1 - p0);
+          if (!fitAt(count, p0, pm, trial))
             return false;
           toPolyData(trial, pd);
-          error = measure(pd, true) ? metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal()
-                                    : std::numeric_limits<double>::infinity();
+          const bool measured = measure(pd, true, pm, p1);
+          if (this->GetAbortExecute())
+            return false;
+          error = measured ? metro->GetHausdorffDistance() * 100.0 / metro->GetBoundingBoxDiagonal()
+                           : std::numeric_limits<double>::infinity();
           // A count within the bound is always below the last one (the
           // bracket only shrinks), so `fit` ends as the search's answer.
           if (error <= this->MaximumError)
@@ -508,7 +521,12 @@ int vtkLKLatticeFitFilter::RequestData(
 
   {
     // The face map needs the surface; the error comes with it.
-    if (!measure(output, this->ComputeError))
+    // What is left of the progress: the surface and Metro, then the map.
+    const double p0 = this->GetProgress(), pMap = p0 + 0.9 * (1.0 - p0);
+    const bool measured = measure(output, this->ComputeError, p0, pMap);
+    if (lkvtk::stopRequested(this, { output, vertexMap }))
+      return 1;
+    if (!measured)
     {
       vtkErrorMacro("Cannot build the lattice surface of the fitted lattice.");
       return 0;
@@ -539,8 +557,16 @@ int vtkLKLatticeFitFilter::RequestData(
       vtkNew<vtkDoubleArray> distance;
       distance->SetName("Distance");
       lk::ClosestPointTree::Hit hint = tree.closest(mesh.points[0]);
-      for (const auto& p : mesh.points)
+      const std::size_t n = mesh.points.size(), chunk = std::max<std::size_t>(1, n / 20);
+      for (std::size_t i = 0; i < n; ++i)
       {
+        if (i % chunk == 0)
+        {
+          this->UpdateProgress(pMap + (1.0 - pMap) * static_cast<double>(i) / static_cast<double>(n));
+          if (lkvtk::stopRequested(this, { output, vertexMap }))
+            return 1;
+        }
+        const auto& p = mesh.points[i];
         hint = tree.closest(p, hint);
         faceIds->InsertNextValue(faceOf ? static_cast<vtkIdType>(faceOf->GetComponent(hint.face, 0)) : -1);
         distance->InsertNextValue(hint.distance);

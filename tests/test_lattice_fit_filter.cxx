@@ -522,6 +522,59 @@ TEST(QuadPairingFilter, PairsAndKeepsLineCells)
 
 #include <vtkSphereSource.h>
 
+TEST(LatticeFitFilter, TheSurfaceMetroAndMapReportProgressAndStop)
+{
+  // After the refinement the filter builds the lattice surface, measures it
+  // with Metro and maps the input's vertices: most of a minute on a
+  // 600,000-triangle CT surface, which once showed no progress at all.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(60);
+  sphere->SetPhiResolution(60);
+  sphere->SetRadius(10.0);
+  vtkNew<vtkLKLatticeFitFilter> fit;
+  fit->SetInputConnection(sphere->GetOutputPort());
+  fit->SetTargetNumberOfVertices(300);
+  fit->SetRefinement(true);
+  fit->SetRefinementIterations(2);
+  struct Seen
+  {
+    std::vector<double> progress;
+    double stopAt = 2.0;
+  } seen;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&seen);
+  onProgress->SetCallback([](vtkObject* caller, unsigned long, void* cd, void* data) {
+    auto* s = static_cast<Seen*>(cd);
+    const double p = *static_cast<double*>(data);
+    s->progress.push_back(p);
+    if (p >= s->stopAt)
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+  });
+  fit->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  fit->Update();
+  ASSERT_EQ(fit->GetOutput()->GetNumberOfPoints(), 300);
+  std::size_t late = 0;
+  for (std::size_t i = 0; i < seen.progress.size(); ++i)
+  {
+    if (i > 0)
+      ASSERT_GE(seen.progress[i], seen.progress[i - 1]) << "progress event " << i;
+    late += seen.progress[i] > 0.9 && seen.progress[i] < 1.0;
+  }
+  EXPECT_GE(late, 10u) << "events between 90 % and 100 %";
+  // A stop in that stage: empty outputs and the warning, as at any other.
+  seen.progress.clear();
+  seen.stopAt = 0.95;
+  fit->Modified();
+  lktest::ErrorRecorder messages(fit);
+  fit->Update();
+  EXPECT_EQ(messages.errors, 0) << messages.messages;
+  EXPECT_NE(messages.warningMessages.find("Aborted."), std::string::npos);
+  EXPECT_EQ(fit->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(fit->GetVertexMapOutput()->GetNumberOfPoints(), 0);
+  ASSERT_FALSE(seen.progress.empty());
+  EXPECT_LT(seen.progress.back(), 1.0);
+}
+
 TEST(LatticeFitFilter, ErrorBoundFindsAFewVerticesWithinIt)
 {
   vtkNew<vtkSphereSource> sphere;

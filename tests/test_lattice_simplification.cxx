@@ -272,7 +272,7 @@ TEST(LatticeRefinement, MovesTheSurfaceOntoTheSamples)
   EXPECT_EQ(lattice.points[7], p7);
 }
 
-TEST(LatticeRefinement, ReportsProgressTwicePerIterationAndStopsWhenAsked)
+TEST(LatticeRefinement, ReportsProgressAfterTheSetUpAndTwicePerIterationAndStopsWhenAsked)
 {
   const lk::TriangleMesh sphere = lktest::icosphere(4, 10.0);
   lk::SimplificationOptions o;
@@ -288,21 +288,26 @@ TEST(LatticeRefinement, ReportsProgressTwicePerIterationAndStopsWhenAsked)
   lk::PolygonMesh lattice = start;
   const auto report = lk::refineLatticeFit(lattice, sphere.points, ro);
   ASSERT_EQ(report.iterations, 4);
-  ASSERT_GE(seen.size(), 8u); // a retried step reports its half again
-  EXPECT_DOUBLE_EQ(seen.front(), 0.125);
+  ASSERT_GE(seen.size(), 9u); // a retried step reports its half again
+  EXPECT_DOUBLE_EQ(seen[0], 0.5 / 4.5); // the set-up, half an iteration
+  EXPECT_DOUBLE_EQ(seen[1], 1.0 / 4.5); // the first solve
   EXPECT_DOUBLE_EQ(seen.back(), 1.0);
   for (std::size_t i = 1; i < seen.size(); ++i)
     EXPECT_GE(seen[i], seen[i - 1]);
-  // Stopped at the first half: the step is never applied.
-  lattice = start;
-  ro.progress = [](double) { return false; };
-  const auto stopped = lk::refineLatticeFit(lattice, sphere.points, ro);
-  EXPECT_EQ(stopped.iterations, 0);
-  EXPECT_EQ(lattice.points, start.points);
-  EXPECT_EQ(stopped.finalRms, stopped.initialRms);
+  // Stopped after the set-up, or after the first solve: the step is never
+  // applied.
+  for (const double stopAt : { 0.5 / 4.5, 1.0 / 4.5 })
+  {
+    lattice = start;
+    ro.progress = [stopAt](double f) { return f < stopAt - 1e-9; };
+    const auto stopped = lk::refineLatticeFit(lattice, sphere.points, ro);
+    EXPECT_EQ(stopped.iterations, 0);
+    EXPECT_EQ(lattice.points, start.points);
+    EXPECT_EQ(stopped.finalRms, stopped.initialRms);
+  }
   // Stopped at the end of the first iteration: one step kept.
   lattice = start;
-  ro.progress = [](double f) { return f < 0.25; };
+  ro.progress = [](double f) { return f < 1.5 / 4.5 - 1e-9; };
   const auto one = lk::refineLatticeFit(lattice, sphere.points, ro);
   EXPECT_EQ(one.iterations, 1);
   EXPECT_LT(one.finalRms, one.initialRms);

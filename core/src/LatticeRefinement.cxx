@@ -590,16 +590,25 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     if (!p.allFinite())
       throw std::invalid_argument("a sample of the original surface is not finite");
 
+  // Progress: the set-up (the surface, the foot points, the original's
+  // tree; several seconds on a 600,000-triangle input) counts as half an
+  // iteration, reported at its two halves; then each iteration twice.
+  const double units = static_cast<double>(options.iterations) + 0.5;
+  auto goOn = [&](double done) { return !options.progress || options.progress(done / units); };
+  RefinementReport report;
   LatticeSurface surface = buildLatticeSurface(lattice, options.weights); // throws for a bad lattice
   std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution);
+  report.initialRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   const bool twoWay = options.original && options.reverseWeight > 0.0;
+  bool stopped = !goOn(twoWay ? 0.25 : 0.5);
   std::unique_ptr<ClosestPointTree> originalTree;
   std::vector<ReversePoint> reverse;
   double reverseWeight = 0.0;
-  if (twoWay)
+  if (twoWay && !stopped)
   {
     originalTree = std::make_unique<ClosestPointTree>(*options.original);
     reverse = reversePoints(surface, *options.original, *originalTree);
+    stopped = !goOn(0.5);
     reverseWeight = options.reverseWeight * static_cast<double>(samples.size()) / static_cast<double>(reverse.size());
   }
   // The tail penalty: mu sum max(0, d - tau)^2, over both directions' points.
@@ -609,15 +618,13 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     return energy(fs) + reverseWeight * energy(rs) + mu * (tailEnergy(fs, tau) + reverseWeight * tailEnergy(rs, tau));
   };
   double e0 = objective(feet, reverse);
-  RefinementReport report;
-  report.initialRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   const std::size_t nv = lattice.points.size();
 
   // Levenberg-Marquardt on the outer loop: the damping falls after a step
   // that lowered the exact energy and rises (the step is retried) after one
   // that did not.
   double damping = options.damping;
-  for (int it = 0; it < options.iterations; ++it)
+  for (int it = 0; it < options.iterations && !stopped; ++it)
   {
     // The patch models and the samples' combinations and terms live only
     // until they are compressed: on a 20,000-vertex skull they are
@@ -700,7 +707,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       // Half the iteration is done; measuring the step is the other half
       // (on a 20,000-vertex skull an iteration takes half a minute).
       // A stop here leaves the step unaccepted, so it is undone below.
-      if (options.progress && !options.progress((it + 0.5) / double(options.iterations)))
+      if (!goOn(it + 1.0))
         break;
       for (std::size_t v = 0; v < nv; ++v)
         lattice.points[v] = x0[v] + Vec3(delta[v][0], delta[v][1], delta[v][2]);
@@ -733,7 +740,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       break;
     }
     ++report.iterations;
-    if (options.progress && !options.progress(double(it + 1) / double(options.iterations)))
+    if (!goOn(it + 1.5))
       break;
   }
   report.finalRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));

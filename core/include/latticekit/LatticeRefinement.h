@@ -85,9 +85,11 @@ struct RefinementOptions
   /// linear model follows the vertex weights, the edge weights only the
   /// exact energy that accepts or refuses each step.
   LatticeWeights weights;
-  /// Called with the fraction done, twice per iteration (after the solve
-  /// and after the step is measured); returning false stops there, and a
-  /// step not yet measured is undone.
+  /// Called with the fraction done: after the set-up (the foot points, and
+  /// with `original` the reverse points; together weighed as half an
+  /// iteration), then twice per iteration (after the solve and after the
+  /// step is measured). Returning false stops there, and a step not yet
+  /// measured is undone.
   std::function<bool(double)> progress;
 };
 
