@@ -48,6 +48,9 @@ void usage(std::ostream& os)
         "  --crop X0,X1,Y0,Y1,Z0,Z1\n"
         "                       only the CT inside this patient-space box (mm), padded with air\n"
         "                       so that the surface closes where the box cuts bone\n"
+        "  --close              close the surface where the scan's border cuts bone (padded with\n"
+        "                       air as a crop is; a skull vault above the last slice): an open\n"
+        "                       surface is cut in two only by a line all round its open part\n"
         "  --series I           DICOM: series I of the folder (0 = largest, the default)\n"
         "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 0;\n"
         "                       20 takes a label map's slice staircase out, moving the surface\n"
@@ -73,7 +76,7 @@ int main(int argc, char* argv[])
   lkapp::installCrashReport("latticekit-planner");
   std::string input, replay, shot, exportFolder, events, sessionOut = "planner_session.json";
   double iso = 300.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
-  bool isoGiven = false, seeded = false, cropped = false;
+  bool isoGiven = false, seeded = false, cropped = false, closed = false;
   long series = -1, smoothing = -1;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -94,6 +97,8 @@ int main(int argc, char* argv[])
       args.box(a, crop);
       cropped = true;
     }
+    else if (a == "--close")
+      closed = true;
     else if (a == "--series")
       series = args.integer(a, 0, std::numeric_limits<int>::max(), "an integer >= 0");
     else if (a == "--smooth")
@@ -140,9 +145,9 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    if (isoGiven || seeded || cropped || series >= 0 || smoothing >= 0)
+    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0)
     {
-      std::cerr << "error: --iso, --seed, --crop, --series and --smooth are for a CT or label map; '" << input
+      std::cerr << "error: --iso, --seed, --crop, --close, --series and --smooth are for a CT or label map; '" << input
                 << "' is a mesh\n";
       return 2;
     }
@@ -172,6 +177,8 @@ int main(int argc, char* argv[])
       used.cropped = true;
       std::copy(crop, crop + 6, used.crop.begin());
     }
+    if (closed)
+      used.closed = true;
     if (series >= 0)
       used.series = series;
     if (smoothing >= 0)
@@ -188,6 +195,7 @@ int main(int argc, char* argv[])
     }
     bone->SetCropping(used.cropped);
     bone->SetCropBox(used.crop.data());
+    bone->SetCloseAtBorder(used.closed);
     bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
   }
   surface->Update();
@@ -210,6 +218,8 @@ int main(int argc, char* argv[])
     if (used.cropped)
       std::cout << "inside the box x " << used.crop[0] << " to " << used.crop[1] << ", y " << used.crop[2] << " to "
                 << used.crop[3] << ", z " << used.crop[4] << " to " << used.crop[5] << ", ";
+    else if (used.closed)
+      std::cout << "closed where the scan's border cuts bone, ";
     if (used.seeded)
       std::cout << "the component nearest (" << used.seed[0] << ", " << used.seed[1] << ", " << used.seed[2] << ")";
     else

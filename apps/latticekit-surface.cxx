@@ -33,6 +33,8 @@ void usage(std::ostream& os)
         "  --crop X0,X1,Y0,Y1,Z0,Z1\n"
         "                     only the volume inside this patient-space box (mm), padded with\n"
         "                     air so that the surface closes where the box cuts bone\n"
+        "  --close            close the surface where the scan's border cuts bone (padded\n"
+        "                     with air as a crop is): a skull vault above the last slice\n"
         "  --smooth N         windowed-sinc smoothing iterations on the surface (default 0;\n"
         "                     20 takes a label map's slice staircase out, moving the surface\n"
         "                     by about 0.07 mm on average and up to about 1 mm)\n"
@@ -56,7 +58,7 @@ int main(int argc, char* argv[])
   lkapp::installCrashReport("latticekit-surface");
   std::string input, output;
   double iso = 300.0, imageSmooth = -1.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
-  bool cropping = false;
+  bool cropping = false, close = false;
   long smooth = 0, series = -1;
   double sliceSpacing = 0.0;
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
@@ -85,6 +87,8 @@ int main(int argc, char* argv[])
       args.box(a, crop);
       cropping = true;
     }
+    else if (a == "--close")
+      close = true;
     else if (a == "--smooth")
       smooth = args.integer(a, 0, 1000, "an integer from 0 to 1000");
     else if (a == "--image-smooth")
@@ -141,6 +145,7 @@ int main(int argc, char* argv[])
   surface->SetSeedPoint(seed);
   surface->SetCropping(cropping);
   surface->SetCropBox(crop);
+  surface->SetCloseAtBorder(close);
   surface->SetLabelMapMode(labelMode);
   surface->SetRepair(repair);
   surface->SetFillCavities(fillCavities);
@@ -172,6 +177,8 @@ int main(int argc, char* argv[])
               << " mm, gantry tilt " << reader->GetGantryTilt() << " deg, series "
               << (series < 0 ? 0 : series) << " of " << reader->GetNumberOfSeries() << "\n";
   }
+  if (close && !cropping)
+    std::cout << "closed     where the scan's border cuts bone (padded with air)\n";
   if (cropping)
     std::cout << "crop box   x " << crop[0] << " to " << crop[1] << ", y " << crop[2] << " to " << crop[3] << ", z "
               << crop[4] << " to " << crop[5] << " mm (patient), padded with air\n";
@@ -191,6 +198,8 @@ int main(int argc, char* argv[])
     if (boundary != 0)
     {
       std::cout << boundary << " boundary edges";
+      if (!cropping && !close)
+        std::cout << " where the scan's border cuts bone (--close closes it)";
     }
     std::cout << "; repair merged " << field("MergedPoints") << " points, removed "
               << field("RemovedDegenerateFaces") << " degenerate faces, split "

@@ -150,6 +150,7 @@ void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LabelMapMode: " << this->LabelMapMode << "\n";
   os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "Cropping: " << this->Cropping << "\n";
+  os << indent << "CloseAtBorder: " << this->CloseAtBorder << "\n";
   os << indent << "CropBox: " << this->CropBox[0] << " " << this->CropBox[1] << " " << this->CropBox[2] << " "
      << this->CropBox[3] << " " << this->CropBox[4] << " " << this->CropBox[5] << "\n";
 }
@@ -220,6 +221,18 @@ int vtkLKBoneSurfaceFilter::RequestData(
     voi->SetVOI(v);
     pad->SetInputConnection(voi->GetOutputPort());
     pad->SetOutputWholeExtent(v[0] - 1, v[1] + 1, v[2] - 1, v[3] + 1, v[4] - 1, v[5] + 1);
+    pad->SetConstant(full[0]);
+    pad->Update();
+    input = pad->GetOutput();
+  }
+  else if (this->CloseAtBorder)
+  {
+    int e[6];
+    double full[2];
+    input->GetExtent(e);
+    input->GetPointData()->GetScalars()->GetRange(full);
+    pad->SetInputData(input);
+    pad->SetOutputWholeExtent(e[0] - 1, e[1] + 1, e[2] - 1, e[3] + 1, e[4] - 1, e[5] + 1);
     pad->SetConstant(full[0]);
     pad->Update();
     input = pad->GetOutput();

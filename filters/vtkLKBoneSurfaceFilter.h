@@ -7,7 +7,10 @@
  *     inside the box (vtkExtractVOI), padded by one voxel of the volume's
  *     smallest value (vtkImageConstantPad) so that the surface closes where
  *     the box cuts bone, as a saw would; the mandible below the occlusal
- *     plane, for one, where the teeth join it to the skull;
+ *     plane, for one, where the teeth join it to the skull. Without a crop,
+ *     CloseAtBorder pads the whole volume the same way, so that bone the
+ *     scan's border cuts (a skull vault above the last slice) is closed
+ *     there too;
  *  1. optional Gaussian smoothing of the volume (vtkImageGaussianSmooth,
  *     ImageSmoothing = standard deviation in voxels);
  *  2. optional filling of enclosed cavities (FillCavities, lk::enclosedBackground):
@@ -130,6 +133,18 @@ public:
   ///@}
 
   ///@{
+  /// Close the surface where the volume's border cuts bone (default off):
+  /// the volume is padded by one voxel of its smallest value on every side,
+  /// as a crop box is. A scan that ends inside the bone (a skull vault above
+  /// the last slice, a spine below the first) otherwise gives an open
+  /// surface there, which no closed line around part of it can cut in two
+  /// and no printer fills. A crop is always closed, with or without it.
+  vtkSetMacro(CloseAtBorder, bool);
+  vtkGetMacro(CloseAtBorder, bool);
+  vtkBooleanMacro(CloseAtBorder, bool);
+  ///@}
+
+  ///@{
   /// Repair into a CGAL-valid manifold mesh (default on).
   vtkSetMacro(Repair, bool);
   vtkGetMacro(Repair, bool);
@@ -164,6 +179,7 @@ protected:
   bool Repair = true;
   bool FillCavities = false;
   bool Cropping = false;
+  bool CloseAtBorder = false;
   double CropBox[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   vtkMatrix4x4* PatientMatrix = nullptr;
   bool TreatedAsLabelMap = false;

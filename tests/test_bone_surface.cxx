@@ -294,6 +294,74 @@ TEST(BoneSurface, TheCropBoxIsInPatientCoordinatesAndTheCutIsClosed)
   EXPECT_EQ(empty.mesh->GetNumberOfPoints(), 0);
 }
 
+TEST(BoneSurface, CloseAtBorderClosesBoneThatTheScansBorderCuts)
+{
+  // A rod of bone (1000 HU, radius 6 voxels of 1 mm) through every slice of
+  // a 24 x 24 x 10 volume of soft tissue (0 HU): an open tube without
+  // CloseAtBorder, a closed rod with it, capped half a voxel beyond the last
+  // slices (the iso value 500 lies half-way to the padding's 0 HU).
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(24, 24, 10);
+  volume->AllocateScalars(VTK_SHORT, 1);
+  for (int k = 0; k < 10; ++k)
+    for (int j = 0; j < 24; ++j)
+      for (int i = 0; i < 24; ++i)
+        volume->SetScalarComponentFromDouble(
+          i, j, k, 0, (i - 11.5) * (i - 11.5) + (j - 11.5) * (j - 11.5) <= 36.0 ? 1000.0 : 0.0);
+  auto rod = [&](bool close) {
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputData(volume);
+    bone->SetIsoValue(500.0);
+    bone->SetCloseAtBorder(close);
+    lktest::ErrorRecorder rec(bone);
+    bone->Update();
+    EXPECT_EQ(rec.errors, 0) << rec.messages;
+    return lktest::toCore(bone->GetOutput());
+  };
+  const lk::TriangleMesh open = rod(false), closed = rod(true);
+  EXPECT_GT(lk::countBoundaryEdges(open), 40u); // two rims
+  EXPECT_EQ(lk::countBoundaryEdges(closed), 0u);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(closed), "");
+  double zmin = 1e9, zmax = -1e9;
+  for (const auto& p : closed.points)
+  {
+    zmin = std::min(zmin, p.z());
+    zmax = std::max(zmax, p.z());
+  }
+  EXPECT_NEAR(zmin, -0.5, 1e-6);
+  EXPECT_NEAR(zmax, 9.5, 1e-6);
+  // The rod's volume: its section (the 112 voxels within radius 6, less the
+  // corners the iso line cuts: about pi 6^2) times its length of 10 mm.
+  const double expected = 3.14159265358979 * 6.0 * 6.0 * 10.0;
+  EXPECT_NEAR(lk::signedVolume(closed), expected, 0.05 * expected);
+
+  // The bundled head CT: its cervical spine reaches the last slice. Closed
+  // there, the skull is one closed, CGAL-valid surface no larger than the
+  // volume plus the half voxel of the cap.
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(cthead.c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> head;
+  head->SetInputConnection(reader->GetOutputPort());
+  head->CloseAtBorderOn();
+  lktest::ErrorRecorder rec(head);
+  head->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  const lk::TriangleMesh skull = lktest::toCore(head->GetOutput());
+  EXPECT_EQ(lk::countBoundaryEdges(skull), 0u);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(skull), "");
+  EXPECT_EQ(components(head->GetOutput()), 1u);
+  EXPECT_GT(lk::signedVolume(skull), 0.0);
+  double vb[6], sb[6];
+  reader->GetOutput()->GetBounds(vb);
+  head->GetOutput()->GetBounds(sb);
+  for (int c = 0; c < 3; ++c)
+  {
+    const double spacing = reader->GetOutput()->GetSpacing()[c];
+    EXPECT_GE(sb[2 * c], vb[2 * c] - 0.5 * spacing - 1e-6);
+    EXPECT_LE(sb[2 * c + 1], vb[2 * c + 1] + 0.5 * spacing + 1e-6);
+  }
+}
+
 TEST(BoneSurface, IsoValueOutsideTheDataRangeIsAClearError)
 {
   const Surface s = extract(cthead, 5000.0);

@@ -236,6 +236,21 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
   EXPECT_NE(message.find("do not separate"), std::string::npos) << message;
   EXPECT_NE(message.find("has 1 handle"), std::string::npos) << message;
   EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(torus), { tube(0), tube(8) }, false).pieces.size(), 2u);
+  // Open, as a CT surface is where the scan ends: two triangles away from
+  // the loop taken out (one border loop). The handle is still named: the
+  // genus counts the border loops (it was silent on every open surface).
+  lk::TriangleMesh open = torus;
+  open.triangles.erase(open.triangles.begin() + 2 * (8 * m + 2), open.triangles.begin() + 2 * (8 * m + 2) + 2);
+  message.clear();
+  try
+  {
+    lk::cutAlongLoops(lk::asPolygonMesh(open), { tube(0) }, false);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("has 1 handle"), std::string::npos) << message;
 
   // The outer and the inner equator, nested in the plane z = 0, cut the torus
   // into a top and a bottom half, as lines around the outer and the inner

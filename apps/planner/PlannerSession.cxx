@@ -127,6 +127,8 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
     if (s.surface.cropped)
       for (double v : s.surface.crop)
         root["surface"]["crop"].append(v);
+    if (s.surface.closed)
+      root["surface"]["close"] = true;
     if (s.surface.series >= 0)
       root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
     if (s.surface.smoothing > 0)
@@ -304,10 +306,11 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
     const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 1000, out); };
     if (!js.isObject() || !jsonMember(js, "iso", s.surface.iso, jsonNumber, where, "a number", error) ||
       !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error) ||
-      !jsonMember(js, "smooth", smoothing, iterations, where, "a whole number from 0 to 1000", error))
+      !jsonMember(js, "smooth", smoothing, iterations, where, "a whole number from 0 to 1000", error) ||
+      !jsonMember(js, "close", s.surface.closed, jsonBool, where, "true or false", error))
     {
       if (!js.isObject())
-        error = session + ": \"surface\" must be an object (iso, seed, crop, series, smooth)";
+        error = session + ": \"surface\" must be an object (iso, seed, crop, series, close, smooth)";
       return false;
     }
     if (js.isMember("seed"))

@@ -22,6 +22,7 @@
 //                     "iterations": 1 to 100}, ...]       (smooth; 3)
 //   "surface": {"iso": HU, "seed": [x, y, z],
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
+//               "close": bool,                      closed at the scan's border
 //               "smooth": 0 to 1000}                windowed-sinc iterations (0)
 //
 // Pieces are numbered in cut order. After a changed cut the segment becomes
@@ -102,6 +103,7 @@ struct Session
     std::array<double, 3> seed{};
     bool cropped = false;
     std::array<double, 6> crop{}; ///< patient coordinates, xmin, xmax, ymin, ymax, zmin, zmax
+    bool closed = false; ///< closed where the scan's border cuts bone (a crop always is)
     long series = -1; ///< -1: the largest
     long smoothing = 0; ///< windowed-sinc iterations on the surface
   } surface;

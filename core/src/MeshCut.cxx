@@ -315,9 +315,11 @@ std::size_t nonManifoldCapEdges(const PolygonMesh& piece, const std::vector<std:
 }
 
 /// Why loops that do not separate a mesh could not, where it can be told:
-/// the closed component of vertex `a0` has handles (on a bone, a canal or a
-/// marrow cavity open to the outside), and a path around a handle joins the
-/// two sides of a loop. Empty otherwise.
+/// the component of vertex `a0` has handles (on a bone, a canal or a marrow
+/// cavity open to the outside), and a path around a handle joins the two
+/// sides of a loop. The genus counts the component's border loops (a CT
+/// surface is open where the scan's border cuts the bone): an open surface
+/// without handles is cut in two by any closed loop. Empty otherwise.
 std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed,
   const std::vector<std::size_t>& faceRegion, std::vector<std::size_t>& regionComponent, std::size_t a0)
 {
@@ -352,8 +354,26 @@ std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed,
       else if (directed.target[k] > static_cast<std::int64_t>(a))
         ++edges;
     }
-  const std::int64_t genus = (2 - (vertices - edges + faces)) / 2;
-  if (borderEdges > 0 || genus <= 0)
+  // Border loops: the border edges' vertices joined along them.
+  std::vector<std::size_t> borderRoot(mesh.points.size());
+  std::iota(borderRoot.begin(), borderRoot.end(), 0);
+  std::vector<std::size_t> borderVertices;
+  if (borderEdges > 0)
+    for (std::size_t a = 0; a + 1 < directed.start.size(); ++a)
+      for (std::size_t k = directed.start[a]; k < directed.start[a + 1]; ++k)
+        if (directed.twin[k] == DirectedEdges::npos && component(directed.face[k]) == comp)
+        {
+          const auto b = static_cast<std::size_t>(directed.target[k]);
+          borderRoot[find(borderRoot, a)] = find(borderRoot, b);
+          borderVertices.push_back(a);
+        }
+  std::vector<std::size_t> roots;
+  for (const auto v : borderVertices)
+    roots.push_back(find(borderRoot, v));
+  std::sort(roots.begin(), roots.end());
+  const auto borderLoops = static_cast<std::int64_t>(std::unique(roots.begin(), roots.end()) - roots.begin());
+  const std::int64_t genus = (2 - borderLoops - (vertices - edges + faces)) / 2;
+  if (genus <= 0)
     return "";
   return ": the surface has " + std::to_string(genus) + (genus == 1 ? " handle" : " handles") +
     " (on a bone: a canal, or a marrow cavity open to the outside), and a path around a handle joins the two "

@@ -105,6 +105,38 @@ class PipelineTest(unittest.TestCase):
         self.assertGreater(mean_pct, 0.0)
         self.assertLess(mean_pct, 0.1)
 
+    def test_close_at_border_closes_a_scan_that_ends_in_the_bone(self):
+        """A scan that ends inside the bone (here the label map's slices cut
+        to the lower part of the mandible) gives an open surface there;
+        CloseAtBorder closes it, as a crop box is closed."""
+        import latticekit
+        from vtkmodules.vtkImagingCore import vtkExtractVOI
+
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(MANDIBLE)
+        reader.Update()
+        e = list(reader.GetOutput().GetExtent())
+        # The slices that hold the mandible, then the lower half of them.
+        scalars = reader.GetOutput().GetPointData().GetScalars()
+        nx, ny = e[1] - e[0] + 1, e[3] - e[2] + 1
+        slices = [k for k in range(e[4], e[5] + 1)
+                  if any(scalars.GetValue((k - e[4]) * nx * ny + i) for i in range(0, nx * ny, 7))]
+        voi = vtkExtractVOI()
+        voi.SetInputConnection(reader.GetOutputPort())
+        voi.SetVOI(e[0], e[1], e[2], e[3], e[4], (slices[0] + slices[-1]) // 2)
+        boundary = {}
+        for close in (False, True):
+            bone = latticekit.vtkLKBoneSurfaceFilter()
+            bone.SetInputConnection(voi.GetOutputPort())
+            bone.SetCloseAtBorder(close)
+            bone.Update()
+            self.assertEqual(bone.GetCloseAtBorder(), close)
+            fd = bone.GetOutput().GetFieldData()
+            self.assertEqual(fd.GetArray("Components").GetValue(0), 1)
+            boundary[close] = fd.GetArray("BoundaryEdges").GetValue(0)
+        self.assertGreater(boundary[False], 50)
+        self.assertEqual(boundary[True], 0)
+
     def test_lattice_fit_with_features_quads_and_surface(self):
         import latticekit
         from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkPoints
