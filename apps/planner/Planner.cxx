@@ -1173,6 +1173,13 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   }
   if (!saveSession(session, folder + "/session.json", error))
     return false;
+  // The plan as the window shows it, for the surgeon's notes and the
+  // patient's file.
+  if (!screenshot(folder + "/plan.png"))
+  {
+    error = "cannot write '" + folder + "/plan.png'";
+    return false;
+  }
   // An earlier export to the same folder can have left files this plan does
   // not make (more pieces, cut lines, a moved segment's transform): they go,
   // so that the folder holds this plan only.

@@ -290,8 +290,9 @@ public:
 
   /// Writes every piece (STL, VTP, OBJ; the segment where the plan moved it),
   /// the surface the cut was made on (surface.vtp), the lines it took
-  /// (cut_lines.vtp), the plan (plan.txt, planText()), the session that
-  /// replays it (session.json) and, with a moved segment, its transform
+  /// (cut_lines.vtp), the plan (plan.txt, planText()), the window's picture
+  /// of it (plan.png), the session that replays it (session.json) and, with
+  /// a moved segment, its transform
   /// (segment_transform.txt). Files of these names that an earlier export
   /// left and this plan does not make (more pieces, say) are removed.
   bool exportPieces(const std::string& folder, std::string& error);
