@@ -107,6 +107,7 @@ void PlannerStyle::pick()
 {
   int* pos = this->Interactor->GetEventPosition();
   picker->SetTolerance(0.0005);
+  locators.update(planner->renderer, picker);
   if (picker->Pick(pos[0], pos[1], 0, planner->renderer) && picker->GetCellId() >= 0)
   {
     double p[3];
@@ -127,6 +128,7 @@ int PlannerStyle::pickPiece(int x, int y, std::array<double, 3>& point, std::arr
       piecePicker->AddPickList(a);
   if (planner->preview->GetVisibility())
     piecePicker->AddPickList(planner->preview);
+  locators.update(planner->renderer, piecePicker);
   if (!piecePicker->Pick(x, y, 0, planner->renderer) || piecePicker->GetCellId() < 0)
     return -1;
   vtkProp3D* hit = piecePicker->GetProp3D();
@@ -315,6 +317,7 @@ void PlannerStyle::endSaw()
   // A point of the bone under the line, from its middle outwards.
   std::array<double, 3> onBone{};
   bool hit = false;
+  locators.update(planner->renderer, picker);
   const int steps = static_cast<int>(pixels), middle = steps / 2;
   for (int k = 0; k <= steps && !hit; ++k)
   {

@@ -9,6 +9,7 @@
 /// view turned between them; Planner::addStroke). Each change goes to the Planner's session, with an
 /// undo snapshot, and the Planner rebuilds what it changes.
 
+#include "common/PickLocators.h"
 #include "planner/Planner.h"
 
 #include <vtkCellPicker.h>
@@ -32,6 +33,8 @@ public:
   std::string sessionPath = "planner_session.json", exportFolder = "planner-pieces";
   bool pressed = false;
   vtkNew<vtkCellPicker> picker;
+  /// Cell locators for the pickers on large surfaces (a whole skull).
+  lkapp::PickLocators locators;
   // Moving the segment: where the drag started, the session then, the
   // segment's centre (moved) and the matrix being shown.
   int dragStart[2] = { 0, 0 };
