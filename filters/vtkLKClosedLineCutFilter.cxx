@@ -19,6 +19,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -159,6 +160,18 @@ int vtkLKClosedLineCutFilter::RequestData(
     vtkErrorMacro("Cannot cut: " << e.what() << ".");
     return 0;
   }
+  for (const std::size_t l : cut.loopsInOnePiece)
+  {
+    if (l >= loops.size())
+      continue; // an inner-wall line the filter added
+    const auto v = static_cast<vtkIdType>(loops[l].front());
+    double x[3];
+    input->GetPoint(v, x);
+    vtkWarningMacro(<< "A line of " << loops[l].size() << " mesh points (through mesh point " << v << " at " << x[0]
+                    << ", " << x[1] << ", " << x[2]
+                    << ") separates nothing: the bone joins around it (a ring or a handle joins its two sides), "
+                       "so it stays a slit in one piece, with its two caps back to back.");
+  }
   for (std::size_t p = 0; p < cut.capCrossings.size(); ++p)
     if (cut.capCrossings[p] > 0)
       vtkWarningMacro(<< "Piece " << p << ": its cap crosses the surface or another cap (" << cut.capCrossings[p]
@@ -259,6 +272,13 @@ int vtkLKClosedLineCutFilter::RequestData(
     for (const std::size_t n : cut.capNonManifoldEdges)
       nonManifold->InsertNextValue(static_cast<double>(n));
     output->GetFieldData()->AddArray(nonManifold);
+  }
+  {
+    vtkNew<vtkDoubleArray> slits; // lines that separate nothing
+    slits->SetName("LinesInOnePiece");
+    slits->InsertNextValue(static_cast<double>(
+      std::count_if(cut.loopsInOnePiece.begin(), cut.loopsInOnePiece.end(), [&](std::size_t l) { return l < loops.size(); })));
+    output->GetFieldData()->AddArray(slits);
   }
   this->NumberOfPieces = static_cast<int>(cut.pieces.size());
   this->NumberOfInnerWallLines = static_cast<int>(cut.innerWallLoops);

@@ -16,8 +16,10 @@
  * Output: all pieces in one polydata, the loop vertices duplicated so each
  * piece has its own; cell data "RegionId" (the piece), "InputCellId" (-1 on
  * caps), "Cap" (1 on cap triangles); point data "InputPointId" (-1 on cap
- * points and the points of inner-wall lines); field data "Pieces" and
- * "InnerWallLines" (see CutInnerWalls). Their cut borders coincide exactly. With
+ * points and the points of inner-wall lines); field data "Pieces",
+ * "InnerWallLines" (see CutInnerWalls) and "LinesInOnePiece" (lines that
+ * separate nothing, because the bone joins around them: each stays a slit,
+ * its caps back to back, with a warning that gives its place). Their cut borders coincide exactly. With
  * Capping, each loop is closed by one hole-filling surface (CGAL triangulate
  * and refine; flat for a near-planar loop) shared, reversed, by the two pieces beside
  * it: both pieces are closed and fit each other (see MeshCut.h). Near-planar

@@ -236,6 +236,25 @@ TEST(MeshCut, ALoopAroundAHandleIsRefusedAndTheMessageSaysWhy)
   EXPECT_NE(message.find("do not separate"), std::string::npos) << message;
   EXPECT_NE(message.find("has 1 handle"), std::string::npos) << message;
   EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(torus), { tube(0), tube(8) }, false).pieces.size(), 2u);
+  // Beside a second torus that two loops cut in two, the first torus's one
+  // loop stays a slit: its two sides are in one piece, and the result names
+  // it (the pieces are the slit torus and the two halves).
+  lk::TriangleMesh two = torus;
+  const auto offset = static_cast<std::int64_t>(torus.points.size());
+  for (const auto& p : torus.points)
+    two.points.push_back(p + lk::Vec3(20.0, 0.0, 0.0));
+  for (const auto& t : torus.triangles)
+    two.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  auto shifted = [&](std::vector<std::int64_t> loop) {
+    for (auto& v : loop)
+      v += offset;
+    return loop;
+  };
+  const auto slit = lk::cutAlongLoops(lk::asPolygonMesh(two), { tube(0), shifted(tube(0)), shifted(tube(8)) }, true);
+  EXPECT_EQ(slit.pieces.size(), 3u);
+  EXPECT_EQ(slit.loopsInOnePiece, std::vector<std::size_t>({ 0u }));
+  EXPECT_TRUE(lk::cutAlongLoops(lk::asPolygonMesh(torus), { tube(0), tube(8) }, true).loopsInOnePiece.empty());
+
   // Open, as a CT surface is where the scan ends: two triangles away from
   // the loop taken out (one border loop). The handle is still named: the
   // genus counts the border loops (it was silent on every open surface).

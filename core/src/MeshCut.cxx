@@ -703,6 +703,15 @@ CutResult cutOnce(const PolygonMesh& mesh, const std::vector<std::vector<std::in
   }
 
   CutResult result;
+  // A loop whose two sides are in one piece separates nothing: a slit.
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    const auto& loop = loops[l];
+    const std::size_t ab = directed.find(loop[0], loop[1]), ba = directed.find(loop[1], loop[0]);
+    if (ab != DirectedEdges::npos && ba != DirectedEdges::npos &&
+      faceRegion[directed.face[ab]] == faceRegion[directed.face[ba]])
+      result.loopsInOnePiece.push_back(l);
+  }
   result.pieces.resize(pieces);
   result.vertexOrigin.resize(pieces);
   result.faceOrigin.resize(pieces);

@@ -55,6 +55,11 @@ struct CutResult
   /// lies on a bone edge is split at its midpoint. The count says so if an
   /// edge still has too many faces.
   std::vector<std::size_t> capNonManifoldEdges;
+  /// The loops (by index) whose two sides ended in one piece: the mesh joins
+  /// around them (on a bone, a ring or a handle joins the two sides of the
+  /// line), so each stays a slit, with its two caps back to back, while other
+  /// loops separate the pieces (when none does, the cut throws instead).
+  std::vector<std::size_t> loopsInOnePiece;
   /// Loops added on inner walls (see throughInnerWalls); 0 when none were needed.
   std::size_t innerWallLoops = 0;
   /// Capped pieces left without a face, which are not returned: every face
