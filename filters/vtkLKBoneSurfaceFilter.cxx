@@ -203,36 +203,31 @@ int vtkLKBoneSurfaceFilter::RequestData(
     }
   }
 
-  // The crop: the box's voxels, padded with the volume's smallest value.
+  // The crop (the box's voxels), or with CloseAtBorder the whole volume,
+  // padded by one voxel of the volume's smallest value.
   vtkNew<vtkExtractVOI> voi;
   vtkNew<vtkImageConstantPad> pad;
-  if (this->Cropping)
+  if (this->Cropping || this->CloseAtBorder)
   {
     int v[6];
-    const std::string problem = cropExtent(input, matrix, this->CropBox, v);
-    if (!problem.empty())
+    input->GetExtent(v);
+    if (this->Cropping)
     {
-      vtkErrorMacro("Cannot crop: " << problem << ".");
-      return 0;
+      const std::string problem = cropExtent(input, matrix, this->CropBox, v);
+      if (!problem.empty())
+      {
+        vtkErrorMacro("Cannot crop: " << problem << ".");
+        return 0;
+      }
+      voi->SetInputData(input);
+      voi->SetVOI(v);
+      pad->SetInputConnection(voi->GetOutputPort());
     }
+    else
+      pad->SetInputData(input);
     double full[2];
     input->GetPointData()->GetScalars()->GetRange(full);
-    voi->SetInputData(input);
-    voi->SetVOI(v);
-    pad->SetInputConnection(voi->GetOutputPort());
     pad->SetOutputWholeExtent(v[0] - 1, v[1] + 1, v[2] - 1, v[3] + 1, v[4] - 1, v[5] + 1);
-    pad->SetConstant(full[0]);
-    pad->Update();
-    input = pad->GetOutput();
-  }
-  else if (this->CloseAtBorder)
-  {
-    int e[6];
-    double full[2];
-    input->GetExtent(e);
-    input->GetPointData()->GetScalars()->GetRange(full);
-    pad->SetInputData(input);
-    pad->SetOutputWholeExtent(e[0] - 1, e[1] + 1, e[2] - 1, e[3] + 1, e[4] - 1, e[5] + 1);
     pad->SetConstant(full[0]);
     pad->Update();
     input = pad->GetOutput();
