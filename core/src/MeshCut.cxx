@@ -327,7 +327,7 @@ std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed,
     return "";
   auto component = [&](std::size_t f) { return find(regionComponent, faceRegion[f]); };
   const std::size_t comp = component(directed.face[directed.start[a0]]);
-  std::int64_t faces = 0, edges = 0, vertices = 0, borderEdges = 0;
+  std::int64_t faces = 0, edges = 0, vertices = 0;
   std::vector<char> seen(mesh.points.size(), 0);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
   {
@@ -341,6 +341,10 @@ std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed,
         ++vertices;
       }
   }
+  // Edges, and the border loops: the border edges' vertices joined along them.
+  std::vector<std::size_t> borderRoot(mesh.points.size());
+  std::iota(borderRoot.begin(), borderRoot.end(), 0);
+  std::vector<std::size_t> borderVertices;
   for (std::size_t a = 0; a + 1 < directed.start.size(); ++a)
     for (std::size_t k = directed.start[a]; k < directed.start[a + 1]; ++k)
     {
@@ -349,24 +353,12 @@ std::string handlesNote(const PolygonMesh& mesh, const DirectedEdges& directed,
       if (directed.twin[k] == DirectedEdges::npos)
       {
         ++edges;
-        ++borderEdges;
+        borderRoot[find(borderRoot, a)] = find(borderRoot, static_cast<std::size_t>(directed.target[k]));
+        borderVertices.push_back(a);
       }
       else if (directed.target[k] > static_cast<std::int64_t>(a))
         ++edges;
     }
-  // Border loops: the border edges' vertices joined along them.
-  std::vector<std::size_t> borderRoot(mesh.points.size());
-  std::iota(borderRoot.begin(), borderRoot.end(), 0);
-  std::vector<std::size_t> borderVertices;
-  if (borderEdges > 0)
-    for (std::size_t a = 0; a + 1 < directed.start.size(); ++a)
-      for (std::size_t k = directed.start[a]; k < directed.start[a + 1]; ++k)
-        if (directed.twin[k] == DirectedEdges::npos && component(directed.face[k]) == comp)
-        {
-          const auto b = static_cast<std::size_t>(directed.target[k]);
-          borderRoot[find(borderRoot, a)] = find(borderRoot, b);
-          borderVertices.push_back(a);
-        }
   std::vector<std::size_t> roots;
   for (const auto v : borderVertices)
     roots.push_back(find(borderRoot, v));
