@@ -243,6 +243,33 @@ int vtkLKClosedLineCutFilter::RequestData(
   }
   output->SetPoints(points);
   output->SetPolys(polys);
+  // The input's attributes, as VTK's clip filters carry them; cap points and
+  // cap faces, which have no input counterpart, get the arrays' null value.
+  // Normals are left out: a cap's would be null.
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyNormalsOff();
+  outPD->CopyAllocate(inPD, totalPoints);
+  for (vtkIdType id = 0; id < totalPoints; ++id)
+  {
+    const vtkIdType from = pointOrigin->GetValue(id);
+    if (from >= 0)
+      outPD->CopyData(inPD, from, id);
+    else
+      outPD->NullData(id);
+  }
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyNormalsOff();
+  outCD->CopyAllocate(inCD, totalFaces);
+  for (vtkIdType c = 0; c < totalFaces; ++c)
+  {
+    const vtkIdType from = cellOrigin->GetValue(c);
+    if (from >= 0)
+      outCD->CopyData(inCD, from, c);
+    else
+      outCD->NullData(c);
+  }
   output->GetPointData()->AddArray(pointOrigin);
   output->GetCellData()->AddArray(cellOrigin);
   output->GetCellData()->AddArray(region);

@@ -16,7 +16,10 @@
  * Output: all pieces in one polydata, the loop vertices duplicated so each
  * piece has its own; cell data "RegionId" (the piece), "InputCellId" (-1 on
  * caps), "Cap" (1 on cap triangles); point data "InputPointId" (-1 on cap
- * points and the points of inner-wall lines); field data "Pieces",
+ * points and the points of inner-wall lines); the input's point and cell
+ * data, carried from those ids (the arrays' null value on cap points and cap
+ * faces; normals are left out, since a cap's would be null; the input's field
+ * data passes too); field data "Pieces",
  * "InnerWallLines" (see CutInnerWalls) and "LinesInOnePiece" (lines that
  * separate nothing, because the bone joins around them: each stays a slit,
  * its caps back to back, with a warning that gives its place). Their cut borders coincide exactly. With

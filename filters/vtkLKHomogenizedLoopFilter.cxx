@@ -9,6 +9,7 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -116,6 +117,7 @@ int vtkLKHomogenizedLoopFilter::RequestData(
 
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(out.mesh);
   output->ShallowCopy(result);
+  output->GetFieldData()->PassData(input->GetFieldData());
   std::size_t offset = 0;
   const std::size_t n = out.mesh.points.size();
   for (vtkDataArray* arr : arrays)

@@ -487,6 +487,7 @@ int vtkLKLatticeFitFilter::RequestData(
 
   toPolyData(fit, output);
   vtkFieldData* fd = output->GetFieldData();
+  fd->PassData(input->GetFieldData()); // as VTK's filters do: SPACE and the like reach the lattice
   addValue(fd, "ControlVertices", static_cast<double>(fit.lattice.points.size()));
   addValue(fd, "Triangles", static_cast<double>(fit.lattice.faces.size() - fit.quads));
   addValue(fd, "Quads", static_cast<double>(fit.quads));

@@ -6,8 +6,16 @@
  * warning. The repair itself is CGAL's (see core/ManifoldRepair.h): duplicate
  * points merged, degenerate faces removed, non-manifold vertices and edges
  * split, orientation made consistent and, for closed components, outward.
- * The result loads into a CGAL Surface_mesh. Point and cell attributes are not
- * carried (points may be merged or split).
+ * The result loads into a CGAL Surface_mesh.
+ *
+ * Attributes are carried as vtkCleanPolyData carries them: an output point
+ * takes the point data of the input point at its position (the lowest id
+ * among duplicates merged into it; a split vertex's copies all take it), an
+ * output triangle the cell data of the input cell it came from (the one with
+ * the same three positions, or for a face the repair made, the input triangle
+ * nearest its centre). Normals are not carried, because the repair may turn
+ * faces over; recompute them (vtkPolyDataNormals). The input's field data
+ * (a SPACE tag, for example) is passed on.
  *
  * The output's field data holds what was done: MergedPoints,
  * RemovedDegenerateFaces, SplitNonManifoldVertices, Components, BoundaryEdges.

@@ -9,6 +9,7 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -95,6 +96,79 @@ void vtkLKPatchDeformationFilter::RemoveLastDeformation()
   this->Deformations.pop_back();
   this->Modified();
 }
+
+namespace
+{
+/// The input's point data, interpolated at the midpoints the refinement made
+/// (as VTK's subdivision filters do), and its cell data, copied to every
+/// triangle cut from an input triangle. Normals are left out: the deformed
+/// surface's differ (the input's are in "BaseNormals").
+void carryAttributes(vtkPolyData* input, const lk::AdaptivePatchMesh& mesh, vtkPolyData* output)
+{
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  const auto np = static_cast<vtkIdType>(mesh.vertexCount());
+  const auto nIn = static_cast<vtkIdType>(mesh.inputVertexCount());
+  outPD->CopyNormalsOff();
+  outPD->InterpolateAllocate(inPD, np);
+  for (vtkIdType v = 0; v < nIn; ++v)
+    outPD->CopyData(inPD, v, v);
+  if (np > nIn && inPD->GetNumberOfArrays() > 0)
+  {
+    // Each midpoint is an affine combination of at most three input points
+    // (the corners of the input triangle it lies in).
+    struct Weights
+    {
+      vtkIdType id[3];
+      double w[3];
+      int n = 0;
+      void add(const Weights& o, double f)
+      {
+        for (int i = 0; i < o.n; ++i)
+        {
+          int k = 0;
+          while (k < n && id[k] != o.id[i])
+            ++k;
+          if (k == n)
+          {
+            if (n == 3) // cannot happen: a midpoint lies in one input triangle
+              continue;
+            id[n] = o.id[i];
+            w[n++] = 0.0;
+          }
+          w[k] += f * o.w[i];
+        }
+      }
+    };
+    std::vector<Weights> weights(static_cast<std::size_t>(np));
+    for (vtkIdType v = 0; v < nIn; ++v)
+    {
+      weights[static_cast<std::size_t>(v)].id[0] = v;
+      weights[static_cast<std::size_t>(v)].w[0] = 1.0;
+      weights[static_cast<std::size_t>(v)].n = 1;
+    }
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType v = nIn; v < np; ++v)
+    {
+      const auto ends = mesh.midpointEnds(static_cast<int>(v));
+      Weights& w = weights[static_cast<std::size_t>(v)];
+      w.add(weights[static_cast<std::size_t>(ends[0])], 0.5);
+      w.add(weights[static_cast<std::size_t>(ends[1])], 0.5);
+      ids->SetNumberOfIds(w.n);
+      for (int k = 0; k < w.n; ++k)
+        ids->SetId(k, w.id[k]);
+      outPD->InterpolatePoint(inPD, v, ids, w.w);
+    }
+  }
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  const auto origins = mesh.triangleOrigins();
+  outCD->CopyNormalsOff();
+  outCD->CopyAllocate(inCD, static_cast<vtkIdType>(origins.size()));
+  for (std::size_t t = 0; t < origins.size(); ++t)
+    outCD->CopyData(inCD, origins[t], static_cast<vtkIdType>(t));
+}
+} // namespace
 
 int vtkLKPatchDeformationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -210,6 +284,7 @@ int vtkLKPatchDeformationFilter::RequestData(
     }
     output->SetPoints(points);
     output->SetPolys(cells);
+    carryAttributes(input, mesh, output);
     output->GetPointData()->AddArray(displacement);
     output->GetPointData()->AddArray(normals);
     output->GetCellData()->AddArray(level);

@@ -21,7 +21,10 @@
  * Output: the refined, deformed triangles. Point data "Displacement" (from
  * the original surface) and "BaseNormals" (original normals); cell data
  * "Level" (refinement depth of each triangle); field data "SelfCrossings"
- * and "SelfCrossingDepth" (CheckCrossings).
+ * and "SelfCrossingDepth" (CheckCrossings). The input's point data is
+ * carried, interpolated at new midpoints as VTK's subdivision filters do,
+ * and its cell data copied to every triangle cut from an input triangle;
+ * normals are left out, since the deformed surface's differ.
  *
  * Interactive use. The filter keeps the refined mesh between updates, as
  * the state after all its deformations and after all but the last. While

@@ -142,6 +142,50 @@ TEST(AdaptivePatchMesh, ConformingAfterAnySequence)
   EXPECT_EQ(deepest, 4); // depth is bounded, and reached
 }
 
+TEST(AdaptivePatchMesh, EveryNewVertexIsAMidpointAndEveryTriangleKnowsItsInputTriangle)
+{
+  // What the filter needs to carry the input's attributes: each new vertex's
+  // base position is the middle of its two ends, and each output triangle
+  // lies in the input triangle it names (its base centre is inside it).
+  const lk::TriangleMesh input = grid(4);
+  lk::AdaptivePatchMesh mesh(input, 4);
+  mesh.functionalDeformation(lk::Vec3(1.3, 2.2, 0), 0.8, 3.0, 1.5, 0.01);
+  ASSERT_EQ(mesh.inputVertexCount(), input.points.size());
+  ASSERT_GT(mesh.vertexCount(), 2 * input.points.size()); // it refined
+  for (int v = 0; v < static_cast<int>(mesh.vertexCount()); ++v)
+  {
+    const auto ends = mesh.midpointEnds(v);
+    if (v < static_cast<int>(input.points.size()))
+    {
+      EXPECT_EQ(ends[0], -1);
+      continue;
+    }
+    ASSERT_GE(ends[0], 0);
+    ASSERT_LT(ends[0], v); // made before it: one pass in index order interpolates
+    ASSERT_LT(ends[1], v);
+    EXPECT_LT((mesh.basePosition(v) - 0.5 * (mesh.basePosition(ends[0]) + mesh.basePosition(ends[1]))).norm(), 1e-12);
+  }
+  const auto tris = mesh.triangles();
+  const auto origins = mesh.triangleOrigins();
+  ASSERT_EQ(origins.size(), tris.size());
+  std::set<int> seen;
+  for (std::size_t t = 0; t < tris.size(); ++t)
+  {
+    ASSERT_GE(origins[t], 0);
+    ASSERT_LT(origins[t], static_cast<int>(input.triangles.size()));
+    seen.insert(origins[t]);
+    const lk::Vec3 c = (mesh.basePosition(tris[t][0]) + mesh.basePosition(tris[t][1]) + mesh.basePosition(tris[t][2])) / 3.0;
+    const auto& in = input.triangles[static_cast<std::size_t>(origins[t])];
+    const lk::Vec3 a = input.points[in[0]], b = input.points[in[1]], d = input.points[in[2]];
+    // Inside in the plane z = 0: the same side of all three edges.
+    auto side = [&](const lk::Vec3& p, const lk::Vec3& q) { return (q - p).cross(c - p).z(); };
+    EXPECT_GT(side(a, b), 0.0) << "triangle " << t;
+    EXPECT_GT(side(b, d), 0.0) << "triangle " << t;
+    EXPECT_GT(side(d, a), 0.0) << "triangle " << t;
+  }
+  EXPECT_EQ(seen.size(), input.triangles.size()); // every input triangle is covered
+}
+
 TEST(AdaptivePatchMesh, FunctionalDeformationIsLocalWithPeakK)
 {
   lk::AdaptivePatchMesh mesh(grid(10), 5);

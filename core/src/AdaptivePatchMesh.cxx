@@ -27,6 +27,7 @@ AdaptivePatchMesh::AdaptivePatchMesh(const TriangleMesh& mesh, int maxLevel)
     if (!p.allFinite())
       throw std::invalid_argument("the mesh has a point that is not finite (NaN or infinite)");
   base_ = mesh.points;
+  inputVertexCount_ = mesh.points.size();
   normal_.assign(np, Vec3::Zero());
   displacement_.assign(np, Vec3::Zero());
   tris_.reserve(mesh.triangles.size() * 2);
@@ -86,6 +87,7 @@ int AdaptivePatchMesh::makeMidpoint(int a, int b)
   Vec3 n = normal_[a] + normal_[b];
   normal_.push_back(n.norm() > 0.0 ? n.normalized() : normal_[a]);
   displacement_.push_back(0.5 * (displacement_[a] + displacement_[b]));
+  midpointEnds_.push_back({ { a, b } });
   midpoints_.emplace(key(a, b), m);
   // Record it in the triangles on the edge (no hashing when drawing).
   const auto it = edgeTris_.find(key(a, b));
@@ -230,6 +232,32 @@ std::vector<int> AdaptivePatchMesh::triangleLevels() const
       out.push_back(t.level);
   }
   return out;
+}
+
+std::vector<int> AdaptivePatchMesh::triangleOrigins() const
+{
+  std::vector<int> out;
+  out.reserve(leafCount_ + leafCount_ / 4);
+  for (int t = 0; t < static_cast<int>(tris_.size()); ++t)
+  {
+    const Tri& tri = tris_[t];
+    if (tri.firstChild >= 0)
+      continue;
+    int root = t;
+    while (tris_[root].parent >= 0)
+      root = tris_[root].parent;
+    out.push_back(root);
+    if (tri.mid[0] >= 0 || tri.mid[1] >= 0 || tri.mid[2] >= 0) // a transition triangle is output twice
+      out.push_back(root);
+  }
+  return out;
+}
+
+std::array<int, 2> AdaptivePatchMesh::midpointEnds(int v) const
+{
+  if (v < static_cast<int>(inputVertexCount_))
+    return { { -1, -1 } };
+  return midpointEnds_[static_cast<std::size_t>(v) - inputVertexCount_];
 }
 
 std::vector<int> AdaptivePatchMesh::leavesNear(const Vec3& lo, const Vec3& hi) const

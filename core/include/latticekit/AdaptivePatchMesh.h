@@ -78,6 +78,13 @@ public:
   std::vector<std::array<int, 3>> triangles() const;
   /// Per output triangle: the level of its leaf.
   std::vector<int> triangleLevels() const;
+  /// Per output triangle: the input triangle it lies in (its root's index).
+  std::vector<int> triangleOrigins() const;
+  /// The input mesh's vertices are the first inputVertexCount(); every later
+  /// vertex is the midpoint of the edge between midpointEnds(v), two earlier
+  /// vertices ({-1, -1} for an input vertex).
+  std::size_t inputVertexCount() const { return inputVertexCount_; }
+  std::array<int, 2> midpointEnds(int v) const;
   std::vector<int> leaves() const;
   int level(int triangle) const { return tris_[triangle].level; }
   std::size_t leafCount() const { return leafCount_; }
@@ -106,6 +113,8 @@ private:
 
   int maxLevel_;
   std::vector<Vec3> base_, normal_, displacement_;
+  std::size_t inputVertexCount_ = 0;
+  std::vector<std::array<int, 2>> midpointEnds_; ///< per vertex after the input's
   std::vector<Tri> tris_;
   std::unordered_map<Key, int> midpoints_;
   std::unordered_map<Key, std::array<int, 2>> edgeTris_;

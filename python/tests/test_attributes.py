@@ -1,0 +1,233 @@
+"""What the filters carry from their input, as VTK's own filters do.
+
+A researcher's arrays (a cortical thickness per point, a region label per
+face, Metro's error colours) and the file's coordinate tag (field data
+"SPACE") must come through a latticekit filter the way they come through
+vtkCleanPolyData, vtkLoopSubdivisionFilter or vtkClipPolyData: point data at
+the points it belongs to (interpolated at new points), cell data on the faces
+cut from a cell, field data passed on. Normals are left out where the filter
+changes the geometry or the orientation, so that a mapper never shades with
+stale ones.
+"""
+import math
+import unittest
+
+import latticekit
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIdList, vtkIntArray, vtkPoints, vtkStringArray
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkElevationFilter, vtkPolyDataNormals
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+
+
+def tagged_sphere(theta=24, phi=24):
+    """A closed unit-diameter sphere with point normals, point data "Elevation"
+    (z + 0.5, linear, so exact at any point of a flat subdivision), cell data
+    "Label" (the cell's id times 10) and field data SPACE = RAS."""
+    source = vtkSphereSource()
+    source.SetThetaResolution(theta)
+    source.SetPhiResolution(phi)
+    clean = vtkCleanPolyData()
+    clean.SetInputConnection(source.GetOutputPort())
+    elevation = vtkElevationFilter()
+    elevation.SetInputConnection(clean.GetOutputPort())
+    elevation.SetLowPoint(0, 0, -0.5)
+    elevation.SetHighPoint(0, 0, 0.5)
+    elevation.SetScalarRange(0, 1)
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(elevation.GetOutputPort())
+    normals.SplittingOff()
+    normals.Update()
+    sphere = vtkPolyData()
+    sphere.DeepCopy(normals.GetOutput())
+    label = vtkIntArray()
+    label.SetName("Label")
+    for c in range(sphere.GetNumberOfCells()):
+        label.InsertNextValue(10 * c)
+    sphere.GetCellData().AddArray(label)
+    space = vtkStringArray()
+    space.SetName("SPACE")
+    space.InsertNextValue("RAS")
+    sphere.GetFieldData().AddArray(space)
+    return sphere
+
+
+def space_of(mesh):
+    tag = mesh.GetFieldData().GetAbstractArray("SPACE")
+    return tag.GetValue(0) if tag is not None else None
+
+
+def point_ids(mesh, cell):
+    ids = vtkIdList()
+    mesh.GetCellPoints(cell, ids)
+    return [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
+
+
+class AttributeTest(unittest.TestCase):
+    def assertElevationFollowsPoints(self, mesh, base=None):
+        """Each point's Elevation is its height z + 0.5 (z of the base
+        position where the points were moved)."""
+        elevation = mesh.GetPointData().GetArray("Elevation")
+        self.assertIsNotNone(elevation)
+        for p in range(mesh.GetNumberOfPoints()):
+            z = mesh.GetPoint(p)[2] - (base.GetTuple3(p)[2] if base is not None else 0.0)
+            self.assertAlmostEqual(elevation.GetValue(p), z + 0.5, delta=1e-6, msg="point %d" % p)
+
+    def test_repair_carries_point_and_cell_data_through_merged_points(self):
+        # A triangle soup: each face has its own three copies of the sphere's
+        # points, with the point data of the point it copies and its face's label.
+        sphere = tagged_sphere()
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        faces = vtkCellArray()
+        elevation = vtkFloatArray()
+        elevation.SetName("Elevation")
+        label = vtkIntArray()
+        label.SetName("Label")
+        source_elevation = sphere.GetPointData().GetArray("Elevation")
+        for c in range(sphere.GetNumberOfCells()):
+            ids = point_ids(sphere, c)
+            faces.InsertNextCell(3)
+            for p in ids:
+                faces.InsertCellPoint(points.InsertNextPoint(sphere.GetPoint(p)))
+                elevation.InsertNextValue(source_elevation.GetValue(p))
+            label.InsertNextValue(10 * c)
+        soup = vtkPolyData()
+        soup.SetPoints(points)
+        soup.SetPolys(faces)
+        soup.GetPointData().AddArray(elevation)
+        soup.GetCellData().AddArray(label)
+        soup.GetFieldData().AddArray(sphere.GetFieldData().GetAbstractArray("SPACE"))
+
+        repair = latticekit.vtkLKMeshRepairFilter()
+        repair.SetInputData(soup)
+        repair.Update()
+        out = repair.GetOutput()
+        self.assertEqual(out.GetNumberOfPoints(), sphere.GetNumberOfPoints())
+        self.assertEqual(out.GetNumberOfCells(), sphere.GetNumberOfCells())
+        self.assertEqual(out.GetFieldData().GetArray("MergedPoints").GetValue(0),
+                         soup.GetNumberOfPoints() - sphere.GetNumberOfPoints())
+        self.assertEqual(space_of(out), "RAS")
+        self.assertElevationFollowsPoints(out)
+        # Each face keeps the label of the soup face with its three corners.
+        corners = {}
+        for c in range(sphere.GetNumberOfCells()):
+            corners[tuple(sorted(sphere.GetPoint(p) for p in point_ids(sphere, c)))] = 10 * c
+        out_label = out.GetCellData().GetArray("Label")
+        self.assertIsNotNone(out_label)
+        for c in range(out.GetNumberOfCells()):
+            key = tuple(sorted(out.GetPoint(p) for p in point_ids(out, c)))
+            self.assertEqual(out_label.GetValue(c), corners[key])
+
+    def test_repair_leaves_out_normals_it_may_turn_over(self):
+        # The sphere turned inside out: the repair orients it outward, so the
+        # input's normals would point in; they are not carried.
+        from vtkmodules.vtkFiltersCore import vtkReverseSense
+        sphere = tagged_sphere()
+        reverse = vtkReverseSense()
+        reverse.SetInputData(sphere)
+        reverse.ReverseNormalsOff()
+        reverse.Update()
+        repair = latticekit.vtkLKMeshRepairFilter()
+        repair.SetInputConnection(reverse.GetOutputPort())
+        repair.Update()
+        out = repair.GetOutput()
+        self.assertIsNone(out.GetPointData().GetNormals())
+        self.assertIsNone(out.GetPointData().GetArray("Normals"))
+        self.assertElevationFollowsPoints(out)
+        self.assertEqual(space_of(out), "RAS")
+
+    def test_deformation_interpolates_point_data_at_new_midpoints(self):
+        sphere = tagged_sphere()
+        deform = latticekit.vtkLKPatchDeformationFilter()
+        deform.SetInputData(sphere)
+        deform.AddFunctionalDeformation(0, 0, 0.5, 0.1, 20, 0.3)  # a bump at the north pole
+        deform.Update()
+        out = deform.GetOutput()
+        self.assertGreater(out.GetNumberOfPoints(), 2 * sphere.GetNumberOfPoints())  # refined
+        self.assertEqual(space_of(out), "RAS")
+        self.assertIsNone(out.GetPointData().GetArray("Normals"))
+        # Elevation is linear: exact at every base position, input point or midpoint.
+        self.assertElevationFollowsPoints(out, base=out.GetPointData().GetArray("Displacement"))
+        # Every output triangle lies in the input triangle whose label it carries:
+        # its base centre is inside that triangle.
+        displacement = out.GetPointData().GetArray("Displacement")
+        label = out.GetCellData().GetArray("Label")
+        self.assertIsNotNone(label)
+        for c in range(out.GetNumberOfCells()):
+            centre = [0.0, 0.0, 0.0]
+            for p in point_ids(out, c):
+                x, d = out.GetPoint(p), displacement.GetTuple3(p)
+                centre = [centre[k] + (x[k] - d[k]) / 3 for k in range(3)]
+            origin = label.GetValue(c) // 10
+            a, b, t = (sphere.GetPoint(p) for p in point_ids(sphere, origin))
+            # Barycentric coordinates of the centre in the input triangle.
+            v0, v1, v2 = ([q[k] - a[k] for k in range(3)] for q in (b, t, centre))
+            dot = lambda u, v: sum(u[k] * v[k] for k in range(3))  # noqa: E731
+            d00, d01, d11, d20, d21 = dot(v0, v0), dot(v0, v1), dot(v1, v1), dot(v2, v0), dot(v2, v1)
+            den = d00 * d11 - d01 * d01
+            s = (d11 * d20 - d01 * d21) / den
+            r = (d00 * d21 - d01 * d20) / den
+            self.assertTrue(s > 0 and r > 0 and s + r < 1, "triangle %d, label %d" % (c, origin))
+
+    def test_cut_carries_point_and_cell_data_to_both_pieces(self):
+        # The sphere cut at its equator (a ring of its own points), capped.
+        sphere = tagged_sphere(theta=24, phi=25)  # an odd count has an equator ring
+        ring = [p for p in range(sphere.GetNumberOfPoints()) if abs(sphere.GetPoint(p)[2]) < 1e-9]
+        self.assertGreater(len(ring), 20)
+        ring.sort(key=lambda p: math.atan2(sphere.GetPoint(p)[1], sphere.GetPoint(p)[0]))
+        line_points = vtkPoints()
+        line = vtkCellArray()
+        line.InsertNextCell(len(ring) + 1)
+        for p in ring:
+            line.InsertCellPoint(line_points.InsertNextPoint(sphere.GetPoint(p)))
+        line.InsertCellPoint(0)
+        lines = vtkPolyData()
+        lines.SetPoints(line_points)
+        lines.SetLines(line)
+        cut = latticekit.vtkLKClosedLineCutFilter()
+        cut.SetInputData(sphere)
+        cut.SetLinesData(lines)
+        cut.CappingOn()
+        cut.Update()
+        out = cut.GetOutput()
+        self.assertEqual(out.GetFieldData().GetArray("Pieces").GetValue(0), 2)
+        self.assertEqual(space_of(out), "RAS")
+        self.assertIsNone(out.GetPointData().GetArray("Normals"))
+        origin_point = out.GetPointData().GetArray("InputPointId")
+        origin_cell = out.GetCellData().GetArray("InputCellId")
+        elevation = out.GetPointData().GetArray("Elevation")
+        label = out.GetCellData().GetArray("Label")
+        source_elevation = sphere.GetPointData().GetArray("Elevation")
+        caps = 0
+        for p in range(out.GetNumberOfPoints()):
+            q = origin_point.GetValue(p)
+            self.assertEqual(elevation.GetValue(p), source_elevation.GetValue(q) if q >= 0 else 0.0)
+        for c in range(out.GetNumberOfCells()):
+            q = origin_cell.GetValue(c)
+            self.assertEqual(label.GetValue(c), 10 * q if q >= 0 else 0)
+            caps += q < 0
+        self.assertGreater(caps, 0)
+        # The equator's points are in both pieces, each copy with its Elevation.
+        self.assertEqual(sum(1 for p in range(out.GetNumberOfPoints()) if origin_point.GetValue(p) == ring[0]), 2)
+
+    def test_field_data_passes_through_every_mesh_filter(self):
+        sphere = tagged_sphere(12, 12)
+        loop = latticekit.vtkLKHomogenizedLoopFilter()
+        loop.SetInputData(sphere)
+        fit = latticekit.vtkLKLatticeFitFilter()
+        fit.SetInputData(sphere)
+        fit.SetTargetNumberOfVertices(40)
+        pairing = latticekit.vtkLKQuadPairingFilter()
+        pairing.SetInputData(sphere)
+        surface = latticekit.vtkLKLatticeSurfaceFilter()
+        surface.SetInputData(sphere)
+        for f in (loop, fit, pairing, surface):
+            f.Update()
+            for port in range(f.GetNumberOfOutputPorts()):
+                self.assertEqual(space_of(f.GetOutputDataObject(port)), "RAS", "%s port %d" % (f.GetClassName(), port))
+        # The fit's own field data is there beside it.
+        self.assertEqual(fit.GetOutput().GetFieldData().GetArray("ControlVertices").GetValue(0), 40)
+
+
+if __name__ == "__main__":
+    unittest.main()
