@@ -1,5 +1,6 @@
 #include "vtkLKBezierIFSFilter.h"
 #include "vtkLKAbort.h"
+#include "vtkLKMemory.h"
 
 #include "latticekit/BezierIFS.h"
 
@@ -121,6 +122,18 @@ int vtkLKBezierIFSFilter::RequestData(
     return 0;
   }
 
+  if (this->Algorithm == CHAOS_GAME)
+  {
+    // About 120 bytes a point: the core's position and parameter, then the
+    // output's point, parameter and vertex cell.
+    std::string tooLarge;
+    if (lkvtk::exceedsMemory(120.0 * static_cast<double>(this->NumberOfPoints), tooLarge))
+    {
+      vtkErrorMacro("Cannot draw the IFS: " << this->NumberOfPoints << " points would take " << tooLarge
+                                            << "; ask for fewer (NumberOfPoints).");
+      return 0;
+    }
+  }
   lk::IfsPoints pts;
   try
   {

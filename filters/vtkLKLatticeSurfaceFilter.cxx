@@ -1,5 +1,6 @@
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKAbort.h"
+#include "vtkLKMemory.h"
 
 #include "latticekit/LatticeSurface.h"
 #include "latticekit/LatticeSurfaceLocator.h"
@@ -210,8 +211,30 @@ int vtkLKLatticeSurfaceFilter::RequestData(
       }
     }
   }
-  this->EffectiveResolution = full;
   const int half = full / 2;
+  {
+    // A dense mesh taken for a lattice at a high resolution makes billions of
+    // triangles: refuse before the allocation fails. Per grid cell: two
+    // triangles (connectivity, offsets, face and patch ids, 96 bytes), about
+    // one point with its normal (48) and its entry in `named` (about 80).
+    double cells = 0.0;
+    for (std::size_t p = 0; p < s.patches.size(); ++p)
+    {
+      const double m = lk::isSplitPatch(s, p) ? std::max(1, half) : full;
+      cells += m * m;
+    }
+    std::string tooLarge;
+    if (lkvtk::exceedsMemory(224.0 * cells, tooLarge))
+    {
+      vtkErrorMacro("The tessellation at resolution " << full << " would have " << static_cast<long long>(2.0 * cells) << " triangles ("
+                                                      << tooLarge << "): lower the Resolution"
+                                                      << (this->ChordalTolerance > 0.0 ? " or raise the ChordalTolerance" : "")
+                                                      << ", or give a coarser lattice (" << s.patches.size()
+                                                      << " patches here).");
+      return 0;
+    }
+  }
+  this->EffectiveResolution = full;
 
   // Watertight by construction: every sample on a patch side is named by the
   // curve it lies on and its step along it (lattice vertex; step K of a

@@ -30,7 +30,12 @@ inline bool exceedsMemory(double bytes, std::string& message)
   }
   std::ostringstream os;
   os.precision(3);
-  os << bytes / 1e9 << " GB, more than this machine's memory (" << memory / 1e9 << " GB)";
+  const double gb = bytes / 1e9;
+  if (gb >= 1000.0) // whole gigabytes, not 1.2e+04
+    os << static_cast<long long>(gb + 0.5);
+  else
+    os << gb;
+  os << " GB, more than this machine's memory (" << memory / 1e9 << " GB)";
   message = os.str();
   return true;
 }

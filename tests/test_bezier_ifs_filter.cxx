@@ -124,4 +124,12 @@ TEST(BezierIFSFilter, BadInputIsAClearError)
     f->SetInputData(controlPoints({ { 0, 0, 0 } }));
     expectError(f, "at least 2 control points");
   }
+  {
+    // 10^14 chaos-game points (12 PB): refused at once, not std::bad_alloc.
+    vtkNew<vtkLKBezierIFSFilter> f;
+    f->SetInputData(controlPoints(kCubic));
+    f->SetAlgorithmToChaosGame();
+    f->SetNumberOfPoints(100000000000000LL);
+    expectError(f, "more than this machine's memory");
+  }
 }

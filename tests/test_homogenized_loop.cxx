@@ -343,4 +343,18 @@ TEST(HomogenizedLoop, BadWeightsAndMeshesAreClearErrors)
   }
   vtkNew<vtkPolyData> empty;
   check(empty, "Cannot subdivide");
+  {
+    // 327,680 triangles subdivided 6 times: 1.3 billion, about 175 GB. Refused
+    // at once, not after minutes of work ending in std::bad_alloc. (A machine
+    // with that much memory would make it.)
+    vtkNew<vtkLKHomogenizedLoopFilter> f;
+    f->SetInputData(lkvtk::fromTriangleMesh(lktest::icosphere(7, 1.0)));
+    f->SetNumberOfSubdivisions(6);
+    lktest::ErrorRecorder errors(f);
+    f->Update();
+    EXPECT_EQ(errors.errors, 1);
+    EXPECT_NE(errors.messages.find("more than this machine's memory"), std::string::npos) << errors.messages;
+    EXPECT_NE(errors.messages.find("1342177280 triangles"), std::string::npos) << errors.messages;
+    EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+  }
 }

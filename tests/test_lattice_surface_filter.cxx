@@ -19,6 +19,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkQuadricDecimation.h>
+#include <vtkSphereSource.h>
 
 #include <gtest/gtest.h>
 
@@ -365,4 +366,25 @@ TEST(LatticeSurfaceFilter, BadLatticesAreClearErrors)
     EXPECT_NE(rec.messages.find(c.expected), std::string::npos) << rec.messages;
     EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
   }
+}
+
+TEST(LatticeSurfaceFilter, ATessellationLargerThanMemoryIsRefused)
+{
+  // A dense triangle mesh (123,000 triangles) taken for a lattice at the
+  // highest resolution would make 6 billion triangles, about 1.4 TB: a clear
+  // error, not std::bad_alloc. (A machine with that much memory would build it.)
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(310);
+  sphere->SetPhiResolution(200);
+  sphere->Update();
+  ASSERT_GT(sphere->GetOutput()->GetNumberOfPolys(), 120000);
+  vtkNew<vtkLKLatticeSurfaceFilter> filter;
+  lktest::ErrorRecorder rec(filter);
+  filter->SetInputConnection(sphere->GetOutputPort());
+  filter->SetResolution(256);
+  filter->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("more than this machine's memory"), std::string::npos) << rec.messages;
+  EXPECT_NE(rec.messages.find("lower the Resolution"), std::string::npos) << rec.messages;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }
