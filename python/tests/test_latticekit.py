@@ -36,6 +36,24 @@ class DocumentationTest(unittest.TestCase):
         self.assertGreater(tried, 5)
         self.assertEqual(failures, 0)
 
+    def test_the_readme_example_runs(self):
+        # The README's Python block, as a reader would paste it: from the
+        # source tree's root, where its sample_data path is.
+        root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+        with open(os.path.join(root, "README.md")) as f:
+            text = f.read()
+        start = text.index("```python\n") + len("```python\n")
+        code = text[start:text.index("```", start)]
+        self.assertIn("vtkLKMetroFilter", code)
+        result = subprocess.run([sys.executable, "-c", code], cwd=root, capture_output=True, text=True,
+                                timeout=300, check=False)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        # It prints the Hausdorff distance (mm) and the mean error (% of the diagonal).
+        distance, mean = (float(v) for v in result.stdout.split())
+        self.assertGreater(distance, 0.0)
+        self.assertGreater(mean, 0.0)
+        self.assertLess(mean, 1.0)
+
 
 class PipelineTest(unittest.TestCase):
     def test_vtk_sources_and_latticekit_filters_in_one_pipeline(self):
