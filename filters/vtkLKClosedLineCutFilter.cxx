@@ -6,6 +6,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
@@ -246,30 +247,21 @@ int vtkLKClosedLineCutFilter::RequestData(
   // The input's attributes, as VTK's clip filters carry them; cap points and
   // cap faces, which have no input counterpart, get the arrays' null value.
   // Normals are left out: a cap's would be null.
-  vtkPointData* inPD = input->GetPointData();
-  vtkPointData* outPD = output->GetPointData();
-  outPD->CopyNormalsOff();
-  outPD->CopyAllocate(inPD, totalPoints);
-  for (vtkIdType id = 0; id < totalPoints; ++id)
-  {
-    const vtkIdType from = pointOrigin->GetValue(id);
-    if (from >= 0)
-      outPD->CopyData(inPD, from, id);
-    else
-      outPD->NullData(id);
-  }
-  vtkCellData* inCD = input->GetCellData();
-  vtkCellData* outCD = output->GetCellData();
-  outCD->CopyNormalsOff();
-  outCD->CopyAllocate(inCD, totalFaces);
-  for (vtkIdType c = 0; c < totalFaces; ++c)
-  {
-    const vtkIdType from = cellOrigin->GetValue(c);
-    if (from >= 0)
-      outCD->CopyData(inCD, from, c);
-    else
-      outCD->NullData(c);
-  }
+  auto carry = [](vtkDataSetAttributes* in, vtkDataSetAttributes* out, vtkIdTypeArray* origin) {
+    const vtkIdType n = origin->GetNumberOfValues();
+    out->CopyNormalsOff();
+    out->CopyAllocate(in, n);
+    for (vtkIdType id = 0; id < n; ++id)
+    {
+      const vtkIdType from = origin->GetValue(id);
+      if (from >= 0)
+        out->CopyData(in, from, id);
+      else
+        out->NullData(id);
+    }
+  };
+  carry(input->GetPointData(), output->GetPointData(), pointOrigin);
+  carry(input->GetCellData(), output->GetCellData(), cellOrigin);
   output->GetPointData()->AddArray(pointOrigin);
   output->GetCellData()->AddArray(cellOrigin);
   output->GetCellData()->AddArray(region);

@@ -102,10 +102,24 @@ void carryAttributes(vtkPolyData* input, vtkPolyData* triangulated, vtkPolyData*
 
   // Input triangles by their three point positions.
   using Triple = std::array<vtkIdType, 3>;
-  auto key = [](vtkIdType a, vtkIdType b, vtkIdType c) {
-    Triple t{ { a, b, c } };
+  // A triangle's key: its corners' positions, as input point ids, sorted.
+  auto key = [](const std::vector<vtkIdType>& idOf, const vtkIdType* ids) {
+    Triple t{ { idOf[static_cast<std::size_t>(ids[0])], idOf[static_cast<std::size_t>(ids[1])],
+      idOf[static_cast<std::size_t>(ids[2])] } };
     std::sort(t.begin(), t.end());
     return t;
+  };
+  auto forEachTriangle = [](vtkCellArray* cells, auto&& f) {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    vtkIdType t = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++t)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      if (n == 3)
+        f(t, ids);
+    }
   };
   vtkDataArray* originalIds = triangulated->GetCellData()->GetArray(originalCellIdName);
   struct TripleHash
@@ -118,34 +132,15 @@ void carryAttributes(vtkPolyData* input, vtkPolyData* triangulated, vtkPolyData*
   };
   std::unordered_map<Triple, vtkIdType, TripleHash> cellOf;
   cellOf.reserve(static_cast<std::size_t>(triangulated->GetNumberOfPolys()));
-  {
-    auto it = vtk::TakeSmartPointer(triangulated->GetPolys()->NewIterator());
-    vtkIdType t = 0;
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++t)
-    {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      if (n == 3)
-        cellOf.emplace(key(representative[static_cast<std::size_t>(ids[0])],
-                         representative[static_cast<std::size_t>(ids[1])],
-                         representative[static_cast<std::size_t>(ids[2])]),
-          static_cast<vtkIdType>(originalIds->GetTuple1(t)));
-    }
-  }
+  forEachTriangle(triangulated->GetPolys(), [&](vtkIdType t, const vtkIdType* ids) {
+    cellOf.emplace(key(representative, ids), static_cast<vtkIdType>(originalIds->GetTuple1(t)));
+  });
   vtkCellData* outCD = output->GetCellData();
   outCD->CopyNormalsOff();
   outCD->CopyAllocate(inCD, output->GetNumberOfPolys());
   vtkSmartPointer<vtkStaticCellLocator> nearestCell;
-  auto it = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
-  vtkIdType t = 0;
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++t)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    const auto found = cellOf.find(key(source[static_cast<std::size_t>(ids[0])],
-      source[static_cast<std::size_t>(ids[1])], source[static_cast<std::size_t>(ids[2])]));
+  forEachTriangle(output->GetPolys(), [&](vtkIdType t, const vtkIdType* ids) {
+    const auto found = cellOf.find(key(source, ids));
     vtkIdType from;
     if (found != cellOf.end())
       from = found->second;
@@ -170,7 +165,7 @@ void carryAttributes(vtkPolyData* input, vtkPolyData* triangulated, vtkPolyData*
       from = static_cast<vtkIdType>(originalIds->GetTuple1(cell));
     }
     outCD->CopyData(inCD, from, t);
-  }
+  });
 }
 } // namespace
 

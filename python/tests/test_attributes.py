@@ -118,6 +118,39 @@ class AttributeTest(unittest.TestCase):
             key = tuple(sorted(out.GetPoint(p) for p in point_ids(out, c)))
             self.assertEqual(out_label.GetValue(c), corners[key])
 
+    def test_repair_labels_the_faces_it_makes_from_the_input_under_them(self):
+        # A zero-area cap: E lies on the edge AB, and the triangle (B, E, A)
+        # joins the fan above E to the triangle (A, F, B) below. The repair
+        # flips AB into EF, making two faces that are not in the input; they
+        # lie in (A, F, B) and take its label.
+        points = vtkPoints()
+        for p in ((0, 0, 0), (2, 0, 0), (1, 0, 0), (1, -1, 0), (1, 1, 0)):  # A, B, E, F, G
+            points.InsertNextPoint(p)
+        faces = vtkCellArray()
+        for t in ((0, 2, 4), (2, 1, 4), (1, 2, 0), (0, 3, 1)):
+            faces.InsertNextCell(3, t)
+        mesh = vtkPolyData()
+        mesh.SetPoints(points)
+        mesh.SetPolys(faces)
+        label = vtkIntArray()
+        label.SetName("Label")
+        for value in (0, 10, 20, 30):
+            label.InsertNextValue(value)
+        mesh.GetCellData().AddArray(label)
+        repair = latticekit.vtkLKMeshRepairFilter()
+        repair.SetInputData(mesh)
+        repair.Update()
+        out = repair.GetOutput()
+        self.assertEqual(out.GetNumberOfCells(), 4)
+        labels = {}
+        for c in range(out.GetNumberOfCells()):
+            corners = frozenset(tuple(out.GetPoint(p)[:2]) for p in point_ids(out, c))
+            labels[corners] = out.GetCellData().GetArray("Label").GetValue(c)
+        self.assertEqual(labels[frozenset({(0, 0), (1, 0), (1, 1)})], 0)  # kept faces keep theirs
+        self.assertEqual(labels[frozenset({(1, 0), (2, 0), (1, 1)})], 10)
+        self.assertEqual(labels[frozenset({(1, -1), (2, 0), (1, 0)})], 30)  # made by the flip
+        self.assertEqual(labels[frozenset({(1, 0), (0, 0), (1, -1)})], 30)
+
     def test_repair_leaves_out_normals_it_may_turn_over(self):
         # The sphere turned inside out: the repair orients it outward, so the
         # input's normals would point in; they are not carried.
