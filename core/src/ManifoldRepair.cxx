@@ -93,9 +93,14 @@ RepairReport repairToManifold(TriangleMesh& mesh)
   Mesh sm;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
   const std::size_t facesBefore = sm.number_of_faces();
+  // Counted before: a cap is removed by flipping the edge under it, which
+  // leaves the number of faces as it was.
+  std::size_t degenerate = 0;
+  for (const auto f : faces(sm))
+    degenerate += PMP::is_degenerate_triangle_face(f, sm) ? 1 : 0;
   PMP::remove_degenerate_faces(sm);
   sm.collect_garbage();
-  report.removedDegenerateFaces = facesBefore - sm.number_of_faces();
+  report.removedDegenerateFaces = std::max(degenerate, facesBefore - sm.number_of_faces());
   report.splitNonManifold += PMP::duplicate_non_manifold_vertices(sm);
   if (sm.number_of_faces() == 0)
   {
