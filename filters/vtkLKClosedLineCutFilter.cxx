@@ -259,6 +259,11 @@ int vtkLKClosedLineCutFilter::RequestData(
       else
         out->NullData(id);
     }
+    // NullData fills numeric arrays only: a string array would end short.
+    for (int a = 0; a < out->GetNumberOfArrays(); ++a)
+      if (vtkAbstractArray* array = out->GetAbstractArray(a))
+        if (array->GetNumberOfTuples() < n)
+          array->SetNumberOfTuples(n);
   };
   carry(input->GetPointData(), output->GetPointData(), pointOrigin);
   carry(input->GetCellData(), output->GetCellData(), cellOrigin);

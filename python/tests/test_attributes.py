@@ -217,6 +217,11 @@ class AttributeTest(unittest.TestCase):
         lines = vtkPolyData()
         lines.SetPoints(line_points)
         lines.SetLines(line)
+        name = vtkStringArray()  # not numeric: VTK's NullData leaves it alone
+        name.SetName("Name")
+        for p in range(sphere.GetNumberOfPoints()):
+            name.InsertNextValue("p%d" % p)
+        sphere.GetPointData().AddArray(name)
         cut = latticekit.vtkLKClosedLineCutFilter()
         cut.SetInputData(sphere)
         cut.SetLinesData(lines)
@@ -235,6 +240,11 @@ class AttributeTest(unittest.TestCase):
         for p in range(out.GetNumberOfPoints()):
             q = origin_point.GetValue(p)
             self.assertEqual(elevation.GetValue(p), source_elevation.GetValue(q) if q >= 0 else 0.0)
+        names = out.GetPointData().GetAbstractArray("Name")
+        self.assertEqual(names.GetNumberOfValues(), out.GetNumberOfPoints())  # one per point, caps too
+        for p in range(out.GetNumberOfPoints()):
+            q = origin_point.GetValue(p)
+            self.assertEqual(names.GetValue(p), "p%d" % q if q >= 0 else "")
         for c in range(out.GetNumberOfCells()):
             q = origin_cell.GetValue(c)
             self.assertEqual(label.GetValue(c), 10 * q if q >= 0 else 0)
