@@ -3,10 +3,11 @@
 
 #include "latticekit/ManifoldRepair.h"
 #include "vtkLKPolyDataConversion.h"
+#include "vtkLKSurfaceAttributes.h"
 
 #include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
@@ -16,11 +17,8 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkStaticCellLocator.h>
-#include <vtkStaticPointLocator.h>
 #include <vtkTriangleFilter.h>
 
-#include <algorithm>
 #include <array>
 #include <functional>
 #include <stdexcept>
@@ -50,17 +48,15 @@ struct PointKeyHash
 };
 
 /// Carries the input's point and cell data to the repaired mesh, as
-/// vtkCleanPolyData does. An output point takes the data of the input point
-/// at its position (the lowest id among duplicates that were merged; the
-/// nearest input point if the repair moved it). An output triangle takes the
-/// data of the input cell with the same three positions (either orientation),
-/// or else of the input triangle nearest its centre (a face the repair made).
-/// Normals are left out: the repair may turn faces and whole components over.
+/// vtkCleanPolyData does: an output point takes the data of the input point
+/// at its position (the lowest id among duplicates that were merged), an
+/// output triangle the data of the input cell with the same three corner
+/// positions; a point or face the repair made, from the input triangle
+/// nearest it (see vtkLKSurfaceAttributes.h). Normals are left out: the
+/// repair may turn faces and whole components over.
 void carryAttributes(vtkPolyData* input, vtkPolyData* triangulated, vtkPolyData* output)
 {
-  vtkPointData* inPD = input->GetPointData();
-  vtkCellData* inCD = input->GetCellData();
-  if (inPD->GetNumberOfArrays() == 0 && inCD->GetNumberOfArrays() == 0)
+  if (input->GetPointData()->GetNumberOfArrays() == 0 && input->GetCellData()->GetNumberOfArrays() == 0)
     return; // a bare surface (marching cubes in the bone filter): nothing to look up
   vtkPoints* inPoints = input->GetPoints();
   const vtkIdType nIn = inPoints->GetNumberOfPoints();
@@ -74,98 +70,20 @@ void carryAttributes(vtkPolyData* input, vtkPolyData* triangulated, vtkPolyData*
     representative[static_cast<std::size_t>(i)] = first.emplace(p, i).first->second;
   }
   const vtkIdType nOut = output->GetNumberOfPoints();
-  std::vector<vtkIdType> source(static_cast<std::size_t>(nOut));
-  vtkSmartPointer<vtkStaticPointLocator> nearest;
+  std::vector<vtkIdType> source(static_cast<std::size_t>(nOut), -1);
   for (vtkIdType j = 0; j < nOut; ++j)
   {
     std::array<double, 3> p;
     output->GetPoint(j, p.data());
     const auto it = first.find(p);
     if (it != first.end())
-    {
       source[static_cast<std::size_t>(j)] = it->second;
-      continue;
-    }
-    if (!nearest)
-    {
-      nearest = vtkSmartPointer<vtkStaticPointLocator>::New();
-      nearest->SetDataSet(input);
-      nearest->BuildLocator();
-    }
-    source[static_cast<std::size_t>(j)] = nearest->FindClosestPoint(p.data());
   }
-  vtkPointData* outPD = output->GetPointData();
-  outPD->CopyNormalsOff();
-  outPD->CopyAllocate(inPD, nOut);
-  for (vtkIdType j = 0; j < nOut; ++j)
-    outPD->CopyData(inPD, source[static_cast<std::size_t>(j)], j);
-
-  // Input triangles by their three point positions.
-  using Triple = std::array<vtkIdType, 3>;
-  // A triangle's key: its corners' positions, as input point ids, sorted.
-  auto key = [](const std::vector<vtkIdType>& idOf, const vtkIdType* ids) {
-    Triple t{ { idOf[static_cast<std::size_t>(ids[0])], idOf[static_cast<std::size_t>(ids[1])],
-      idOf[static_cast<std::size_t>(ids[2])] } };
-    std::sort(t.begin(), t.end());
-    return t;
-  };
-  auto forEachTriangle = [](vtkCellArray* cells, auto&& f) {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    vtkIdType t = 0;
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++t)
-    {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      if (n == 3)
-        f(t, ids);
-    }
-  };
   vtkDataArray* originalIds = triangulated->GetCellData()->GetArray(originalCellIdName);
-  struct TripleHash
-  {
-    std::size_t operator()(const Triple& t) const
-    {
-      return std::hash<vtkIdType>()(t[0]) ^ (std::hash<vtkIdType>()(t[1]) * 0x9E3779B97F4A7C15ULL) ^
-        (std::hash<vtkIdType>()(t[2]) * 0xC2B2AE3D27D4EB4FULL);
-    }
-  };
-  std::unordered_map<Triple, vtkIdType, TripleHash> cellOf;
-  cellOf.reserve(static_cast<std::size_t>(triangulated->GetNumberOfPolys()));
-  forEachTriangle(triangulated->GetPolys(), [&](vtkIdType t, const vtkIdType* ids) {
-    cellOf.emplace(key(representative, ids), static_cast<vtkIdType>(originalIds->GetTuple1(t)));
-  });
-  vtkCellData* outCD = output->GetCellData();
-  outCD->CopyNormalsOff();
-  outCD->CopyAllocate(inCD, output->GetNumberOfPolys());
-  vtkSmartPointer<vtkStaticCellLocator> nearestCell;
-  forEachTriangle(output->GetPolys(), [&](vtkIdType t, const vtkIdType* ids) {
-    const auto found = cellOf.find(key(source, ids));
-    vtkIdType from;
-    if (found != cellOf.end())
-      from = found->second;
-    else
-    {
-      if (!nearestCell)
-      {
-        nearestCell = vtkSmartPointer<vtkStaticCellLocator>::New();
-        nearestCell->SetDataSet(triangulated);
-        nearestCell->BuildLocator();
-      }
-      double c[3] = { 0, 0, 0 }, x[3], closest[3], d2;
-      for (int k = 0; k < 3; ++k)
-      {
-        output->GetPoint(ids[k], x);
-        for (int d = 0; d < 3; ++d)
-          c[d] += x[d] / 3.0;
-      }
-      vtkIdType cell;
-      int subId;
-      nearestCell->FindClosestPoint(c, closest, cell, subId, d2);
-      from = static_cast<vtkIdType>(originalIds->GetTuple1(cell));
-    }
-    outCD->CopyData(inCD, from, t);
-  });
+  std::vector<vtkIdType> cellOf(static_cast<std::size_t>(originalIds->GetNumberOfTuples()));
+  for (std::size_t t = 0; t < cellOf.size(); ++t)
+    cellOf[t] = static_cast<vtkIdType>(originalIds->GetTuple1(static_cast<vtkIdType>(t)));
+  lkvtk::carrySurfaceAttributes(input, triangulated, cellOf, source, representative, output);
 }
 } // namespace
 

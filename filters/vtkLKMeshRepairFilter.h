@@ -12,10 +12,12 @@
  * takes the point data of the input point at its position (the lowest id
  * among duplicates merged into it; a split vertex's copies all take it), an
  * output triangle the cell data of the input cell it came from (the one with
- * the same three positions, or for a face the repair made, the input triangle
- * nearest its centre). Normals are not carried, because the repair may turn
- * faces over; recompute them (vtkPolyDataNormals). The input's field data
- * (a SPACE tag, for example) is passed on.
+ * the same three positions). A point or face the repair made takes the data
+ * of the input triangle nearest it (interpolated at the point; id arrays are
+ * then left out, as VTK's interpolating filters leave them). Normals are not
+ * carried, because the repair may turn faces over; recompute them
+ * (vtkPolyDataNormals). The input's field data (a SPACE tag, for example) is
+ * passed on.
  *
  * The output's field data holds what was done: MergedPoints,
  * RemovedDegenerateFaces, SplitNonManifoldVertices, Components, BoundaryEdges.

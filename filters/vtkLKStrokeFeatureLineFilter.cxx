@@ -3,6 +3,7 @@
 
 #include "latticekit/StrokeFeatureLine.h"
 #include "vtkLKPolyDataConversion.h"
+#include "vtkLKSurfaceAttributes.h"
 
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -277,8 +278,6 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
 
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(r.mesh);
   output->SetPoints(result->GetPoints());
-  if (r.mesh.points.size() == mesh.points.size())
-    output->GetPointData()->PassData(input->GetPointData());
   vtkNew<vtkCellArray> lines;
   for (const auto& line : lk::carryLines(r.mesh, mesh.points.size(), earlierLines))
   {
@@ -293,6 +292,21 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   }
   output->SetLines(lines);
   output->SetPolys(result->GetPolys());
+  {
+    // The input's attributes: its points keep their ids, a split's new points
+    // are interpolated in the triangle they lie in, and each triangle takes
+    // the data of the input triangle it is or lies in; the line cells get the
+    // null value.
+    std::vector<vtkIdType> pointSource(r.mesh.points.size(), -1);
+    for (std::size_t p = 0; p < mesh.points.size(); ++p)
+      pointSource[p] = static_cast<vtkIdType>(p);
+    std::vector<vtkIdType> cellOf(mesh.triangles.size());
+    for (std::size_t t = 0; t < cellOf.size(); ++t)
+      cellOf[t] = input->GetNumberOfLines() + static_cast<vtkIdType>(t);
+    // Paint and nearest edges leave the surface as it was: its normals hold.
+    const bool unchanged = r.mesh.points.size() == mesh.points.size() && r.movedVertices.empty();
+    lkvtk::carrySurfaceAttributes(input, faces, cellOf, pointSource, {}, output, unchanged);
+  }
   vtkNew<vtkUnsignedCharArray> flag;
   flag->SetName("FeatureEdge");
   for (vtkIdType i = 0; i < lines->GetNumberOfCells(); ++i)

@@ -15,8 +15,7 @@
  * than 1 % of its area, stops short, with a warning and its distance left in
  * point data "StrokeGap" of output 1) and SPLIT (new vertices where the
  * stroke crosses edges and at its ends, faces split so that new edges follow
- * the stroke; the mesh stays a manifold triangle mesh; input point data are
- * not passed in this mode, as points are added; points far apart are joined
+ * the stroke; the mesh stays a manifold triangle mesh; points far apart are joined
  * across the faces, walked in parts where one plane does not follow the
  * surface between them, and a segment that cannot be followed is an error
  * that says to draw it with its points closer together). A stroke whose ends
@@ -29,7 +28,12 @@
  *
  * Output 0: the mesh (vertices moved in SNAP mode, faces split in SPLIT mode), plus
  * the input's line cells and one line cell per new feature edge (cell data
- * "FeatureEdge" 1 on the lines, 0 on the triangles). Output 1: the feature line as a polyline (NEAREST_EDGES, SNAP;
+ * "FeatureEdge" 1 on the lines, 0 on the triangles). The input's point data
+ * is carried (interpolated at a split's new points, in the triangle they lie
+ * in; id arrays then left out, as VTK's interpolating filters leave them),
+ * and its cell data on every triangle from the input triangle it is or lies
+ * in (the null value on the line cells); normals only in PAINT and
+ * NEAREST_EDGES, which leave the surface as it was. Output 1: the feature line as a polyline (NEAREST_EDGES, SNAP;
  * closed lines repeat their first point) or the feature edges as segments
  * (PAINT), with point data "MeshPointId": the form vtkLKLatticeFitFilter
  * (feature lines) and vtkLKClosedLineCutFilter (cut lines) take. Field data

@@ -62,6 +62,33 @@ def point_ids(mesh, cell):
     return [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
 
 
+def inside(a, b, c, x, tolerance=1e-9):
+    """Whether x lies in the triangle (a, b, c): in its plane and inside its edges."""
+    u, v, w = ([q[k] - a[k] for k in range(3)] for q in (b, c, x))
+    dot = lambda p, q: sum(p[k] * q[k] for k in range(3))  # noqa: E731
+    d00, d01, d11, d20, d21 = dot(u, u), dot(u, v), dot(v, v), dot(w, u), dot(w, v)
+    den = d00 * d11 - d01 * d01
+    s = (d11 * d20 - d01 * d21) / den
+    r = (d00 * d21 - d01 * d20) / den
+    off_plane = [w[k] - s * u[k] - r * v[k] for k in range(3)]
+    return s > -tolerance and r > -tolerance and s + r < 1 + tolerance and dot(off_plane, off_plane) < 1e-12
+
+
+def stroke_on(mesh, points, mode):
+    """Output 0 of the stroke filter: `points` (world) drawn on `mesh` in `mode` ("Split", ...)."""
+    stroke = vtkPoints()
+    for p in points:
+        stroke.InsertNextPoint(p)
+    stroke_data = vtkPolyData()
+    stroke_data.SetPoints(stroke)
+    f = latticekit.vtkLKStrokeFeatureLineFilter()
+    f.SetInputData(mesh)
+    f.SetStrokeData(stroke_data)
+    getattr(f, "SetModeTo" + mode)()
+    f.Update()
+    return f.GetOutput()
+
+
 class AttributeTest(unittest.TestCase):
     def assertElevationFollowsPoints(self, mesh, base=None):
         """Each point's Elevation is its height z + 0.5 (z of the base
@@ -193,14 +220,7 @@ class AttributeTest(unittest.TestCase):
                 centre = [centre[k] + (x[k] - d[k]) / 3 for k in range(3)]
             origin = label.GetValue(c) // 10
             a, b, t = (sphere.GetPoint(p) for p in point_ids(sphere, origin))
-            # Barycentric coordinates of the centre in the input triangle.
-            v0, v1, v2 = ([q[k] - a[k] for k in range(3)] for q in (b, t, centre))
-            dot = lambda u, v: sum(u[k] * v[k] for k in range(3))  # noqa: E731
-            d00, d01, d11, d20, d21 = dot(v0, v0), dot(v0, v1), dot(v1, v1), dot(v2, v0), dot(v2, v1)
-            den = d00 * d11 - d01 * d01
-            s = (d11 * d20 - d01 * d21) / den
-            r = (d00 * d21 - d01 * d20) / den
-            self.assertTrue(s > 0 and r > 0 and s + r < 1, "triangle %d, label %d" % (c, origin))
+            self.assertTrue(inside(a, b, t, centre), "triangle %d, label %d" % (c, origin))
 
     def test_cut_carries_point_and_cell_data_to_both_pieces(self):
         # The sphere cut at its equator (a ring of its own points), capped.
@@ -252,6 +272,42 @@ class AttributeTest(unittest.TestCase):
         self.assertGreater(caps, 0)
         # The equator's points are in both pieces, each copy with its Elevation.
         self.assertEqual(sum(1 for p in range(out.GetNumberOfPoints()) if origin_point.GetValue(p) == ring[0]), 2)
+
+    def test_a_split_stroke_interpolates_point_data_at_its_new_points(self):
+        sphere = tagged_sphere()
+        r = math.sqrt(0.25 - 0.01)  # along the sphere at z = 0.1, a quarter turn
+        out = stroke_on(sphere, [(r * math.cos(1.5 * k / 15), r * math.sin(1.5 * k / 15), 0.1) for k in range(16)],
+                        "Split")
+        self.assertGreater(out.GetNumberOfPoints(), sphere.GetNumberOfPoints())  # points were added
+        self.assertEqual(space_of(out), "RAS")
+        self.assertIsNone(out.GetPointData().GetArray("Normals"))  # the split's faces have other normals
+        # Elevation is linear, and a new point lies on an input triangle: exact.
+        self.assertElevationFollowsPoints(out)
+        # Each triangle lies in the input triangle whose label it carries; the
+        # line cells (first) have the null label.
+        label = out.GetCellData().GetArray("Label")
+        lines = out.GetNumberOfLines()
+        self.assertGreater(lines, 0)
+        for c in range(lines):
+            self.assertEqual(label.GetValue(c), 0)
+        for c in range(lines, out.GetNumberOfCells()):
+            corners = [out.GetPoint(p) for p in point_ids(out, c)]
+            centre = [sum(q[k] for q in corners) / 3 for k in range(3)]
+            a, b, t = (sphere.GetPoint(p) for p in point_ids(sphere, label.GetValue(c) // 10))
+            self.assertTrue(inside(a, b, t, centre), "triangle %d, label %d" % (c, label.GetValue(c)))
+
+    def test_nearest_edges_keep_the_normals_of_a_surface_they_leave_alone(self):
+        sphere = tagged_sphere()
+        out = stroke_on(sphere, [(0.49 * math.cos(k / 7), 0.49 * math.sin(k / 7), 0.0) for k in range(8)],
+                        "NearestEdges")
+        self.assertEqual(out.GetNumberOfPoints(), sphere.GetNumberOfPoints())
+        normals = out.GetPointData().GetNormals()
+        self.assertIsNotNone(normals)
+        self.assertEqual(normals.GetTuple3(5), sphere.GetPointData().GetNormals().GetTuple3(5))
+        label = out.GetCellData().GetArray("Label")
+        lines = out.GetNumberOfLines()
+        for c in range(lines, out.GetNumberOfCells()):
+            self.assertEqual(label.GetValue(c), 10 * (c - lines))  # the same triangles, in order
 
     def test_field_data_passes_through_every_mesh_filter(self):
         sphere = tagged_sphere(12, 12)

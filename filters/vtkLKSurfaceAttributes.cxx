@@ -1,0 +1,166 @@
+#include "vtkLKSurfaceAttributes.h"
+
+#include <vtkAbstractArray.h>
+#include <vtkCell.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
+
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <unordered_map>
+
+namespace lkvtk
+{
+namespace
+{
+using Triple = std::array<vtkIdType, 3>;
+
+struct TripleHash
+{
+  std::size_t operator()(const Triple& t) const
+  {
+    const std::hash<vtkIdType> h;
+    return h(t[0]) ^ (h(t[1]) * 0x9E3779B97F4A7C15ULL) ^ (h(t[2]) * 0xC2B2AE3D27D4EB4FULL);
+  }
+};
+
+template <typename F>
+void forEachTriangle(vtkCellArray* cells, F&& f)
+{
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  vtkIdType t = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++t)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n == 3)
+      f(t, ids);
+  }
+}
+
+/// The input triangle nearest x: its input-numbered corners and the
+/// barycentric weights of the point of it nearest x.
+class NearestTriangle
+{
+public:
+  explicit NearestTriangle(vtkPolyData* triangles)
+    : Triangles(triangles)
+  {
+  }
+  vtkIdType find(const double x[3], vtkIdList* corners, double weights[3])
+  {
+    if (!this->Locator)
+    {
+      this->Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+      this->Locator->SetDataSet(this->Triangles);
+      this->Locator->BuildLocator();
+    }
+    double closest[3], d2, pcoords[3];
+    vtkIdType cellId = -1;
+    int subId = 0;
+    this->Locator->FindClosestPoint(x, closest, cellId, subId, d2);
+    vtkCell* cell = this->Triangles->GetCell(cellId);
+    cell->EvaluatePosition(closest, nullptr, subId, pcoords, d2, weights);
+    corners->DeepCopy(cell->GetPointIds());
+    return cellId;
+  }
+
+private:
+  vtkPolyData* Triangles;
+  vtkSmartPointer<vtkStaticCellLocator> Locator;
+};
+} // namespace
+
+void carrySurfaceAttributes(vtkPolyData* input, vtkPolyData* triangles, const std::vector<vtkIdType>& cellOf,
+  const std::vector<vtkIdType>& pointSource, const std::vector<vtkIdType>& corner, vtkPolyData* output,
+  bool keepNormals)
+{
+  vtkPointData* inPD = input->GetPointData();
+  vtkCellData* inCD = input->GetCellData();
+  if (inPD->GetNumberOfArrays() == 0 && inCD->GetNumberOfArrays() == 0)
+    return;
+  NearestTriangle nearest(triangles);
+  vtkNew<vtkIdList> corners;
+  double weights[3];
+
+  vtkPointData* outPD = output->GetPointData();
+  const vtkIdType nOut = output->GetNumberOfPoints();
+  outPD->SetCopyNormals(keepNormals);
+  if (std::find(pointSource.begin(), pointSource.end(), vtkIdType(-1)) != pointSource.end())
+    outPD->InterpolateAllocate(inPD, nOut);
+  else
+    outPD->CopyAllocate(inPD, nOut);
+  for (vtkIdType j = 0; j < nOut; ++j)
+  {
+    const vtkIdType from = pointSource[static_cast<std::size_t>(j)];
+    if (from >= 0)
+    {
+      outPD->CopyData(inPD, from, j);
+      continue;
+    }
+    double x[3];
+    output->GetPoint(j, x);
+    nearest.find(x, corners, weights);
+    outPD->InterpolatePoint(inPD, j, corners, weights);
+  }
+
+  // Input triangles by their corners.
+  auto cornerOf = [&](vtkIdType p) { return corner.empty() ? p : corner[static_cast<std::size_t>(p)]; };
+  auto key = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    Triple t{ { cornerOf(a), cornerOf(b), cornerOf(c) } };
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::unordered_map<Triple, vtkIdType, TripleHash> cellOfCorners;
+  cellOfCorners.reserve(static_cast<std::size_t>(triangles->GetNumberOfPolys()));
+  forEachTriangle(triangles->GetPolys(), [&](vtkIdType t, const vtkIdType* ids) {
+    cellOfCorners.emplace(key(ids[0], ids[1], ids[2]), cellOf[static_cast<std::size_t>(t)]);
+  });
+  vtkCellData* outCD = output->GetCellData();
+  outCD->SetCopyNormals(keepNormals);
+  outCD->CopyAllocate(inCD, output->GetNumberOfCells());
+  const vtkIdType firstPoly = output->GetNumberOfVerts() + output->GetNumberOfLines();
+  for (vtkIdType c = 0; c < firstPoly; ++c)
+    outCD->NullData(c);
+  forEachTriangle(output->GetPolys(), [&](vtkIdType t, const vtkIdType* ids) {
+    const vtkIdType a = pointSource[static_cast<std::size_t>(ids[0])], b = pointSource[static_cast<std::size_t>(ids[1])],
+                    c = pointSource[static_cast<std::size_t>(ids[2])];
+    auto found = cellOfCorners.end();
+    if (a >= 0 && b >= 0 && c >= 0)
+      found = cellOfCorners.find(key(a, b, c));
+    vtkIdType from;
+    if (found != cellOfCorners.end())
+      from = found->second;
+    else
+    {
+      double centre[3] = { 0, 0, 0 }, x[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        output->GetPoint(ids[k], x);
+        for (int d = 0; d < 3; ++d)
+          centre[d] += x[d] / 3.0;
+      }
+      from = cellOf[static_cast<std::size_t>(nearest.find(centre, corners, weights))];
+    }
+    outCD->CopyData(inCD, from, firstPoly + t);
+  });
+  // NullData fills numeric arrays only: a string array would end short.
+  for (vtkDataSetAttributes* out : { static_cast<vtkDataSetAttributes*>(outPD), static_cast<vtkDataSetAttributes*>(outCD) })
+  {
+    const vtkIdType n = out == outPD ? nOut : output->GetNumberOfCells();
+    for (int i = 0; i < out->GetNumberOfArrays(); ++i)
+      if (vtkAbstractArray* array = out->GetAbstractArray(i))
+        if (array->GetNumberOfTuples() < n)
+          array->SetNumberOfTuples(n);
+  }
+}
+} // namespace lkvtk
