@@ -399,8 +399,14 @@ int vtkLKBoneSurfaceFilter::RequestData(
   }
   output->ShallowCopy(surface);
   output->GetPointData()->Initialize();
-  vtkNew<vtkFieldData> fields; // the output's own copy (the repair's counts), not the last filter's
+  // The output's own field data (the repair's counts, and what the volume
+  // carried), not the last filter's. The volume's PatientMatrix is applied
+  // and does not describe the surface; its SPACE tag holds only with that
+  // matrix (a matrix given with SetPatientMatrix brings none).
+  vtkNew<vtkFieldData> fields;
   fields->DeepCopy(surface->GetFieldData());
+  fields->RemoveArray("PatientMatrix");
+  fields->RemoveArray("SPACE");
   if (space)
     fields->AddArray(space);
   output->SetFieldData(fields);

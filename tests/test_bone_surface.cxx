@@ -136,6 +136,14 @@ TEST(BoneSurface, MirroringPatientMatrixKeepsTheSurfaceOutward)
   EXPECT_NEAR(lk::signedVolume(m), lk::signedVolume(lktest::toCore(plain.mesh)), 1e-6);
   EXPECT_GT(lk::signedVolume(m), 0.0);
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  // A matrix of the user's own names no coordinate system, though the NRRD's
+  // does: neither the reader's tag nor its matrix reaches the surface.
+  for (const Surface* given : { &plain, &s })
+  {
+    EXPECT_EQ(spaceTag(given->mesh), "");
+    EXPECT_EQ(given->mesh->GetFieldData()->GetAbstractArray("PatientMatrix"), nullptr);
+    EXPECT_NE(given->mesh->GetFieldData()->GetArray("BoundaryEdges"), nullptr); // the repair's counts stay
+  }
 }
 
 TEST(BoneSurface, SeedSelectsTheComponentUnderIt)
