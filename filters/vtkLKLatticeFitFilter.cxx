@@ -488,6 +488,14 @@ int vtkLKLatticeFitFilter::RequestData(
   toPolyData(fit, output);
   vtkFieldData* fd = output->GetFieldData();
   fd->PassData(input->GetFieldData()); // as VTK's filters do: SPACE and the like reach the lattice
+  // but not an earlier fit's report (an input fitted before, or its surface):
+  // some of these are written only when this fit has them.
+  for (const char* name : { "ControlVertices", "Triangles", "Quads", "FeatureEdges", "ErrorBoundTrials",
+         "ErrorBoundTrialCountAndError", "RefinementInitialRMS", "RefinementFinalRMS", "RefinementIterations",
+         "RefinementSamples", "RefinementInsertions", "RefinementInsertionsRefused", "BoundingBoxDiagonal",
+         "Hausdorff_Max", "Hausdorff_Mean", "Hausdorff_RMS", "Hausdorff_MaxPercent", "Hausdorff_MeanPercent",
+         "Hausdorff_RMSPercent", "DisplayPolygons", "Patches" })
+    fd->RemoveArray(name);
   addValue(fd, "ControlVertices", static_cast<double>(fit.lattice.points.size()));
   addValue(fd, "Triangles", static_cast<double>(fit.lattice.faces.size() - fit.quads));
   addValue(fd, "Quads", static_cast<double>(fit.quads));

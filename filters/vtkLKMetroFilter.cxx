@@ -284,6 +284,16 @@ int vtkLKMetroFilter::RequestData(
   output->GetPointData()->AddArray(colors);
 
   vtkFieldData* fd = output->GetFieldData();
+  // Mesh A's field data passes on, but not an earlier Metro report of it (a
+  // coloured mesh measured again): without Symmetric, its B-to-A numbers
+  // would stand beside this run's as if they were this run's.
+  for (int a = fd->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    const char* name = fd->GetAbstractArray(a) ? fd->GetAbstractArray(a)->GetName() : nullptr;
+    const std::string n = name ? name : "";
+    if (n.rfind("AtoB_", 0) == 0 || n.rfind("BtoA_", 0) == 0)
+      fd->RemoveArray(a);
+  }
   addValue(fd, "BoundingBoxDiagonal", diagonal);
   addStatistics(fd, "AtoB", stats[0], diagonal);
   addSampleCounts(fd, "AtoB", stats[0]);

@@ -327,6 +327,45 @@ class AttributeTest(unittest.TestCase):
         # The fit's own field data is there beside it.
         self.assertEqual(fit.GetOutput().GetFieldData().GetArray("ControlVertices").GetValue(0), 40)
 
+    def test_a_fit_does_not_pass_on_an_earlier_fits_report(self):
+        # A mesh that carries an earlier fit's report (a fitted lattice's
+        # surface, fitted again): without an error search or a Metro run of its
+        # own, the new lattice must not show the old numbers as its own.
+        sphere = tagged_sphere(12, 12)
+        for name, value in (("ErrorBoundTrials", 7), ("Hausdorff_Max", 123.0), ("ControlVertices", 999)):
+            old = vtkFloatArray()
+            old.SetName(name)
+            old.InsertNextValue(value)
+            sphere.GetFieldData().AddArray(old)
+        fit = latticekit.vtkLKLatticeFitFilter()
+        fit.SetInputData(sphere)
+        fit.SetTargetNumberOfVertices(40)
+        fit.SetComputeError(False)
+        fit.Update()
+        fields = fit.GetOutput().GetFieldData()
+        self.assertIsNone(fields.GetArray("ErrorBoundTrials"))
+        self.assertIsNone(fields.GetArray("Hausdorff_Max"))
+        self.assertEqual(fields.GetArray("ControlVertices").GetValue(0), 40)
+        self.assertEqual(space_of(fit.GetOutput()), "RAS")  # what is not the fit's passes
+
+    def test_metro_does_not_pass_on_an_earlier_runs_other_direction(self):
+        sphere = tagged_sphere(12, 12)
+        coarse = tagged_sphere(8, 8)
+        first = latticekit.vtkLKMetroFilter()
+        first.SetInputData(0, sphere)
+        first.SetInputData(1, coarse)
+        first.Update()
+        self.assertIsNotNone(first.GetOutput().GetFieldData().GetArray("BtoA_Max"))
+        again = latticekit.vtkLKMetroFilter()  # the coloured mesh measured again, one way
+        again.SetInputConnection(0, first.GetOutputPort())
+        again.SetInputData(1, coarse)
+        again.SymmetricOff()
+        again.Update()
+        fields = again.GetOutput().GetFieldData()
+        self.assertIsNone(fields.GetArray("BtoA_Max"))
+        self.assertIsNotNone(fields.GetArray("AtoB_Max"))
+        self.assertEqual(space_of(again.GetOutput()), "RAS")
+
 
 if __name__ == "__main__":
     unittest.main()
