@@ -3,10 +3,10 @@
 
 #include "latticekit/MeshCut.h"
 #include "vtkLKPolyDataConversion.h"
+#include "vtkLKSurfaceAttributes.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
@@ -246,27 +246,8 @@ int vtkLKClosedLineCutFilter::RequestData(
   output->SetPolys(polys);
   // The input's attributes, as VTK's clip filters carry them; cap points and
   // cap faces, which have no input counterpart, get the arrays' null value.
-  // Normals are left out: a cap's would be null.
-  auto carry = [](vtkDataSetAttributes* in, vtkDataSetAttributes* out, vtkIdTypeArray* origin) {
-    const vtkIdType n = origin->GetNumberOfValues();
-    out->CopyNormalsOff();
-    out->CopyAllocate(in, n);
-    for (vtkIdType id = 0; id < n; ++id)
-    {
-      const vtkIdType from = origin->GetValue(id);
-      if (from >= 0)
-        out->CopyData(in, from, id);
-      else
-        out->NullData(id);
-    }
-    // NullData fills numeric arrays only: a string array would end short.
-    for (int a = 0; a < out->GetNumberOfArrays(); ++a)
-      if (vtkAbstractArray* array = out->GetAbstractArray(a))
-        if (array->GetNumberOfTuples() < n)
-          array->SetNumberOfTuples(n);
-  };
-  carry(input->GetPointData(), output->GetPointData(), pointOrigin);
-  carry(input->GetCellData(), output->GetCellData(), cellOrigin);
+  lkvtk::carryByOrigin(input->GetPointData(), output->GetPointData(), pointOrigin);
+  lkvtk::carryByOrigin(input->GetCellData(), output->GetCellData(), cellOrigin);
   output->GetPointData()->AddArray(pointOrigin);
   output->GetCellData()->AddArray(cellOrigin);
   output->GetCellData()->AddArray(region);

@@ -106,6 +106,9 @@ namespace
 void carryAttributes(vtkPolyData* input, const lk::AdaptivePatchMesh& mesh, vtkPolyData* output)
 {
   vtkPointData* inPD = input->GetPointData();
+  vtkCellData* inCD = input->GetCellData();
+  if (inPD->GetNumberOfArrays() == 0 && inCD->GetNumberOfArrays() == 0)
+    return; // nothing to carry: no walk over every vertex and triangle on each drag
   vtkPointData* outPD = output->GetPointData();
   const auto np = static_cast<vtkIdType>(mesh.vertexCount());
   const auto nIn = static_cast<vtkIdType>(mesh.inputVertexCount());
@@ -160,7 +163,6 @@ void carryAttributes(vtkPolyData* input, const lk::AdaptivePatchMesh& mesh, vtkP
       outPD->InterpolatePoint(inPD, v, ids, w.w);
     }
   }
-  vtkCellData* inCD = input->GetCellData();
   vtkCellData* outCD = output->GetCellData();
   const auto origins = mesh.triangleOrigins();
   outCD->CopyNormalsOff();

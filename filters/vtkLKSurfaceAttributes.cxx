@@ -6,6 +6,7 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -78,6 +79,16 @@ private:
   vtkPolyData* Triangles;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
 };
+
+/// vtkDataSetAttributes::NullData fills numeric arrays only: a string array
+/// left short gets empty values up to n.
+void padShortArrays(vtkDataSetAttributes* out, vtkIdType n)
+{
+  for (int i = 0; i < out->GetNumberOfArrays(); ++i)
+    if (vtkAbstractArray* array = out->GetAbstractArray(i))
+      if (array->GetNumberOfTuples() < n)
+        array->SetNumberOfTuples(n);
+}
 } // namespace
 
 void carrySurfaceAttributes(vtkPolyData* input, vtkPolyData* triangles, const std::vector<vtkIdType>& cellOf,
@@ -153,14 +164,23 @@ void carrySurfaceAttributes(vtkPolyData* input, vtkPolyData* triangles, const st
     }
     outCD->CopyData(inCD, from, firstPoly + t);
   });
-  // NullData fills numeric arrays only: a string array would end short.
-  for (vtkDataSetAttributes* out : { static_cast<vtkDataSetAttributes*>(outPD), static_cast<vtkDataSetAttributes*>(outCD) })
+  padShortArrays(outPD, nOut);
+  padShortArrays(outCD, output->GetNumberOfCells());
+}
+
+void carryByOrigin(vtkDataSetAttributes* in, vtkDataSetAttributes* out, vtkIdTypeArray* origin)
+{
+  const vtkIdType n = origin->GetNumberOfValues();
+  out->CopyNormalsOff();
+  out->CopyAllocate(in, n);
+  for (vtkIdType id = 0; id < n; ++id)
   {
-    const vtkIdType n = out == outPD ? nOut : output->GetNumberOfCells();
-    for (int i = 0; i < out->GetNumberOfArrays(); ++i)
-      if (vtkAbstractArray* array = out->GetAbstractArray(i))
-        if (array->GetNumberOfTuples() < n)
-          array->SetNumberOfTuples(n);
+    const vtkIdType from = origin->GetValue(id);
+    if (from >= 0)
+      out->CopyData(in, from, id);
+    else
+      out->NullData(id);
   }
+  padShortArrays(out, n);
 }
 } // namespace lkvtk

@@ -7,6 +7,8 @@
 
 #include <vector>
 
+class vtkDataSetAttributes;
+class vtkIdTypeArray;
 class vtkPolyData;
 
 namespace lkvtk
@@ -29,4 +31,10 @@ namespace lkvtk
 void carrySurfaceAttributes(vtkPolyData* input, vtkPolyData* triangles, const std::vector<vtkIdType>& cellOf,
   const std::vector<vtkIdType>& pointSource, const std::vector<vtkIdType>& corner, vtkPolyData* output,
   bool keepNormals = false);
+
+/// Fills `out` (point or cell data) from `in` by origin: element i takes
+/// element origin[i] of `in`, or each array's null value where origin[i] is
+/// -1 (a point or face with no input counterpart, such as a cut's cap).
+/// Normals are left out (a null normal would shade black).
+void carryByOrigin(vtkDataSetAttributes* in, vtkDataSetAttributes* out, vtkIdTypeArray* origin);
 } // namespace lkvtk
