@@ -5,6 +5,7 @@
 
 #include <vtkCallbackCommand.h>
 #include <vtkDataArray.h>
+#include <vtkDirectory.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
@@ -439,7 +440,43 @@ bool vtkLKMedicalImageReader::ReadVolume()
     std::string error;
     if (!lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error))
     {
-      vtkErrorMacro("Cannot read '" << path << "': " << error
+      // A folder that holds a volume file (a NIfTI beside its licence) is a
+      // likely slip: name the files the user may have meant.
+      std::string hint;
+      if (isFolder)
+      {
+        vtkNew<vtkDirectory> listing;
+        std::vector<std::string> volumes;
+        if (listing->Open(path.c_str()))
+        {
+          for (vtkIdType f = 0; f < listing->GetNumberOfFiles(); ++f)
+          {
+            const std::string file = listing->GetFile(f);
+            const std::string lf = lower(file);
+            if (endsWith(lf, ".nrrd") || endsWith(lf, ".nhdr") || endsWith(lf, ".mha") || endsWith(lf, ".mhd") ||
+              endsWith(lf, ".nii") || endsWith(lf, ".nii.gz"))
+            {
+              volumes.push_back(file);
+            }
+          }
+        }
+        std::sort(volumes.begin(), volumes.end());
+        const std::string sep = (!path.empty() && (path.back() == '/' || path.back() == '\\')) ? "" : "/";
+        for (std::size_t v = 0; v < volumes.size() && v < 3; ++v)
+        {
+          hint += (v == 0 ? "'" : ", '") + path + sep + volumes[v] + "'";
+        }
+        if (volumes.size() > 3)
+        {
+          hint += " and " + std::to_string(volumes.size() - 3) + " more";
+        }
+        if (!hint.empty())
+        {
+          hint = volumes.size() == 1 ? ". It holds the volume file " + hint + ": give that file instead"
+                                     : ". It holds the volume files " + hint + ": give one of them instead";
+        }
+      }
+      vtkErrorMacro("Cannot read '" << path << "': " << error << hint
                                     << ". Supported inputs: a DICOM folder or file, .nrrd, .nhdr, .mha, .mhd, .nii, .nii.gz.");
       return false;
     }

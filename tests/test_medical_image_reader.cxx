@@ -508,6 +508,32 @@ TEST(MedicalImageReader, FolderWithoutDicomIsAClearError)
   EXPECT_EQ(rec.errors, 1);
   EXPECT_NE(rec.messages.find("no DICOM image series"), std::string::npos) << rec.messages;
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(rec.messages.find("It holds"), std::string::npos) << rec.messages;
+}
+
+TEST(MedicalImageReader, AFolderHoldingAVolumeFileNamesIt)
+{
+  // The bundled CT is a NIfTI beside its licence: given the folder, the user
+  // is told which file to give.
+  const std::string dir = tempFolder("holds-nifti");
+  std::ofstream(dir + "/LICENSE") << "licence\n";
+  std::ofstream(dir + "/head.nii.gz") << "x";
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(dir.c_str());
+  reader->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("It holds the volume file '" + dir + "/head.nii.gz': give that file instead"),
+    std::string::npos)
+    << rec.messages;
+
+  std::ofstream(dir + "/other.NRRD") << "x";
+  reader->SetFileName((dir + "/").c_str());
+  reader->Update();
+  EXPECT_EQ(rec.errors, 2);
+  EXPECT_NE(rec.messages.find("the volume files '" + dir + "/head.nii.gz', '" + dir + "/other.NRRD': give one of them"),
+    std::string::npos)
+    << rec.messages;
 }
 
 TEST(MedicalImageReader, MissingAndCorruptFilesAreClearErrors)
