@@ -97,9 +97,9 @@ int vtkLKMeshRepairFilter::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || input->GetNumberOfPolys() == 0)
+  if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
-    vtkErrorMacro("The input has no polygons to repair.");
+    vtkErrorMacro("The input has no polygons or triangle strips to repair.");
     return 0;
   }
   if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)

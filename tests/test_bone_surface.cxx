@@ -16,6 +16,7 @@
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkSphereSource.h>
 #include <vtkStringArray.h>
+#include <vtkStripper.h>
 
 #include <gtest/gtest.h>
 
@@ -424,4 +425,28 @@ TEST(MeshRepairFilter, TriangulatesAndRepairsASoup)
   repair->SetInputData(nothing);
   repair->Update();
   EXPECT_EQ(rec.errors, 1);
+}
+
+TEST(MeshRepairFilter, RepairsASurfaceMadeOfTriangleStripsOnly)
+{
+  // vtkStripper's output (and vtkSuperquadricSource's) has no polygon cells:
+  // the repair triangulates strips as well, so it must not refuse them.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(10);
+  vtkNew<vtkStripper> strips;
+  strips->SetInputConnection(sphere->GetOutputPort());
+  strips->Update();
+  ASSERT_EQ(strips->GetOutput()->GetNumberOfPolys(), 0);
+  ASSERT_GT(strips->GetOutput()->GetNumberOfStrips(), 0);
+  vtkNew<vtkLKMeshRepairFilter> repair;
+  lktest::ErrorRecorder rec(repair);
+  repair->SetInputConnection(strips->GetOutputPort());
+  repair->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  const lk::TriangleMesh m = lktest::toCore(repair->GetOutput());
+  EXPECT_EQ(m.triangles.size(), 16u * 2u * (10u - 2u));
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+  EXPECT_EQ(lk::countBoundaryEdges(m), 0u);
+  EXPECT_GT(lk::signedVolume(m), 0.0);
 }
