@@ -18,6 +18,7 @@
 #include <vtkImageGaussianSmooth.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
@@ -182,6 +183,24 @@ int vtkLKBoneSurfaceFilter::RequestData(
   {
     vtkErrorMacro("IsoValue must be a finite number.");
     return 0;
+  }
+  {
+    // A zero or NaN spacing (a hand-made image, a header without spacing)
+    // folds the volume flat: the contour would be a heap of degenerate faces.
+    const double* sp = input->GetSpacing();
+    const double* o = input->GetOrigin();
+    const double det = input->GetDirectionMatrix()->Determinant();
+    if (!(std::isfinite(sp[0]) && std::isfinite(sp[1]) && std::isfinite(sp[2])) || sp[0] == 0.0 ||
+      sp[1] == 0.0 || sp[2] == 0.0 || !(std::isfinite(o[0]) && std::isfinite(o[1]) && std::isfinite(o[2])) ||
+      !(std::isfinite(det) && std::abs(det) > 1e-12))
+    {
+      vtkErrorMacro("The input volume's geometry is invalid: spacing (" << sp[0] << ", " << sp[1] << ", " << sp[2]
+                                                                       << ") must be finite and non-zero, origin ("
+                                                                       << o[0] << ", " << o[1] << ", " << o[2]
+                                                                       << ") finite, and the direction matrix "
+                                                                       << "invertible.");
+      return 0;
+    }
   }
 
   // Patient matrix: explicit, else the reader's field data, else identity.

@@ -405,6 +405,38 @@ TEST(BoneSurface, EmptyAndFlatVolumesAreClearErrors)
   bone->Update();
   EXPECT_EQ(rec.errors, 3);
   EXPECT_NE(rec.messages.find("finite"), std::string::npos);
+
+  // A volume whose geometry folds it flat: zero or NaN spacing, a singular
+  // direction matrix. Without the check the first gave a heap of degenerate faces.
+  bone->SetIsoValue(0.5);
+  vtkNew<vtkImageData> ball;
+  ball->SetDimensions(9, 9, 9);
+  ball->AllocateScalars(VTK_FLOAT, 1);
+  for (int z = 0; z < 9; ++z)
+    for (int y = 0; y < 9; ++y)
+      for (int x = 0; x < 9; ++x)
+        ball->SetScalarComponentFromDouble(x, y, z, 0, (x - 4) * (x - 4) + (y - 4) * (y - 4) + (z - 4) * (z - 4) < 9);
+  bone->SetInputData(ball);
+  bone->Update();
+  EXPECT_EQ(rec.errors, 3) << rec.messages;
+  EXPECT_GT(bone->GetOutput()->GetNumberOfPolys(), 0);
+  int errors = 3;
+  for (int bad = 0; bad < 3; ++bad)
+  {
+    vtkNew<vtkImageData> folded;
+    folded->DeepCopy(ball);
+    if (bad == 0)
+      folded->SetSpacing(1.0, 1.0, 0.0);
+    else if (bad == 1)
+      folded->SetSpacing(1.0, std::nan(""), 1.0);
+    else
+      folded->SetDirectionMatrix(1, 0, 0, 0, 1, 0, 1, 0, 0);
+    bone->SetInputData(folded);
+    bone->Update();
+    EXPECT_EQ(rec.errors, ++errors) << bad;
+    EXPECT_NE(rec.messages.find("geometry is invalid"), std::string::npos) << bad;
+    EXPECT_EQ(bone->GetOutput()->GetNumberOfPolys(), 0) << bad;
+  }
 }
 
 TEST(MeshRepairFilter, TriangulatesAndRepairsASoup)
