@@ -60,9 +60,10 @@ void usage(std::ostream& os)
         "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
         "  --export FOLDER      write every piece as STL, VTP and OBJ, the surface the cut was made\n"
         "                       on (surface.vtp), the lines it took (cut_lines.vtp, for\n"
-        "                       latticekit-cut --lines), the plan (plan.txt: pieces, volumes, cut\n"
-        "                       lines and planes), a picture of it (plan.png) and the session that\n"
-        "                       replays it (session.json), and exit\n"
+        "                       latticekit-cut --lines), the plan (plan.txt: the input, the\n"
+        "                       coordinates, pieces, volumes, cut lines and planes), a picture\n"
+        "                       of it (plan.png) and the session that replays it\n"
+        "                       (session.json), and exit\n"
         "  --session OUT        where 'w' saves the session (default planner_session.json)\n"
         "  --events LOG         play an event stream (vtkInteractorEventRecorder's format: mouse\n"
         "                       strokes, keys) through the window, then report (and\n"
@@ -206,6 +207,7 @@ int main(int argc, char* argv[])
   }
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
   planner.bone->ShallowCopy(surface->GetOutput());
+  planner.input = vtksys::SystemTools::CollapseFullPath(input);
   if (mesh) // the file's coordinate system (3D Slicer's tag), which the export names again
     lkapp::setCoordinateSpace(planner.bone, lkapp::coordinateSpace(mesh));
   if (!mesh)

@@ -1157,7 +1157,15 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     if (mesh && !lkapp::writeMesh(mesh, folder + "/" + name, error, space))
       return false;
   // What the plan is, and the session that replays it beside the files.
-  std::vector<std::pair<std::string, std::string>> texts{ { "plan.txt", planText() } };
+  // Which scan, and which coordinates every position in the plan is in: a
+  // plan file read later (or beside another patient's) must say so itself.
+  // The batch report has said both already, at its start.
+  std::string header;
+  if (!input.empty())
+    header += "input: " + input + "\n";
+  header += "coordinates: " +
+    (space.empty() ? std::string("the input's own (its patient orientation is unknown)") : space + ", mm") + "\n";
+  std::vector<std::pair<std::string, std::string>> texts{ { "plan.txt", header + planText() } };
   if (hasSegment())
     texts.emplace_back("segment_transform.txt", segmentText());
   for (const auto& [name, text] : texts)

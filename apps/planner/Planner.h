@@ -64,6 +64,8 @@ class Planner
 {
 public:
   vtkSmartPointer<vtkPolyData> bone;
+  /// The CT or mesh file the bone came from (its full path): the exported plan names it.
+  std::string input;
   Session session;
   int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
   bool drawing = false;

@@ -179,6 +179,12 @@ class CoordinateSpaceTest(unittest.TestCase):
                 else:
                     self.assertIn("space: unknown, the mesh file names none (no orientation cube)", result.stdout)
                 self.assertEqual(space_of(os.path.join(folder, "piece0.stl")), space)
+                # The plan file names its input and the system its positions are in.
+                with open(os.path.join(folder, "plan.txt")) as f:
+                    plan = f.read().splitlines()
+                self.assertEqual(plan[0], "input: " + os.path.abspath(path))
+                self.assertEqual(plan[1], "coordinates: " + ("RAS, mm" if space else
+                                                             "the input's own (its patient orientation is unknown)"))
 
     def test_metro_warns_when_the_two_files_name_different_systems(self):
         with tempfile.TemporaryDirectory() as tmp:
