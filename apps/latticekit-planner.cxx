@@ -208,6 +208,7 @@ int main(int argc, char* argv[])
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
   planner.bone->ShallowCopy(surface->GetOutput());
   planner.input = vtksys::SystemTools::CollapseFullPath(input);
+  planner.checkReplayedInput(!replay.empty());
   if (mesh) // the file's coordinate system (3D Slicer's tag), which the export names again
     lkapp::setCoordinateSpace(planner.bone, lkapp::coordinateSpace(mesh));
   if (!mesh)

@@ -626,7 +626,9 @@ void Planner::rebuild()
   sceneActors.clear();
   scalarBar->SetVisibility(false);
   computeCut();
-  message = cut.message;
+  message = inputWarning;
+  if (!cut.message.empty())
+    addLine(message, cut.message);
   cutFailed = cut.failed;
   for (const auto& [line, shade] : cut.lines)
     addLineActor(line, shade);
@@ -1031,6 +1033,37 @@ void Planner::showStroke()
   strokePd->Modified();
 }
 
+void Planner::checkReplayedInput(bool replayed)
+{
+  const std::string file = vtksys::SystemTools::GetFilenameName(input);
+  std::array<double, 6> b{};
+  bone->GetBounds(b.data());
+  if (replayed)
+  {
+    const double diagonal = std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
+    double shift = 0.0;
+    for (std::size_t i = 0; session.inputBoundsKnown && i < 6; ++i)
+      shift = std::max(shift, std::abs(b[i] - session.inputBounds[i]));
+    const bool otherFile = !session.inputFile.empty() && session.inputFile != file;
+    // The same file and settings give the same bone to the last digit; 1 %
+    // of its size is another scan (or another surface of it).
+    const bool otherBone = session.inputBoundsKnown && shift > 0.01 * diagonal;
+    inputWarning.clear();
+    if (otherFile || otherBone)
+    {
+      char mm[64];
+      std::snprintf(mm, sizeof mm, "%.1f", shift);
+      inputWarning = "the session was drawn on " +
+        (otherFile ? "'" + session.inputFile + "', not on '" + file + "'" : std::string("another surface")) +
+        (otherBone ? std::string(" (the bones' bounds differ by up to ") + mm + " mm)" : "") +
+        ": check that this is the same patient's scan before using the plan";
+    }
+  }
+  session.inputFile = file;
+  session.inputBounds = b;
+  session.inputBoundsKnown = true;
+}
+
 std::string Planner::planText()
 {
   std::string text;
@@ -1097,7 +1130,7 @@ std::string Planner::planText()
   // What the cut said (why it failed, a failed stroke) belongs to the plan
   // even when a later key's answer took its place in the window's message.
   std::vector<std::string> said;
-  for (const std::string* from : { &cut.message, &message })
+  for (const std::string* from : { &inputWarning, &cut.message, &message })
   {
     std::istringstream lines(*from);
     for (std::string m; std::getline(lines, m);)

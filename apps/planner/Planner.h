@@ -94,6 +94,9 @@ public:
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   std::string message; ///< a problem: shown, and reported as "message:" in batch runs
+  /// A replayed session drawn on another input (checkReplayedInput): kept at
+  /// the top of every message.
+  std::string inputWarning;
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment
@@ -285,6 +288,10 @@ public:
   /// plane with the distances and angles between them, the deformations, the
   /// segment's move, and the messages. No timings.
   std::string planText();
+  /// Compares the input a replayed session names (file, bone bounds) with
+  /// this one's, sets inputWarning when they differ, and records this input
+  /// in the session (saved and exported with it).
+  void checkReplayedInput(bool replayed);
 
   /// Prints planText(), then what the run cost (deformation frames, lattice
   /// fits reused).

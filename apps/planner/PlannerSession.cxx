@@ -134,6 +134,11 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
     if (s.surface.smoothing > 0)
       root["surface"]["smooth"] = static_cast<Json::Int64>(s.surface.smoothing);
   }
+  if (!s.inputFile.empty())
+    root["input"]["file"] = s.inputFile;
+  if (s.inputBoundsKnown)
+    for (double v : s.inputBounds)
+      root["input"]["bounds"].append(v);
   std::ofstream out(path);
   if (!out)
   {
@@ -334,6 +339,27 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
     s.surface.series = static_cast<long>(series);
     s.surface.smoothing = static_cast<long>(smoothing);
     s.surface.given = true;
+  }
+  if (root.isMember("input"))
+  {
+    const Json::Value& ji = root["input"];
+    const std::string where = "the input of " + session;
+    if (!ji.isObject() || !jsonMember(ji, "file", s.inputFile, jsonString, where, "a string", error))
+    {
+      if (!ji.isObject())
+        error = session + ": \"input\" must be an object (file, bounds)";
+      return false;
+    }
+    if (ji.isMember("bounds"))
+    {
+      const std::array<double, 6>& b = s.inputBounds;
+      if (!jsonNumbers(ji["bounds"], s.inputBounds) || !(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]))
+      {
+        error = where + ": \"bounds\" must be [xmin, xmax, ymin, ymax, zmin, zmax], no min above its max";
+        return false;
+      }
+      s.inputBoundsKnown = true;
+    }
   }
   return true;
 }

@@ -24,6 +24,9 @@
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
 //               "smooth": 0 to 1000}                windowed-sinc iterations (0)
+//   "input": {"file": name,                       what the session was drawn on: the
+//             "bounds": [6 numbers]}              file (no folders) and the bone's
+//                                                 bounds; a replay on another says so
 //
 // Pieces are numbered in cut order. After a changed cut the segment becomes
 // the piece nearest its "at" point, and each deformation the piece whose
@@ -107,6 +110,12 @@ struct Session
     long series = -1; ///< -1: the largest
     long smoothing = 0; ///< windowed-sinc iterations on the surface
   } surface;
+  /// What the strokes were drawn on: the input's file name (no folders) and
+  /// the bone's bounds, so that a replay on another scan (another patient's,
+  /// or the same file made into another surface) can say so.
+  std::string inputFile;
+  bool inputBoundsKnown = false;
+  std::array<double, 6> inputBounds{};
 };
 
 /// A point as a JSON list [x, y, z].
