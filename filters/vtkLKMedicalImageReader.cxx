@@ -50,6 +50,15 @@ bool endsWith(const std::string& s, const std::string& suffix)
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+/// A file name (lower case) of a volume format the reader takes by extension.
+bool isVolumeFileName(const std::string& name)
+{
+  for (const char* ext : { ".nrrd", ".nhdr", ".mha", ".mhd", ".nii", ".nii.gz" })
+    if (endsWith(name, ext))
+      return true;
+  return false;
+}
+
 std::string trim(const std::string& s)
 {
   const auto b = s.find_first_not_of(" \t\r");
@@ -452,12 +461,8 @@ bool vtkLKMedicalImageReader::ReadVolume()
           for (vtkIdType f = 0; f < listing->GetNumberOfFiles(); ++f)
           {
             const std::string file = listing->GetFile(f);
-            const std::string lf = lower(file);
-            if (endsWith(lf, ".nrrd") || endsWith(lf, ".nhdr") || endsWith(lf, ".mha") || endsWith(lf, ".mhd") ||
-              endsWith(lf, ".nii") || endsWith(lf, ".nii.gz"))
-            {
+            if (isVolumeFileName(lower(file)))
               volumes.push_back(file);
-            }
           }
         }
         std::sort(volumes.begin(), volumes.end());
