@@ -119,6 +119,15 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
 {
   using namespace lkapp;
   const std::string where = "the plan";
+  // A misspelt field would be dropped without a word, and the plan run with
+  // the default in its place.
+  const auto warnUnknown = [](const Json::Value& object, std::initializer_list<const char*> known, const char* name) {
+    if (const std::string unknown = unknownMembers(object, known); !unknown.empty())
+      std::cerr << "warning: " << name << " has fields latticekit-demo does not know, ignored: " << unknown << "\n";
+  };
+  warnUnknown(root, { "description", "iso", "smoothing", "crop", "seed", "cut", "latticeVertices", "view" }, "the plan");
+  warnUnknown(root["cut"], { "origin", "normal", "penOffset", "penStep" }, "the plan's cut");
+  warnUnknown(root["view"], { "from", "up" }, "the plan's view");
   long long smoothing = plan.smoothing, vertices = plan.vertices;
   const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 10000, out); };
   const auto count = [](const Json::Value& v, long long& out) { return jsonInteger(v, 8, 100000000, out); };

@@ -129,7 +129,8 @@ int main(int argc, char* argv[])
   Planner planner;
   std::string error;
   const std::string ext = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(input));
-  if (!replay.empty() && !loadSession(replay, planner.session, error))
+  std::string ignoredFields;
+  if (!replay.empty() && !loadSession(replay, planner.session, error, &ignoredFields))
   {
     std::cerr << "error: " << error << "\n";
     return 1;
@@ -209,6 +210,8 @@ int main(int argc, char* argv[])
   planner.bone->ShallowCopy(surface->GetOutput());
   planner.input = vtksys::SystemTools::CollapseFullPath(input);
   planner.checkReplayedInput(!replay.empty());
+  if (!ignoredFields.empty())
+    planner.replayWarnings += (planner.replayWarnings.empty() ? "" : "\n") + ignoredFields;
   if (mesh) // the file's coordinate system (3D Slicer's tag), which the export names again
     lkapp::setCoordinateSpace(planner.bone, lkapp::coordinateSpace(mesh));
   if (!mesh)

@@ -7,15 +7,31 @@
 
 #include <vtk_jsoncpp.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <string>
 
 namespace lkapp
 {
+/// The members of `object` not named in `known` (a misspelt field, or one a
+/// newer version writes), quoted and comma-separated; "" if none (or if
+/// `object` is no object). Readers ignore them and say so.
+inline std::string unknownMembers(const Json::Value& object, std::initializer_list<const char*> known)
+{
+  std::string names;
+  if (!object.isObject())
+    return names;
+  for (const std::string& name : object.getMemberNames())
+    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return name == k; }))
+      names += (names.empty() ? "\"" : ", \"") + name + "\"";
+  return names;
+}
+
 /// A finite number.
 inline bool jsonNumber(const Json::Value& v, double& out)
 {

@@ -94,9 +94,9 @@ public:
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   std::string message; ///< a problem: shown, and reported as "message:" in batch runs
-  /// A replayed session drawn on another input (checkReplayedInput): kept at
-  /// the top of every message.
-  std::string inputWarning;
+  /// What a replay found: a session drawn on another input
+  /// (checkReplayedInput), fields it ignored. Kept at the top of every message.
+  std::string replayWarnings;
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment
@@ -289,7 +289,7 @@ public:
   /// segment's move, and the messages. No timings.
   std::string planText();
   /// Compares the input a replayed session names (file, bone bounds) with
-  /// this one's, sets inputWarning when they differ, and records this input
+  /// this one's, sets replayWarnings when they differ, and records this input
   /// in the session (saved and exported with it).
   void checkReplayedInput(bool replayed);
 

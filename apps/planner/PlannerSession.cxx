@@ -4,6 +4,7 @@
 #include "common/JsonFields.h"
 
 #include <cmath>
+#include <initializer_list>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -151,11 +152,30 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
   return static_cast<bool>(out);
 }
 
-bool readSession(const Json::Value& root, const std::string& path, Session& s, std::string& error)
+namespace
+{
+/// Notes the members of `object` that are not in `known` (a misspelt field,
+/// or one of a newer planner): a replay ignores them, and says so.
+void noteUnknownMembers(const Json::Value& object, std::initializer_list<const char*> known, const std::string& where,
+  std::string* notes)
+{
+  if (!notes)
+    return;
+  const std::string names = lkapp::unknownMembers(object, known);
+  if (!names.empty())
+    *notes += (notes->empty() ? "" : "\n") + where + " has fields this planner does not know, ignored: " + names;
+}
+} // namespace
+
+bool readSession(
+  const Json::Value& root, const std::string& path, Session& s, std::string& error, std::string* notes)
 {
   using namespace lkapp;
   const std::string session = "the session '" + path + "'";
   s = Session();
+  noteUnknownMembers(root,
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "segment", "deformations", "surface", "input" },
+    session, notes);
   const Json::Value& strokes = root["strokes"];
   if (!strokes.isNull() && !strokes.isArray())
   {
@@ -172,6 +192,8 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
       error = where + " is not an object ({\"mode\": ..., \"points\": [...]})";
       return false;
     }
+    noteUnknownMembers(js, { "mode", "points", "saw" }, where, notes);
+    noteUnknownMembers(js["saw"], { "origin", "normal" }, "the saw line of " + where, notes);
     if (!jsonMember(js, "mode", mode, jsonString, where, "a string", error))
       return false;
     if (mode != "paint" && mode != "nearest" && mode != "snap" && mode != "split")
@@ -227,6 +249,7 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
   if (root.isMember("segment"))
   {
     const Json::Value& seg = root["segment"];
+    noteUnknownMembers(seg, { "piece", "matrix", "at" }, "the segment in '" + path + "'", notes);
     long long piece = -1;
     std::array<double, 16> m{};
     if (!seg.isObject() || !jsonInteger(seg["piece"], 0, std::numeric_limits<int>::max(), piece) ||
@@ -258,6 +281,8 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
     const Json::Value& jd = deformations[i];
     Deformation d;
     const std::string where = "deformation " + std::to_string(s.deformations.size()) + " in '" + path + "'";
+    noteUnknownMembers(
+      jd, { "tool", "piece", "centre", "radius", "normal", "amount", "falloff", "iterations" }, where, notes);
     if (!jd.isObject() || !jsonString(jd["tool"], d.tool) || (d.tool != "bump" && d.tool != "box" && d.tool != "smooth"))
     {
       error = where + " has the tool '" + (jd.isObject() && jd["tool"].isString() ? jd["tool"].asString() : std::string("?")) +
@@ -303,6 +328,7 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
   {
     const Json::Value& js = root["surface"];
     const std::string where = "the surface of " + session;
+    noteUnknownMembers(js, { "iso", "seed", "crop", "series", "close", "smooth" }, where, notes);
     long long series = -1;
     const auto seriesIndex = [](const Json::Value& v, long long& out) {
       return jsonInteger(v, 0, std::numeric_limits<int>::max(), out);
@@ -344,6 +370,7 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
   {
     const Json::Value& ji = root["input"];
     const std::string where = "the input of " + session;
+    noteUnknownMembers(ji, { "file", "bounds" }, where, notes);
     if (!ji.isObject() || !jsonMember(ji, "file", s.inputFile, jsonString, where, "a string", error))
     {
       if (!ji.isObject())
@@ -364,9 +391,10 @@ bool readSession(const Json::Value& root, const std::string& path, Session& s, s
   return true;
 }
 
-bool loadSession(const std::string& path, Session& s, std::string& error)
+bool loadSession(const std::string& path, Session& s, std::string& error, std::string* notes)
 {
   return lkapp::loadJsonObject(
-    path, "session", [&](const Json::Value& root, std::string& message) { return readSession(root, path, s, message); }, error);
+    path, "session",
+    [&](const Json::Value& root, std::string& message) { return readSession(root, path, s, message, notes); }, error);
 }
 } // namespace lkplanner

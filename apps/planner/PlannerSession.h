@@ -32,7 +32,9 @@
 // the piece nearest its "at" point, and each deformation the piece whose
 // surface is nearest its centre (its own when that is as near).
 //
-// A field of the wrong kind is refused with a message that names it.
+// A field of the wrong kind is refused with a message that names it; a field
+// the planner does not know (misspelt, or a newer planner's) is ignored, and
+// the replay names it among its messages.
 #ifndef latticekit_apps_PlannerSession_h
 #define latticekit_apps_PlannerSession_h
 
@@ -137,11 +139,14 @@ int modeOf(const std::string& name);
 bool saveSession(const Session& s, const std::string& path, std::string& error);
 
 /// Reads a session, every field's kind checked (a wrong one is refused with
-/// a message naming it and `path`, not an exception).
-bool readSession(const Json::Value& root, const std::string& path, Session& s, std::string& error);
+/// a message naming it and `path`, not an exception). Fields it does not
+/// know (misspelt, or a newer planner's) are ignored and, with `notes`,
+/// named there, one line per object.
+bool readSession(const Json::Value& root, const std::string& path, Session& s, std::string& error,
+  std::string* notes = nullptr);
 
 /// Reads the file `path` (a JSON object) into `s`.
-bool loadSession(const std::string& path, Session& s, std::string& error);
+bool loadSession(const std::string& path, Session& s, std::string& error, std::string* notes = nullptr);
 } // namespace lkplanner
 
 #endif
