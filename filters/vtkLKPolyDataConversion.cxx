@@ -70,16 +70,19 @@ std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh)
 std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh)
 {
   mesh = lk::PolygonMesh();
-  if (!pd || pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() == 0)
-  {
-    return "the lattice is empty (no points or no polygons)";
-  }
-  if (pd->GetNumberOfVerts() > 0 || pd->GetNumberOfLines() > 0 || pd->GetNumberOfStrips() > 0)
+  // Other cells first: a lattice of triangle strips only is not "empty".
+  if (pd && pd->GetNumberOfPoints() > 0 &&
+    (pd->GetNumberOfVerts() > 0 || pd->GetNumberOfLines() > 0 || pd->GetNumberOfStrips() > 0))
   {
     std::ostringstream os;
     os << "a lattice is made of polygons, but this one has " << pd->GetNumberOfVerts() << " vertex, "
-       << pd->GetNumberOfLines() << " line and " << pd->GetNumberOfStrips() << " strip cells";
+       << pd->GetNumberOfLines() << " line and " << pd->GetNumberOfStrips() << " strip cells"
+       << (pd->GetNumberOfStrips() > 0 ? " (vtkTriangleFilter turns strips into triangles)" : "");
     return os.str();
+  }
+  if (!pd || pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() == 0)
+  {
+    return "the lattice is empty (no points or no polygons)";
   }
   mesh.points.resize(static_cast<std::size_t>(pd->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)

@@ -20,6 +20,7 @@
 #include <vtkPolyData.h>
 #include <vtkQuadricDecimation.h>
 #include <vtkSphereSource.h>
+#include <vtkStripper.h>
 
 #include <gtest/gtest.h>
 
@@ -355,6 +356,17 @@ TEST(LatticeSurfaceFilter, BadLatticesAreClearErrors)
     w->Fill(1.5);
     weighted->GetPointData()->AddArray(w);
     cases.push_back({ weighted, "outside [0, 1]" });
+  }
+  {
+    // Triangle strips only (vtkStripper's output): named as strips, not as
+    // an empty lattice.
+    vtkNew<vtkSphereSource> sphere;
+    vtkNew<vtkStripper> stripper;
+    stripper->SetInputConnection(sphere->GetOutputPort());
+    stripper->Update();
+    auto strips = vtkSmartPointer<vtkPolyData>::New();
+    strips->DeepCopy(stripper->GetOutput());
+    cases.push_back({ strips, "strip cells (vtkTriangleFilter turns strips into triangles)" });
   }
   for (const Case& c : cases)
   {
