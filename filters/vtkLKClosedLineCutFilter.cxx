@@ -136,7 +136,11 @@ int vtkLKClosedLineCutFilter::RequestData(
   // needs, not as an empty lattice.
   std::string problem = !input || input->GetNumberOfPolys() == 0
     ? "the mesh has no polygons to cut (it holds " + std::to_string(input ? input->GetNumberOfPoints() : 0) +
-      " points and " + std::to_string(input ? input->GetNumberOfLines() : 0) + " line cells)"
+      " points and " + std::to_string(input ? input->GetNumberOfLines() : 0) + " line cells" +
+      (input && input->GetNumberOfStrips() > 0
+          ? ", and " + std::to_string(input->GetNumberOfStrips()) +
+            " triangle strips: vtkTriangleFilter turns them into triangles)"
+          : std::string(")"))
     : lkvtk::toPolygonMesh(faces, mesh);
   std::vector<lk::EdgeKey> edges;
   std::vector<std::vector<std::int64_t>> loops;
