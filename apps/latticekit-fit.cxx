@@ -203,6 +203,11 @@ int main(int argc, char* argv[])
       return 1;
     }
   }
+  if (const std::string off = lkapp::linesOffTheirMeshPoints(features, mesh); !off.empty())
+  {
+    std::cerr << "error: '" << featuresIn << "' does not fit '" << input << "': " << off << "\n";
+    return 1;
+  }
   const std::string space = lkapp::coordinateSpace(mesh); // the input's, for every file written
   const auto start = std::chrono::steady_clock::now();
   const vtkIdType inputPoints = mesh->GetNumberOfPoints(), inputPolygons = mesh->GetNumberOfPolys();
