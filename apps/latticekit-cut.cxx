@@ -4,6 +4,7 @@
 #include "common/CutReport.h"
 
 #include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKMeshPointIds.h"
 
 #include <vtkCellData.h>
 #include <vtkNew.h>
@@ -106,11 +107,12 @@ int main(int argc, char* argv[])
     std::cerr << "error: " << error << "\n";
     return 1;
   }
-  if (const std::string off = lkapp::linesOffTheirMeshPoints(lines, mesh); !off.empty())
+  if (const std::string off = lkvtk::linesOffTheirMeshPoints(lines, mesh); !off.empty())
   {
     // Ids that happen to be edges of this mesh would cut along a line nobody drew.
     std::cerr << "error: '" << linesPath << "' does not fit '" << input << "': " << off
-              << " (the planner's cut_lines.vtp names its surface.vtp, the main job's cut_line.vtp its mandible.vtp)\n";
+              << ": the lines were made on another mesh (the planner's cut_lines.vtp names its surface.vtp, the main "
+                 "job's cut_line.vtp its mandible.vtp)\n";
     return 1;
   }
   if (linesPath.empty() && mesh->GetNumberOfLines() == 0)

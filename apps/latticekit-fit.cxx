@@ -4,6 +4,7 @@
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMeshRepairFilter.h"
+#include "vtkLKMeshPointIds.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -203,9 +204,10 @@ int main(int argc, char* argv[])
       return 1;
     }
   }
-  if (const std::string off = lkapp::linesOffTheirMeshPoints(features, mesh); !off.empty())
+  if (const std::string off = lkvtk::linesOffTheirMeshPoints(features, mesh); !off.empty())
   {
-    std::cerr << "error: '" << featuresIn << "' does not fit '" << input << "': " << off << "\n";
+    std::cerr << "error: '" << featuresIn << "' does not fit '" << input << "': " << off
+              << ": the lines were made on another mesh\n";
     return 1;
   }
   const std::string space = lkapp::coordinateSpace(mesh); // the input's, for every file written

@@ -2,6 +2,7 @@
 #include "vtkLKAbort.h"
 
 #include "latticekit/MeshCut.h"
+#include "vtkLKMeshPointIds.h"
 #include "vtkLKPolyDataConversion.h"
 #include "vtkLKSurfaceAttributes.h"
 
@@ -146,6 +147,9 @@ int vtkLKClosedLineCutFilter::RequestData(
   std::vector<std::vector<std::int64_t>> loops;
   if (problem.empty())
     problem = lkvtk::lineEdges(linesIn ? linesIn : ownLines.Get(), input, edges);
+  if (problem.empty() && linesIn)
+    if (const std::string off = lkvtk::linesOffTheirMeshPoints(linesIn, input); !off.empty())
+      vtkWarningMacro("The lines may belong to another mesh: " << off << ". They are taken by their MeshPointIds.");
   if (problem.empty() && edges.empty())
     problem = "no closed line to cut along (give input 1, or line cells on the mesh)";
   if (problem.empty())

@@ -193,5 +193,4 @@ std::string lineEdges(vtkPolyData* lines, vtkPolyData* mesh, std::vector<lk::Edg
   return {};
 }
 
-
 } // namespace lkvtk

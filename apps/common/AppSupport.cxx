@@ -7,7 +7,6 @@
 #include <vtkFieldData.h>
 #include <vtkGLTFWriter.h>
 #include <vtkLogger.h>
-#include <vtkMath.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
@@ -784,34 +783,6 @@ void* openDisplay()
       usleep(200000);
   }
   return nullptr;
-}
-
-std::string linesOffTheirMeshPoints(vtkPolyData* lines, vtkPolyData* mesh)
-{
-  vtkDataArray* ids = lines && mesh ? lines->GetPointData()->GetArray("MeshPointId") : nullptr;
-  if (!ids)
-    return {};
-  const double tolerance = 1e-4 * mesh->GetLength();
-  for (vtkIdType i = 0; i < lines->GetNumberOfPoints() && i < ids->GetNumberOfTuples(); ++i)
-  {
-    const double v = ids->GetComponent(i, 0);
-    if (!(v >= 0.0 && v < static_cast<double>(mesh->GetNumberOfPoints())) || v != std::floor(v))
-      continue;
-    double p[3], q[3];
-    lines->GetPoint(i, p);
-    mesh->GetPoint(static_cast<vtkIdType>(v), q);
-    const double d = std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
-    if (!(d <= tolerance))
-    {
-      char text[300];
-      std::snprintf(text, sizeof text,
-        "line point %lld names mesh point %lld (MeshPointId) but lies %.4g from it: the lines were made on another "
-        "mesh",
-        static_cast<long long>(i), static_cast<long long>(v), d);
-      return text;
-    }
-  }
-  return {};
 }
 
 double fieldValue(vtkPolyData* pd, const std::string& name)

@@ -74,13 +74,6 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
 /// field data "SPACE", if any) is written as 3D Slicer writes and reads it, in
 /// every format but glTF, so that Slicer places the model without asking.
 bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, const std::string& space = {});
-/// Whether lines that name `mesh`'s points by point data MeshPointId lie on
-/// the points they name: "" if they do (or carry no MeshPointId), else a
-/// sentence naming the first point that lies off its mesh point by more than
-/// 1e-4 of the mesh's size (lines made on another mesh, or on this one
-/// before its points were renumbered). Ids outside the mesh are left to the
-/// filters, which name them.
-std::string linesOffTheirMeshPoints(vtkPolyData* lines, vtkPolyData* mesh);
 /// The coordinate system a mesh's field data "SPACE" names: "LPS", "RAS" or "".
 std::string coordinateSpace(vtkPolyData* mesh);
 /// Sets (or, with "", removes) a mesh's field data "SPACE", on a copy of its
