@@ -349,8 +349,8 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
   {
     vtkNew<vtkPolyData> lines;
     vtkNew<vtkPoints> pts;
-    pts->InsertNextPoint(0, 0, 0);
-    pts->InsertNextPoint(1, 0, 0);
+    pts->InsertNextPoint(bone->GetPoint(0));
+    pts->InsertNextPoint(bone->GetPoint(1));
     vtkNew<vtkIdTypeArray> ids;
     ids->SetName("MeshPointId");
     ids->InsertNextValue(0);
@@ -368,6 +368,7 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     expectError(fit, "has MeshPointId " + std::to_string(bone->GetNumberOfPoints() + 5) + ", outside the mesh's point ids");
     ids->SetValue(1, 5000); // in range, but not joined to 0 by an edge
     ids->Modified();
+    pts->SetPoint(1, bone->GetPoint(5000));
     vtkNew<vtkLKLatticeFitFilter> fit2;
     fit2->SetInputData(bone);
     fit2->SetFeatureLinesData(lines);
@@ -377,6 +378,7 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     // without features, and says so (it was silent).
     ids->SetValue(1, 0);
     ids->Modified();
+    pts->SetPoint(1, bone->GetPoint(0));
     vtkNew<vtkLKLatticeFitFilter> fit3;
     fit3->SetInputData(bone);
     fit3->SetFeatureLinesData(lines);
