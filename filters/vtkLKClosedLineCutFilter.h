@@ -7,9 +7,10 @@
  * line cells are ignored as geometry. Input 1 (optional, SetLinesConnection /
  * SetLinesData): the closed lines, as polylines or as separate segments along
  * mesh edges, whose points name mesh points (point data "MeshPointId", or
- * coordinates equal to mesh points). Without input 1 the line cells of input
- * 0 are the lines: a fitted lattice (vtkLKLatticeFitFilter) carries its
- * feature edges as line cells, so "fit, then cut" is one pipeline.
+ * coordinates equal to mesh points; with ids, a point far from the point its
+ * id names is warned of, as lines made on another mesh). Without input 1 the
+ * line cells of input 0 are the lines: a fitted lattice (vtkLKLatticeFitFilter)
+ * carries its feature edges as line cells, so "fit, then cut" is one pipeline.
  * The lines must form closed loops: every vertex on them joins exactly two
  * line edges.
  *

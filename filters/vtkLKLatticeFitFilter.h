@@ -8,8 +8,10 @@
  * SetFeatureLinesData): feature lines as polylines running along edges of
  * the mesh. Their points name mesh points either through a point data array
  * "MeshPointId" (any integer type) or, without it, by coordinates equal to a
- * mesh point's (within 1e-9 of the bounding-box diagonal). Consecutive points
- * of a polyline must be joined by a mesh edge.
+ * mesh point's (within 1e-9 of the bounding-box diagonal). The ids rule; a
+ * point lying more than 1e-4 of the diagonal from the point its id names is
+ * warned of (lines made on another mesh). Consecutive points of a polyline
+ * must be joined by a mesh edge.
  *
  * Steps (see core/include/latticekit/LatticeSimplification.h, QuadPairing.h
  * and LatticeRefinement.h for the algorithms and the choices made):
