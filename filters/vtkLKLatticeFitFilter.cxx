@@ -155,7 +155,8 @@ int vtkLKLatticeFitFilter::RequestData(
     return 0;
   }
   if (const std::string off = lkvtk::linesOffTheirMeshPoints(lines, input); !off.empty())
-    vtkWarningMacro("The feature lines may belong to another mesh: " << off << ". They are taken by their MeshPointIds.");
+    vtkWarningMacro("The feature lines may belong to another mesh: " << off
+                                                                      << ". They are taken by their MeshPointIds.");
   if (features.empty() && lines && lines->GetNumberOfPoints() > 0)
     vtkWarningMacro("The feature lines (" << lines->GetNumberOfPoints() << " points, " << lines->GetNumberOfLines()
                                           << " lines) have no edge between two different mesh points: the "

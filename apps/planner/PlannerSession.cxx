@@ -4,8 +4,8 @@
 #include "common/JsonFields.h"
 
 #include <cmath>
-#include <initializer_list>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 
@@ -174,7 +174,8 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "segment", "deformations", "surface", "input" },
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "segment", "deformations", "surface",
+      "input" },
     session, notes);
   const Json::Value& strokes = root["strokes"];
   if (!strokes.isNull() && !strokes.isArray())
