@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdint>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -142,9 +143,37 @@ int vtkLKMetroFilter::RequestData(
                           << " has zero area: every triangle is degenerate.");
     return 0;
   }
-  lk::Box3 box = lk::boundingBox(meshA);
-  box.extend(lk::boundingBox(meshB));
+  const lk::Box3 boxA = lk::boundingBox(meshA), boxB = lk::boundingBox(meshB);
+  lk::Box3 box = boxA;
+  box.extend(boxB);
   const double diagonal = box.diagonal();
+  {
+    // Two approximations of one surface overlap and are of one size. Meshes
+    // far apart, or ten times apart in size, are most often one surface in two
+    // coordinate systems (an untagged RAS file beside an LPS one, metres
+    // beside millimetres), and the distances would measure that.
+    const double dA = boxA.diagonal(), dB = boxB.diagonal();
+    // The gap between the boxes along the axis where it is widest (0 where
+    // they overlap); half the larger mesh's size is no approximation's.
+    const double gap = std::max((boxB.min - boxA.max).maxCoeff(), (boxA.min - boxB.max).maxCoeff());
+    const bool apart = gap > 0.5 * std::max(dA, dB);
+    const double ratio = std::max(dA, dB) / std::max(std::min(dA, dB), 1e-300);
+    if (apart || (this->Symmetric && ratio > 10.0))
+    {
+      auto range = [](const lk::Box3& b) {
+        std::ostringstream os;
+        os.precision(4);
+        os << "x " << b.min.x() << " to " << b.max.x() << ", y " << b.min.y() << " to " << b.max.y() << ", z "
+           << b.min.z() << " to " << b.max.z();
+        return os.str();
+      };
+      const std::string how =
+        apart ? "lie far apart" : "differ in size " + std::to_string(static_cast<long long>(ratio)) + "-fold";
+      vtkWarningMacro("Mesh A (" << range(boxA) << ") and mesh B (" << range(boxB) << ") " << how
+                                 << ": if they are one surface in two coordinate systems (LPS and RAS, millimetres "
+                                    "and metres), the distances measure that, not the approximation.");
+    }
+  }
 
   lk::SamplingOptions options;
   options.vertexSamples = this->VertexSampling;

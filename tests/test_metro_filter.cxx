@@ -156,7 +156,11 @@ TEST(MetroFilter, ParallelPlanesAndBoundingBoxPercentages)
   metro->SetInputData(a);
   metro->SetTargetData(b);
   metro->SetNumberOfSamples(20000);
-  metro->Update();
+  {
+    lktest::ErrorRecorder rec(metro);
+    metro->Update();
+    EXPECT_EQ(rec.warnings, 0) << rec.warningMessages; // 0.3 apart is an approximation's offset
+  }
   vtkPolyData* out = metro->GetOutput();
   const double diagonal = std::sqrt(1.0 + 1.0 + 0.09);
   EXPECT_NEAR(field(out, "BoundingBoxDiagonal"), diagonal, 1e-12);
@@ -180,6 +184,62 @@ TEST(MetroFilter, ParallelPlanesAndBoundingBoxPercentages)
   ASSERT_NE(colors, nullptr);
   EXPECT_EQ(colors->GetNumberOfComponents(), 3);
   EXPECT_EQ(out->GetNumberOfCells(), a->GetNumberOfCells());
+}
+
+TEST(MetroFilter, MeshesInTwoCoordinateSystemsAreWarnedOf)
+{
+  // A sphere of radius 10 centred 300 along y (as a mandible in LPS), the
+  // same with y mirrored (an untagged RAS copy), and the same in metres.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(10.0);
+  sphere->SetCenter(0.0, 300.0, 0.0);
+  sphere->Update();
+  auto transformed = [&](double sx, double sy, double sz) {
+    vtkNew<vtkTransform> t;
+    t->Scale(sx, sy, sz);
+    vtkNew<vtkTransformPolyDataFilter> f;
+    f->SetTransform(t);
+    f->SetInputConnection(sphere->GetOutputPort());
+    f->Update();
+    return vtkSmartPointer<vtkPolyData>(f->GetOutput());
+  };
+  // A sphere 20 times smaller inside it (same centre).
+  vtkNew<vtkSphereSource> smallSphere;
+  smallSphere->SetRadius(0.5);
+  smallSphere->SetCenter(0.0, 300.0, 0.0);
+  smallSphere->Update();
+  vtkSmartPointer<vtkPolyData> small = smallSphere->GetOutput();
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyData> b;
+    bool symmetric;
+    std::string expected; // "" for no warning
+  };
+  const std::vector<Case> cases{ { transformed(1.0, 1.0, 1.0), true, "" },
+    { transformed(-1.0, -1.0, 1.0), true, "lie far apart" },
+    { transformed(0.001, 0.001, 0.001), true, "lie far apart" },
+    { transformed(1.0, 1.001, 1.0), true, "" },
+    { small, true, "differ in size 20-fold" },
+    { small, false, "" } }; // a small part measured against the whole: one way
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkLKMetroFilter> metro;
+    metro->SetInputData(sphere->GetOutput());
+    metro->SetTargetData(c.b);
+    metro->SetNumberOfSamples(2000);
+    metro->SetSymmetric(c.symmetric);
+    lktest::ErrorRecorder rec(metro);
+    metro->Update();
+    EXPECT_EQ(rec.errors, 0) << rec.messages;
+    if (c.expected.empty())
+      EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+    else
+    {
+      EXPECT_EQ(rec.warnings, 1) << c.expected;
+      EXPECT_NE(rec.warningMessages.find(c.expected), std::string::npos) << rec.warningMessages;
+      EXPECT_NE(rec.warningMessages.find("two coordinate systems"), std::string::npos) << rec.warningMessages;
+    }
+  }
 }
 
 TEST(MetroFilter, ColoursRunFromBlueToRed)
