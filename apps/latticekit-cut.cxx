@@ -79,10 +79,22 @@ int main(int argc, char* argv[])
     return 2;
   }
   lkapp::installMessageHandler(quiet);
-  if (!lkapp::checkAllWritable({ output }))
+  if (!lkapp::checkAllWritable({ output }, { input, linesPath }))
     return 1;
   if (!piecesFolder.empty())
   {
+    // The pieces' files (pieceN.stl, .vtp, .obj) are written there, and
+    // those of an earlier cut beyond this one's count removed: an input
+    // among them (a piece cut again into its own folder) would be lost.
+    for (const std::string& in : { input, linesPath })
+    {
+      if (lkapp::isExportedFile(in, piecesFolder, {}))
+      {
+        std::cerr << "error: '" << in << "' is one of the files --pieces writes or removes in '" << piecesFolder
+                  << "': give the pieces another folder\n";
+        return 1;
+      }
+    }
     // The folder is made now, and a file in it tried, so that a folder that
     // cannot be written is reported before the cut, not after it.
     std::string error;

@@ -186,7 +186,7 @@ int main(int argc, char* argv[])
   }
   lkapp::installMessageHandler(quiet);
   std::string error;
-  if (!lkapp::checkAllWritable({ output, surfaceOut, mapOut }))
+  if (!lkapp::checkAllWritable({ output, surfaceOut, mapOut }, { input, featuresIn }))
     return 1;
   vtkSmartPointer<vtkPolyData> mesh = lkapp::readMesh(input, error);
   if (!mesh)

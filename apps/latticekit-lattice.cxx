@@ -71,7 +71,7 @@ int main(int argc, char* argv[])
   }
   lkapp::installMessageHandler(quiet);
   std::string error;
-  if (!lkapp::checkAllWritable({ output, netOut, latticeOut }))
+  if (!lkapp::checkAllWritable({ output, netOut, latticeOut }, { input }))
     return 1;
   vtkSmartPointer<vtkPolyData> lattice = lkapp::readMesh(input, error);
   if (!lattice)

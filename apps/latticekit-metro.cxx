@@ -153,11 +153,8 @@ int main(int argc, char* argv[])
   }
   lkapp::installMessageHandler(quiet);
   std::string error;
-  if (!colored.empty() && !lkapp::checkWritable(colored, error))
-  {
-    std::cerr << "error: " << error << "\n";
+  if (!lkapp::checkAllWritable({ colored }, { inputs[0], inputs[1] }))
     return 1;
-  }
   vtkSmartPointer<vtkPolyData> meshes[2];
   std::string spaces[2];
   std::string triangulation;

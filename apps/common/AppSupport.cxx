@@ -439,6 +439,21 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   return result;
 }
 
+bool isExportedFile(const std::string& path, const std::string& folder, std::initializer_list<const char*> others)
+{
+  if (path.empty() || folder.empty())
+    return false;
+  const std::string full = vtksys::SystemTools::CollapseFullPath(path);
+  if (vtksys::SystemTools::GetFilenamePath(full) != vtksys::SystemTools::CollapseFullPath(folder))
+    return false;
+  const std::string name = vtksys::SystemTools::GetFilenameName(full);
+  const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(name);
+  const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(name));
+  const bool piece = (ext == ".stl" || ext == ".vtp" || ext == ".obj") && stem.size() > 5 &&
+    stem.rfind("piece", 0) == 0 && stem.find_first_not_of("0123456789", 5) == std::string::npos;
+  return piece || std::any_of(others.begin(), others.end(), [&](const char* o) { return name == o; });
+}
+
 bool removeStaleExports(const std::string& folder, std::size_t pieces, const std::vector<std::string>& others,
   std::string& error)
 {
@@ -741,9 +756,33 @@ bool checkWritable(const std::string& path, std::string& error)
   return true;
 }
 
-bool checkAllWritable(std::initializer_list<std::string> paths)
+bool checkAllWritable(std::initializer_list<std::string> paths, std::initializer_list<std::string> inputs)
 {
   std::string error;
+  std::vector<std::string> outputs; // full paths of the outputs before this one
+  for (const std::string& path : paths)
+  {
+    if (path.empty())
+      continue;
+    const std::string full = vtksys::SystemTools::CollapseFullPath(path);
+    for (const std::string& input : inputs)
+    {
+      if (!input.empty() &&
+        (full == vtksys::SystemTools::CollapseFullPath(input) ||
+          (vtksys::SystemTools::FileExists(path, true) && vtksys::SystemTools::SameFile(path, input))))
+      {
+        std::cerr << "error: '" << path << "' is also an input of this run: writing it would destroy '" << input
+                  << "'; give the output another name\n";
+        return false;
+      }
+    }
+    if (std::find(outputs.begin(), outputs.end(), full) != outputs.end())
+    {
+      std::cerr << "error: '" << path << "' is named for two outputs: the second would overwrite the first\n";
+      return false;
+    }
+    outputs.push_back(full);
+  }
   for (const std::string& path : paths)
   {
     if (!path.empty() && !checkWritable(path, error))

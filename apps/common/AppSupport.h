@@ -81,6 +81,10 @@ std::string coordinateSpace(vtkPolyData* mesh);
 void setCoordinateSpace(vtkPolyData* mesh, const std::string& space);
 /// The extensions writeMesh accepts, for help texts.
 const char* meshExtensions();
+/// Whether `path` names a file that an export into `folder` writes or
+/// removes: pieceN.stl, .vtp or .obj, or one of `others` (names in the
+/// folder). An input among them would be lost to the export.
+bool isExportedFile(const std::string& path, const std::string& folder, std::initializer_list<const char*> others);
 /// Removes what an earlier export left in `folder` of the pieces a tool
 /// writes there (pieceN.stl, .vtp, .obj) with N >= `pieces`, from N = `pieces`
 /// on while any of the three exists, and the files in `others` (names in
@@ -162,7 +166,9 @@ private:
 bool checkWritable(const std::string& path, std::string& error);
 
 /// checkWritable for every non-empty path; prints "error: ..." for the first
-/// that fails and returns false.
-bool checkAllWritable(std::initializer_list<std::string> paths);
+/// that fails and returns false. An output that is one of the `inputs` (the
+/// same file, by any path), or that two outputs share, fails too: writing it
+/// would destroy a file the run reads, or the other output.
+bool checkAllWritable(std::initializer_list<std::string> paths, std::initializer_list<std::string> inputs = {});
 
 } // namespace lkapp

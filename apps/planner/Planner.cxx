@@ -1161,6 +1161,16 @@ void Planner::report()
 
 bool Planner::exportPieces(const std::string& folder, std::string& error)
 {
+  // The bone's own file among what the export writes or removes (a plan
+  // made on an exported surface.vtp, exported into the same folder) would
+  // be lost. A replayed session.json there is the plan's own, rewritten.
+  if (lkapp::isExportedFile(
+        input, folder, { "surface.vtp", "cut_lines.vtp", "plan.txt", "plan.png", "segment_transform.txt" }))
+  {
+    error = "the input '" + input + "' is one of the files the export writes or removes in '" + folder +
+      "': export to another folder";
+    return false;
+  }
   vtksys::SystemTools::MakeDirectory(folder);
   const std::string space = lkapp::coordinateSpace(bone); // "LPS" from an oriented CT; a mesh file's own tag
   for (std::size_t p = 0; p < pieces.size(); ++p)
