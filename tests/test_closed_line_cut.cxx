@@ -136,7 +136,7 @@ TEST(ClosedLineCut, LinesThatDoNotLieOnThePointsTheyNameAreWarned)
   lktest::ErrorRecorder errors(cut);
   cut->Update();
   EXPECT_EQ(errors.errors, 0) << errors.messages;
-  EXPECT_EQ(errors.warnings, 1);
+  EXPECT_GE(errors.warnings, 1);
   EXPECT_NE(errors.warningMessages.find("The lines may belong to another mesh: line point 0, which names mesh point "),
     std::string::npos)
     << errors.warningMessages;
