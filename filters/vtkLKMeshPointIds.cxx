@@ -11,6 +11,12 @@
 namespace lkvtk
 {
 
+vtkIdType meshPointIdOf(vtkDataArray* ids, vtkIdType i, vtkIdType meshPoints)
+{
+  const double v = ids->GetComponent(i, 0);
+  return v >= 0.0 && v < static_cast<double>(meshPoints) && v == std::floor(v) ? static_cast<vtkIdType>(v) : -1;
+}
+
 std::string linesOffTheirMeshPoints(vtkPolyData* lines, vtkPolyData* mesh)
 {
   vtkDataArray* ids = lines && mesh ? lines->GetPointData()->GetArray("MeshPointId") : nullptr;
@@ -19,12 +25,12 @@ std::string linesOffTheirMeshPoints(vtkPolyData* lines, vtkPolyData* mesh)
   const double tolerance = 1e-4 * mesh->GetLength();
   for (vtkIdType i = 0; i < lines->GetNumberOfPoints() && i < ids->GetNumberOfTuples(); ++i)
   {
-    const double v = ids->GetComponent(i, 0);
-    if (!(v >= 0.0 && v < static_cast<double>(mesh->GetNumberOfPoints())) || v != std::floor(v))
+    const vtkIdType v = meshPointIdOf(ids, i, mesh->GetNumberOfPoints());
+    if (v < 0)
       continue;
     double p[3], q[3];
     lines->GetPoint(i, p);
-    mesh->GetPoint(static_cast<vtkIdType>(v), q);
+    mesh->GetPoint(v, q);
     const double d = std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
     if (!(d <= tolerance))
     {

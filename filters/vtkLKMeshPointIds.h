@@ -5,12 +5,20 @@
 /// planner's cut_lines.vtp). VTK-only, so that the command-line tools can
 /// check their files with it too.
 
+#include <vtkType.h>
+
 #include <string>
 
+class vtkDataArray;
 class vtkPolyData;
 
 namespace lkvtk
 {
+
+/// The mesh point that line point `i` names by `ids` (its point data
+/// MeshPointId, any numeric type), or -1 where the id is not a whole number
+/// in 0 .. meshPoints - 1.
+vtkIdType meshPointIdOf(vtkDataArray* ids, vtkIdType i, vtkIdType meshPoints);
 
 /// Whether lines that name `mesh`'s points by point data MeshPointId lie on
 /// the points they name: "" if they do (or carry no MeshPointId), else a

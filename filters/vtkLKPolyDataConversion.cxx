@@ -1,4 +1,5 @@
 #include "vtkLKPolyDataConversion.h"
+#include "vtkLKMeshPointIds.h"
 
 
 #include <vtkCellArray.h>
@@ -147,14 +148,15 @@ std::string lineEdges(vtkPolyData* lines, vtkPolyData* mesh, std::vector<lk::Edg
   {
     for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
     {
-      const double v = ids->GetComponent(i, 0);
-      if (!(v >= 0.0 && v < static_cast<double>(n)) || v != std::floor(v))
+      const vtkIdType v = lkvtk::meshPointIdOf(ids, i, n);
+      if (v < 0)
       {
         std::ostringstream text; // as the user wrote it: 1000000, not 1000000.000000
-        text << "line point " << i << " has MeshPointId " << v << ", outside the mesh's point ids 0.." << n - 1;
+        text << "line point " << i << " has MeshPointId " << ids->GetComponent(i, 0)
+             << ", outside the mesh's point ids 0.." << n - 1;
         return text.str();
       }
-      meshId[static_cast<std::size_t>(i)] = static_cast<vtkIdType>(v);
+      meshId[static_cast<std::size_t>(i)] = v;
     }
   }
   else
