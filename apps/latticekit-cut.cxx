@@ -178,7 +178,7 @@ int main(int argc, char* argv[])
     plain->ShallowCopy(piece);
     plain->GetPointData()->Initialize();
     plain->GetCellData()->Initialize();
-    for (const char* ext : { ".stl", ".vtp", ".obj" })
+    for (const char* ext : lkapp::pieceExtensions)
       if (!lkapp::writeMesh(ext == std::string(".vtp") ? piece.Get() : plain.Get(),
             piecesFolder + "/piece" + std::to_string(p) + ext, error, space))
       {

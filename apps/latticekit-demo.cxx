@@ -662,7 +662,7 @@ int main(int argc, char* argv[])
       return 1;
     }
   for (std::size_t p = 0; p < pieces.size(); ++p)
-    for (const char* ext : { ".stl", ".vtp", ".obj" })
+    for (const char* ext : lkapp::pieceExtensions)
       if (!lkapp::writeMesh(pieces[p], folder + "/piece" + std::to_string(p) + ext, error, space))
       {
         std::cerr << "error: " << error << "\n";

@@ -449,8 +449,10 @@ bool isExportedFile(const std::string& path, const std::string& folder, std::ini
   const std::string name = vtksys::SystemTools::GetFilenameName(full);
   const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(name);
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(name));
-  const bool piece = (ext == ".stl" || ext == ".vtp" || ext == ".obj") && stem.size() > 5 &&
-    stem.rfind("piece", 0) == 0 && stem.find_first_not_of("0123456789", 5) == std::string::npos;
+  const bool pieceExtension =
+    std::any_of(pieceExtensions.begin(), pieceExtensions.end(), [&](const char* e) { return ext == e; });
+  const bool piece = pieceExtension && stem.size() > 5 && stem.rfind("piece", 0) == 0 &&
+    stem.find_first_not_of("0123456789", 5) == std::string::npos;
   return piece || std::any_of(others.begin(), others.end(), [&](const char* o) { return name == o; });
 }
 
@@ -461,7 +463,7 @@ bool removeStaleExports(const std::string& folder, std::size_t pieces, const std
   for (std::size_t p = pieces;; ++p)
   {
     bool any = false;
-    for (const char* ext : { ".stl", ".vtp", ".obj" })
+    for (const char* ext : pieceExtensions)
     {
       const std::string path = folder + "/piece" + std::to_string(p) + ext;
       if (vtksys::SystemTools::FileExists(path, true))

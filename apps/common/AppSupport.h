@@ -8,6 +8,7 @@
 
 #include <iosfwd>
 #include <initializer_list>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,10 @@ std::string coordinateSpace(vtkPolyData* mesh);
 void setCoordinateSpace(vtkPolyData* mesh, const std::string& space);
 /// The extensions writeMesh accepts, for help texts.
 const char* meshExtensions();
+/// The formats each cut piece is exported in (pieceN.stl, .vtp, .obj): by
+/// the cut's --pieces, the planner's export and the main job, and what
+/// removeStaleExports and isExportedFile look for.
+inline constexpr std::array<const char*, 3> pieceExtensions{ ".stl", ".vtp", ".obj" };
 /// Whether `path` names a file that an export into `folder` writes or
 /// removes: pieceN.stl, .vtp or .obj, or one of `others` (names in the
 /// folder). An input among them would be lost to the export.

@@ -1187,7 +1187,7 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       move->Update();
       piece = move->GetOutput();
     }
-    for (const char* ext : { ".stl", ".vtp", ".obj" })
+    for (const char* ext : lkapp::pieceExtensions)
     {
       const std::string path = folder + "/piece" + std::to_string(p) + ext;
       if (!lkapp::writeMesh(piece, path, error, space))
