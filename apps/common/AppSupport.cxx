@@ -1,4 +1,5 @@
 #include "AppSupport.h"
+#include "PlyFileCheck.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -386,6 +387,13 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   }
   else if (ext == ".ply")
   {
+    // vtkPLYReader crashes on a truncated file: its body is checked first.
+    const std::string problem = plyFileProblem(path);
+    if (!problem.empty())
+    {
+      error = "cannot read '" + path + "': the file is corrupt (" + problem + ")";
+      return nullptr;
+    }
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
