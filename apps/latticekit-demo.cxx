@@ -5,6 +5,7 @@
 // paper's Table 2 (no cut / cut / cut with quads), exported pieces and
 // lattices, and PNG pictures.
 #include "common/AppSupport.h"
+#include "common/AtomicFile.h"
 #include "common/CutReport.h"
 #include "common/PlaneSection.h"
 #include "common/JsonFields.h"
@@ -32,7 +33,6 @@
 #include <vtkLookupTable.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -45,7 +45,6 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTubeFilter.h>
-#include <vtkWindowToImageFilter.h>
 #include <vtk_jsoncpp.h>
 #include <vtksys/SystemTools.hxx>
 
@@ -54,7 +53,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -447,7 +445,7 @@ vtkSmartPointer<vtkActor> lineActor(vtkPolyData* pd, const double colour[3], dou
 /// `display`: the X connection opened at the start (lkapp::openDisplay),
 /// which every picture's window uses instead of opening its own.
 bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBarActor* bar, const std::string& title,
-  const Plan& plan, const std::string& png, void* display)
+  const Plan& plan, const std::string& png, void* display, std::string& error)
 {
   vtkNew<vtkRenderer> renderer;
   for (const auto& a : actors)
@@ -484,14 +482,7 @@ bool renderPng(const std::vector<vtkSmartPointer<vtkActor>>& actors, vtkScalarBa
   if (bar)
     window->AddRenderer(barRenderer);
   window->SetSize(1000, 800);
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(png.c_str());
-  writer->Write();
-  return lkapp::fileBytes(png) > 0;
+  return lkapp::writeScreenshot(window, png, error);
 }
 } // namespace
 
@@ -559,14 +550,19 @@ int main(int argc, char* argv[])
   // it proves the folder writable, and a run that stops with an error does
   // not leave an earlier run's report beside its own files. The finished
   // report replaces it.
-  if (!vtksys::SystemTools::MakeDirectory(folder) ||
-    !(std::ofstream(folder + "/report.md")
-      << "# latticekit main job: did not finish\n\nThe run on `" << vtksys::SystemTools::GetFilenameName(input)
-      << "` with the plan `" << vtksys::SystemTools::GetFilenameName(planPath)
-      << "` stopped with an error (printed on the terminal). Other files in this folder may be from an "
-         "earlier run.\n"))
+  if (!vtksys::SystemTools::MakeDirectory(folder))
   {
-    std::cerr << "error: cannot write to '" << folder << "'\n";
+    std::cerr << "error: cannot make the folder '" << folder << "'\n";
+    return 1;
+  }
+  if (!lkapp::writeFileAtomically(folder + "/report.md",
+      "# latticekit main job: did not finish\n\nThe run on `" + vtksys::SystemTools::GetFilenameName(input) +
+        "` with the plan `" + vtksys::SystemTools::GetFilenameName(planPath) +
+        "` stopped with an error (printed on the terminal). Other files in this folder may be from an "
+        "earlier run.\n",
+      error))
+  {
+    std::cerr << "error: " << error << "\n";
     return 1;
   }
   const auto start = Clock::now();
@@ -763,7 +759,7 @@ int main(int argc, char* argv[])
     auto tubePd = vtkSmartPointer<vtkPolyData>::New();
     tubePd->ShallowCopy(tube->GetOutput());
     bool ok = renderPng({ surfaceActor(mandible, boneColour), surfaceActor(tubePd, red) }, nullptr,
-      "the plan: the osteotomy line (red) from the scripted stroke", plan, folder + "/plan.png", display);
+      "the plan: the osteotomy line (red) from the scripted stroke", plan, folder + "/plan.png", display, error);
     std::vector<vtkSmartPointer<vtkActor>> actors;
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
@@ -782,7 +778,7 @@ int main(int argc, char* argv[])
       actors.push_back(lineActor(e, cage, 1.0));
     }
     ok = ok && renderPng(actors, nullptr, "the two pieces: lattice cages and their smooth surfaces", plan,
-                 folder + "/pieces.png", display);
+                 folder + "/pieces.png", display, error);
     surfaceQuads->GetPointData()->SetActiveScalars("Distance");
     double range[2];
     surfaceQuads->GetPointData()->GetArray("Distance")->GetRange(range);
@@ -799,10 +795,10 @@ int main(int argc, char* argv[])
     mapper->SelectColorArray("Distance");
     vtkNew<vtkActor> coloured;
     coloured->SetMapper(mapper);
-    ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png", display);
+    ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png", display, error);
     if (!ok)
     {
-      std::cerr << "error: the pictures could not be rendered (run under xvfb-run -a, or pass --no-render)\n";
+      std::cerr << "error: " << error << "\n";
       return 1;
     }
     report << ", `plan.png`, `pieces.png`, `error.png`";
@@ -810,11 +806,9 @@ int main(int argc, char* argv[])
   report << ".\n\nTotal time: " << std::fixed;
   report.precision(1);
   report << since(start) << " s.\n";
-  std::ofstream out(folder + "/report.md");
-  out << report.str();
-  if (!out)
+  if (!lkapp::writeFileAtomically(folder + "/report.md", report.str(), error))
   {
-    std::cerr << "error: cannot write '" << folder << "/report.md'\n";
+    std::cerr << "error: " << error << "\n";
     return 1;
   }
   std::cout << report.str();

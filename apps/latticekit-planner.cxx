@@ -339,9 +339,9 @@ int main(int argc, char* argv[])
     if (!shot.empty())
     {
       planner.window->SetOffScreenRendering(1);
-      if (!planner.screenshot(shot))
+      if (!planner.screenshot(shot, error))
       {
-        std::cerr << "error: cannot write '" << shot << "'\n";
+        std::cerr << "error: " << error << "\n";
         return 1;
       }
       std::printf("screenshot: %s\n", shot.c_str());

@@ -1,10 +1,13 @@
 #include "AppSupport.h"
+#include "AtomicFile.h"
 #include "PlyFileCheck.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkGLTFWriter.h>
 #include <vtkLogger.h>
@@ -16,14 +19,19 @@
 #include <vtkOutputWindow.h>
 #include <vtkPLYReader.h>
 #include <vtkPLYWriter.h>
+#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
+#include <vtkRenderWindow.h>
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
 #include <vtkStringArray.h>
 #include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+#include <vtkWriter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtksys/SystemTools.hxx>
@@ -31,6 +39,7 @@
 #include <X11/Xlib.h>
 
 #include <execinfo.h>
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 
@@ -176,6 +185,9 @@ void installCrashReport(const char* tool)
   action.sa_flags = SA_RESETHAND | SA_NODEFER;
   for (int signal : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT })
     sigaction(signal, &action, nullptr);
+  // A write past the file size limit (ulimit -f) then fails with EFBIG and
+  // is reported like a full disk, instead of killing the tool mid-file.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 void installMessageHandler(bool quiet)
@@ -313,17 +325,6 @@ std::string objComments(const std::string& path)
   return comments;
 }
 
-/// Puts `comment` as the first line of the text file at `path`.
-bool prependLine(const std::string& path, const std::string& comment)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream body;
-  body << in.rdbuf();
-  in.close();
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << comment << "\n" << body.str();
-  return static_cast<bool>(out.flush());
-}
 } // namespace
 
 std::string coordinateSpace(vtkPolyData* mesh)
@@ -494,6 +495,38 @@ bool removeStaleExports(const std::string& folder, std::size_t pieces, const std
   return true;
 }
 
+namespace
+{
+/// Whether `text`, vtkOBJWriter's file of `mesh`, is whole: VTK 9.1's writer
+/// ends its lines with a newline and writes a "v" line per point and an "f"
+/// line per polygon and per triangle of a strip, then an "l" line per line
+/// cell (vertex cells are not written). A write cut short has fewer.
+bool objIsComplete(const std::string& text, vtkPolyData* mesh)
+{
+  if (text.empty() || text.back() != '\n')
+    return false;
+  vtkIdType points = 0, faces = 0;
+  for (std::size_t at = 0; at < text.size();)
+  {
+    if (text.compare(at, 2, "v ") == 0)
+      ++points;
+    else if (text.compare(at, 2, "f ") == 0 || text.compare(at, 2, "l ") == 0)
+      ++faces;
+    const std::size_t next = text.find('\n', at);
+    at = next == std::string::npos ? text.size() : next + 1;
+  }
+  vtkIdType expected = mesh->GetNumberOfPolys() + mesh->GetNumberOfLines();
+  if (vtkCellArray* strips = mesh->GetStrips())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    for (strips->InitTraversal(); strips->GetNextCell(n, ids);)
+      expected += std::max<vtkIdType>(n - 2, 0);
+  }
+  return points == mesh->GetNumberOfPoints() && faces == expected;
+}
+} // namespace
+
 bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, const std::string& spaceGiven)
 {
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
@@ -510,57 +543,47 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, c
     setCoordinateSpace(tagged, space);
   }
   mesh = tagged;
-  vtkSmartPointer<vtkAlgorithm> writer;
-  vtkNew<vtkTriangleFilter> triangles; // STL holds triangles only
-  triangles->SetInputData(mesh);
+  // Every file is written whole or not at all (AtomicFile.h): the writers
+  // that can write to memory do, and the bytes go to the disk through
+  // writeFileAtomically; the others write a temporary file beside `path`.
+  const int before = errorCount();
+  const std::string writeFailed = "a write failed (no space left on the disk, or past the file size limit)";
+  auto failed = [&](vtkAlgorithm* writer) {
+    if (errorCount() == before && writer->GetErrorCode() == 0)
+      return false;
+    const unsigned long code = writer->GetErrorCode();
+    // Below FirstVTKErrorCode the code is the system's errno.
+    const std::string reason = code == vtkErrorCode::OutOfDiskSpaceError ? writeFailed
+      : code > 0 && code < vtkErrorCode::FirstVTKErrorCode ? std::strerror(static_cast<int>(code))
+      : code != 0 ? vtkErrorCode::GetStringFromErrorCode(code) : "";
+    error = "cannot write '" + path + "'" + (reason.empty() ? std::string() : ": " + reason);
+    return true;
+  };
+  std::string contents;
   if (ext == ".vtp")
   {
-    auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    w->SetFileName(path.c_str());
+    vtkNew<vtkXMLPolyDataWriter> w;
     w->SetInputData(mesh);
     w->SetDataModeToAppended();
     w->SetCompressorTypeToZLib();
-    writer = w;
+    w->WriteToOutputStringOn();
+    w->Update();
+    if (failed(w))
+      return false;
+    contents = w->GetOutputString();
   }
   else if (ext == ".vtk")
   {
-    auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
-    w->SetFileName(path.c_str());
+    vtkNew<vtkPolyDataWriter> w;
     w->SetInputData(mesh);
     w->SetFileTypeToBinary();
     w->SetHeader(header.c_str());
-    writer = w;
-  }
-  else if (ext == ".stl")
-  {
-    auto w = vtkSmartPointer<vtkSTLWriter>::New();
-    w->SetFileName(path.c_str());
-    w->SetInputConnection(triangles->GetOutputPort());
-    w->SetFileTypeToBinary();
-    w->SetHeader(header.c_str());
-    writer = w;
-  }
-  else if (ext == ".ply")
-  {
-    auto w = vtkSmartPointer<vtkPLYWriter>::New();
-    w->SetFileName(path.c_str());
-    w->SetInputData(mesh);
-    w->SetFileTypeToBinary();
-    if (!space.empty())
-      w->AddComment("SPACE=" + space);
-    if (mesh->GetPointData()->GetArray("DistanceColors"))
-    {
-      w->SetArrayName("DistanceColors");
-      w->SetColorModeToDefault();
-    }
-    writer = w;
-  }
-  else if (ext == ".obj")
-  {
-    auto w = vtkSmartPointer<vtkOBJWriter>::New();
-    w->SetFileName(path.c_str());
-    w->SetInputData(mesh);
-    writer = w;
+    w->WriteToOutputStringOn();
+    w->Update();
+    if (failed(w))
+      return false;
+    contents.assign(reinterpret_cast<const char*>(w->GetBinaryOutputString()),
+      static_cast<std::size_t>(w->GetOutputStringLength()));
   }
   else if (ext == ".gltf")
   {
@@ -580,31 +603,113 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, c
     building->SetBlock(0, copy);
     auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
     blocks->SetBlock(0, building);
-    auto w = vtkSmartPointer<vtkGLTFWriter>::New();
-    w->SetFileName(path.c_str());
+    vtkNew<vtkGLTFWriter> w;
     w->SetInputData(blocks);
     w->InlineDataOn();
     w->SaveNormalOn();
-    writer = w;
+    contents = w->WriteToString();
+    if (failed(w))
+      return false;
+  }
+  else if (ext == ".stl" || ext == ".ply" || ext == ".obj")
+  {
+    // Writers without a working memory output (vtkPLYWriter's gives nothing
+    // in VTK 9.1) write a temporary file beside `path`, which is checked
+    // before it replaces the file: vtkSTLWriter reports a failed write
+    // itself; vtkPLYWriter and vtkOBJWriter do not, so the PLY body is
+    // checked against its header and the OBJ's lines are counted.
+    const std::string temporary = temporaryPathBeside(path);
+    vtkSmartPointer<vtkWriter> writer;
+    if (ext == ".stl")
+    {
+      auto w = vtkSmartPointer<vtkSTLWriter>::New();
+      auto triangles = vtkSmartPointer<vtkTriangleFilter>::New(); // STL holds triangles only
+      triangles->SetInputData(mesh);
+      w->SetInputConnection(triangles->GetOutputPort());
+      w->SetFileName(temporary.c_str());
+      w->SetFileTypeToBinary();
+      w->SetHeader(header.c_str());
+      writer = w;
+    }
+    else if (ext == ".ply")
+    {
+      auto w = vtkSmartPointer<vtkPLYWriter>::New();
+      w->SetInputData(mesh);
+      w->SetFileName(temporary.c_str());
+      w->SetFileTypeToBinary();
+      if (!space.empty())
+        w->AddComment("SPACE=" + space);
+      if (mesh->GetPointData()->GetArray("DistanceColors"))
+      {
+        w->SetArrayName("DistanceColors");
+        w->SetColorModeToDefault();
+      }
+      writer = w;
+    }
+    else
+    {
+      auto w = vtkSmartPointer<vtkOBJWriter>::New();
+      w->SetInputData(mesh);
+      w->SetFileName(temporary.c_str());
+      writer = w;
+    }
+    writer->Update();
+    if (failed(writer) || !vtksys::SystemTools::FileExists(temporary, true))
+    {
+      vtksys::SystemTools::RemoveFile(temporary);
+      if (error.empty())
+        error = "cannot write '" + path + "'";
+      return false;
+    }
+    if (ext == ".ply" && !plyFileProblem(temporary).empty())
+    {
+      vtksys::SystemTools::RemoveFile(temporary);
+      error = "cannot write '" + path + "': " + writeFailed;
+      return false;
+    }
+    if (ext != ".obj")
+      return commitTemporaryFile(temporary, path, error);
+    std::ifstream in(temporary, std::ios::binary);
+    std::ostringstream body;
+    if (!space.empty())
+      body << "# " << header << "\n";
+    body << in.rdbuf();
+    in.close();
+    vtksys::SystemTools::RemoveFile(temporary);
+    contents = body.str();
+    if (!objIsComplete(contents, mesh))
+    {
+      error = "cannot write '" + path + "': " + writeFailed;
+      return false;
+    }
   }
   else
   {
     error = "cannot write '" + path + "': unknown extension (use " + meshExtensions() + ")";
     return false;
   }
+  return writeFileAtomically(path, contents, error);
+}
+
+bool writeScreenshot(vtkRenderWindow* window, const std::string& path, std::string& error)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->WriteToMemoryOn();
   const int before = errorCount();
-  writer->Update();
-  if (errorCount() != before || !vtksys::SystemTools::FileExists(path, true))
+  png->Write();
+  vtkUnsignedCharArray* bytes = png->GetResult();
+  if (errorCount() != before || !bytes || bytes->GetNumberOfValues() == 0)
   {
-    error = "cannot write '" + path + "'";
+    error = "cannot write '" + path + "': the window's picture could not be read";
     return false;
   }
-  if (ext == ".obj" && !space.empty() && !prependLine(path, "# " + header))
-  {
-    error = "cannot write '" + path + "' (its coordinate system comment)";
-    return false;
-  }
-  return true;
+  return writeFileAtomically(path,
+    std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues())),
+    error);
 }
 
 const char* meshExtensions()

@@ -14,6 +14,7 @@
 
 class vtkAlgorithm;
 class vtkPolyData;
+class vtkRenderWindow;
 
 namespace lkapp
 {
@@ -22,7 +23,8 @@ namespace lkapp
 /// (so that the lines a tool printed before a crash are not lost in a pipe),
 /// and a fatal signal (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) prints
 /// "TOOL: crashed (signal N, NAME)" and the call stack to standard error before
-/// the tool dies of that signal as it would have. Call first in main.
+/// the tool dies of that signal as it would have. A write beyond the file
+/// size limit (SIGXFSZ) fails and is reported instead. Call first in main.
 void installCrashReport(const char* tool);
 
 /// Routes VTK's messages: errors are collected and printed as "error: ...",
@@ -74,7 +76,12 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
 /// The coordinate system `space` ("LPS", "RAS"; when empty, the mesh's own
 /// field data "SPACE", if any) is written as 3D Slicer writes and reads it, in
 /// every format but glTF, so that Slicer places the model without asking.
+/// The file is written whole or not at all (AtomicFile.h): a failed write
+/// leaves an earlier file at `path` as it was.
 bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, const std::string& space = {});
+/// Renders `window` and writes its picture as a PNG file, whole or not at
+/// all (AtomicFile.h). False with `error`.
+bool writeScreenshot(vtkRenderWindow* window, const std::string& path, std::string& error);
 /// The coordinate system a mesh's field data "SPACE" names: "LPS", "RAS" or "".
 std::string coordinateSpace(vtkPolyData* mesh);
 /// Sets (or, with "", removes) a mesh's field data "SPACE", on a copy of its

@@ -1,6 +1,7 @@
 #include "planner/Planner.h"
 
 #include "common/AppSupport.h"
+#include "common/AtomicFile.h"
 #include "common/CutReport.h"
 #include "common/DistanceColourBar.h"
 #include "common/JsonFields.h"
@@ -26,7 +27,6 @@
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -43,7 +43,6 @@
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkMatrix4x4.h>
-#include <vtkWindowToImageFilter.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -53,7 +52,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -1212,25 +1210,14 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   if (hasSegment())
     texts.emplace_back("segment_transform.txt", segmentText());
   for (const auto& [name, text] : texts)
-  {
-    std::ofstream out(folder + "/" + name);
-    out << text;
-    out.close();
-    if (!out)
-    {
-      error = "cannot write '" + folder + "/" + name + "'";
+    if (!lkapp::writeFileAtomically(folder + "/" + name, text, error))
       return false;
-    }
-  }
   if (!saveSession(session, folder + "/session.json", error))
     return false;
   // The plan as the window shows it, for the surgeon's notes and the
   // patient's file.
-  if (!screenshot(folder + "/plan.png"))
-  {
-    error = "cannot write '" + folder + "/plan.png'";
+  if (!screenshot(folder + "/plan.png", error))
     return false;
-  }
   // An earlier export to the same folder can have left files this plan does
   // not make (more pieces, cut lines, a moved segment's transform): they go,
   // so that the folder holds this plan only.
@@ -1244,16 +1231,9 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   return lkapp::removeStaleExports(folder, pieces.size(), others, error);
 }
 
-bool Planner::screenshot(const std::string& path)
+bool Planner::screenshot(const std::string& path, std::string& error)
 {
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  vtkNew<vtkPNGWriter> w;
-  w->SetInputConnection(grab->GetOutputPort());
-  w->SetFileName(path.c_str());
-  w->Write();
-  return vtksys::SystemTools::FileExists(path);
+  return lkapp::writeScreenshot(window, path, error);
 }
 
 } // namespace lkplanner

@@ -306,7 +306,8 @@ public:
   /// left and this plan does not make (more pieces, say) are removed.
   bool exportPieces(const std::string& folder, std::string& error);
 
-  bool screenshot(const std::string& path);
+  /// The window's picture as a PNG file (whole or not at all). False with `error`.
+  bool screenshot(const std::string& path, std::string& error);
 };
 
 } // namespace lkplanner

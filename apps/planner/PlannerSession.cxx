@@ -1,10 +1,10 @@
 #include "planner/PlannerSession.h"
 
 #include "common/AppSupport.h"
+#include "common/AtomicFile.h"
 #include "common/JsonFields.h"
 
 #include <cmath>
-#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <sstream>
@@ -140,16 +140,11 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
   if (s.inputBoundsKnown)
     for (double v : s.inputBounds)
       root["input"]["bounds"].append(v);
-  std::ofstream out(path);
-  if (!out)
-  {
-    error = "cannot write '" + path + "'";
-    return false;
-  }
   Json::StreamWriterBuilder builder;
   builder["indentation"] = " ";
-  out << Json::writeString(builder, root) << "\n";
-  return static_cast<bool>(out);
+  // Whole or not at all: a session saved on a full disk must not leave a
+  // truncated file in place of the one saved before.
+  return lkapp::writeFileAtomically(path, Json::writeString(builder, root) + "\n", error);
 }
 
 namespace
