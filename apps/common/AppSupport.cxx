@@ -548,13 +548,24 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, c
   // writeFileAtomically; the others write a temporary file beside `path`.
   const int before = errorCount();
   const std::string writeFailed = "a write failed (no space left on the disk, or past the file size limit)";
+  // A writer's own error becomes part of this one (watch() before Update):
+  // printed as it came, it would name the temporary file.
+  std::string writerMessage;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&writerMessage);
+  onError->SetCallback([](vtkObject*, unsigned long, void* message, void* text) {
+    if (text)
+      *static_cast<std::string*>(message) = cleanMessage(static_cast<const char*>(text));
+  });
+  auto watch = [&](vtkAlgorithm* writer) { writer->AddObserver(vtkCommand::ErrorEvent, onError); };
   auto failed = [&](vtkAlgorithm* writer) {
-    if (errorCount() == before && writer->GetErrorCode() == 0)
-      return false;
     const unsigned long code = writer->GetErrorCode();
+    if (errorCount() == before && code == 0 && writerMessage.empty())
+      return false;
     // Below FirstVTKErrorCode the code is the system's errno.
     const std::string reason = code == vtkErrorCode::OutOfDiskSpaceError ? writeFailed
-      : code > 0 && code < vtkErrorCode::FirstVTKErrorCode ? std::strerror(static_cast<int>(code))
+      : code > 0 && code < vtkErrorCode::FirstVTKErrorCode ? std::string(std::strerror(static_cast<int>(code)))
+      : !writerMessage.empty() ? writerMessage
       : code != 0 ? vtkErrorCode::GetStringFromErrorCode(code) : "";
     error = "cannot write '" + path + "'" + (reason.empty() ? std::string() : ": " + reason);
     return true;
@@ -567,6 +578,7 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, c
     w->SetDataModeToAppended();
     w->SetCompressorTypeToZLib();
     w->WriteToOutputStringOn();
+    watch(w);
     w->Update();
     if (failed(w))
       return false;
@@ -579,6 +591,7 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, c
     w->SetFileTypeToBinary();
     w->SetHeader(header.c_str());
     w->WriteToOutputStringOn();
+    watch(w);
     w->Update();
     if (failed(w))
       return false;
@@ -607,6 +620,7 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, c
     w->SetInputData(blocks);
     w->InlineDataOn();
     w->SaveNormalOn();
+    watch(w);
     contents = w->WriteToString();
     if (failed(w))
       return false;
@@ -653,6 +667,7 @@ bool writeMesh(vtkPolyData* mesh, const std::string& path, std::string& error, c
       w->SetFileName(temporary.c_str());
       writer = w;
     }
+    watch(writer);
     writer->Update();
     if (failed(writer) || !vtksys::SystemTools::FileExists(temporary, true))
     {
