@@ -1,6 +1,6 @@
 #include "AppSupport.h"
 #include "AtomicFile.h"
-#include "PlyFileCheck.h"
+#include "MeshFileCheck.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -381,6 +381,13 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   }
   else if (ext == ".stl")
   {
+    // vtkSTLReader reads what a truncated binary file still holds, silently.
+    const std::string problem = stlFileProblem(path);
+    if (!problem.empty())
+    {
+      error = "cannot read '" + path + "': the file is corrupt (" + problem + ")";
+      return nullptr;
+    }
     auto r = vtkSmartPointer<vtkSTLReader>::New();
     r->SetFileName(path.c_str());
     r->MergingOn();
@@ -411,6 +418,11 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
     return nullptr;
   }
   const int before = errorCount();
+  // The legacy reader only warns of data shorter than its header declares
+  // ("Error reading binary data!", from a function without an object, so
+  // after it has been printed) and goes on with part of the mesh: such a
+  // warning is an error here.
+  const int warningsBefore = warningCount();
   try
   {
     reader->Update();
@@ -420,6 +432,15 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
     // vtkPLYReader sizes its arrays from the header: a corrupt count throws.
     error = "cannot read '" + path + "': the file is corrupt (" + e.what() + ")";
     return nullptr;
+  }
+  for (int w = warningsBefore; w < warningCount(); ++w)
+  {
+    const std::string warning = g_warnings[static_cast<std::size_t>(w)];
+    if (ext == ".vtk" && warning.rfind("Error reading", 0) == 0)
+    {
+      error = "cannot read '" + path + "': the file is corrupt: its data ends before its header says (VTK: " + warning + ")";
+      return nullptr;
+    }
   }
   auto* pd = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (errorCount() != before || !pd || pd->GetNumberOfPoints() == 0)

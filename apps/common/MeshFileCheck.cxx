@@ -1,4 +1,4 @@
-#include "PlyFileCheck.h"
+#include "MeshFileCheck.h"
 
 #include <cstdint>
 #include <cstdlib>
@@ -205,6 +205,31 @@ std::string plyFileProblem(const std::string& path)
         at += static_cast<std::size_t>(n) * p.size;
       }
   }
+  return {};
+}
+
+std::string stlFileProblem(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return "it cannot be opened";
+  char start[512];
+  in.read(start, sizeof(start));
+  const std::streamsize got = in.gcount();
+  if (std::memchr(start, '\0', static_cast<std::size_t>(got)) == nullptr)
+    return {}; // ASCII (a binary file has NUL bytes in its header or its triangles)
+  in.clear();
+  in.seekg(0, std::ios::end);
+  const auto size = static_cast<unsigned long long>(in.tellg());
+  if (size < 84)
+    return "it has " + std::to_string(size) + " bytes, fewer than a binary STL header's 84";
+  const auto* b = reinterpret_cast<const unsigned char*>(start);
+  const unsigned long long triangles = static_cast<unsigned long long>(b[80]) | (static_cast<unsigned long long>(b[81]) << 8) |
+    (static_cast<unsigned long long>(b[82]) << 16) | (static_cast<unsigned long long>(b[83]) << 24);
+  const unsigned long long needed = 84 + 50 * triangles;
+  if (size < needed)
+    return "it declares " + std::to_string(triangles) + " triangles (" + std::to_string(needed) + " bytes) but has " +
+      std::to_string(size) + " bytes: the file is truncated";
   return {};
 }
 
