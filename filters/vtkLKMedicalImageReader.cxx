@@ -68,12 +68,24 @@ std::string trim(const std::string& s)
 
 /// Text header fields "key: value" (NRRD) or "key = value" (MetaImage), up to
 /// the first empty line (NRRD) or the ElementDataFile line (MetaImage).
-std::map<std::string, std::string> readHeader(const std::string& path, char separator)
+/// `headerBytes`, when given, receives the header's length in bytes: where
+/// data attached to the header starts.
+std::map<std::string, std::string> readHeader(const std::string& path, char separator, std::size_t* headerBytes = nullptr)
 {
   std::map<std::string, std::string> fields;
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::size_t bytes = 0;
+  struct Report
+  {
+    std::size_t& bytes;
+    std::size_t* out;
+    ~Report()
+    {
+      if (out)
+        *out = bytes;
+    }
+  } report{ bytes, headerBytes };
   while (std::getline(in, line) && bytes < (1u << 20))
   {
     bytes += line.size() + 1;
@@ -131,6 +143,96 @@ std::vector<double> numbers(const std::string& text)
   return v;
 }
 
+/// Bytes of one value of an NRRD "type" or a MetaImage "ElementType"; 0 for
+/// a type this check does not know.
+std::size_t valueBytes(const std::string& typeName)
+{
+  const std::string t = lower(typeName);
+  static const std::map<std::string, std::size_t> sizes{ { "signed char", 1 }, { "int8", 1 }, { "int8_t", 1 },
+    { "uchar", 1 }, { "unsigned char", 1 }, { "uint8", 1 }, { "uint8_t", 1 }, { "short", 2 }, { "short int", 2 },
+    { "signed short", 2 }, { "signed short int", 2 }, { "int16", 2 }, { "int16_t", 2 }, { "ushort", 2 },
+    { "unsigned short", 2 }, { "unsigned short int", 2 }, { "uint16", 2 }, { "uint16_t", 2 }, { "int", 4 },
+    { "signed int", 4 }, { "int32", 4 }, { "int32_t", 4 }, { "uint", 4 }, { "unsigned int", 4 }, { "uint32", 4 },
+    { "uint32_t", 4 }, { "longlong", 8 }, { "long long", 8 }, { "long long int", 8 }, { "signed long long", 8 },
+    { "signed long long int", 8 }, { "int64", 8 }, { "int64_t", 8 }, { "ulonglong", 8 }, { "unsigned long long", 8 },
+    { "unsigned long long int", 8 }, { "uint64", 8 }, { "uint64_t", 8 }, { "float", 4 }, { "double", 8 },
+    { "met_char", 1 }, { "met_uchar", 1 }, { "met_short", 2 }, { "met_ushort", 2 }, { "met_int", 4 },
+    { "met_uint", 4 }, { "met_long_long", 8 }, { "met_ulong_long", 8 }, { "met_float", 4 }, { "met_double", 8 } };
+  const auto it = sizes.find(t);
+  return it == sizes.end() ? 0 : it->second;
+}
+
+/// Empty, or why the uncompressed voxel data of an NRRD (`nrrd`) or
+/// MetaImage file is shorter than its header asks. vtkNrrdReader only warns
+/// of such a file and vtkMetaImageReader only prints to the terminal; both
+/// return a volume whose missing voxels are zero or stale. Compressed data
+/// (which their readers check), data in several files and headers this check
+/// does not understand are left to the readers.
+std::string truncatedRawData(const std::string& path, bool nrrd)
+{
+  std::size_t headerBytes = 0;
+  const auto h = readHeader(path, nrrd ? ':' : '=', &headerBytes);
+  auto field = [&](std::initializer_list<const char*> keys) {
+    for (const char* k : keys)
+      if (h.count(k))
+        return h.at(k);
+    return std::string();
+  };
+  const std::string encoding = lower(field({ "encoding" }));
+  if (nrrd ? encoding != "raw" : lower(field({ "compresseddata" })) == "true")
+    return {};
+  if (nrrd && !field({ "line skip", "lineskip" }).empty() && numbers(field({ "line skip", "lineskip" })) != std::vector<double>{ 0 })
+    return {};
+  const std::size_t bytesPerValue = valueBytes(field({ nrrd ? "type" : "elementtype" }));
+  const std::vector<double> sizes = numbers(field({ nrrd ? "sizes" : "dimsize" }));
+  if (bytesPerValue == 0 || sizes.empty())
+    return {};
+  double needed = static_cast<double>(bytesPerValue);
+  for (double n : sizes)
+    needed *= n;
+  if (!nrrd)
+  {
+    const auto channels = numbers(field({ "elementnumberofchannels" }));
+    needed *= channels.size() == 1 && channels[0] >= 1 ? channels[0] : 1.0;
+  }
+  // Where the data is: after the header, or in a file the header names.
+  std::string dataFile = field(nrrd ? std::initializer_list<const char*>{ "data file", "datafile" }
+                                    : std::initializer_list<const char*>{ "elementdatafile" });
+  double offset = 0;
+  if (dataFile.empty() || (!nrrd && lower(dataFile) == "local"))
+  {
+    if (nrrd && endsWith(lower(path), ".nhdr"))
+      return {};
+    dataFile = path;
+    offset = static_cast<double>(headerBytes);
+  }
+  else
+  {
+    if (dataFile.find_first_of(" %") != std::string::npos || lower(dataFile) == "list")
+      return {}; // several files
+    const std::string folder = vtksys::SystemTools::GetFilenamePath(path);
+    if (dataFile[0] != '/' && !folder.empty())
+      dataFile = folder + "/" + dataFile;
+  }
+  const std::vector<double> skip = numbers(field({ nrrd ? "byte skip" : "headersize", nrrd ? "byteskip" : "headersize" }));
+  if (!skip.empty())
+  {
+    if (skip[0] < 0)
+      return {}; // "-1": the data is at the end of the file, however long the rest
+    offset += skip[0];
+  }
+  if (!vtksys::SystemTools::FileExists(dataFile, true))
+    return {}; // the reader names the missing file
+  const double available = static_cast<double>(vtksys::SystemTools::FileLength(dataFile)) - offset;
+  if (available >= needed)
+    return {};
+  std::ostringstream why;
+  why.precision(15);
+  why << "its voxel data has " << std::max(available, 0.0) << " bytes where the header asks for " << needed
+      << ": the file is truncated";
+  return why.str();
+}
+
 /// Builds data->patient from unit axis directions, spacing and origin; returns
 /// the spacings (the lengths of the given axis vectors).
 void matrixFromAxes(const std::vector<double>& axes, const std::vector<double>& origin, bool ras,
@@ -154,6 +256,24 @@ void matrixFromAxes(const std::vector<double>& axes, const std::vector<double>& 
   }
 }
 
+/// The text of a VTK error event's message, without the "ERROR: In FILE,
+/// line N" line and the "vtkClass (0x...): " before it.
+std::string messageText(const std::string& event)
+{
+  std::string m = event;
+  if (m.rfind("ERROR: In", 0) == 0)
+  {
+    const auto nl = m.find('\n');
+    m = nl == std::string::npos ? std::string() : m.substr(nl + 1);
+  }
+  const auto colon = m.find("): ");
+  if (colon != std::string::npos && colon < 80 && m.rfind("vtk", 0) == 0)
+    m = m.substr(colon + 3);
+  while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+    m.pop_back();
+  return trim(m);
+}
+
 struct ErrorFlag
 {
   bool failed = false;
@@ -167,7 +287,7 @@ struct ErrorFlag
       self->failed = true;
       if (call)
       {
-        self->message = trim(static_cast<const char*>(call));
+        self->message = messageText(static_cast<const char*>(call));
       }
     });
     o->AddObserver(vtkCommand::ErrorEvent, command);
@@ -178,8 +298,9 @@ struct ErrorFlag
 /// when the header describes a volume (at least 2 voxels along each axis;
 /// vtkNrrdReader crashes reading a 2-D raw file) that fits in this machine's
 /// memory (a corrupt or hostile header asks for terabytes, and the allocation
-/// ended the program). `message` says why not.
-bool readImage(vtkImageReader2* reader, ErrorFlag& flag, std::string& message)
+/// ended the program) and when `dataProblem` (the file's own check, such as
+/// truncatedRawData) is empty. `message` says why not.
+bool readImage(vtkImageReader2* reader, ErrorFlag& flag, std::string& message, const std::string& dataProblem = {})
 {
   reader->UpdateInformation();
   if (flag.failed)
@@ -218,6 +339,11 @@ bool readImage(vtkImageReader2* reader, ErrorFlag& flag, std::string& message)
   if (lkvtk::exceedsMemory(bytes, tooLarge))
   {
     message = "the header describes " + size.str() + " voxels (" + tooLarge + ")";
+    return false;
+  }
+  if (!dataProblem.empty())
+  {
+    message = dataProblem;
     return false;
   }
   try
@@ -306,7 +432,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
     std::string message;
-    if (!readImage(reader, flag, message))
+    if (!readImage(reader, flag, message, truncatedRawData(path, true)))
     {
       vtkErrorMacro("Cannot read NRRD file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
@@ -348,7 +474,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
     std::string message;
-    if (!readImage(reader, flag, message))
+    if (!readImage(reader, flag, message, truncatedRawData(path, false)))
     {
       vtkErrorMacro("Cannot read MetaImage file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;

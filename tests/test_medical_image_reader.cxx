@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <tuple>
 
 namespace
 {
@@ -557,6 +558,60 @@ TEST(MedicalImageReader, MissingAndCorruptFilesAreClearErrors)
   reader->Update();
   EXPECT_GE(rec.errors, 1);
   EXPECT_NE(rec.messages.find("Cannot read NRRD"), std::string::npos) << rec.messages;
+  EXPECT_EQ(rec.messages.find("vtkNrrdReader.cxx"), std::string::npos) << "vtkNrrdReader's own header in the message: " << rec.messages;
+
+  // A NIfTI file cut short.
+  {
+    std::ifstream in(lktest::sampleData("cthead/cthead_hu_approx.nii.gz"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(dir + "/cut.nii.gz", std::ios::binary) << bytes.substr(0, bytes.size() / 10);
+  }
+  rec.errors = 0;
+  rec.messages.clear();
+  reader->SetFileName((dir + "/cut.nii.gz").c_str());
+  reader->Update();
+  EXPECT_GE(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("Cannot read NIfTI file '" + dir + "/cut.nii.gz': NIFTI file is truncated"), std::string::npos)
+    << rec.messages;
+
+  // Uncompressed voxels cut short: vtkNrrdReader only warned and
+  // vtkMetaImageReader only printed to the terminal, and both returned a
+  // volume with zeros where the data was missing. Attached and detached.
+  const std::string half(500, '\x7f');
+  std::ofstream(dir + "/raw.nrrd", std::ios::binary)
+    << "NRRD0004\ntype: unsigned char\ndimension: 3\nsizes: 10 10 10\nencoding: raw\n\n" << half;
+  std::ofstream(dir + "/raw.mha", std::ios::binary)
+    << "ObjectType = Image\nNDims = 3\nDimSize = 10 10 10\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n" << half;
+  std::ofstream(dir + "/voxels.raw", std::ios::binary) << half << half;
+  std::ofstream(dir + "/detached.nhdr", std::ios::binary)
+    << "NRRD0004\ntype: short\ndimension: 3\nsizes: 10 10 10\nencoding: raw\nendian: little\ndata file: voxels.raw\n\n";
+  std::ofstream(dir + "/detached.mhd", std::ios::binary)
+    << "ObjectType = Image\nNDims = 3\nDimSize = 10 10 10\nElementType = MET_SHORT\nElementDataFile = voxels.raw\n";
+  for (const auto& [file, kind, has, needs] : { std::make_tuple("raw.nrrd", "NRRD", 500, 1000),
+         std::make_tuple("raw.mha", "MetaImage", 500, 1000), std::make_tuple("detached.nhdr", "NRRD", 1000, 2000),
+         std::make_tuple("detached.mhd", "MetaImage", 1000, 2000) })
+  {
+    rec.errors = 0;
+    rec.messages.clear();
+    reader->SetFileName((dir + "/" + file).c_str());
+    reader->Update();
+    EXPECT_EQ(rec.errors, 1) << file;
+    EXPECT_NE(rec.messages.find(std::string("Cannot read ") + kind + " file '" + dir + "/" + file + "': its voxel data has " +
+                std::to_string(has) + " bytes where the header asks for " + std::to_string(needs) +
+                ": the file is truncated"),
+      std::string::npos)
+      << rec.messages;
+  }
+  // The same headers with all their voxels read.
+  std::ofstream(dir + "/voxels.raw", std::ios::binary) << half << half << half << half;
+  for (const char* file : { "detached.nhdr", "detached.mhd" })
+  {
+    rec.errors = 0;
+    reader->SetFileName((dir + "/" + file).c_str());
+    reader->Update();
+    EXPECT_EQ(rec.errors, 0) << file << ": " << rec.messages;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 1000) << file;
+  }
 
   // A DICOM series with one file truncated inside its pixel data.
   const std::string series = tempFolder("corrupt-dicom");
