@@ -248,6 +248,21 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   {
     report.minGap = report.maxGap = sliceSpacing > 0.0 ? sliceSpacing : 1.0;
   }
+  report.typicalGap = report.minGap;
+  if (slices.size() >= 2)
+  {
+    std::vector<double> gaps;
+    for (std::size_t k = 1; k < slices.size(); ++k)
+      gaps.push_back(slices[k].z - slices[k - 1].z);
+    std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+    report.typicalGap = gaps[gaps.size() / 2];
+    for (std::size_t k = 1; k < slices.size(); ++k)
+    {
+      const double gap = slices[k].z - slices[k - 1].z;
+      if (gap > 1.5 * report.typicalGap)
+        report.wideGaps.push_back({ slices[k - 1].ipp, slices[k].ipp, gap, static_cast<int>(k) });
+    }
+  }
   const V3 origin = slices.front().ipp;
   if (slices.size() >= 2)
   {

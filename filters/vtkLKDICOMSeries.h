@@ -6,6 +6,7 @@
 /// from every slice's own ImagePositionPatient, so that gantry tilt (a shear)
 /// and variable slice spacing are resolved by resampling rather than ignored.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,18 @@ struct DICOMGeometryReport
   double gantryTiltDegrees = 0.0; ///< angle between slice normal and slice stacking direction
   double minGap = 0.0;            ///< smallest distance between consecutive slices (mm)
   double maxGap = 0.0;            ///< largest distance between consecutive slices (mm)
+  double typicalGap = 0.0;        ///< the median distance between consecutive slices (mm)
   int inputSlices = 0;
+  /// A gap more than 1.5 times the typical one (a slice lost in transfer, or
+  /// a series with variable spacing): the ImagePositionPatient of the slices
+  /// on either side (mm), and the gap along the slice normal.
+  struct WideGap
+  {
+    std::array<double, 3> before, after;
+    double gap = 0.0;
+    int afterIndex = 0; ///< the slice after the gap, in position order
+  };
+  std::vector<WideGap> wideGaps; ///< in slice order
 };
 
 /// Lists the series found in the folder (scanning one level deep), largest first.

@@ -664,6 +664,61 @@ bool vtkLKMedicalImageReader::ReadVolume()
       vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
       return false;
     }
+    if (!report.wideGaps.empty())
+    {
+      // 3D Slicer warns of unequal spacing too: a slice lost on the way from
+      // the scanner leaves a gap the resampling fills by interpolation.
+      auto fixed = [](double v, int digits) {
+        std::ostringstream os;
+        os.setf(std::ios::fixed);
+        os.precision(digits);
+        os << v;
+        return os.str();
+      };
+      auto at = [&](const std::array<double, 3>& p) {
+        return "(" + fixed(p[0], 1) + ", " + fixed(p[1], 1) + ", " + fixed(p[2], 1) + ")";
+      };
+      // Consecutive wide gaps are one run (a stretch scanned at a coarser
+      // spacing); a single one between regular slices looks like a lost slice.
+      const std::size_t n = report.wideGaps.size();
+      std::vector<std::string> runs;
+      int missing = 0;
+      for (std::size_t g = 0; g < n;)
+      {
+        std::size_t end = g + 1;
+        while (end < n && report.wideGaps[end].afterIndex == report.wideGaps[end - 1].afterIndex + 1)
+          ++end;
+        double lo = report.wideGaps[g].gap, hi = lo;
+        for (std::size_t k = g; k < end; ++k)
+        {
+          const double gap = report.wideGaps[k].gap;
+          lo = std::min(lo, gap);
+          hi = std::max(hi, gap);
+          const double ratio = gap / report.typicalGap;
+          const long whole = std::lround(ratio);
+          if (std::abs(ratio - static_cast<double>(whole)) < 0.1)
+            missing += static_cast<int>(whole) - 1; // a gap of k typical ones: k - 1 slices
+        }
+        const std::string sizes = fixed(lo, 2) + (hi - lo >= 0.005 ? " to " + fixed(hi, 2) : std::string()) + " mm";
+        runs.push_back(end - g == 1
+            ? sizes + " between the slices at " + at(report.wideGaps[g].before) + " and " + at(report.wideGaps[g].after)
+            : std::to_string(end - g) + " gaps of " + sizes + " from the slice at " + at(report.wideGaps[g].before) +
+              " to the one at " + at(report.wideGaps[end - 1].after));
+        g = end;
+      }
+      std::string listed;
+      for (std::size_t r = 0; r < runs.size() && r < 3; ++r)
+        listed += (r ? "; " : "") + runs[r];
+      if (runs.size() > 3)
+        listed += "; and " + std::to_string(runs.size() - 3) + " more places";
+      vtkWarningMacro(<< "The slices are not evenly spaced: most lie " << fixed(report.typicalGap, 2) << " mm apart, but "
+                      << n << (n == 1 ? " gap is" : " gaps are") << " wider (" << listed << ")"
+                      << (missing > 0 ? ", as if " + std::to_string(missing) +
+                              (missing == 1 ? " slice were missing" : " slices were missing")
+                                      : std::string())
+                      << ". The volume is interpolated across them: check that the series is complete before "
+                         "planning on it.");
+    }
     this->GantryTilt = report.gantryTiltDegrees;
     this->MinimumSliceGap = report.minGap;
     this->MaximumSliceGap = report.maxGap;

@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <cstdio>
 #include <fstream>
 #include <tuple>
 
@@ -476,8 +477,10 @@ TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
   EXPECT_EQ(rec.errors, 0) << rec.messages;
   EXPECT_EQ(reader->GetNumberOfSeries(), 2);
   EXPECT_EQ(reader->GetNumberOfInputSlices(), 28);
-  EXPECT_EQ(rec.warnings, 1);
+  // The folder's two series, and the GE series' own variable spacing.
+  EXPECT_EQ(rec.warnings, 2) << rec.warningMessages;
   EXPECT_NE(rec.warningMessages.find("2 series"), std::string::npos);
+  EXPECT_NE(rec.warningMessages.find("The slices are not evenly spaced"), std::string::npos);
 
   reader->SetSeriesIndex(1);
   reader->Update();
@@ -496,6 +499,47 @@ TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
   reader->Update();
   EXPECT_EQ(rec.errors, 0) << rec.messages;
   EXPECT_EQ(reader->GetNumberOfInputSlices(), 5);
+}
+
+TEST(MedicalImageReader, ASeriesWithAMissingSliceIsWarned)
+{
+  // Eight slices 3 mm apart written by vtkDICOM; then the fifth is lost.
+  const std::string dir = tempFolder("missing-slice");
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(32, 32, 8);
+  img->SetSpacing(1.0, 1.0, 3.0);
+  img->AllocateScalars(VTK_SHORT, 1);
+  std::fill_n(static_cast<short*>(img->GetScalarPointer()), 32 * 32 * 8, short(400));
+  vtkNew<vtkDICOMCTGenerator> generator;
+  vtkNew<vtkDICOMWriter> writer;
+  writer->SetInputData(img);
+  writer->SetGenerator(generator);
+  writer->SetFilePrefix(dir.c_str());
+  writer->SetFilePattern("%s/slice_%03d.dcm");
+  writer->Write();
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(dir.c_str());
+  reader->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(rec.warnings, 0) << "the complete series: " << rec.warningMessages;
+
+  std::remove((dir + "/slice_004.dcm").c_str());
+  reader->Modified();
+  reader->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 7);
+  EXPECT_EQ(rec.warnings, 1);
+  EXPECT_NE(rec.warningMessages.find("The slices are not evenly spaced: most lie 3.00 mm apart, but 1 gap is wider "
+                                     "(6.00 mm between the slices at ("),
+    std::string::npos)
+    << rec.warningMessages;
+  EXPECT_NE(rec.warningMessages.find("as if 1 slice were missing. The volume is interpolated across them"),
+    std::string::npos)
+    << rec.warningMessages;
+  // Still read, at the typical spacing, across the gap.
+  EXPECT_EQ(reader->GetOutput()->GetDimensions()[2], 8);
 }
 
 TEST(MedicalImageReader, FolderWithoutDicomIsAClearError)
