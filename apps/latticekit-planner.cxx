@@ -200,6 +200,7 @@ int main(int argc, char* argv[])
     bone->SetCloseAtBorder(used.closed);
     bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
   }
+  const int warningsBeforeLoad = lkapp::warningCount();
   surface->Update();
   if (lkapp::errorCount() > 0 || surface->GetOutput()->GetNumberOfPolys() == 0)
   {
@@ -211,7 +212,13 @@ int main(int argc, char* argv[])
   planner.input = vtksys::SystemTools::CollapseFullPath(input);
   planner.checkReplayedInput(!replay.empty());
   if (!ignoredFields.empty())
-    planner.replayWarnings += (planner.replayWarnings.empty() ? "" : "\n") + ignoredFields;
+    planner.inputWarnings += (planner.inputWarnings.empty() ? "" : "\n") + ignoredFields;
+  // What reading the scan and making its surface warned of (a slice missing,
+  // several series, no orientation) is shown in the window too, where the
+  // surgeon looks, and not only in the terminal.
+  const std::string loadWarnings = lkapp::warningsSince(warningsBeforeLoad);
+  if (!loadWarnings.empty())
+    planner.inputWarnings += (planner.inputWarnings.empty() ? "" : "\n") + loadWarnings;
   if (mesh) // the file's coordinate system (3D Slicer's tag), which the export names again
     lkapp::setCoordinateSpace(planner.bone, lkapp::coordinateSpace(mesh));
   if (!mesh)

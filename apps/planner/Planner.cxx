@@ -624,7 +624,7 @@ void Planner::rebuild()
   sceneActors.clear();
   scalarBar->SetVisibility(false);
   computeCut();
-  message = replayWarnings;
+  message = inputWarnings;
   if (!cut.message.empty())
     addLine(message, cut.message);
   cutFailed = cut.failed;
@@ -1046,12 +1046,12 @@ void Planner::checkReplayedInput(bool replayed)
     // The same file and settings give the same bone to the last digit; 1 %
     // of its size is another scan (or another surface of it).
     const bool otherBone = session.inputBoundsKnown && shift > 0.01 * diagonal;
-    replayWarnings.clear();
+    inputWarnings.clear();
     if (otherFile || otherBone)
     {
       char mm[64];
       std::snprintf(mm, sizeof mm, "%.1f", shift);
-      replayWarnings = "the session was drawn on " +
+      inputWarnings = "the session was drawn on " +
         (otherFile ? "'" + session.inputFile + "', not on '" + file + "'" : std::string("another surface")) +
         (otherBone ? std::string(" (the bones' bounds differ by up to ") + mm + " mm)" : "") +
         ": check that this is the same patient's scan before using the plan";
@@ -1128,7 +1128,7 @@ std::string Planner::planText()
   // What the cut said (why it failed, a failed stroke) belongs to the plan
   // even when a later key's answer took its place in the window's message.
   std::vector<std::string> said;
-  for (const std::string* from : { &replayWarnings, &cut.message, &message })
+  for (const std::string* from : { &inputWarnings, &cut.message, &message })
   {
     std::istringstream lines(*from);
     for (std::string m; std::getline(lines, m);)

@@ -94,9 +94,12 @@ public:
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   std::string message; ///< a problem: shown, and reported as "message:" in batch runs
-  /// What a replay found: a session drawn on another input
-  /// (checkReplayedInput), fields it ignored. Kept at the top of every message.
-  std::string replayWarnings;
+  /// What the input and a replay warn of: the scan's reader and the bone
+  /// surface (slices missing or unevenly spaced, several series, no patient
+  /// orientation), a session drawn on another input (checkReplayedInput),
+  /// fields a replay ignored. Kept at the top of every message and in the
+  /// exported plan.
+  std::string inputWarnings;
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment
@@ -289,7 +292,7 @@ public:
   /// segment's move, and the messages. No timings.
   std::string planText();
   /// Compares the input a replayed session names (file, bone bounds) with
-  /// this one's, sets replayWarnings when they differ, and records this input
+  /// this one's, sets inputWarnings when they differ, and records this input
   /// in the session (saved and exported with it).
   void checkReplayedInput(bool replayed);
 
