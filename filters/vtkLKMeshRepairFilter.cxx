@@ -140,16 +140,19 @@ int vtkLKMeshRepairFilter::RequestData(
   lk::RepairReport report;
   try
   {
-    report = lk::repairToManifold(mesh);
+    report = lk::repairToManifold(mesh, [this](double f) {
+      this->UpdateProgress(0.1 + 0.8 * f);
+      return !this->GetAbortExecute();
+    });
   }
   catch (const std::exception& e)
   {
     vtkErrorMacro("Repair failed: " << e.what());
     return 0;
   }
-  this->UpdateProgress(0.9);
   if (lkvtk::stopRequested(this, { output }))
     return 1;
+  this->UpdateProgress(0.9);
   output->ShallowCopy(lkvtk::fromTriangleMesh(mesh));
   carryAttributes(input, triangulate->GetOutput(), output);
   vtkFieldData* fd = output->GetFieldData();

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace
 {
 lk::TriangleMesh translated(lk::TriangleMesh m, const lk::Vec3& d)
@@ -157,6 +159,36 @@ TEST(ManifoldRepair, ZeroAreaTriangleIsCollapsed)
   }
   EXPECT_NEAR(lk::surfaceArea(m), 2.0, 1e-12);
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
+}
+
+TEST(ManifoldRepair, ProgressRisesAndCanStopTheRepair)
+{
+  // Every step reports, in order; a stop leaves the mesh as it was.
+  const lk::TriangleMesh soup = merged(lktest::icosphere(2, 1.0), translated(lktest::icosphere(1, 1.0), { 5, 0, 0 }));
+  lk::TriangleMesh m = soup;
+  std::vector<double> seen;
+  const lk::RepairReport r = lk::repairToManifold(m, [&](double f) {
+    seen.push_back(f);
+    return true;
+  });
+  EXPECT_FALSE(r.stopped);
+  ASSERT_EQ(seen.size(), 6u);
+  for (std::size_t i = 1; i < seen.size(); ++i)
+    EXPECT_GT(seen[i], seen[i - 1]);
+  EXPECT_GT(seen.front(), 0.0);
+  EXPECT_LT(seen.back(), 1.0);
+  EXPECT_EQ(r.components, 2u);
+
+  for (int stopAt = 0; stopAt < 6; ++stopAt)
+  {
+    lk::TriangleMesh n = soup;
+    int calls = 0;
+    const lk::RepairReport s = lk::repairToManifold(n, [&](double) { return calls++ < stopAt; });
+    EXPECT_TRUE(s.stopped) << stopAt;
+    EXPECT_EQ(calls, stopAt + 1);
+    EXPECT_EQ(n.triangles, soup.triangles) << stopAt;
+    EXPECT_EQ(n.points.size(), soup.points.size()) << stopAt;
+  }
 }
 
 TEST(ManifoldRepair, BadInputThrows)
