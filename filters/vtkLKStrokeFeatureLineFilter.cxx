@@ -2,6 +2,7 @@
 #include "vtkLKAbort.h"
 
 #include "latticekit/StrokeFeatureLine.h"
+#include "vtkLKMeshPointIds.h"
 #include "vtkLKPolyDataConversion.h"
 #include "vtkLKSurfaceAttributes.h"
 
@@ -381,14 +382,17 @@ int vtkLKStrokeFeatureLineFilter::CarryLine(vtkPolyData* line, vtkPolyData* carr
     std::vector<std::int64_t> path;
     for (vtkIdType k = 0; k < n; ++k)
     {
-      const auto v = static_cast<std::int64_t>(ids->GetComponent(pts[k], 0));
-      if (v < 0 || v >= this->InputPoints)
+      // The rule every line input follows: a whole number naming a point (a
+      // cast read 3.5 as 3, and a NaN as anything).
+      const vtkIdType v = lkvtk::meshPointIdOf(ids, pts[k], this->InputPoints);
+      if (v < 0)
       {
-        vtkErrorMacro("CarryLine: MeshPointId " << v << " is not a point of the filter's input (" << this->InputPoints
-                                               << " points).");
+        vtkErrorMacro("CarryLine: MeshPointId " << ids->GetComponent(pts[k], 0)
+                                                << " is not a point of the filter's input (" << this->InputPoints
+                                                << " points).");
         return 0;
       }
-      path.push_back(v);
+      path.push_back(static_cast<std::int64_t>(v));
     }
     paths.push_back(std::move(path));
   }

@@ -485,6 +485,21 @@ class PipelineTest(unittest.TestCase):
                          ring_lines + second.GetFeatureLineOutput().GetNumberOfPoints() - 1)
         self.assertGreater(out.GetNumberOfPoints(), first.GetOutput().GetNumberOfPoints())
 
+        # An id that is not a whole number is refused, as by every other line
+        # input (it was read as the point below it).
+        from vtkmodules.vtkCommonCore import vtkDoubleArray
+        halfway = vtkPolyData()
+        halfway.DeepCopy(first.GetFeatureLineOutput())
+        ids = vtkDoubleArray()
+        ids.DeepCopy(halfway.GetPointData().GetArray("MeshPointId"))
+        ids.SetName("MeshPointId")
+        ids.SetValue(3, ids.GetValue(3) + 0.5)
+        halfway.GetPointData().AddArray(ids)
+        carried = vtkPolyData()
+        self.assertEqual(second.CarryLine(halfway, carried), 0)
+        self.assertEqual(len(errors), 1)
+        errors.clear()
+
         carried = vtkPolyData()
         self.assertEqual(second.CarryLine(first.GetFeatureLineOutput(), carried), 1)
         self.assertGreater(carried.GetNumberOfPoints(), first.GetFeatureLineOutput().GetNumberOfPoints())
