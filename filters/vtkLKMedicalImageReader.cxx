@@ -61,8 +61,8 @@ bool isVolumeFileName(const std::string& name)
 
 std::string trim(const std::string& s)
 {
-  const auto b = s.find_first_not_of(" \t\r");
-  const auto e = s.find_last_not_of(" \t\r");
+  const auto b = s.find_first_not_of(" \t\r\n");
+  const auto e = s.find_last_not_of(" \t\r\n");
   return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
@@ -76,16 +76,6 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::size_t bytes = 0;
-  struct Report
-  {
-    std::size_t& bytes;
-    std::size_t* out;
-    ~Report()
-    {
-      if (out)
-        *out = bytes;
-    }
-  } report{ bytes, headerBytes };
   while (std::getline(in, line) && bytes < (1u << 20))
   {
     bytes += line.size() + 1;
@@ -111,6 +101,8 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
       break;
     }
   }
+  if (headerBytes)
+    *headerBytes = bytes;
   return fields;
 }
 
@@ -163,15 +155,15 @@ std::size_t valueBytes(const std::string& typeName)
 }
 
 /// Empty, or why the uncompressed voxel data of an NRRD (`nrrd`) or
-/// MetaImage file is shorter than its header asks. vtkNrrdReader only warns
+/// MetaImage file is shorter than its header `h` (readHeader, `headerBytes`
+/// long) asks. vtkNrrdReader only warns
 /// of such a file and vtkMetaImageReader only prints to the terminal; both
 /// return a volume whose missing voxels are zero or stale. Compressed data
 /// (which their readers check), data in several files and headers this check
 /// does not understand are left to the readers.
-std::string truncatedRawData(const std::string& path, bool nrrd)
+std::string truncatedRawData(
+  const std::string& path, const std::map<std::string, std::string>& h, std::size_t headerBytes, bool nrrd)
 {
-  std::size_t headerBytes = 0;
-  const auto h = readHeader(path, nrrd ? ':' : '=', &headerBytes);
   auto field = [&](std::initializer_list<const char*> keys) {
     for (const char* k : keys)
       if (h.count(k))
@@ -269,9 +261,62 @@ std::string messageText(const std::string& event)
   const auto colon = m.find("): ");
   if (colon != std::string::npos && colon < 80 && m.rfind("vtk", 0) == 0)
     m = m.substr(colon + 3);
-  while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
-    m.pop_back();
   return trim(m);
+}
+
+/// The warning for a DICOM series whose slices are not evenly spaced (3D
+/// Slicer warns of unequal spacing too): a slice lost on the way from the
+/// scanner leaves a gap the resampling fills by interpolation.
+std::string wideGapsWarning(const lkvtk::DICOMGeometryReport& report)
+{
+  auto fixed = [](double v, int digits) {
+    std::ostringstream os;
+    os.setf(std::ios::fixed);
+    os.precision(digits);
+    os << v;
+    return os.str();
+  };
+  auto at = [&](const std::array<double, 3>& p) {
+    return "(" + fixed(p[0], 1) + ", " + fixed(p[1], 1) + ", " + fixed(p[2], 1) + ")";
+  };
+  // Consecutive wide gaps are one run (a stretch scanned at a coarser
+  // spacing); a single one between regular slices looks like a lost slice.
+  const std::size_t n = report.wideGaps.size();
+  std::vector<std::string> runs;
+  int missing = 0;
+  for (std::size_t g = 0; g < n;)
+  {
+    std::size_t end = g + 1;
+    while (end < n && report.wideGaps[end].afterIndex == report.wideGaps[end - 1].afterIndex + 1)
+      ++end;
+    double lo = report.wideGaps[g].gap, hi = lo;
+    for (std::size_t k = g; k < end; ++k)
+    {
+      const double gap = report.wideGaps[k].gap;
+      lo = std::min(lo, gap);
+      hi = std::max(hi, gap);
+      const double ratio = gap / report.typicalGap;
+      const long whole = std::lround(ratio);
+      if (std::abs(ratio - static_cast<double>(whole)) < 0.1)
+        missing += static_cast<int>(whole) - 1; // a gap of k typical ones: k - 1 slices
+    }
+    const std::string sizes = fixed(lo, 2) + (hi - lo >= 0.005 ? " to " + fixed(hi, 2) : std::string()) + " mm";
+    runs.push_back(end - g == 1
+        ? sizes + " between the slices at " + at(report.wideGaps[g].before) + " and " + at(report.wideGaps[g].after)
+        : std::to_string(end - g) + " gaps of " + sizes + " from the slice at " + at(report.wideGaps[g].before) +
+          " to the one at " + at(report.wideGaps[end - 1].after));
+    g = end;
+  }
+  std::string listed;
+  for (std::size_t r = 0; r < runs.size() && r < 3; ++r)
+    listed += (r ? "; " : "") + runs[r];
+  if (runs.size() > 3)
+    listed += "; and " + std::to_string(runs.size() - 3) + " more places";
+  return "The slices are not evenly spaced: most lie " + fixed(report.typicalGap, 2) + " mm apart, but " +
+    std::to_string(n) + (n == 1 ? " gap is" : " gaps are") + " wider (" + listed + ")" +
+    (missing > 0 ? ", as if " + std::to_string(missing) + (missing == 1 ? " slice were missing" : " slices were missing")
+                 : std::string()) +
+    ". The volume is interpolated across them: check that the series is complete before planning on it.";
 }
 
 struct ErrorFlag
@@ -431,14 +476,15 @@ bool vtkLKMedicalImageReader::ReadVolume()
     }
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
+    std::size_t headerBytes = 0;
+    const auto header = readHeader(path, ':', &headerBytes);
     std::string message;
-    if (!readImage(reader, flag, message, truncatedRawData(path, true)))
+    if (!readImage(reader, flag, message, truncatedRawData(path, header, headerBytes, true)))
     {
       vtkErrorMacro("Cannot read NRRD file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
     }
     image = reader->GetOutput();
-    const auto header = readHeader(path, ':');
     auto dirs = header.find("space directions");
     if (dirs != header.end() && numbers(dirs->second).size() >= 9)
     {
@@ -473,15 +519,16 @@ bool vtkLKMedicalImageReader::ReadVolume()
     vtkNew<vtkMetaImageReader> reader;
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
+    std::size_t headerBytes = 0;
+    const auto header = readHeader(path, '=', &headerBytes);
     std::string message;
-    if (!readImage(reader, flag, message, truncatedRawData(path, false)))
+    if (!readImage(reader, flag, message, truncatedRawData(path, header, headerBytes, false)))
     {
       vtkErrorMacro("Cannot read MetaImage file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
     }
     image = reader->GetOutput();
     image->GetSpacing(spacing);
-    const auto header = readHeader(path, '=');
     std::vector<double> axes = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
     for (const char* key : { "transformmatrix", "orientation", "rotation" })
     {
@@ -665,60 +712,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
       return false;
     }
     if (!report.wideGaps.empty())
-    {
-      // 3D Slicer warns of unequal spacing too: a slice lost on the way from
-      // the scanner leaves a gap the resampling fills by interpolation.
-      auto fixed = [](double v, int digits) {
-        std::ostringstream os;
-        os.setf(std::ios::fixed);
-        os.precision(digits);
-        os << v;
-        return os.str();
-      };
-      auto at = [&](const std::array<double, 3>& p) {
-        return "(" + fixed(p[0], 1) + ", " + fixed(p[1], 1) + ", " + fixed(p[2], 1) + ")";
-      };
-      // Consecutive wide gaps are one run (a stretch scanned at a coarser
-      // spacing); a single one between regular slices looks like a lost slice.
-      const std::size_t n = report.wideGaps.size();
-      std::vector<std::string> runs;
-      int missing = 0;
-      for (std::size_t g = 0; g < n;)
-      {
-        std::size_t end = g + 1;
-        while (end < n && report.wideGaps[end].afterIndex == report.wideGaps[end - 1].afterIndex + 1)
-          ++end;
-        double lo = report.wideGaps[g].gap, hi = lo;
-        for (std::size_t k = g; k < end; ++k)
-        {
-          const double gap = report.wideGaps[k].gap;
-          lo = std::min(lo, gap);
-          hi = std::max(hi, gap);
-          const double ratio = gap / report.typicalGap;
-          const long whole = std::lround(ratio);
-          if (std::abs(ratio - static_cast<double>(whole)) < 0.1)
-            missing += static_cast<int>(whole) - 1; // a gap of k typical ones: k - 1 slices
-        }
-        const std::string sizes = fixed(lo, 2) + (hi - lo >= 0.005 ? " to " + fixed(hi, 2) : std::string()) + " mm";
-        runs.push_back(end - g == 1
-            ? sizes + " between the slices at " + at(report.wideGaps[g].before) + " and " + at(report.wideGaps[g].after)
-            : std::to_string(end - g) + " gaps of " + sizes + " from the slice at " + at(report.wideGaps[g].before) +
-              " to the one at " + at(report.wideGaps[end - 1].after));
-        g = end;
-      }
-      std::string listed;
-      for (std::size_t r = 0; r < runs.size() && r < 3; ++r)
-        listed += (r ? "; " : "") + runs[r];
-      if (runs.size() > 3)
-        listed += "; and " + std::to_string(runs.size() - 3) + " more places";
-      vtkWarningMacro(<< "The slices are not evenly spaced: most lie " << fixed(report.typicalGap, 2) << " mm apart, but "
-                      << n << (n == 1 ? " gap is" : " gaps are") << " wider (" << listed << ")"
-                      << (missing > 0 ? ", as if " + std::to_string(missing) +
-                              (missing == 1 ? " slice were missing" : " slices were missing")
-                                      : std::string())
-                      << ". The volume is interpolated across them: check that the series is complete before "
-                         "planning on it.");
-    }
+      vtkWarningMacro(<< wideGapsWarning(report));
     this->GantryTilt = report.gantryTiltDegrees;
     this->MinimumSliceGap = report.minGap;
     this->MaximumSliceGap = report.maxGap;
