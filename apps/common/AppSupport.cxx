@@ -366,6 +366,14 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
     return nullptr;
   }
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
+  // What VTK's readers do not check themselves (MeshFileCheck.h): vtkPLYReader
+  // crashes on a truncated file, vtkSTLReader reads part of one silently.
+  const std::string problem = ext == ".ply" ? plyFileProblem(path) : ext == ".stl" ? stlFileProblem(path) : "";
+  if (!problem.empty())
+  {
+    error = "cannot read '" + path + "': the file is corrupt (" + problem + ")";
+    return nullptr;
+  }
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".vtp")
   {
@@ -381,13 +389,6 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   }
   else if (ext == ".stl")
   {
-    // vtkSTLReader reads what a truncated binary file still holds, silently.
-    const std::string problem = stlFileProblem(path);
-    if (!problem.empty())
-    {
-      error = "cannot read '" + path + "': the file is corrupt (" + problem + ")";
-      return nullptr;
-    }
     auto r = vtkSmartPointer<vtkSTLReader>::New();
     r->SetFileName(path.c_str());
     r->MergingOn();
@@ -395,13 +396,6 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   }
   else if (ext == ".ply")
   {
-    // vtkPLYReader crashes on a truncated file: its body is checked first.
-    const std::string problem = plyFileProblem(path);
-    if (!problem.empty())
-    {
-      error = "cannot read '" + path + "': the file is corrupt (" + problem + ")";
-      return nullptr;
-    }
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
@@ -433,10 +427,10 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
     error = "cannot read '" + path + "': the file is corrupt (" + e.what() + ")";
     return nullptr;
   }
-  for (int w = warningsBefore; w < warningCount(); ++w)
+  for (int w = warningsBefore; ext == ".vtk" && w < warningCount(); ++w)
   {
-    const std::string warning = g_warnings[static_cast<std::size_t>(w)];
-    if (ext == ".vtk" && warning.rfind("Error reading", 0) == 0)
+    const std::string& warning = g_warnings[static_cast<std::size_t>(w)];
+    if (warning.rfind("Error reading", 0) == 0)
     {
       error = "cannot read '" + path + "': the file is corrupt: its data ends before its header says (VTK: " + warning + ")";
       return nullptr;
