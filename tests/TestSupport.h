@@ -1,13 +1,14 @@
 #pragma once
 /// \file TestSupport.h
 /// Shared helpers of the filter tests: the sample data folder, conversion to
-/// the core mesh type, and a recorder of VTK errors.
+/// the core mesh type, and recorders of VTK errors and progress.
 
 #include "latticekit/TriangleMesh.h"
 #include "vtkLKPolyDataConversion.h"
 
 #include <gtest/gtest.h>
 
+#include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
@@ -16,6 +17,7 @@
 #include <vtkPolyData.h>
 
 #include <string>
+#include <vector>
 
 #ifndef LATTICEKIT_SAMPLE_DATA
 #error "LATTICEKIT_SAMPLE_DATA must be defined"
@@ -67,6 +69,31 @@ public:
   int warnings = 0;
   std::string messages;
   std::string warningMessages;
+
+private:
+  vtkNew<vtkCallbackCommand> command_;
+};
+
+/// Records the ProgressEvents of one filter and, once the progress reaches
+/// `stopAt`, asks the filter to stop (SetAbortExecute), as a user's cancel
+/// button would.
+class ProgressRecorder
+{
+public:
+  explicit ProgressRecorder(vtkAlgorithm* filter)
+  {
+    command_->SetClientData(this);
+    command_->SetCallback([](vtkObject* caller, unsigned long, void* cd, void* data) {
+      auto* self = static_cast<ProgressRecorder*>(cd);
+      const double p = *static_cast<double*>(data);
+      self->progress.push_back(p);
+      if (p >= self->stopAt)
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    });
+    filter->AddObserver(vtkCommand::ProgressEvent, command_);
+  }
+  std::vector<double> progress;
+  double stopAt = 2.0; ///< above 1: never
 
 private:
   vtkNew<vtkCallbackCommand> command_;

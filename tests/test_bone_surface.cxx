@@ -4,7 +4,6 @@
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKMeshRepairFilter.h"
 
-#include <vtkCallbackCommand.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkExtractVOI.h>
@@ -471,21 +470,7 @@ TEST(MeshRepairFilter, ProgressMovesThroughTheRepairAndAStopInItEmptiesTheOutput
   sphere->SetPhiResolution(12);
   vtkNew<vtkLKMeshRepairFilter> repair;
   repair->SetInputConnection(sphere->GetOutputPort());
-  struct Seen
-  {
-    std::vector<double> progress;
-    double stopAt = 2.0;
-  } seen;
-  vtkNew<vtkCallbackCommand> onProgress;
-  onProgress->SetClientData(&seen);
-  onProgress->SetCallback([](vtkObject* caller, unsigned long, void* cd, void* data) {
-    auto* s = static_cast<Seen*>(cd);
-    const double p = *static_cast<double*>(data);
-    s->progress.push_back(p);
-    if (p >= s->stopAt)
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-  });
-  repair->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  lktest::ProgressRecorder seen(repair);
   repair->Update();
   const auto inside = std::count_if(
     seen.progress.begin(), seen.progress.end(), [](double p) { return p > 0.1 && p < 0.9; });

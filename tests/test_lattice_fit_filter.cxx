@@ -85,16 +85,12 @@ TEST(LatticeFitFilter, MandibleLatticeWithErrorAndVertexMap)
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(bone);
   fit->SetTargetNumberOfVertices(2000);
-  int progressEvents = 0;
-  vtkNew<vtkCallbackCommand> onProgress;
-  onProgress->SetClientData(&progressEvents);
-  onProgress->SetCallback([](vtkObject*, unsigned long, void* cd, void*) { ++*static_cast<int*>(cd); });
-  fit->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  lktest::ProgressRecorder seen(fit);
   fit->Update();
   vtkPolyData* lattice = fit->GetOutput();
   EXPECT_EQ(lattice->GetNumberOfPoints(), 2000);
   EXPECT_EQ(lattice->GetNumberOfPolys(), 2 * 2000 - 4); // closed, genus 0
-  EXPECT_GT(progressEvents, 20);
+  EXPECT_GT(seen.progress.size(), 20u);
   const double mean = field(lattice, "Hausdorff_MeanPercent"), max = field(lattice, "Hausdorff_MaxPercent");
   std::printf("mandible, 2000 vertices: Metro max %.4f %%, mean %.4f %%\n", max, mean);
   EXPECT_GT(mean, 0.0);
@@ -542,21 +538,7 @@ TEST(LatticeFitFilter, TheSurfaceMetroAndMapReportProgressAndStop)
   fit->SetTargetNumberOfVertices(300);
   fit->SetRefinement(true);
   fit->SetRefinementIterations(2);
-  struct Seen
-  {
-    std::vector<double> progress;
-    double stopAt = 2.0;
-  } seen;
-  vtkNew<vtkCallbackCommand> onProgress;
-  onProgress->SetClientData(&seen);
-  onProgress->SetCallback([](vtkObject* caller, unsigned long, void* cd, void* data) {
-    auto* s = static_cast<Seen*>(cd);
-    const double p = *static_cast<double*>(data);
-    s->progress.push_back(p);
-    if (p >= s->stopAt)
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-  });
-  fit->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  lktest::ProgressRecorder seen(fit);
   fit->Update();
   ASSERT_EQ(fit->GetOutput()->GetNumberOfPoints(), 300);
   std::size_t late = 0;
@@ -592,13 +574,8 @@ TEST(LatticeFitFilter, ErrorBoundFindsAFewVerticesWithinIt)
   fit->SetInputConnection(sphere->GetOutputPort());
   fit->SetMaximumError(0.5);
   // The progress never runs back, however many fits the search takes.
-  std::vector<double> progress;
-  vtkNew<vtkCallbackCommand> onProgress;
-  onProgress->SetClientData(&progress);
-  onProgress->SetCallback([](vtkObject*, unsigned long, void* cd, void* data) {
-    static_cast<std::vector<double>*>(cd)->push_back(*static_cast<double*>(data));
-  });
-  fit->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  lktest::ProgressRecorder seen(fit);
+  const std::vector<double>& progress = seen.progress;
   fit->Update();
   ASSERT_GT(progress.size(), 10u);
   for (std::size_t i = 1; i < progress.size(); ++i)

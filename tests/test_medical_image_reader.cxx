@@ -51,6 +51,30 @@ void copyGESeries(const std::string& dir)
   }
 }
 
+/// A synthetic CT series written by vtkDICOM into `dir` with the file name
+/// pattern `pattern` (e.g. "%s/slice_%03d.dcm"): `slices` slices of size x
+/// size voxels of 1 mm, `gap` mm apart, every voxel `value`.
+void writeSyntheticSeries(const std::string& dir, const char* pattern, int size, int slices, double gap, short value,
+  const char* description = nullptr)
+{
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(size, size, slices);
+  img->SetSpacing(1.0, 1.0, gap);
+  img->AllocateScalars(VTK_SHORT, 1);
+  std::fill_n(static_cast<short*>(img->GetScalarPointer()), size * size * slices, value);
+  vtkNew<vtkDICOMCTGenerator> generator;
+  vtkNew<vtkDICOMMetaData> meta;
+  if (description)
+    meta->Set(DC::SeriesDescription, description);
+  vtkNew<vtkDICOMWriter> writer;
+  writer->SetInputData(img);
+  writer->SetGenerator(generator);
+  writer->SetMetaData(meta);
+  writer->SetFilePrefix(dir.c_str());
+  writer->SetFilePattern(pattern);
+  writer->Write();
+}
+
 /// The output's "SPACE" field data (3D Slicer's tag), or "".
 std::string spaceTag(vtkImageData* image)
 {
@@ -454,21 +478,7 @@ TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
   const std::string dir = tempFolder("two-series");
   copyGESeries(dir);
   // A second, synthetic CT series of 5 slices written by vtkDICOM.
-  vtkNew<vtkImageData> img;
-  img->SetDimensions(64, 64, 5);
-  img->SetSpacing(1.0, 1.0, 3.0);
-  img->AllocateScalars(VTK_SHORT, 1);
-  std::fill_n(static_cast<short*>(img->GetScalarPointer()), 64 * 64 * 5, short(100));
-  vtkNew<vtkDICOMCTGenerator> generator;
-  vtkNew<vtkDICOMMetaData> meta;
-  meta->Set(DC::SeriesDescription, "synthetic second series");
-  vtkNew<vtkDICOMWriter> writer;
-  writer->SetInputData(img);
-  writer->SetGenerator(generator);
-  writer->SetMetaData(meta);
-  writer->SetFilePrefix(dir.c_str());
-  writer->SetFilePattern("%s/synthetic_%03d.dcm");
-  writer->Write();
+  writeSyntheticSeries(dir, "%s/synthetic_%03d.dcm", 64, 5, 3.0, 100, "synthetic second series");
 
   vtkNew<vtkLKMedicalImageReader> reader;
   lktest::ErrorRecorder rec(reader);
@@ -505,18 +515,7 @@ TEST(MedicalImageReader, ASeriesWithAMissingSliceIsWarned)
 {
   // Eight slices 3 mm apart written by vtkDICOM; then the fifth is lost.
   const std::string dir = tempFolder("missing-slice");
-  vtkNew<vtkImageData> img;
-  img->SetDimensions(32, 32, 8);
-  img->SetSpacing(1.0, 1.0, 3.0);
-  img->AllocateScalars(VTK_SHORT, 1);
-  std::fill_n(static_cast<short*>(img->GetScalarPointer()), 32 * 32 * 8, short(400));
-  vtkNew<vtkDICOMCTGenerator> generator;
-  vtkNew<vtkDICOMWriter> writer;
-  writer->SetInputData(img);
-  writer->SetGenerator(generator);
-  writer->SetFilePrefix(dir.c_str());
-  writer->SetFilePattern("%s/slice_%03d.dcm");
-  writer->Write();
+  writeSyntheticSeries(dir, "%s/slice_%03d.dcm", 32, 8, 3.0, 400);
 
   vtkNew<vtkLKMedicalImageReader> reader;
   lktest::ErrorRecorder rec(reader);
