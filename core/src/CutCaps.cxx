@@ -2,6 +2,7 @@
 
 #include "latticekit/FaceCrossings.h"
 
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
@@ -248,10 +249,14 @@ Cap makeCap(const std::vector<Vec3>& loop, const LoopPlane& plane)
   // refined. Neither is faired: fairing (a bi-Laplacian solve with cotangent
   // weights) folded the caps: 118 and 90 pairs of crossing triangles on the
   // main job's pieces, 134 and 149 on a wavy loop on a sphere; 0 now.
-  PMP::triangulate_and_refine_hole(m, border, std::back_inserter(faces), std::back_inserter(newVertices),
-    CGAL::parameters::density_control_factor(0.7)
-      .use_2d_constrained_delaunay_triangulation(plane.flat)
-      .threshold_distance(plane.tolerance));
+  //
+  // This is CGAL's triangulate_and_refine_hole in two steps: its refine
+  // requires a triangle mesh, so the polygon face goes before the refinement.
+  PMP::triangulate_hole(m, border, std::back_inserter(faces),
+    CGAL::parameters::use_2d_constrained_delaunay_triangulation(plane.flat).threshold_distance(plane.tolerance));
+  CGAL::Euler::remove_face(m.halfedge(f), m);
+  PMP::refine(m, std::vector<Mesh::Face_index>(faces), std::back_inserter(faces), std::back_inserter(newVertices),
+    CGAL::parameters::density_control_factor(0.7));
   return capOf(m, vs, newVertices, faces);
 }
 
