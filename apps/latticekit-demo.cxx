@@ -677,7 +677,8 @@ int main(int argc, char* argv[])
     std::cerr << "error: the plan's latticeVertices (" << plan.vertices << ") is too few for the cut: the "
               << pieces.size() << " pieces keep " << lockedVertices
               << " vertices of their cut lines, and need at least as many more; give latticeVertices "
-              << 2 * lockedVertices << " or more (the pieces are written to " << folder << ")\n";
+              << 2 * lockedVertices << " or more (in the plan, or --vertices " << 2 * lockedVertices
+              << "; the pieces are written to " << folder << ")\n";
     return 1;
   }
   vtkSmartPointer<vtkPolyData> surfaceWhole, surfaceCut, surfaceQuads;
