@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 #include <vtkObject.h>
 #include <vtkPolyData.h>
+#include <vtkWeakPointer.h>
 
 #include <string>
 #include <vector>
@@ -62,9 +63,22 @@ public:
         self->warningMessages += text;
       }
     });
-    object->AddObserver(vtkCommand::ErrorEvent, command_);
-    object->AddObserver(vtkCommand::WarningEvent, command_);
+    object_ = object;
+    errorTag_ = object->AddObserver(vtkCommand::ErrorEvent, command_);
+    warningTag_ = object->AddObserver(vtkCommand::WarningEvent, command_);
   }
+  /// Stops observing: an object that outlives the recorder (one made in an
+  /// inner scope) must not call back into it.
+  ~ErrorRecorder()
+  {
+    if (object_)
+    {
+      object_->RemoveObserver(errorTag_);
+      object_->RemoveObserver(warningTag_);
+    }
+  }
+  ErrorRecorder(const ErrorRecorder&) = delete;
+  ErrorRecorder& operator=(const ErrorRecorder&) = delete;
   int errors = 0;
   int warnings = 0;
   std::string messages;
@@ -72,6 +86,9 @@ public:
 
 private:
   vtkNew<vtkCallbackCommand> command_;
+  vtkWeakPointer<vtkObject> object_;
+  unsigned long errorTag_ = 0;
+  unsigned long warningTag_ = 0;
 };
 
 /// Records the ProgressEvents of one filter and, once the progress reaches
@@ -90,13 +107,23 @@ public:
       if (p >= self->stopAt)
         static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
     });
-    filter->AddObserver(vtkCommand::ProgressEvent, command_);
+    filter_ = filter;
+    tag_ = filter->AddObserver(vtkCommand::ProgressEvent, command_);
   }
+  ~ProgressRecorder()
+  {
+    if (filter_)
+      filter_->RemoveObserver(tag_);
+  }
+  ProgressRecorder(const ProgressRecorder&) = delete;
+  ProgressRecorder& operator=(const ProgressRecorder&) = delete;
   std::vector<double> progress;
   double stopAt = 2.0; ///< above 1: never
 
 private:
   vtkNew<vtkCallbackCommand> command_;
+  vtkWeakPointer<vtkAlgorithm> filter_;
+  unsigned long tag_ = 0;
 };
 
 } // namespace lktest
