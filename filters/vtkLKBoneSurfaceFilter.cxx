@@ -267,7 +267,11 @@ int vtkLKBoneSurfaceFilter::RequestData(
   {
     vtkErrorMacro("Iso value " << this->EffectiveIsoValue << " is outside the volume's range ["
                                << range[0] << ", " << range[1] << "]" << (this->Cropping ? " within the crop box" : "")
-                               << ": no surface.");
+                               << ": no surface."
+                               << (range[0] == range[1] && !this->Cropping
+                                      ? std::string(" Every voxel holds the same value: the scan is blank, or its "
+                                                    "pixel data could not be decoded (a damaged compressed file).")
+                                      : std::string()));
     return 0;
   }
 

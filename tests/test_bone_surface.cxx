@@ -377,7 +377,24 @@ TEST(BoneSurface, IsoValueOutsideTheDataRangeIsAClearError)
   const Surface s = extract(cthead, 5000.0);
   EXPECT_EQ(s.errors, 1);
   EXPECT_NE(s.messages.find("outside the volume's range"), std::string::npos) << s.messages;
+  EXPECT_EQ(s.messages.find("same value"), std::string::npos) << s.messages;
   EXPECT_EQ(s.mesh->GetNumberOfCells(), 0);
+
+  // A volume of one value (air everywhere: a series whose compressed pixel
+  // data decoded to nothing) says so, beside the range.
+  vtkNew<vtkImageData> blank;
+  blank->SetDimensions(8, 8, 8);
+  blank->AllocateScalars(VTK_SHORT, 1);
+  blank->GetPointData()->GetScalars()->Fill(-1024);
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  lktest::ErrorRecorder rec(bone);
+  bone->SetInputData(blank);
+  bone->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("range [-1024, -1024]: no surface. Every voxel holds the same value: the scan is "
+                              "blank, or its pixel data could not be decoded"),
+    std::string::npos)
+    << rec.messages;
 }
 
 TEST(BoneSurface, EmptyAndFlatVolumesAreClearErrors)
