@@ -64,11 +64,32 @@ void usage(std::ostream& os)
         "                       coordinates, pieces, volumes, cut lines and planes), a picture\n"
         "                       of it (plan.png) and the session that replays it\n"
         "                       (session.json), and exit\n"
-        "  --session OUT        where 'w' saves the session (default planner_session.json)\n"
+        "  --session OUT        where 'w' saves the session (default planner_session.json); quitting\n"
+        "                       with changes not saved keeps them in OUT's name with -unsaved\n"
         "  --events LOG         play an event stream (vtkInteractorEventRecorder's format: mouse\n"
         "                       strokes, keys) through the window, then report (and\n"
         "                       --screenshot, --export) and exit\n"
         "  -h, --help           this help\n";
+}
+
+/// At quitting: a session changed since it was last replayed, saved or
+/// exported is written beside the session file, so that closing the window
+/// (or an Escape meant for something else) loses no plan. False if it
+/// cannot be written.
+bool keepUnsavedSession(const Planner& planner, const std::string& sessionPath)
+{
+  if (sessionText(planner.session) == planner.savedSession)
+    return true;
+  const std::string path = unsavedSessionPath(sessionPath);
+  std::string error;
+  if (!saveSession(planner.session, path, error))
+  {
+    std::cerr << "error: the session had changes that were not saved, and they could not be kept: " << error << "\n";
+    return false;
+  }
+  std::cout << "unsaved: the session had changes that were not saved ('w' saves them); they are kept in " << path
+            << ": open them again with --replay " << path << "\n";
+  return true;
 }
 } // namespace
 
@@ -275,6 +296,7 @@ int main(int argc, char* argv[])
   planner.window->SetDisplayId(display);
   planner.setup();
   planner.rebuild();
+  planner.savedSession = sessionText(planner.session);
   planner.renderer->ResetCamera();
   const bool batch = !shot.empty() || !exportFolder.empty() || !events.empty();
   if (!events.empty())
@@ -332,8 +354,12 @@ int main(int argc, char* argv[])
       interactor->SetEventInformation(x, y, ctrl, shift, code, repeat, keySym == "0" ? nullptr : keySym.c_str());
       interactor->InvokeEvent(id, nullptr);
       ++played;
+      if (style->quitRequested)
+        break; // the window would close here
     }
     std::printf("events: %d\n", played);
+    if (style->quitRequested && !keepUnsavedSession(planner, sessionOut))
+      return 1;
   }
   if (batch)
   {
@@ -362,6 +388,6 @@ int main(int argc, char* argv[])
   interactor->SetInteractorStyle(style);
   interactor->SetRenderWindow(planner.window);
   planner.window->Render();
-  interactor->Start();
-  return 0;
+  interactor->Start(); // until 'q', Escape or the window's close button
+  return keepUnsavedSession(planner, sessionOut) ? 0 : 1;
 }

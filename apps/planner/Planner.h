@@ -100,6 +100,9 @@ public:
   /// fields a replay ignored. Kept at the top of every message and in the
   /// exported plan.
   std::string inputWarnings;
+  /// The session as it was last replayed, saved ('w') or exported ('e'):
+  /// quitting with another keeps that one (keepUnsavedSession).
+  std::string savedSession;
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment

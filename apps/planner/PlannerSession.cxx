@@ -68,7 +68,7 @@ int modeOf(const std::string& name)
   return vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
 }
 
-bool saveSession(const Session& s, const std::string& path, std::string& error)
+std::string sessionText(const Session& s)
 {
   Json::Value root;
   for (const Stroke& st : s.strokes)
@@ -142,9 +142,23 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
       root["input"]["bounds"].append(v);
   Json::StreamWriterBuilder builder;
   builder["indentation"] = " ";
+  return Json::writeString(builder, root) + "\n";
+}
+
+bool saveSession(const Session& s, const std::string& path, std::string& error)
+{
   // Whole or not at all: a session saved on a full disk must not leave a
   // truncated file in place of the one saved before.
-  return lkapp::writeFileAtomically(path, Json::writeString(builder, root) + "\n", error);
+  return lkapp::writeFileAtomically(path, sessionText(s), error);
+}
+
+std::string unsavedSessionPath(const std::string& sessionPath)
+{
+  const std::string::size_type slash = sessionPath.find_last_of('/');
+  const std::string::size_type dot = sessionPath.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1 || dot == 0)
+    return sessionPath + "-unsaved.json";
+  return sessionPath.substr(0, dot) + "-unsaved" + sessionPath.substr(dot);
 }
 
 namespace

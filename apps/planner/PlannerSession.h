@@ -135,8 +135,15 @@ double bumpFalloff(double radius);
 const char* modeName(int mode);
 int modeOf(const std::string& name);
 
+/// The JSON text of `s`, as saveSession writes it.
+std::string sessionText(const Session& s);
+
 /// Writes `s` to `path` as JSON; false with `error` if it cannot.
 bool saveSession(const Session& s, const std::string& path, std::string& error);
+
+/// Where a session left unsaved at quitting is kept: `sessionPath` with
+/// "-unsaved" before its extension (planner_session-unsaved.json).
+std::string unsavedSessionPath(const std::string& sessionPath);
 
 /// Reads a session, every field's kind checked (a wrong one is refused with
 /// a message naming it and `path`, not an exception). Fields it does not

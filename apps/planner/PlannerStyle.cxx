@@ -538,7 +538,10 @@ void PlannerStyle::OnChar()
   else if (key == "w")
   {
     if (saveSession(s, sessionPath, error))
+    {
       planner->notice = "saved " + vtksys::SystemTools::GetFilenameName(sessionPath);
+      planner->savedSession = sessionText(s);
+    }
     else
       planner->message = error;
     rebuild = false;
@@ -546,13 +549,17 @@ void PlannerStyle::OnChar()
   else if (key == "e")
   {
     if (planner->exportPieces(exportFolder, error))
+    {
       planner->notice = "exported to " + exportFolder;
+      planner->savedSession = sessionText(planner->session); // the export holds session.json
+    }
     else
       planner->message = error;
     rebuild = false;
   }
   else if (key == "q" || key == "Escape")
   {
+    quitRequested = true;
     this->Interactor->TerminateApp();
     return;
   }

@@ -31,6 +31,7 @@ public:
   vtkTypeMacro(PlannerStyle, vtkInteractorStyleTrackballCamera);
   Planner* planner = nullptr;
   std::string sessionPath = "planner_session.json", exportFolder = "planner-pieces";
+  bool quitRequested = false; ///< 'q' or Escape was pressed
   bool pressed = false;
   vtkNew<vtkCellPicker> picker;
   /// Cell locators for the pickers on large surfaces (a whole skull).
