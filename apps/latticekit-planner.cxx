@@ -64,8 +64,9 @@ void usage(std::ostream& os)
         "                       coordinates, pieces, volumes, cut lines and planes), a picture\n"
         "                       of it (plan.png) and the session that replays it\n"
         "                       (session.json), and exit\n"
-        "  --session OUT        where 'w' saves the session (default planner_session.json); quitting\n"
-        "                       with changes not saved keeps them in OUT's name with -unsaved\n"
+        "  --session OUT        where 'w' saves the session (default planner_session.json);\n"
+        "                       changes not saved are kept after every step in OUT's name with\n"
+        "                       -unsaved (planner_session-unsaved.json)\n"
         "  --events LOG         play an event stream (vtkInteractorEventRecorder's format: mouse\n"
         "                       strokes, keys) through the window, then report (and\n"
         "                       --screenshot, --export) and exit\n"
@@ -73,16 +74,17 @@ void usage(std::ostream& os)
 }
 
 /// At quitting: a session changed since it was last replayed, saved or
-/// exported is written beside the session file, so that closing the window
-/// (or an Escape meant for something else) loses no plan. False if it
-/// cannot be written.
-bool keepUnsavedSession(const Planner& planner, const std::string& sessionPath)
+/// exported is kept beside the session file (Planner::keepUnsaved, which
+/// also runs after every step), so that closing the window (or an Escape
+/// meant for something else) loses no plan; says where. False if it cannot
+/// be written.
+bool keepUnsavedSession(Planner& planner)
 {
   if (sessionText(planner.session) == planner.savedSession)
     return true;
-  const std::string path = unsavedSessionPath(sessionPath);
+  const std::string& path = planner.unsavedPath;
   std::string error;
-  if (!saveSession(planner.session, path, error))
+  if (!planner.keepUnsaved(error))
   {
     std::cerr << "error: the session had changes that were not saved, and they could not be kept: " << error << "\n";
     return false;
@@ -297,6 +299,8 @@ int main(int argc, char* argv[])
   planner.setup();
   planner.rebuild();
   planner.savedSession = sessionText(planner.session);
+  if (!events.empty() || (shot.empty() && exportFolder.empty())) // a user's session, live or played
+    planner.unsavedPath = unsavedSessionPath(sessionOut);
   planner.renderer->ResetCamera();
   const bool batch = !shot.empty() || !exportFolder.empty() || !events.empty();
   if (!events.empty())
@@ -358,7 +362,7 @@ int main(int argc, char* argv[])
         break; // the window would close here
     }
     std::printf("events: %d\n", played);
-    if (style->quitRequested && !keepUnsavedSession(planner, sessionOut))
+    if (style->quitRequested && !keepUnsavedSession(planner))
       return 1;
   }
   if (batch)
@@ -389,5 +393,5 @@ int main(int argc, char* argv[])
   interactor->SetRenderWindow(planner.window);
   planner.window->Render();
   interactor->Start(); // until 'q', Escape or the window's close button
-  return keepUnsavedSession(planner, sessionOut) ? 0 : 1;
+  return keepUnsavedSession(planner) ? 0 : 1;
 }

@@ -697,7 +697,29 @@ void Planner::rebuild()
     addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
       std::to_string(pieces.size()) + " piece(s)");
   placeSegment(session.segmentMatrix);
+  if (std::string error; !keepUnsaved(error))
+    addLine(message, "the session's changes could not be kept: " + error);
   updateStatus();
+}
+
+bool Planner::keepUnsaved(std::string& error)
+{
+  if (unsavedPath.empty())
+    return true;
+  const std::string text = sessionText(session);
+  if (text == savedSession)
+  {
+    if (!keptSession.empty())
+      std::remove(unsavedPath.c_str()); // only the saved session is left to keep
+    keptSession.clear();
+    return true;
+  }
+  if (text == keptSession)
+    return true;
+  if (!lkapp::writeFileAtomically(unsavedPath, text, error))
+    return false;
+  keptSession = text;
+  return true;
 }
 
 std::array<double, 3> Planner::anchorOf(std::size_t p) const

@@ -103,6 +103,14 @@ public:
   /// The session as it was last replayed, saved ('w') or exported ('e'):
   /// quitting with another keeps that one (keepUnsavedSession).
   std::string savedSession;
+  /// Where the session is kept while it differs from savedSession (empty:
+  /// nowhere), and what was last written there.
+  std::string unsavedPath, keptSession;
+  /// Writes the session to unsavedPath if it differs from savedSession (and
+  /// removes the file once it no longer does). rebuild() calls it after each
+  /// step, so a crash loses at most the step that crashed. False, with
+  /// `error`, if the file cannot be written.
+  bool keepUnsaved(std::string& error);
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment

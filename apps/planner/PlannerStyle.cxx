@@ -541,6 +541,7 @@ void PlannerStyle::OnChar()
     {
       planner->notice = "saved " + vtksys::SystemTools::GetFilenameName(sessionPath);
       planner->savedSession = sessionText(s);
+      planner->keepUnsaved(error); // removes the kept copy
     }
     else
       planner->message = error;
@@ -552,6 +553,7 @@ void PlannerStyle::OnChar()
     {
       planner->notice = "exported to " + exportFolder;
       planner->savedSession = sessionText(planner->session); // the export holds session.json
+      planner->keepUnsaved(error);
     }
     else
       planner->message = error;
