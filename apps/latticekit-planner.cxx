@@ -86,7 +86,7 @@ bool keepUnsavedSession(Planner& planner)
   std::string error;
   if (!planner.keepUnsaved(error))
   {
-    std::cerr << "error: the session had changes that were not saved, and they could not be kept: " << error << "\n";
+    std::cerr << "error: the session had changes that were not saved, and they could not be kept (--session sets where): " << error << "\n";
     return false;
   }
   std::cout << "unsaved: the session had changes that were not saved ('w' saves them); they are kept in " << path

@@ -698,7 +698,7 @@ void Planner::rebuild()
       std::to_string(pieces.size()) + " piece(s)");
   placeSegment(session.segmentMatrix);
   if (std::string error; !keepUnsaved(error))
-    addLine(message, "the session's changes could not be kept: " + error);
+    addLine(message, "the changes not saved could not be kept (--session sets where): " + error);
   updateStatus();
 }
 
