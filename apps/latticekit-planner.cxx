@@ -80,15 +80,15 @@ void usage(std::ostream& os)
 /// be written.
 bool keepUnsavedSession(Planner& planner)
 {
-  if (sessionText(planner.session) == planner.savedSession)
-    return true;
-  const std::string& path = planner.unsavedPath;
   std::string error;
   if (!planner.keepUnsaved(error))
   {
     std::cerr << "error: the session had changes that were not saved, and they could not be kept (--session sets where): " << error << "\n";
     return false;
   }
+  if (planner.keptSession.empty())
+    return true; // nothing differs from the saved session
+  const std::string& path = planner.unsavedPath;
   std::cout << "unsaved: the session had changes that were not saved ('w' saves them); they are kept in " << path
             << ": open them again with --replay " << path << "\n";
   return true;
@@ -298,11 +298,11 @@ int main(int argc, char* argv[])
   planner.window->SetDisplayId(display);
   planner.setup();
   planner.rebuild();
-  planner.savedSession = sessionText(planner.session);
-  if (!events.empty() || (shot.empty() && exportFolder.empty())) // a user's session, live or played
-    planner.unsavedPath = unsavedSessionPath(sessionOut);
   planner.renderer->ResetCamera();
   const bool batch = !shot.empty() || !exportFolder.empty() || !events.empty();
+  planner.savedSession = sessionText(planner.session);
+  if (!batch || !events.empty()) // a user's session, live or played
+    planner.unsavedPath = unsavedSessionPath(sessionOut);
   if (!events.empty())
   {
     // Headless interaction: the recorded events go through the real style.

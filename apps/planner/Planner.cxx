@@ -702,6 +702,13 @@ void Planner::rebuild()
   updateStatus();
 }
 
+void Planner::markSaved()
+{
+  savedSession = sessionText(session);
+  std::string error;
+  keepUnsaved(error); // only removes the kept copy
+}
+
 bool Planner::keepUnsaved(std::string& error)
 {
   if (unsavedPath.empty())

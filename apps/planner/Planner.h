@@ -100,12 +100,15 @@ public:
   /// fields a replay ignored. Kept at the top of every message and in the
   /// exported plan.
   std::string inputWarnings;
-  /// The session as it was last replayed, saved ('w') or exported ('e'):
-  /// quitting with another keeps that one (keepUnsavedSession).
+  /// The session as it was last replayed, saved ('w') or exported ('e').
   std::string savedSession;
   /// Where the session is kept while it differs from savedSession (empty:
-  /// nowhere), and what was last written there.
+  /// nowhere), and what was last written there (empty while it does not
+  /// differ).
   std::string unsavedPath, keptSession;
+  /// After a save or an export: this session is the saved one, and the kept
+  /// copy goes.
+  void markSaved();
   /// Writes the session to unsavedPath if it differs from savedSession (and
   /// removes the file once it no longer does). rebuild() calls it after each
   /// step, so a crash loses at most the step that crashed. False, with

@@ -540,8 +540,7 @@ void PlannerStyle::OnChar()
     if (saveSession(s, sessionPath, error))
     {
       planner->notice = "saved " + vtksys::SystemTools::GetFilenameName(sessionPath);
-      planner->savedSession = sessionText(s);
-      planner->keepUnsaved(error); // removes the kept copy
+      planner->markSaved();
     }
     else
       planner->message = error;
@@ -552,8 +551,7 @@ void PlannerStyle::OnChar()
     if (planner->exportPieces(exportFolder, error))
     {
       planner->notice = "exported to " + exportFolder;
-      planner->savedSession = sessionText(planner->session); // the export holds session.json
-      planner->keepUnsaved(error);
+      planner->markSaved(); // the export holds session.json
     }
     else
       planner->message = error;
