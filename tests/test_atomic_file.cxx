@@ -126,3 +126,23 @@ TEST(AtomicFile, RefusesAFolderAndRemovesTheTemporaryFile)
 }
 
 } // namespace
+
+TEST(AtomicFile, FileNamesAreCutIntoFolderStemAndExtension)
+{
+  // The temporary file's and the planner's kept session's names are made
+  // from these parts: a dot in a folder or at a name's start is no extension.
+  const auto check = [](const std::string& path, const std::string& folder, const std::string& stem,
+                       const std::string& extension) {
+    const lkapp::FileNameParts p = lkapp::splitFileName(path);
+    EXPECT_EQ(p.folder, folder) << path;
+    EXPECT_EQ(p.stem, stem) << path;
+    EXPECT_EQ(p.extension, extension) << path;
+  };
+  check("planner_session.json", "", "planner_session", ".json");
+  check("/tmp/a.b/session", "/tmp/a.b/", "session", "");
+  check("out/.hidden", "out/", ".hidden", "");
+  check("out/piece.0.stl", "out/", "piece.0", ".stl");
+  const std::string temporary = lkapp::temporaryPathBeside("out/piece.stl");
+  EXPECT_EQ(temporary.rfind("out/.piece.partial-", 0), 0u) << temporary;
+  EXPECT_EQ(temporary.substr(temporary.size() - 4), ".stl") << temporary;
+}

@@ -45,18 +45,26 @@ std::string refusal(const std::string& path, const std::string& target)
 }
 } // namespace
 
+FileNameParts splitFileName(const std::string& path)
+{
+  const auto slash = path.find_last_of('/');
+  FileNameParts parts;
+  parts.folder = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const auto dot = name.find_last_of('.');
+  parts.stem = dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+  parts.extension = dot == std::string::npos || dot == 0 ? std::string() : name.substr(dot);
+  return parts;
+}
+
 std::string temporaryPathBeside(const std::string& path)
 {
   static std::atomic<unsigned> counter{ 0 };
-  const auto slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   // The extension stays last: some writers (vtkPLYWriter) append their own
   // to a name without it.
-  const auto dot = name.find_last_of('.');
-  const std::string stem = dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
-  const std::string ext = dot == std::string::npos || dot == 0 ? std::string() : name.substr(dot);
-  return folder + "." + stem + ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ext;
+  const FileNameParts p = splitFileName(path);
+  return p.folder + "." + p.stem + ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+    p.extension;
 }
 
 bool commitTemporaryFile(const std::string& temporary, const std::string& path, std::string& error)

@@ -20,6 +20,15 @@ namespace lkapp
 /// by a plain write. False with `error` ("cannot write 'PATH': REASON").
 bool writeFileAtomically(const std::string& path, const std::string& contents, std::string& error);
 
+/// A path cut into its folder (with its trailing '/', or empty), the file
+/// name's stem and its last extension (with its dot; empty for a name with
+/// none or one that only starts with a dot, as ".hidden").
+struct FileNameParts
+{
+  std::string folder, stem, extension;
+};
+FileNameParts splitFileName(const std::string& path);
+
 /// A path beside `path` (the same folder, so that a rename is atomic) for a
 /// writer that only writes to a file name: ".STEM.partial-PID-N.EXT" for
 /// STEM.EXT. Give it to commitTemporaryFile, or remove it.

@@ -154,11 +154,8 @@ bool saveSession(const Session& s, const std::string& path, std::string& error)
 
 std::string unsavedSessionPath(const std::string& sessionPath)
 {
-  const std::string::size_type slash = sessionPath.find_last_of('/');
-  const std::string::size_type dot = sessionPath.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1 || dot == 0)
-    return sessionPath + "-unsaved.json";
-  return sessionPath.substr(0, dot) + "-unsaved" + sessionPath.substr(dot);
+  const lkapp::FileNameParts p = lkapp::splitFileName(sessionPath);
+  return p.folder + p.stem + "-unsaved" + (p.extension.empty() ? ".json" : p.extension);
 }
 
 namespace
