@@ -60,6 +60,13 @@ namespace
 {
 const char* g_tool = "latticekit";
 
+/// The crash note (setCrashNote): written into the buffer not in use, then
+/// made current by one store, so that a crash while it changes prints the
+/// whole old note or the whole new one.
+char g_notes[2][4096];
+std::size_t g_noteLengths[2] = { 0, 0 };
+volatile std::sig_atomic_t g_note = -1;
+
 /// Only async-signal-safe calls: write(2), backtrace_symbols_fd (preloaded in
 /// installCrashReport), raise once the default action is back.
 void reportCrash(int signal)
@@ -92,6 +99,11 @@ void reportCrash(int signal)
   void* frames[64];
   const int count = backtrace(frames, 64);
   backtrace_symbols_fd(frames, count, STDERR_FILENO);
+  if (const int note = g_note; note >= 0)
+  {
+    ignored = write(STDERR_FILENO, g_notes[note], g_noteLengths[note]);
+    (void)ignored;
+  }
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
@@ -188,6 +200,22 @@ void installCrashReport(const char* tool)
   // A write past the file size limit (ulimit -f) then fails with EFBIG and
   // is reported like a full disk, instead of killing the tool mid-file.
   std::signal(SIGXFSZ, SIG_IGN);
+}
+
+void setCrashNote(const std::string& note)
+{
+  if (note.empty())
+  {
+    g_note = -1;
+    return;
+  }
+  const int next = g_note == 0 ? 1 : 0;
+  std::string text = g_tool + std::string(": ") + note;
+  text.resize(std::min<std::size_t>(text.size(), sizeof(g_notes[next]) - 1));
+  text += '\n';
+  std::memcpy(g_notes[next], text.data(), text.size());
+  g_noteLengths[next] = text.size();
+  g_note = next;
 }
 
 void installMessageHandler(bool quiet)

@@ -26,6 +26,11 @@ namespace lkapp
 /// the tool dies of that signal as it would have. A write beyond the file
 /// size limit (SIGXFSZ) fails and is reported instead. Call first in main.
 void installCrashReport(const char* tool);
+/// A line the crash report prints last, after the call stack: what the user
+/// can still recover (the planner's kept session, with the command that opens
+/// it again). An empty note removes it. Safe to call at any time; a note
+/// longer than 4,000 bytes is cut.
+void setCrashNote(const std::string& note);
 
 /// Routes VTK's messages: errors are collected and printed as "error: ...",
 /// warnings as "warning: ..." (quiet or not), pipeline noise is dropped;

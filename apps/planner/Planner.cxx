@@ -719,6 +719,7 @@ bool Planner::keepUnsaved(std::string& error)
     if (!keptSession.empty())
       std::remove(unsavedPath.c_str()); // only the saved session is left to keep
     keptSession.clear();
+    lkapp::setCrashNote("");
     return true;
   }
   if (text == keptSession)
@@ -726,6 +727,9 @@ bool Planner::keepUnsaved(std::string& error)
   if (!lkapp::writeFileAtomically(unsavedPath, text, error))
     return false;
   keptSession = text;
+  // A crash in a later step loses that step only: say where the rest is.
+  lkapp::setCrashNote("the plan, as it was after its last finished step, is kept in " + unsavedPath +
+    ": open it again with --replay " + unsavedPath);
   return true;
 }
 
