@@ -23,6 +23,7 @@ vtkStandardNewMacro(vtkLKBezierIFSFilter);
 
 void vtkLKBezierIFSFilter::SetSplitParameter(double t)
 {
+  this->RefusedNumberOfMaps = 0;
   this->Breaks = { t };
   this->Modified();
 }
@@ -30,13 +31,16 @@ void vtkLKBezierIFSFilter::SetSplitParameter(double t)
 void vtkLKBezierIFSFilter::SetNumberOfMaps(int k)
 {
   this->Breaks.clear();
-  for (int i = 1; i < k; ++i)
+  // Not k - 1 breaks for any k: 2^31 - 1 would take 17 GB here already.
+  this->RefusedNumberOfMaps = k < 2 || static_cast<std::size_t>(k) > lk::kMaximumIfsMaps ? k : 0;
+  for (int i = 1; i < k && this->RefusedNumberOfMaps == 0; ++i)
     this->Breaks.push_back(double(i) / k);
   this->Modified();
 }
 
 void vtkLKBezierIFSFilter::SetBreakPoints(vtkDoubleArray* breaks)
 {
+  this->RefusedNumberOfMaps = 0;
   this->Breaks.clear();
   for (vtkIdType i = 0; breaks && i < breaks->GetNumberOfTuples(); ++i)
     this->Breaks.push_back(breaks->GetValue(i));
@@ -63,6 +67,12 @@ int vtkLKBezierIFSFilter::RequestData(
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   const vtkIdType np = input ? input->GetNumberOfPoints() : 0;
+  if (this->RefusedNumberOfMaps != 0)
+  {
+    vtkErrorMacro("NumberOfMaps must be from 2 to " << lk::kMaximumIfsMaps << ", not " << this->RefusedNumberOfMaps
+                                                    << ".");
+    return 0;
+  }
   std::vector<lk::Vec3> control;
   for (vtkIdType i = 0; i < np; ++i)
   {

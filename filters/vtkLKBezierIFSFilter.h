@@ -80,8 +80,9 @@ public:
 
   ///@{
   /// The break points. SetSplitParameter(t): two maps, [0, t] and [t, 1]
-  /// (default t = 1/2). SetNumberOfMaps(k): k equal parts. SetBreakPoints:
-  /// any list (validated when the filter runs).
+  /// (default t = 1/2). SetNumberOfMaps(k): k equal parts, k from 2 to
+  /// 10,000 (a surface's maps are k x k). SetBreakPoints: any list. All are
+  /// validated when the filter runs.
   void SetSplitParameter(double t);
   void SetNumberOfMaps(int k);
   void SetBreakPoints(vtkDoubleArray* breaks);
@@ -116,6 +117,7 @@ protected:
   int Algorithm = DETERMINISTIC;
   int NetDimensions[2] = { 4, 4 };
   std::vector<double> Breaks{ 0.5 };
+  int RefusedNumberOfMaps = 0; ///< SetNumberOfMaps outside 2..10,000 (reported when the filter runs)
   std::vector<double> Probabilities;
   int Depth = 6;
   vtkIdType NumberOfPoints = 10000;

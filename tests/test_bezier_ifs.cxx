@@ -161,6 +161,15 @@ TEST(BezierIFS, BadParametersAreRefused)
   EXPECT_THROW(lk::bernsteinCurveMaps(3, { 1.2 }), std::invalid_argument);
   EXPECT_THROW(lk::bernsteinCurveMaps(3, { 0.6, 0.4 }), std::invalid_argument);
   EXPECT_THROW(lk::bernsteinCurveMaps(0, { 0.5 }), std::invalid_argument);
+  // Too many maps: refused before any is built.
+  std::vector<double> many(lk::kMaximumIfsMaps);
+  for (std::size_t i = 0; i < many.size(); ++i)
+    many[i] = double(i + 1) / double(many.size() + 1);
+  EXPECT_THROW(lk::bernsteinCurveMaps(3, many), std::invalid_argument);
+  many.pop_back();
+  EXPECT_EQ(lk::bernsteinCurveMaps(1, many).size(), lk::kMaximumIfsMaps);
+  EXPECT_THROW(lk::bernsteinSurfaceMaps(3, 3, std::vector<double>(many.begin(), many.begin() + 100)),
+    std::invalid_argument); // 101 x 101 maps
   const auto maps = lk::bernsteinCurveMaps(3, { 0.5 });
   EXPECT_THROW(lk::chaosGame(maps, { 0.5 }, lk::bernsteinCurve(3, 0), { 0, 0 }, 10, 1, kCubic), std::invalid_argument);
   EXPECT_THROW(lk::chaosGame(maps, { 0.5, 0.6 }, lk::bernsteinCurve(3, 0), { 0, 0 }, 10, 1, kCubic),

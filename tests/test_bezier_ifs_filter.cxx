@@ -132,4 +132,31 @@ TEST(BezierIFSFilter, BadInputIsAClearError)
     f->SetNumberOfPoints(100000000000000LL);
     expectError(f, "more than this machine's memory");
   }
+  {
+    // 2^31 - 1 maps: refused when the filter runs (building their breaks
+    // took 17 GB in the setter, their maps far more, and the kernel killed
+    // the program).
+    vtkNew<vtkLKBezierIFSFilter> f;
+    f->SetInputData(controlPoints(kCubic));
+    f->SetNumberOfMaps(2147483647);
+    expectError(f, "NumberOfMaps must be from 2 to 10000, not 2147483647");
+    f->SetNumberOfMaps(1);
+    expectError(f, "NumberOfMaps must be from 2 to 10000, not 1");
+    f->SetNumberOfMaps(3); // a valid count clears the refusal
+    f->Update();
+    EXPECT_GT(f->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  {
+    // 100 x 100 maps of a degree-20 net would take 15 GB of matrices.
+    std::vector<lk::Vec3> net;
+    for (int i = 0; i < 21; ++i)
+      for (int j = 0; j < 21; ++j)
+        net.emplace_back(i, j, 0.0);
+    vtkNew<vtkLKBezierIFSFilter> f;
+    f->SetInputData(controlPoints(net));
+    f->SetShapeToSurface();
+    f->SetNetDimensions(21, 21);
+    f->SetNumberOfMaps(100);
+    expectError(f, "would take more than 1 GB");
+  }
 }

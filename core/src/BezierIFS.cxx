@@ -22,6 +22,9 @@ double binomial(int n, int k)
 
 std::vector<std::pair<double, double>> intervals(const std::vector<double>& breaks)
 {
+  if (breaks.size() >= kMaximumIfsMaps)
+    throw std::invalid_argument(std::to_string(breaks.size() + 1) + " maps are more than an IFS may have (" +
+      std::to_string(kMaximumIfsMaps) + ")");
   double last = 0.0;
   std::vector<std::pair<double, double>> out;
   for (double b : breaks)
@@ -99,6 +102,14 @@ std::vector<IfsMap> bernsteinSurfaceMaps(int n, int m, const std::vector<double>
   checkDegree(n);
   checkDegree(m);
   const auto iv = intervals(breaks);
+  const double count = static_cast<double>(iv.size()) * static_cast<double>(iv.size());
+  if (count > static_cast<double>(kMaximumIfsMaps))
+    throw std::invalid_argument(std::to_string(iv.size()) + " x " + std::to_string(iv.size()) +
+      " maps are more than an IFS may have (" + std::to_string(kMaximumIfsMaps) + ")");
+  const double values = static_cast<double>((n + 1) * (m + 1));
+  if (count * values * values * sizeof(double) > 1e9)
+    throw std::invalid_argument("the " + std::to_string(static_cast<long long>(count)) + " maps of a degree " +
+      std::to_string(n) + " x " + std::to_string(m) + " net would take more than 1 GB: use fewer maps or a lower degree");
   std::vector<IfsMap> maps;
   for (const auto& [au, bu] : iv)
   {

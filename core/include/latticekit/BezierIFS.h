@@ -50,8 +50,14 @@ struct IfsMap
   double s[2] = { 1.0, 1.0 }; ///< parameter scale in u, v
 };
 
+/// The most maps an IFS may have (the papers use 2 to 4; a surface's are the
+/// square of its intervals): more would only exhaust memory.
+constexpr std::size_t kMaximumIfsMaps = 10000;
+
 /// Breaks b_1 < ... < b_{k-1} in (0, 1) give k sub-intervals. Throws
-/// std::invalid_argument for breaks outside (0, 1) or not increasing.
+/// std::invalid_argument for breaks outside (0, 1) or not increasing, for
+/// more than kMaximumIfsMaps maps, and for maps that would take more than
+/// 1 GB (a surface's map is a matrix of ((n+1)(m+1))^2 values).
 std::vector<IfsMap> bernsteinCurveMaps(int degree, const std::vector<double>& breaks);
 std::vector<IfsMap> bernsteinSurfaceMaps(int degreeU, int degreeV, const std::vector<double>& breaks);
 
