@@ -58,7 +58,7 @@ public:
   /// Vertices in [xmin, xmax] x [ymin, ymax] x [zmin, zmax] move by (dx, dy, dz).
   void AddRangeDeformation(double xmin, double xmax, double ymin, double ymax, double zmin, double zmax,
     double dx, double dy, double dz);
-  /// Eq. 2 inside the ball ((x, y, z), D).
+  /// Eq. 2 inside the ball ((x, y, z), D), iterations times (0 to 10,000).
   void AddSmoothingDeformation(double x, double y, double z, double D, int iterations);
   void RemoveAllDeformations();
   /// Drops the last deformation added (nothing if there is none).

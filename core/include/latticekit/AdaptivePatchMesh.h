@@ -47,6 +47,9 @@
 namespace lk
 {
 
+/// The most smoothing iterations one smoothing deformation may ask for.
+constexpr int kMaximumSmoothingIterations = 10000;
+
 class AdaptivePatchMesh
 {
 public:
@@ -65,7 +68,8 @@ public:
   /// Every vertex inside [boxMin, boxMax] moves by `move`; triangles crossing
   /// the box border are refined to maxLevel first when refine is set.
   int rangeDeformation(const Vec3& boxMin, const Vec3& boxMax, const Vec3& move, bool refine = true);
-  /// Eq. 2 inside the ball (centre, D), `iterations` times.
+  /// Eq. 2 inside the ball (centre, D), `iterations` times (0 to
+  /// kMaximumSmoothingIterations; throws std::invalid_argument otherwise).
   int smoothingDeformation(const Vec3& centre, double D, int iterations = 1, double selfWeight = 1.0);
 
   std::size_t vertexCount() const { return base_.size(); }
