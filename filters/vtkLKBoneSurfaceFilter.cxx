@@ -184,6 +184,19 @@ int vtkLKBoneSurfaceFilter::RequestData(
     vtkErrorMacro("IsoValue must be a finite number.");
     return 0;
   }
+  if (this->ExtractionMode == SEEDED_COMPONENT &&
+    !(std::isfinite(this->SeedPoint[0]) && std::isfinite(this->SeedPoint[1]) && std::isfinite(this->SeedPoint[2])))
+  {
+    vtkErrorMacro("The SeedPoint (" << this->SeedPoint[0] << ", " << this->SeedPoint[1] << ", " << this->SeedPoint[2]
+                                    << ") must be finite.");
+    return 0;
+  }
+  if (!(this->ImageSmoothing <= 20.0)) // NaN too; an infinite one crashed vtkImageGaussianSmooth
+  {
+    vtkErrorMacro("ImageSmoothing must be a standard deviation from 0 to 20 voxels (negative: automatic), not "
+      << this->ImageSmoothing << ".");
+    return 0;
+  }
   {
     // A zero or NaN spacing (a hand-made image, a header without spacing)
     // folds the volume flat: the contour would be a heap of degenerate faces.

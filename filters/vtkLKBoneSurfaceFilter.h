@@ -73,8 +73,9 @@ public:
   ///@}
 
   ///@{
-  /// Gaussian standard deviation in voxels applied to the volume; 0 = none,
-  /// negative (default) = automatic (1 for label maps, none otherwise).
+  /// Gaussian standard deviation in voxels applied to the volume, at most 20
+  /// (a kernel 121 voxels wide); 0 = none, negative (default) = automatic (1
+  /// for label maps, none otherwise). NaN or more than 20 is an error.
   vtkSetMacro(ImageSmoothing, double);
   vtkGetMacro(ImageSmoothing, double);
   ///@}

@@ -127,6 +127,12 @@ int vtkLKLatticeFitFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* vertexMap = vtkPolyData::GetData(outputVector, 1);
 
+  if (std::isnan(this->MaximumError))
+  {
+    // The clamp in SetMaximumError lets NaN through; 0 (no bound) would be taken silently.
+    vtkErrorMacro("Cannot fit a lattice: MaximumError must be a number (0: no error bound), not NaN.");
+    return 0;
+  }
   {
     // The refinement's own checks, before the simplification's work.
     lk::RefinementOptions check;

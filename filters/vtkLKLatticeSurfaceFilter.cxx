@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <map>
 #include <stdexcept>
@@ -126,6 +127,11 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   this->Internal->surface = lk::LatticeSurface();
   this->Internal->locator.reset();
   this->EffectiveResolution = 0;
+  if (std::isnan(this->ChordalTolerance))
+  {
+    vtkErrorMacro("ChordalTolerance must be a distance (0: use Resolution), not NaN.");
+    return 0;
+  }
 
   // Line cells over lattice edges carry edge weights; the rest is the lattice.
   lk::LatticeWeights weights;

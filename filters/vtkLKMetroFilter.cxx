@@ -117,6 +117,11 @@ int vtkLKMetroFilter::RequestData(
     vtkErrorMacro("Every kind of sampling is off: turn on vertex, edge or face sampling.");
     return 0;
   }
+  if (!std::isfinite(this->ColorMaximum)) // NaN passes SetColorMaximum's clamp; infinity colours all blue
+  {
+    vtkErrorMacro("ColorMaximum must be a finite distance (0: the 99th percentile), not " << this->ColorMaximum << ".");
+    return 0;
+  }
   if (!(this->SampleDensity >= 0.0) || !std::isfinite(this->SampleDensity))
   {
     vtkErrorMacro("SampleDensity must be a finite number >= 0, not " << this->SampleDensity << ".");

@@ -153,6 +153,14 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   vtkPolyData* strokePd = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* lineOut = vtkPolyData::GetData(outputVector, 1);
+  // NaN passes the setters' clamps, and an infinite brush or tolerance
+  // would take the whole surface.
+  if (!std::isfinite(this->BrushRadius) || !std::isfinite(this->CloseTolerance))
+  {
+    vtkErrorMacro("BrushRadius and CloseTolerance must be finite lengths (0: from the mean edge length), not "
+      << this->BrushRadius << " and " << this->CloseTolerance << ".");
+    return 0;
+  }
 
   // Line cells on the input are earlier feature lines (output 0 of another
   // stroke): they are carried to output 0, through the edges a split cuts.

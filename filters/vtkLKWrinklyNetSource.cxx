@@ -13,6 +13,7 @@
 #include <vtkPolyData.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 vtkStandardNewMacro(vtkLKWrinklyNetSource);
@@ -25,6 +26,12 @@ vtkLKWrinklyNetSource::vtkLKWrinklyNetSource()
 int vtkLKWrinklyNetSource::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (std::isnan(this->Spacing) || !std::isfinite(this->HeightAmplitude))
+  {
+    vtkErrorMacro("Spacing and HeightAmplitude must be finite numbers, not " << this->Spacing << " and "
+                                                                              << this->HeightAmplitude << ".");
+    return 0;
+  }
   lk::WrinklyNetStyle style;
   style.spacing = this->Spacing;
   style.heightAmplitude = this->HeightAmplitude;
