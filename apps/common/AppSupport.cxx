@@ -39,6 +39,7 @@
 #include <X11/Xlib.h>
 
 #include <execinfo.h>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -775,18 +776,30 @@ const char* meshExtensions()
   return ".vtp, .vtk, .stl, .ply, .obj or .gltf (written only)";
 }
 
+namespace
+{
+/// Decimal text as a person types it: strtod and strtol also skip leading
+/// blanks (" 5" was taken, "5 " refused) and read hexadecimal ("0x10" was
+/// taken as 16 where a number, not an integer, was asked for).
+bool plainNumberText(const std::string& text)
+{
+  return !text.empty() && !std::isspace(static_cast<unsigned char>(text[0])) &&
+    text.find_first_of("xX") == std::string::npos;
+}
+} // namespace
+
 bool parseDouble(const std::string& text, double& value)
 {
   char* end = nullptr;
   value = std::strtod(text.c_str(), &end);
-  return !text.empty() && end && *end == '\0' && std::isfinite(value);
+  return plainNumberText(text) && end && *end == '\0' && std::isfinite(value);
 }
 
 bool parseInt(const std::string& text, long& value)
 {
   char* end = nullptr;
   value = std::strtol(text.c_str(), &end, 10);
-  return !text.empty() && end && *end == '\0';
+  return plainNumberText(text) && end && *end == '\0';
 }
 
 bool parseNumbers(const std::string& text, double* v, int n)
