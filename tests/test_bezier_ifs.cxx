@@ -54,8 +54,11 @@ TEST(BezierIFS, DeterministicAndChaosPointsLieOnTheCurve)
   for (int n : { 2, 3, 5 })
   {
     const auto control = controlOfDegree(n);
+    // The last two: breaks within rounding of 0 and 1, where 1 - s rounded
+    // to 0 and every point was NaN.
     for (const std::vector<double>& breaks : { std::vector<double>{ 0.5 }, std::vector<double>{ 0.3 },
-           std::vector<double>{ 0.2, 0.45, 0.8 } })
+           std::vector<double>{ 0.2, 0.45, 0.8 }, std::vector<double>{ 1e-300 },
+           std::vector<double>{ 0.5, 1.0 - 1e-16 } })
     {
       const auto maps = lk::bernsteinCurveMaps(n, breaks);
       const auto det = lk::deterministicIfs(
@@ -65,7 +68,10 @@ TEST(BezierIFS, DeterministicAndChaosPointsLieOnTheCurve)
       double worst = 0.0;
       for (const auto* set : { &det, &chaos })
         for (std::size_t i = 0; i < set->points.size(); ++i)
+        {
+          ASSERT_TRUE(set->points[i].allFinite()) << "degree " << n << " break " << breaks[0];
           worst = std::max(worst, (set->points[i] - lk::deCasteljau(control, set->parameters[i][0])).norm());
+        }
       EXPECT_LT(worst, 1e-12 * 10.0) << "degree " << n; // the model is about 10 across
       EXPECT_EQ(det.points.size(), 2 * static_cast<std::size_t>(std::pow(maps.size(), 4)));
     }

@@ -87,7 +87,11 @@ std::vector<IfsMap> bernsteinCurveMaps(int degree, const std::vector<double>& br
     const double s = b - a;
     IfsMap w;
     const Eigen::MatrixXd M = subdivisionMatrix(degree, a, s);
-    w.c = (1.0 - s) * bernsteinCurve(degree, a / (1.0 - s));
+    // 1 - s as a + (1 - b), the parameter outside [a, b]: computed as 1 - s
+    // it is 0 for a break within rounding of 0 or 1 (1e-300), and a / 0 made
+    // every point NaN.
+    const double rest = a + (1.0 - b);
+    w.c = rest * bernsteinCurve(degree, a / rest);
     w.A = M - w.c * Eigen::RowVectorXd::Ones(degree + 1);
     w.a[0] = a;
     w.s[0] = s;
@@ -125,7 +129,8 @@ std::vector<IfsMap> bernsteinSurfaceMaps(int n, int m, const std::vector<double>
             for (int l = 0; l <= m; ++l)
               M(i * (m + 1) + j, k * (m + 1) + l) = Mu(i, k) * Mv(j, l);
       IfsMap w;
-      w.c = (1.0 - su * sv) * bernsteinSurface(n, m, au / (1.0 - su), av / (1.0 - sv));
+      const double restU = au + (1.0 - bu), restV = av + (1.0 - bv); // 1 - su, 1 - sv (as for curves)
+      w.c = (1.0 - su * sv) * bernsteinSurface(n, m, au / restU, av / restV);
       w.A = M - w.c * Eigen::RowVectorXd::Ones(N);
       w.a[0] = au;
       w.a[1] = av;
