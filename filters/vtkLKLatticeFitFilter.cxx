@@ -6,6 +6,7 @@
 #include "latticekit/ErrorBoundSearch.h"
 #include "latticekit/LatticeRefinement.h"
 #include "latticekit/LatticeSimplification.h"
+#include "latticekit/ManifoldRepair.h"
 #include "latticekit/QuadPairing.h"
 #include "latticekit/SurfaceSampling.h"
 #include "vtkLKLatticeSurfaceFilter.h"
@@ -187,7 +188,18 @@ int vtkLKLatticeFitFilter::RequestData(
     lk::SamplingOptions sampling;
     sampling.targetSamples = std::max<std::size_t>(4 * mesh.triangles.size(), kMinimumRefinementSamples);
     sampling.method = lk::FaceSamplingMethod::SimilarTriangles;
-    samples = lk::sampleSurface(mesh, sampling).points;
+    try
+    {
+      samples = lk::sampleSurface(mesh, sampling).points;
+    }
+    catch (const std::exception& e)
+    {
+      // A mesh of zero area (every point one point): uncaught, this ended
+      // the program; the mesh check names the cause.
+      const std::string cause = lk::cgalSurfaceMeshProblem(mesh);
+      vtkErrorMacro("Cannot fit a lattice: " << (cause.empty() ? std::string(e.what()) : cause) << ".");
+      return 0;
+    }
   }
   const bool searching = this->MaximumError > 0.0;
 

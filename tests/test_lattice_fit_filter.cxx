@@ -424,6 +424,19 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     fit->SetInputData(empty);
     expectError(fit, "Cannot fit a lattice");
   }
+  {
+    // Every point in one place: with refinement, the samples' exception
+    // ("zero area") ended the program before the mesh check could speak.
+    vtkNew<vtkPolyData> collapsed;
+    collapsed->DeepCopy(bone);
+    for (vtkIdType i = 0; i < collapsed->GetNumberOfPoints(); ++i)
+      collapsed->GetPoints()->SetPoint(i, 1.0, 2.0, 3.0);
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(collapsed);
+    fit->SetTargetNumberOfVertices(500);
+    fit->SetRefinement(true);
+    expectError(fit, "Cannot fit a lattice: the mesh has a degenerate (zero-area) triangle.");
+  }
 }
 
 TEST(LatticeFitFilter, OpenMeshIsFittedWithItsBorder)
