@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -81,6 +83,42 @@ TEST(ClosestPointTree, AgreesWithBruteForceWithAndWithoutHints)
     hint = tree.closest(p, hint); // a hint far from p must not change the answer
     EXPECT_NEAR(hint.distance, exact, 1e-12);
     EXPECT_NEAR((hint.point - p).norm(), hint.distance, 1e-12);
+  }
+}
+
+TEST(ClosestPointTree, ADegenerateTriangleIsTheSegmentItSpans)
+{
+  // Two corners in one place, all three in one place, three on a line: the
+  // closest point is on the segment they span (it was NaN for the first,
+  // and a mesh with one such triangle made Metro's mean NaN).
+  const lk::Vec3 a(0, 0, 0), c(2, 0, 0), mid(1, 0, 0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  for (int i = 0; i < 500; ++i)
+  {
+    const lk::Vec3 p(u(rng), u(rng), u(rng));
+    const lk::Vec3 onSegment(std::clamp(p.x(), 0.0, 2.0), 0.0, 0.0);
+    for (const auto& [x, y, z] : { std::array<lk::Vec3, 3>{ a, a, c }, std::array<lk::Vec3, 3>{ a, c, c },
+           std::array<lk::Vec3, 3>{ c, a, a }, std::array<lk::Vec3, 3>{ a, c, a }, std::array<lk::Vec3, 3>{ a, mid, c },
+           std::array<lk::Vec3, 3>{ mid, a, c }, std::array<lk::Vec3, 3>{ a, c, mid } })
+    {
+      const lk::Vec3 q = lk::closestPointOnTriangle(p, x, y, z);
+      ASSERT_TRUE(q.allFinite()) << p.transpose();
+      EXPECT_NEAR((q - onSegment).norm(), 0.0, 1e-12) << p.transpose();
+    }
+    EXPECT_EQ(lk::closestPointOnTriangle(p, mid, mid, mid), mid);
+  }
+  // In a mesh: a sphere with one triangle that repeats a vertex.
+  lk::TriangleMesh m = lktest::icosphere(2, 1.0);
+  const auto t = m.triangles[0];
+  m.triangles.push_back({ t[0], t[0], t[1] });
+  const lk::ClosestPointTree tree(m);
+  for (int i = 0; i < 500; ++i)
+  {
+    const lk::Vec3 p(u(rng), u(rng), u(rng));
+    const auto hit = tree.closest(p);
+    ASSERT_TRUE(std::isfinite(hit.distance)) << p.transpose();
+    EXPECT_NEAR(hit.distance, std::abs(p.norm() - 1.0), 0.1); // the icosphere is within 0.1 of the unit sphere
   }
 }
 

@@ -419,6 +419,29 @@ TEST(MetroFilter, SingleTriangleIsMeasuredNotRefused)
   EXPECT_NEAR(metro->GetForwardMean(), 0.1, 1e-12);
 }
 
+TEST(MetroFilter, ATriangleThatRepeatsAVertexIsMeasuredAsItsSegment)
+{
+  // Meshes from other tools carry such triangles (zero area): the distances
+  // to one were NaN, and so were the means, without a word.
+  auto a = plane(8, 0.0);
+  auto b = plane(8, 0.5);
+  vtkIdType ids[3] = { 3, 3, 4 };
+  b->GetPolys()->InsertNextCell(3, ids);
+  vtkNew<vtkLKMetroFilter> metro;
+  lktest::ErrorRecorder rec(metro);
+  metro->SetInputData(a);
+  metro->SetTargetData(b);
+  metro->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_NEAR(metro->GetForwardMean(), 0.5, 1e-12);
+  EXPECT_NEAR(metro->GetBackwardMean(), 0.5, 1e-12);
+  EXPECT_NEAR(metro->GetHausdorffDistance(), 0.5, 1e-12);
+  vtkDataArray* d = metro->GetOutput()->GetPointData()->GetArray("Distance");
+  ASSERT_NE(d, nullptr);
+  for (vtkIdType i = 0; i < d->GetNumberOfTuples(); ++i)
+    ASSERT_NEAR(d->GetTuple1(i), 0.5, 1e-12) << i;
+}
+
 TEST(MetroFilter, BadInputGivesClearErrors)
 {
   auto good = plane(2, 0.0);

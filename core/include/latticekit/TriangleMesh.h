@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -27,11 +28,31 @@ struct TriangleMesh
   bool empty() const { return triangles.empty(); }
 };
 
+/// The closest point of segment [a, b] to p (a when the segment is a point).
+inline Vec3 closestPointOnSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  if (!(length2 > 0.0))
+    return a;
+  return a + ab * std::clamp(ab.dot(p - a) / length2, 0.0, 1.0);
+}
+
 /// The closest point of triangle (a, b, c) to p by Voronoi-region tests
 /// (Ericson, "Real-Time Collision Detection", 5.1.5): a handful of dot
-/// products. Inline: it sits in the closest-point tree's hot loop.
+/// products. Inline: it sits in the closest-point tree's hot loop. A
+/// degenerate triangle (two corners in one place, or all three on a line) is
+/// the segment it spans: the region tests stay right for it, and where one
+/// would divide by a zero edge length the closest of its edges is taken
+/// (it returned NaN, and Metro's mean with it).
 inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
+  auto onEdges = [&]() {
+    const Vec3 x = closestPointOnSegment(p, a, b), y = closestPointOnSegment(p, b, c),
+               z = closestPointOnSegment(p, c, a);
+    const double dx = (x - p).squaredNorm(), dy = (y - p).squaredNorm(), dz = (z - p).squaredNorm();
+    return dx <= dy && dx <= dz ? x : (dy <= dz ? y : z);
+  };
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0.0 && d2 <= 0.0)
@@ -42,18 +63,24 @@ inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, 
     return b;
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-    return a + ab * (d1 / (d1 - d3));
+    return d1 - d3 > 0.0 ? Vec3(a + ab * (d1 / (d1 - d3))) : onEdges(); // d1 - d3 = |ab|^2
   const Vec3 cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
   if (d6 >= 0.0 && d5 <= d6)
     return c;
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-    return a + ac * (d2 / (d2 - d6));
+    return d2 - d6 > 0.0 ? Vec3(a + ac * (d2 / (d2 - d6))) : onEdges(); // |ac|^2
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-  const double denom = 1.0 / (va + vb + vc);
+  {
+    const double bc2 = (d4 - d3) + (d5 - d6); // |bc|^2
+    return bc2 > 0.0 ? Vec3(b + (c - b) * ((d4 - d3) / bc2)) : onEdges();
+  }
+  const double sum = va + vb + vc; // |ab x ac|^2
+  if (!(sum > 0.0))
+    return onEdges();
+  const double denom = 1.0 / sum;
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
