@@ -239,7 +239,15 @@ int main(int argc, char* argv[])
   // What reading the scan and making its surface warned of (a slice missing,
   // several series, no orientation) is shown in the window too, where the
   // surgeon looks, and not only in the terminal.
-  const std::string loadWarnings = lkapp::warningsSince(warningsBeforeLoad);
+  std::string loadWarnings = lkapp::warningsSince(warningsBeforeLoad);
+  if (!mesh && isoGiven && bone->GetTreatedAsLabelMap())
+  {
+    std::ostringstream note; // the surface is not the one --iso asked for
+    note << "--iso " << iso << " is not used: '" << vtksys::SystemTools::GetFilenameName(input)
+         << "' is a 0/1 label map, taken at 0.5";
+    std::cerr << "warning: " << note.str() << "\n";
+    loadWarnings += (loadWarnings.empty() ? "" : "\n") + note.str();
+  }
   if (!loadWarnings.empty())
     planner.inputWarnings += (planner.inputWarnings.empty() ? "" : "\n") + loadWarnings;
   if (mesh) // the file's coordinate system (3D Slicer's tag), which the export names again

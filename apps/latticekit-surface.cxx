@@ -57,6 +57,7 @@ int main(int argc, char* argv[])
 {
   lkapp::installCrashReport("latticekit-surface");
   std::string input, output;
+  bool isoGiven = false;
   double iso = 300.0, imageSmooth = -1.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool cropping = false, close = false;
   long smooth = 0, series = -1;
@@ -72,7 +73,10 @@ int main(int argc, char* argv[])
     if (a == "-o" || a == "--output")
       output = args.value(a);
     else if (a == "--iso")
+    {
       iso = args.number(a, -inf, inf, "a number");
+      isoGiven = true;
+    }
     else if (a == "--largest")
       mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
     else if (a == "--all")
@@ -156,6 +160,15 @@ int main(int argc, char* argv[])
   if (lkapp::errorCount() > 0)
   {
     return 1;
+  }
+  if (isoGiven && surface->GetTreatedAsLabelMap())
+  {
+    // A label map is taken at 0.5 whatever --iso says: say so, as the
+    // surface is not the one asked for.
+    std::cerr << "warning: --iso " << iso << " is not used: the input is a 0/1 label map, taken at 0.5"
+              << (labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO ? " (--no-label-map takes it at the --iso value)"
+                                                                       : "")
+              << "\n";
   }
   vtkPolyData* mesh = surface->GetOutput();
   if (!lkapp::writeMesh(mesh, output, error))
