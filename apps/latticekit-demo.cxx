@@ -571,7 +571,10 @@ int main(int argc, char* argv[])
   //    surface closes where the box cuts bone, the component at the seed.
   vtkNew<vtkLKMedicalImageReader> reader;
   reader->SetFileName(input.c_str());
-  reader->Update();
+  {
+    lkapp::ProgressBar bar(reader, "read CT", !quiet); // a DICOM folder of hundreds of slices takes a while
+    reader->Update();
+  }
   if (lkapp::errorCount() > 0)
     return 1;
   vtkNew<vtkLKBoneSurfaceFilter> bone;

@@ -135,7 +135,10 @@ int main(int argc, char* argv[])
   reader->SetFileName(input.c_str());
   reader->SetSeriesIndex(static_cast<int>(series));
   reader->SetSliceSpacing(sliceSpacing);
-  reader->Update();
+  {
+    lkapp::ProgressBar bar(reader, "read", !quiet); // a DICOM folder of hundreds of slices takes a while
+    reader->Update();
+  }
   if (lkapp::errorCount() > 0)
   {
     return 1;

@@ -1,4 +1,5 @@
 #include "vtkLKDICOMSeries.h"
+#include "vtkLKProgressRelay.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -21,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace lkvtk
@@ -72,7 +74,8 @@ struct ErrorCatcher
 };
 } // namespace
 
-bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error)
+bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
+  vtkAlgorithm* progress)
 {
   series.clear();
   vtkNew<vtkDICOMDirectory> dir;
@@ -80,7 +83,12 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
   dir->SetDirectoryName(folder.c_str());
   dir->SetScanDepth(1);
   dir->RequirePixelDataOn();
-  dir->Update();
+  {
+    std::optional<ProgressRelay> relay;
+    if (progress)
+      relay.emplace(progress, dir, 0.0, 0.2);
+    dir->Update();
+  }
   for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
   {
     DICOMSeriesInfo info;
@@ -113,7 +121,7 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
 }
 
 bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,
-  vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error)
+  vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error, vtkAlgorithm* progress)
 {
   vtkNew<vtkStringArray> names;
   for (const std::string& f : series.files)
@@ -125,7 +133,12 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   reader->SetFileNames(names);
   reader->SetMemoryRowOrderToFileNative(); // row 0 in memory is the first row in the file
   reader->TimeAsVectorOff();
-  reader->Update();
+  {
+    std::optional<ProgressRelay> relay;
+    if (progress)
+      relay.emplace(progress, reader, 0.2, 0.95); // the resampling after it is quick
+    reader->Update();
+  }
   if (reader->GetErrorCode() != 0 || !catcher.messages.empty())
   {
     error = "cannot read the DICOM series: " +

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkImageData;
 class vtkMatrix4x4;
 
@@ -45,7 +46,10 @@ struct DICOMGeometryReport
 
 /// Lists the series found in the folder (scanning one level deep), largest first.
 /// Returns false with error set when the folder cannot be read or has no image series.
-bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error);
+/// The scan of the files' headers is the first fifth of `progress`'s progress
+/// (when given), the reading of the series (readDICOMSeries) the rest.
+bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
+  vtkAlgorithm* progress = nullptr);
 
 /// Reads the series and resamples it onto a regular grid in the slice frame:
 /// x along the rows (ImageOrientationPatient[0..2]), y along the columns
@@ -56,6 +60,6 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
 /// The output is float (rescaled values); patientMatrix maps its data
 /// coordinates to DICOM patient (LPS) coordinates in millimetres.
 bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,
-  vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error);
+  vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error, vtkAlgorithm* progress = nullptr);
 
 } // namespace lkvtk

@@ -1,6 +1,7 @@
 #include "vtkLKMedicalImageReader.h"
 
 #include "vtkLKDICOMSeries.h"
+#include "vtkLKProgressRelay.h"
 #include "vtkLKMemory.h"
 
 #include <vtkCallbackCommand.h>
@@ -344,8 +345,10 @@ struct ErrorFlag
 /// vtkNrrdReader crashes reading a 2-D raw file) that fits in this machine's
 /// memory (a corrupt or hostile header asks for terabytes, and the allocation
 /// ended the program) and when `dataProblem` (the file's own check, such as
-/// truncatedRawData) is empty. `message` says why not.
-bool readImage(vtkImageReader2* reader, ErrorFlag& flag, std::string& message, const std::string& dataProblem = {})
+/// truncatedRawData) is empty. `message` says why not. The voxels' reading
+/// is `owner`'s progress.
+bool readImage(vtkAlgorithm* owner, vtkImageReader2* reader, ErrorFlag& flag, std::string& message,
+  const std::string& dataProblem = {})
 {
   reader->UpdateInformation();
   if (flag.failed)
@@ -393,6 +396,7 @@ bool readImage(vtkImageReader2* reader, ErrorFlag& flag, std::string& message, c
   }
   try
   {
+    lkvtk::ProgressRelay progress(owner, reader, 0.0, 1.0);
     reader->Update();
   }
   catch (const std::bad_alloc&)
@@ -479,7 +483,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     std::size_t headerBytes = 0;
     const auto header = readHeader(path, ':', &headerBytes);
     std::string message;
-    if (!readImage(reader, flag, message, truncatedRawData(path, header, headerBytes, true)))
+    if (!readImage(this, reader, flag, message, truncatedRawData(path, header, headerBytes, true)))
     {
       vtkErrorMacro("Cannot read NRRD file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
@@ -522,7 +526,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     std::size_t headerBytes = 0;
     const auto header = readHeader(path, '=', &headerBytes);
     std::string message;
-    if (!readImage(reader, flag, message, truncatedRawData(path, header, headerBytes, false)))
+    if (!readImage(this, reader, flag, message, truncatedRawData(path, header, headerBytes, false)))
     {
       vtkErrorMacro("Cannot read MetaImage file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
@@ -565,7 +569,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
     std::string message;
-    if (!readImage(reader, flag, message))
+    if (!readImage(this, reader, flag, message))
     {
       vtkErrorMacro("Cannot read NIfTI file '" << path << "'" << (message.empty() ? "" : ": ") << message);
       return false;
@@ -620,7 +624,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     const std::string folder = isFolder ? path : vtksys::SystemTools::GetFilenamePath(path);
     std::vector<lkvtk::DICOMSeriesInfo> series;
     std::string error;
-    if (!lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error))
+    if (!lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error, this))
     {
       // A folder that holds a volume file (a NIfTI beside its licence) is a
       // likely slip: name the files the user may have meant.
@@ -706,7 +710,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     vtkNew<vtkImageData> volume;
     lkvtk::DICOMGeometryReport report;
     if (!lkvtk::readDICOMSeries(series[static_cast<std::size_t>(chosen)], this->SliceSpacing, volume,
-          this->PatientMatrix, report, error))
+          this->PatientMatrix, report, error, this))
     {
       vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
       return false;
@@ -755,10 +759,30 @@ bool vtkLKMedicalImageReader::ReadVolume()
 int vtkLKMedicalImageReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   if (this->VolumeTime == 0 || this->VolumeTime != this->GetMTime() ||
     this->Volume->GetNumberOfPoints() == 0)
   {
-    if (!this->ReadVolume())
+    this->ReadStopped = false;
+    // As the executive does before RequestData: a stop asked during an
+    // earlier read (which ended without a data request) is not this read's.
+    this->SetAbortExecute(0);
+    const bool read = this->ReadVolume();
+    if (read && this->GetAbortExecute())
+    {
+      // Stopped while reading (the inner reader answers the stop too): the
+      // volume holds part of the voxels. An empty output, as every latticekit
+      // filter gives when stopped, not a volume half read. The executive
+      // clears AbortExecute before RequestData, so the stop is kept here.
+      this->Volume->Initialize();
+      this->VolumeTime = 0;
+      this->ReadStopped = true;
+      vtkWarningMacro("Aborted.");
+      const int none[6] = { 0, -1, 0, -1, 0, -1 };
+      outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), none, 6);
+      return 1;
+    }
+    if (!read)
     {
       this->VolumeTime = 0;
       // The executive skips RequestData after a failed request: clear the
@@ -770,7 +794,6 @@ int vtkLKMedicalImageReader::RequestInformation(
       return 0;
     }
   }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Volume->GetExtent(), 6);
   outInfo->Set(vtkDataObject::SPACING(), this->Volume->GetSpacing(), 3);
   outInfo->Set(vtkDataObject::ORIGIN(), this->Volume->GetOrigin(), 3);
@@ -785,7 +808,8 @@ int vtkLKMedicalImageReader::RequestData(
   vtkImageData* output = vtkImageData::GetData(outputVector);
   if (this->Volume->GetNumberOfPoints() == 0)
   {
-    return 0;
+    output->Initialize();
+    return this->ReadStopped ? 1 : 0;
   }
   output->ShallowCopy(this->Volume);
   return 1;

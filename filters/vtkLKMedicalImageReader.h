@@ -111,6 +111,7 @@ protected:
   vtkMatrix4x4* PatientMatrix;
   vtkImageData* Volume;
   vtkMTimeType VolumeTime = 0;
+  bool ReadStopped = false; ///< the last read was stopped (AbortExecute): the output is empty
   std::string FileFormat;
   int NumberOfSeries = 0;
   double GantryTilt = 0.0;

@@ -541,6 +541,44 @@ TEST(MedicalImageReader, ASeriesWithAMissingSliceIsWarned)
   EXPECT_EQ(reader->GetOutput()->GetDimensions()[2], 8);
 }
 
+TEST(MedicalImageReader, ReadingReportsProgressAndStopsWithAnEmptyVolume)
+{
+  // The DICOM series (its headers' scan, then the slices) and the gzipped
+  // NIfTI report their reading (it was one step, 0 then 1: a folder of
+  // hundreds of slices read with the tools' bars standing still). Stopped
+  // half way, the reader gives no volume rather than one half read, and the
+  // next read is whole.
+  for (const std::string& file : { geFolder, lktest::sampleData("cthead/cthead_hu_approx.nii.gz") })
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    reader->SetFileName(file.c_str());
+    lktest::ErrorRecorder rec(reader);
+    {
+      lktest::ProgressRecorder progress(reader);
+      reader->Update();
+      const auto between = std::count_if(
+        progress.progress.begin(), progress.progress.end(), [](double p) { return p > 0.0 && p < 1.0; });
+      EXPECT_GE(between, 10) << file;
+      EXPECT_GT(reader->GetOutput()->GetNumberOfPoints(), 0) << file;
+    }
+    vtkMTimeType readTime = reader->GetOutput()->GetMTime();
+    {
+      lktest::ProgressRecorder progress(reader);
+      progress.stopAt = 0.5;
+      reader->Modified();
+      reader->Update();
+      EXPECT_EQ(rec.errors, 0) << rec.messages;
+      EXPECT_NE(rec.warningMessages.find("Aborted."), std::string::npos) << file;
+      EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << file;
+      EXPECT_GT(reader->GetOutput()->GetMTime(), readTime);
+    }
+    reader->Modified();
+    reader->Update();
+    EXPECT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_GT(reader->GetOutput()->GetNumberOfPoints(), 1000000) << file;
+  }
+}
+
 TEST(MedicalImageReader, FolderWithoutDicomIsAClearError)
 {
   const std::string dir = tempFolder("no-dicom");

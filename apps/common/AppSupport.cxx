@@ -309,9 +309,9 @@ void ProgressBar::update(double fraction)
     }
     return;
   }
-  if (percent == lastDrawn_)
+  if (percent <= lastDrawn_)
   {
-    return;
+    return; // never backwards: a reader's executive resets its progress to 0 after the read
   }
   lastDrawn_ = percent;
   const int width = 30;
