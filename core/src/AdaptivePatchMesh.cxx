@@ -361,7 +361,7 @@ int AdaptivePatchMesh::rangeDeformation(const Vec3& lo, const Vec3& hi, const Ve
 int AdaptivePatchMesh::smoothingDeformation(const Vec3& c, double D, int iterations, double selfWeight)
 {
   // More iterations than kMaximumSmoothingIterations only ran on (2^31 - 1
-  // took half an hour on 81 vertices) towards the ball's harmonic fill.
+  // would take about 18 minutes on 81 vertices) towards the ball's harmonic fill.
   if (!c.allFinite() || !(D > 0.0) || !std::isfinite(D) || iterations < 0 || iterations > kMaximumSmoothingIterations ||
     !(selfWeight >= 0.0) || !std::isfinite(selfWeight))
     throw std::invalid_argument("smoothing needs a finite centre, D > 0, iterations from 0 to " +
