@@ -662,3 +662,41 @@ TEST(LatticeFitFilter, AHugeInputIsThinnedForTheRefinement)
   EXPECT_GT(field(small->GetOutput(), "RefinementSamples"), 4.0 * bone->GetNumberOfPolys());
   EXPECT_LT(field(small->GetOutput(), "RefinementSamples"), 500000.0);
 }
+
+TEST(LatticeFitFilter, TheFitDoesNotDependOnTheUnitOfLength)
+{
+  // The same mandible in millimetres, in metres and in micrometres (a mesh
+  // from a tool that writes metres): the same lattice up to the scale, so
+  // the errors in % of the diagonal agree. An absolute tolerance in the
+  // simplification or the refinement (a step, a damping, a convergence test
+  // in mm) would break this.
+  auto bone = lktest::tciaMandible();
+  double mean[3] = { 0, 0, 0 }, maxError[3] = { 0, 0, 0 };
+  const double scales[3] = { 1.0, 1e-3, 1e3 };
+  for (int s = 0; s < 3; ++s)
+  {
+    vtkNew<vtkPolyData> scaled;
+    scaled->DeepCopy(bone);
+    for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      scaled->GetPoint(i, p);
+      scaled->GetPoints()->SetPoint(i, p[0] * scales[s], p[1] * scales[s], p[2] * scales[s]);
+    }
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(scaled);
+    fit->SetTargetNumberOfVertices(500);
+    fit->SetRefinement(true);
+    fit->SetRefinementIterations(3);
+    fit->Update();
+    vtkFieldData* fd = fit->GetOutput()->GetFieldData();
+    ASSERT_NE(fd->GetArray("Hausdorff_MeanPercent"), nullptr);
+    mean[s] = fd->GetArray("Hausdorff_MeanPercent")->GetTuple1(0);
+    maxError[s] = fd->GetArray("Hausdorff_MaxPercent")->GetTuple1(0);
+  }
+  for (int s = 1; s < 3; ++s)
+  {
+    EXPECT_NEAR(mean[s], mean[0], 0.01 * mean[0]) << "scale " << scales[s];
+    EXPECT_NEAR(maxError[s], maxError[0], 0.05 * maxError[0]) << "scale " << scales[s];
+  }
+}
