@@ -25,6 +25,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <unistd.h>
 #include <string>
 
 namespace
@@ -224,10 +225,25 @@ int main(int argc, char* argv[])
     bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
   }
   const int warningsBeforeLoad = lkapp::warningCount();
-  surface->Update();
+  {
+    // Before the window opens, a large CT takes a while: bars in a terminal
+    // (not in a log, where the headless runs' reports are read line by line).
+    const bool bars = isatty(STDERR_FILENO) != 0;
+    if (!mesh)
+    {
+      lkapp::ProgressBar bar(reader, "read", bars);
+      reader->Update();
+    }
+    if (lkapp::errorCount() == 0) // a scan that cannot be read is said once
+    {
+      lkapp::ProgressBar bar(surface, mesh ? "repair" : "surface", bars);
+      surface->Update();
+    }
+  }
   if (lkapp::errorCount() > 0 || surface->GetOutput()->GetNumberOfPolys() == 0)
   {
-    std::cerr << "error: " << (lkapp::errorCount() ? lkapp::errors() : "no surface in " + input) << "\n";
+    if (lkapp::errorCount() == 0) // VTK's errors are printed as they come (installMessageHandler)
+      std::cerr << "error: no surface in " << input << "\n";
     return 1;
   }
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
