@@ -302,7 +302,15 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     error = os.str();
     return false;
   }
-  const int steps = zSpan > 0.0 ? static_cast<int>(std::ceil(zSpan / wanted - 1e-9)) : 0;
+  // Counted in double first: a spacing of 1e-9 mm made 1e11 steps, which
+  // overflowed int into a volume of -2147483647 slices, with no error.
+  const double stepCount = zSpan > 0.0 ? std::ceil(zSpan / wanted - 1e-9) : 0.0;
+  if (!(stepCount < 1e6))
+  {
+    error = "the resampled volume would be too large; choose a larger slice spacing";
+    return false;
+  }
+  const int steps = static_cast<int>(stepCount);
   const int nz = steps + 1;
   const double h = sliceSpacing > 0.0 || steps == 0 ? wanted : zSpan / steps;
   vtkNew<vtkImageCast> cast;

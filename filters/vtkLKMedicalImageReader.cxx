@@ -621,6 +621,11 @@ bool vtkLKMedicalImageReader::ReadVolume()
   else
   {
     this->FileFormat = "DICOM";
+    if (std::isnan(this->SliceSpacing)) // SetSliceSpacing's clamp lets NaN through; it was taken as 0
+    {
+      vtkErrorMacro("Cannot read '" << path << "': SliceSpacing must be a number of mm (0: automatic), not NaN.");
+      return false;
+    }
     const std::string folder = isFolder ? path : vtksys::SystemTools::GetFilenamePath(path);
     std::vector<lkvtk::DICOMSeriesInfo> series;
     std::string error;

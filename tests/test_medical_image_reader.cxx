@@ -290,6 +290,20 @@ TEST(MedicalImageReader, SliceSpacingIsHonoured)
   EXPECT_EQ(rec.errors, 1);
   EXPECT_NE(rec.messages.find("larger than the series' extent"), std::string::npos) << rec.messages;
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+
+  // A spacing of 1e-9 mm: 1e11 slices overflowed int into a volume of
+  // -2147483647 slices, without an error. NaN was taken as automatic.
+  reader->SetSliceSpacing(1e-9);
+  reader->Update();
+  EXPECT_EQ(rec.errors, 2);
+  EXPECT_NE(rec.messages.find("the resampled volume would be too large"), std::string::npos) << rec.messages;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  reader->SetSliceSpacing(std::nan(""));
+  reader->Update();
+  EXPECT_EQ(rec.errors, 3);
+  EXPECT_NE(rec.messages.find("SliceSpacing must be a number of mm (0: automatic), not NaN"), std::string::npos)
+    << rec.messages;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 TEST(MedicalImageReader, NrrdGeometryComesFromTheHeader)
