@@ -326,7 +326,10 @@ int main(int argc, char* argv[])
   const bool batch = !shot.empty() || !exportFolder.empty() || !events.empty();
   planner.savedSession = sessionText(planner.session);
   if (!batch || !events.empty()) // a user's session, live or played
+  {
     planner.unsavedPath = unsavedSessionPath(sessionOut);
+    planner.showWork = true;
+  }
   if (!events.empty())
   {
     // Headless interaction: the recorded events go through the real style.

@@ -619,6 +619,12 @@ void Planner::applyDeformations()
 
 void Planner::rebuild()
 {
+  if (showWork)
+  {
+    const char* shown = status->GetInput();
+    status->SetInput((std::string(shown ? shown : "") + " | working ...").c_str());
+    window->Render();
+  }
   for (auto& a : sceneActors)
     renderer->RemoveActor(a);
   sceneActors.clear();

@@ -94,6 +94,10 @@ public:
   std::vector<vtkSmartPointer<vtkActor>> sceneActors;
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   std::string message; ///< a problem: shown, and reported as "message:" in batch runs
+  /// In a window a user works in: every step first shows "working ..." on
+  /// the status line (a cut, lattices or Metro colours take seconds, and the
+  /// window would stand still without a word).
+  bool showWork = false;
   /// What the input and a replay warn of: the scan's reader and the bone
   /// surface (slices missing or unevenly spaced, several series, no patient
   /// orientation), a session drawn on another input (checkReplayedInput),
