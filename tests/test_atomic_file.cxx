@@ -67,6 +67,31 @@ TEST(AtomicFile, ReplacesTheContentsAndLeavesNothingElse)
   EXPECT_EQ(namesIn(folder), std::vector<std::string>{ "plan.txt" });
 }
 
+TEST(AtomicFile, AWriteRemovesWhatKilledRunsLeftOfTheSameFile)
+{
+  // A run killed by SIGKILL (the out-of-memory killer) cannot remove its
+  // temporary file. The next write of the same file removes those whose
+  // process is gone; a live process's, and other files', stay.
+  const std::string folder = freshFolder("stale");
+  const pid_t child = fork();
+  if (child == 0)
+    _exit(0);
+  ASSERT_GT(child, 0);
+  waitpid(child, nullptr, 0); // its PID now names no process
+  const std::string dead = std::to_string(child), live = std::to_string(getppid());
+  const std::vector<std::string> planted = { ".piece0.partial-" + dead + "-0.stl", ".piece0.partial-" + dead + "-7.stl",
+    ".piece0.partial-" + live + "-0.stl", ".piece1.partial-" + dead + "-0.stl", ".piece0.partial-" + dead + "-0.vtp",
+    ".piece0.partial-x-0.stl" };
+  for (const std::string& name : planted)
+    std::ofstream(folder + "/" + name) << "partial";
+  std::string error;
+  ASSERT_TRUE(lkapp::writeFileAtomically(folder + "/piece0.stl", "solid\n", error)) << error;
+  std::vector<std::string> kept = { ".piece0.partial-" + dead + "-0.vtp", ".piece0.partial-" + live + "-0.stl",
+    ".piece0.partial-x-0.stl", ".piece1.partial-" + dead + "-0.stl", "piece0.stl" };
+  std::sort(kept.begin(), kept.end());
+  EXPECT_EQ(namesIn(folder), kept);
+}
+
 TEST(AtomicFile, AFailedWriteKeepsTheEarlierFile)
 {
   const std::string folder = freshFolder("failed");

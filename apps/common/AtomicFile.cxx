@@ -5,8 +5,11 @@
 #include <climits>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -27,6 +30,41 @@ std::string resolved(const std::string& path)
     return path;
   char buffer[PATH_MAX];
   return ::realpath(path.c_str(), buffer) ? std::string(buffer) : path;
+}
+
+/// Removes what runs killed by SIGKILL (the out-of-memory killer, on a large
+/// CT) left of their writes to `target`: its temporary files
+/// (temporaryPathBeside's names) whose process no longer exists. Those of a
+/// live process, another user's, or another file are left alone.
+void removeStaleTemporaries(const std::string& target)
+{
+  const FileNameParts p = splitFileName(target);
+  const std::string prefix = "." + p.stem + ".partial-";
+  DIR* dir = ::opendir(p.folder.empty() ? "." : p.folder.c_str());
+  if (!dir)
+    return;
+  std::vector<std::string> stale;
+  while (const dirent* entry = ::readdir(dir))
+  {
+    const std::string name = entry->d_name;
+    if (name.size() <= prefix.size() + p.extension.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - p.extension.size(), p.extension.size(), p.extension) != 0)
+      continue;
+    // PID-N between the prefix and the extension.
+    const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - p.extension.size());
+    const auto dash = middle.find('-');
+    if (dash == 0 || dash == std::string::npos || dash + 1 == middle.size() ||
+      middle.find_first_not_of("0123456789-") != std::string::npos || middle.find('-', dash + 1) != std::string::npos)
+      continue;
+    const long pid = std::strtol(middle.substr(0, dash).c_str(), nullptr, 10);
+    if (pid <= 0 || pid == ::getpid() || pid > INT_MAX)
+      continue;
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+      stale.push_back(p.folder + name);
+  }
+  ::closedir(dir);
+  for (const std::string& path : stale)
+    ::unlink(path.c_str());
 }
 
 /// Empty when `target` may be replaced, otherwise the reason.
@@ -97,6 +135,7 @@ bool commitTemporaryFile(const std::string& temporary, const std::string& path, 
     return fail(errno);
   if (::rename(temporary.c_str(), target.c_str()) != 0)
     return fail(errno);
+  removeStaleTemporaries(target);
   return true;
 }
 
