@@ -25,8 +25,9 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
-#include <unistd.h>
 #include <string>
+
+#include <unistd.h>
 
 namespace
 {

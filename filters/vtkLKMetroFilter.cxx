@@ -117,7 +117,8 @@ int vtkLKMetroFilter::RequestData(
     vtkErrorMacro("Every kind of sampling is off: turn on vertex, edge or face sampling.");
     return 0;
   }
-  if (!std::isfinite(this->ColorMaximum)) // NaN passes SetColorMaximum's clamp; infinity colours all blue
+  // NaN passes SetColorMaximum's clamp (which turns infinity into the largest double).
+  if (!std::isfinite(this->ColorMaximum))
   {
     vtkErrorMacro("ColorMaximum must be a finite distance (0: the 99th percentile), not " << this->ColorMaximum << ".");
     return 0;

@@ -153,8 +153,8 @@ int vtkLKStrokeFeatureLineFilter::RequestData(
   vtkPolyData* strokePd = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* lineOut = vtkPolyData::GetData(outputVector, 1);
-  // NaN passes the setters' clamps, and an infinite brush or tolerance
-  // would take the whole surface.
+  // NaN passes the setters' clamps (which turn infinity into the largest
+  // double), and would be taken as 0, the automatic length.
   if (!std::isfinite(this->BrushRadius) || !std::isfinite(this->CloseTolerance))
   {
     vtkErrorMacro("BrushRadius and CloseTolerance must be finite lengths (0: from the mean edge length), not "
