@@ -27,6 +27,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkSMPTools.h>
 #include <vtkStaticPointLocator.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -256,6 +257,9 @@ int vtkLKLatticeFitFilter::RequestData(
       ro.tailWeight = tailWeight;
       ro.tailThreshold = this->RefinementTailThreshold;
       ro.original = &mesh; // both of Metro's directions
+      // The refinement's threads follow VTK's (VTK_SMP_MAX_THREADS,
+      // vtkSMPTools::Initialize), as the Metro measure's do.
+      ro.threads = vtkSMPTools::GetEstimatedNumberOfThreads();
       ro.fixed.assign(fit.lattice.points.size(), 0);
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
@@ -275,7 +279,7 @@ int vtkLKLatticeFitFilter::RequestData(
         std::vector<lk::EdgeKey> keep(fit.features.begin(), fit.features.end());
         fit.insertions =
           lk::insertVerticesAtLargestDistances(
-          fit.lattice, used, insertions, keep, ro.weights, ro.fixed, ro.locatorResolution);
+          fit.lattice, used, insertions, keep, ro.weights, ro.fixed, ro.locatorResolution, ro.threads);
         ro.iterations = std::max(1, this->RefinementIterations / 2);
         ro.tailWeight = tailWeight;
         ro.progress = [&](double f) {

@@ -369,6 +369,46 @@ std::pair<double, double> overhang(const lk::LatticeSurface& s)
 }
 } // namespace
 
+// A plan must not depend on the machine it is made on: the chunks the work
+// is split into (one per thread) must not change the answer, bit for bit.
+TEST(LatticeRefinement, TheResultDoesNotDependOnTheThreadCount)
+{
+  lk::TriangleMesh bumpy = lktest::icosphere(4, 10.0);
+  for (auto& p : bumpy.points)
+    p *= 1.0 + 0.04 * std::sin(3.0 * p.x()) * std::cos(2.0 * p.y());
+  lk::SimplificationOptions o;
+  o.targetVertices = 150;
+  const lk::PolygonMesh start = lk::asPolygonMesh(lk::simplifyLattice(bumpy, {}, o).mesh);
+  auto fit = [&](int threads) {
+    lk::PolygonMesh lattice = start;
+    lk::RefinementOptions ro;
+    ro.iterations = 3;
+    ro.original = &bumpy;
+    ro.threads = threads;
+    lk::refineLatticeFit(lattice, bumpy.points, ro);
+    lk::LatticeWeights weights;
+    std::vector<char> fixed;
+    EXPECT_EQ(lk::insertVerticesAtLargestDistances(lattice, bumpy.points, 3, {}, weights, fixed, 4, threads), 3);
+    ro.tailWeight = 10.0;
+    ro.iterations = 2;
+    lk::refineLatticeFit(lattice, bumpy.points, ro);
+    return lattice;
+  };
+  const lk::PolygonMesh one = fit(1);
+  ASSERT_NE(one.points, start.points);
+  for (int threads : { 2, 3, 8, 0 })
+  {
+    const lk::PolygonMesh other = fit(threads);
+    EXPECT_EQ(other.faces, one.faces) << threads << " threads";
+    EXPECT_EQ(other.points, one.points) << threads << " threads";
+  }
+  lk::PolygonMesh lattice = start;
+  lk::RefinementOptions bad;
+  bad.threads = -1;
+  EXPECT_EQ(lk::refinementOptionsProblem(bad), "the thread count must be 0 (every hardware thread) or more");
+  EXPECT_THROW(lk::refineLatticeFit(lattice, bumpy.points, bad), std::invalid_argument);
+}
+
 // Metro is symmetric. A lattice that overhangs the original has every sample
 // of the original on its surface, so the samples' direction alone sees no
 // error; the reverse direction (surface points to the original) pulls the

@@ -247,11 +247,17 @@ Combo sampleCombo(const PatchModel& pm, double u, double v)
   return { acc.begin(), acc.end() };
 }
 
+/// The worker threads for a requested count (0: every hardware thread).
+unsigned workerThreads(int requested)
+{
+  return requested > 0 ? static_cast<unsigned>(requested) : std::max(1u, std::thread::hardware_concurrency());
+}
+
 /// work(begin, end) over [0, count) in one chunk per thread (at most 8).
 template <class Work>
-void inChunks(std::size_t count, const Work& work)
+void inChunks(std::size_t count, int requestedThreads, const Work& work)
 {
-  const std::size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  const std::size_t threads = std::min(8u, workerThreads(requestedThreads));
   std::vector<std::thread> pool;
   const std::size_t chunk = (count + threads - 1) / threads;
   for (std::size_t t = 0; t < threads; ++t)
@@ -276,7 +282,7 @@ struct Foot
 /// before a step; each one's tessellation triangle starts its own search,
 /// which bounds it nearly at the answer (half the search time on the
 /// mandible; the answer is the same up to ties between triangles).
-std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& samples, int resolution,
+std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& samples, int resolution, int threads,
   const std::vector<Foot>* previous = nullptr)
 {
   const int r = std::max(2, resolution);
@@ -369,7 +375,7 @@ std::vector<Foot> footPoints(const LatticeSurface& s, const std::vector<Vec3>& s
       out[i] = { p, u, v, x, patch.normalFrom(du, dv, u, v), (q - x).norm() };
     }
   };
-  inChunks(samples.size(), work);
+  inChunks(samples.size(), threads, work);
   return out;
 }
 
@@ -405,7 +411,7 @@ struct ReversePoint
 };
 
 std::vector<ReversePoint> reversePoints(
-  const LatticeSurface& s, const TriangleMesh& original, const ClosestPointTree& tree)
+  const LatticeSurface& s, const TriangleMesh& original, const ClosestPointTree& tree, int threads)
 {
   const double at[3] = { 1.0 / 6.0, 0.5, 5.0 / 6.0 };
   std::vector<ReversePoint> out(9 * s.patches.size());
@@ -432,7 +438,7 @@ std::vector<ReversePoint> reversePoints(
           r.distance = hint.distance;
         }
   };
-  inChunks(s.patches.size(), work);
+  inChunks(s.patches.size(), threads, work);
   return out;
 }
 
@@ -463,10 +469,10 @@ struct FaceBlock
   Eigen::MatrixXd rc;                 ///< rows x (3 vertices + 1): R, then c
 };
 
-std::vector<FaceBlock> compress(const std::vector<std::vector<Term>>& termsOfFace)
+std::vector<FaceBlock> compress(const std::vector<std::vector<Term>>& termsOfFace, int threads)
 {
   std::vector<FaceBlock> out(termsOfFace.size());
-  inChunks(termsOfFace.size(), [&](std::size_t begin, std::size_t end) {
+  inChunks(termsOfFace.size(), threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f)
     {
       const auto& terms = termsOfFace[f];
@@ -573,6 +579,8 @@ std::string refinementOptionsProblem(const RefinementOptions& options)
     return "the reverse weight must be 0 or more";
   if (!(options.tailWeight >= 0.0) || !(options.tailThreshold > 0.0))
     return "the tail weight must be 0 or more and its threshold above 0";
+  if (options.threads < 0)
+    return "the thread count must be 0 (every hardware thread) or more";
   return {};
 }
 
@@ -597,7 +605,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   auto goOn = [&](double done) { return !options.progress || options.progress(done / units); };
   RefinementReport report;
   LatticeSurface surface = buildLatticeSurface(lattice, options.weights); // throws for a bad lattice
-  std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution);
+  std::vector<Foot> feet = footPoints(surface, samples, options.locatorResolution, options.threads);
   report.initialRms = std::sqrt(energy(feet) / static_cast<double>(samples.size()));
   const bool twoWay = options.original && options.reverseWeight > 0.0;
   bool stopped = !goOn(twoWay ? 0.25 : 0.5);
@@ -607,7 +615,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
   if (twoWay && !stopped)
   {
     originalTree = std::make_unique<ClosestPointTree>(*options.original);
-    reverse = reversePoints(surface, *options.original, *originalTree);
+    reverse = reversePoints(surface, *options.original, *originalTree, options.threads);
     stopped = !goOn(0.5);
     reverseWeight = options.reverseWeight * static_cast<double>(samples.size()) / static_cast<double>(reverse.size());
   }
@@ -635,7 +643,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       const Anchors anchors = buildAnchors(lattice, options.weights.vertex);
       const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
       std::vector<Combo> combos(samples.size());
-      inChunks(samples.size(), [&](std::size_t begin, std::size_t end) {
+      inChunks(samples.size(), options.threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t s = begin; s < end; ++s)
           combos[s] = sampleCombo(models[feet[s].patch], feet[s].u, feet[s].v);
       });
@@ -643,7 +651,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
         for (const auto& vw : combo)
           weight += vw.second * vw.second;
       std::vector<Combo> reverseCombos(reverse.size());
-      inChunks(reverse.size(), [&](std::size_t begin, std::size_t end) {
+      inChunks(reverse.size(), options.threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t r = begin; r < end; ++r)
           reverseCombos[r] = sampleCombo(models[reverse[r].patch], reverse[r].u, reverse[r].v);
       });
@@ -660,7 +668,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       for (std::size_t r = 0; r < reverse.size(); ++r)
         addDistance(reverse[r].patch, reverseCombos[r], reverse[r].point - reverse[r].closest, reverse[r].normal,
           reverse[r].distance, reverseWeight);
-      faceBlocks = compress(termsOfFace);
+      faceBlocks = compress(termsOfFace, options.threads);
     }
 
     const std::vector<Vec3> x0 = lattice.points;
@@ -699,7 +707,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       so.initial_trust_region_radius = 1e8;
       so.logging_type = ceres::SILENT;
       so.minimizer_progress_to_stdout = false;
-      so.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+      so.num_threads = static_cast<int>(workerThreads(options.threads));
       ceres::Solver::Summary summary;
       ceres::Solve(so, &problem, &summary);
       if (!summary.IsSolutionUsable())
@@ -714,10 +722,10 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       try
       {
         LatticeSurface trial = buildLatticeSurface(lattice, options.weights);
-        std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution, &feet);
+        std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution, options.threads, &feet);
         std::vector<ReversePoint> trialReverse;
         if (twoWay)
-          trialReverse = reversePoints(trial, *options.original, *originalTree);
+          trialReverse = reversePoints(trial, *options.original, *originalTree, options.threads);
         const double e = objective(trialFeet, trialReverse);
         if (e < e0)
         {
@@ -761,7 +769,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
 
 int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec3>& samples, int count,
   const std::vector<std::pair<std::int64_t, std::int64_t>>& keep, LatticeWeights& weights,
-  std::vector<char>& fixed, int locatorResolution)
+  std::vector<char>& fixed, int locatorResolution, int threads)
 {
   if (count <= 0)
     return 0;
@@ -770,7 +778,7 @@ int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec
   if (!fixed.empty() && fixed.size() != lattice.points.size())
     throw std::invalid_argument("the fixed-vertex flags must be one per lattice vertex");
   const LatticeSurface surface = buildLatticeSurface(lattice, weights); // throws for a bad lattice
-  const std::vector<Foot> feet = footPoints(surface, samples, locatorResolution);
+  const std::vector<Foot> feet = footPoints(surface, samples, locatorResolution, threads);
 
   std::set<EdgeKey> kept;
   for (const auto& e : keep)

@@ -91,6 +91,10 @@ struct RefinementOptions
   /// step is measured). Returning false stops there, and a step not yet
   /// measured is undone.
   std::function<bool(double)> progress;
+  /// Worker threads: 0, every hardware thread; the chunked work (foot
+  /// points, reverse points, the face blocks) uses at most 8. The result does
+  /// not depend on the count (tested), so a fit is the same on every machine.
+  int threads = 0;
 };
 
 struct RefinementReport
@@ -132,6 +136,6 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
 /// `count` where no edge qualifies.
 int insertVerticesAtLargestDistances(PolygonMesh& lattice, const std::vector<Vec3>& samples, int count,
   const std::vector<std::pair<std::int64_t, std::int64_t>>& keep, LatticeWeights& weights,
-  std::vector<char>& fixed, int locatorResolution = 4);
+  std::vector<char>& fixed, int locatorResolution = 4, int threads = 0);
 
 } // namespace lk
