@@ -154,6 +154,16 @@ void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CloseAtBorder: " << this->CloseAtBorder << "\n";
   os << indent << "CropBox: " << this->CropBox[0] << " " << this->CropBox[1] << " " << this->CropBox[2] << " "
      << this->CropBox[3] << " " << this->CropBox[4] << " " << this->CropBox[5] << "\n";
+  os << indent << "PatientMatrix: ";
+  if (this->PatientMatrix)
+  {
+    os << "\n";
+    this->PatientMatrix->PrintSelf(os, indent.GetNextIndent());
+  }
+  else
+  {
+    os << "(none: the input's PatientMatrix field data, or the identity)\n";
+  }
 }
 
 int vtkLKBoneSurfaceFilter::RequestData(

@@ -624,12 +624,20 @@ void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureWeight: " << this->FeatureWeight << "\n";
   os << indent << "FeatureNeighbourWeight: " << this->FeatureNeighbourWeight << "\n";
   os << indent << "LockFeatures: " << this->LockFeatures << "\n";
+  os << indent << "InterpolateFeatures: " << this->InterpolateFeatures << "\n";
   os << indent << "RoundedSurfaceQuadrics: " << this->RoundedSurfaceQuadrics << "\n";
   os << indent << "QuadPairing: " << this->QuadPairing << "\n";
-  os << indent << "Refinement: " << this->Refinement << " (" << this->RefinementIterations << " iterations)\n";
-  os << indent << "RefinementTailWeight: " << this->RefinementTailWeight << " (threshold "
-     << this->RefinementTailThreshold << ")\n";
+  os << indent << "RightAngleTolerance: " << this->RightAngleTolerance << "\n";
+  os << indent << "AngleSumTolerance: " << this->AngleSumTolerance << "\n";
+  os << indent << "MaximumDihedralAngle: " << this->MaximumDihedralAngle << "\n";
+  os << indent << "Refinement: " << this->Refinement << "\n";
+  os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
+  os << indent << "RefinementTailWeight: " << this->RefinementTailWeight << "\n";
+  os << indent << "RefinementTailThreshold: " << this->RefinementTailThreshold << "\n";
   os << indent << "RefinementInsertions: " << this->RefinementInsertions
      << (this->RefinementInsertions < 0 ? " (1 per 100 target vertices)" : "") << "\n";
-  os << indent << "ComputeError: " << this->ComputeError << " (resolution " << this->ErrorResolution << ")\n";
+  os << indent << "ComputeError: " << this->ComputeError << "\n";
+  os << indent << "ErrorResolution: " << this->ErrorResolution << "\n";
+  os << indent << "ErrorSamples: " << this->ErrorSamples << (this->ErrorSamples == 0 ? " (20 per input triangle, at least 200,000)" : "")
+     << "\n";
 }

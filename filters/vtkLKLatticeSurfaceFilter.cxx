@@ -48,6 +48,8 @@ void vtkLKLatticeSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "ChordalTolerance: " << this->ChordalTolerance
+     << (this->ChordalTolerance > 0.0 ? "" : " (off: Resolution decides)") << "\n";
 }
 
 vtkPolyData* vtkLKLatticeSurfaceFilter::GetControlNetOutput()

@@ -55,6 +55,23 @@ class DocumentationTest(unittest.TestCase):
         self.assertLess(mean, 1.0)
 
 
+    def test_print_names_every_parameter(self):
+        # print(filter) is how a Python user sees a filter's settings, as with
+        # VTK's own: every parameter the class adds (a Set with a Get) is named.
+        import re
+        import latticekit
+        names = [n for n in dir(latticekit) if n.startswith("vtkLK")]
+        self.assertGreaterEqual(len(names), 14)
+        for name in names:
+            cls = getattr(latticekit, name)
+            inherited = set(dir(cls.__bases__[0]))
+            params = sorted({m[3:] for m in dir(cls)
+                             if m.startswith("Set") and m not in inherited and hasattr(cls, "Get" + m[3:])})
+            text = str(cls())
+            missing = [p for p in params if not re.search(r"\b" + p + r":", text)]
+            self.assertEqual(missing, [], name)
+
+
 class PipelineTest(unittest.TestCase):
     def test_vtk_sources_and_latticekit_filters_in_one_pipeline(self):
         import latticekit
