@@ -148,12 +148,26 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   vtkImageData* raw = reader->GetOutput();
   int dims[3];
   raw->GetDimensions(dims);
-  if (raw->GetNumberOfPoints() == 0 || raw->GetNumberOfScalarComponents() != 1)
+  if (raw->GetNumberOfPoints() == 0)
   {
-    error = "the DICOM series holds no single-component volume (colour or empty images are not supported)";
+    // vtkDICOMReader stacks no image whose geometry it cannot find (an
+    // enhanced multi-frame file without its plane orientation or positions).
+    error = "the DICOM series gives no volume: its images are empty or lack the orientation and positions to stack "
+            "them";
     return false;
   }
   vtkDICOMMetaData* meta = reader->GetMetaData();
+  if (raw->GetNumberOfScalarComponents() != 1)
+  {
+    // Several values per voxel: colour pixels, or images vtkDICOMReader
+    // could not place apart (frames without their orientation or positions,
+    // time points), which it stacks as components.
+    error = meta->Get(DC::SamplesPerPixel).AsInt() > 1
+      ? "the DICOM series holds colour images; only greyscale (CT) volumes are supported"
+      : "the DICOM series' images cannot be stacked into one volume: several lie at one position (time points), "
+        "or the frames of a multi-frame file lack their orientation or positions";
+    return false;
+  }
   vtkIntArray* fileIndex = reader->GetFileIndexArray();
   const int nslices = dims[2];
   if (fileIndex->GetNumberOfTuples() != nslices)
@@ -163,14 +177,29 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   }
   report.inputSlices = nslices;
 
-  // Geometry of every slice.
-  const int first = fileIndex->GetComponent(0, 0);
+  // Geometry of every slice. An attribute of slice k is looked up in its
+  // file and frame: an enhanced multi-frame file (one file, a frame per
+  // slice) keeps the geometry in its shared and per-frame functional groups,
+  // which vtkDICOMMetaData searches when given the frame.
+  vtkIntArray* frameIndex = reader->GetFrameIndexArray();
+  auto attribute = [&](int k, vtkDICOMTag tag) -> const vtkDICOMValue& {
+    const int file = static_cast<int>(fileIndex->GetComponent(k, 0));
+    const int frame =
+      frameIndex && frameIndex->GetNumberOfTuples() > k ? static_cast<int>(frameIndex->GetComponent(k, 0)) : 0;
+    return meta->Get(file, frame, tag);
+  };
+  // The values of a numeric attribute, or false when it is absent or short
+  // (vtkDICOMValue::GetValues reads beyond a value that holds fewer).
+  auto numbers = [&](int k, vtkDICOMTag tag, double* out, unsigned int count) {
+    const vtkDICOMValue& v = attribute(k, tag);
+    if (!v.IsValid() || v.GetNumberOfValues() < count)
+      return false;
+    v.GetValues(out, count);
+    return true;
+  };
   double iop[6];
-  meta->Get(first, DC::ImageOrientationPatient).GetValues(iop, 6);
   double ps[2];
-  meta->Get(first, DC::PixelSpacing).GetValues(ps, 2);
-  if (!meta->Get(first, DC::ImageOrientationPatient).IsValid() ||
-    !meta->Get(first, DC::PixelSpacing).IsValid())
+  if (!numbers(0, DC::ImageOrientationPatient, iop, 6) || !numbers(0, DC::PixelSpacing, ps, 2))
   {
     error = "the DICOM series has no ImageOrientationPatient or PixelSpacing";
     return false;
@@ -219,17 +248,18 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   std::vector<Slice> slices(static_cast<std::size_t>(nslices));
   for (int k = 0; k < nslices; ++k)
   {
-    const int f = fileIndex->GetComponent(k, 0);
-    const vtkDICOMValue& v = meta->Get(f, DC::ImagePositionPatient);
-    if (!v.IsValid() || v.GetNumberOfValues() < 3)
+    double p[3];
+    if (!numbers(k, DC::ImagePositionPatient, p, 3))
     {
       error = "a DICOM slice has no ImagePositionPatient";
       return false;
     }
-    double p[3];
-    v.GetValues(p, 3);
     double o[6];
-    meta->Get(f, DC::ImageOrientationPatient).GetValues(o, 6);
+    if (!numbers(k, DC::ImageOrientationPatient, o, 6))
+    {
+      error = "a DICOM slice has no ImageOrientationPatient";
+      return false;
+    }
     for (int i = 0; i < 6; ++i)
     {
       if (std::abs(o[i] - iop[i]) > 1e-4)

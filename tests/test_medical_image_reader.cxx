@@ -2,9 +2,12 @@
 #include "vtkLKMedicalImageReader.h"
 
 #include <vtkDICOMCTGenerator.h>
+#include <vtkDICOMCompiler.h>
 #include <vtkDICOMImageReader.h>
+#include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
 #include <vtkDICOMReader.h>
+#include <vtkDICOMSequence.h>
 #include <vtkDICOMValue.h>
 #include <vtkDICOMWriter.h>
 #include <vtkDataArray.h>
@@ -271,6 +274,162 @@ TEST(MedicalImageReader, RescaledSeriesReadsInHounsfieldUnitsInPositionOrder)
   for (int a = 0; a < 3; ++a)
   {
     EXPECT_NEAR(reader->GetPatientMatrix()->GetElement(a, 3), lowest[a], 1e-6);
+  }
+}
+
+namespace
+{
+/// An Enhanced CT Image (one file, every slice a frame, the geometry in
+/// functional groups: pixel spacing, orientation and rescale shared, each
+/// frame's ImagePositionPatient its own), as recent scanners export a CT. It
+/// is made of the bundled phantom's three slices, the frames in the order
+/// `files` gives, the stored values and attributes as they are in the slices.
+/// Without `orientation` or `positions` the file lacks the shared plane
+/// orientation or the frames' positions (a damaged or non-conforming export).
+void writeEnhancedCT(const std::string& path, const std::string& folder, const std::vector<std::string>& files,
+  bool orientation = true, bool positions = true)
+{
+  std::vector<unsigned short> pixels;
+  vtkNew<vtkDICOMMetaData> meta;
+  vtkDICOMSequence perFrame;
+  for (std::size_t k = 0; k < files.size(); ++k)
+  {
+    vtkNew<vtkDICOMReader> raw;
+    raw->SetFileName((folder + files[k]).c_str());
+    raw->SetMemoryRowOrderToFileNative();
+    raw->AutoRescaleOff();
+    raw->Update();
+    vtkDICOMMetaData* m = raw->GetMetaData();
+    vtkImageData* img = raw->GetOutput();
+    ASSERT_EQ(img->GetScalarType(), VTK_UNSIGNED_SHORT);
+    const auto* p = static_cast<const unsigned short*>(img->GetScalarPointer());
+    pixels.insert(pixels.end(), p, p + img->GetNumberOfPoints());
+    if (k == 0)
+    {
+      for (const vtkDICOMTag tag : { DC::PatientName, DC::PatientID, DC::StudyInstanceUID, DC::StudyID,
+             DC::StudyDate, DC::StudyTime, DC::Rows, DC::Columns, DC::BitsAllocated, DC::BitsStored, DC::HighBit,
+             DC::PixelRepresentation, DC::SamplesPerPixel, DC::PhotometricInterpretation })
+      {
+        if (m->Get(tag).IsValid())
+          meta->Set(tag, m->Get(tag));
+      }
+      vtkDICOMItem measures, plane, rescale, shared;
+      measures.Set(DC::PixelSpacing, m->Get(DC::PixelSpacing));
+      measures.Set(DC::SliceThickness, m->Get(DC::SliceThickness));
+      plane.Set(DC::ImageOrientationPatient, m->Get(DC::ImageOrientationPatient));
+      rescale.Set(DC::RescaleIntercept, m->Get(DC::RescaleIntercept));
+      rescale.Set(DC::RescaleSlope, m->Get(DC::RescaleSlope));
+      rescale.Set(DC::RescaleType, "HU");
+      shared.Set(DC::PixelMeasuresSequence, vtkDICOMSequence(measures));
+      if (orientation)
+        shared.Set(DC::PlaneOrientationSequence, vtkDICOMSequence(plane));
+      shared.Set(DC::PixelValueTransformationSequence, vtkDICOMSequence(rescale));
+      meta->Set(DC::SharedFunctionalGroupsSequence, vtkDICOMSequence(shared));
+    }
+    vtkDICOMItem position, content, frame;
+    position.Set(DC::ImagePositionPatient, m->Get(DC::ImagePositionPatient));
+    content.Set(DC::InStackPositionNumber, static_cast<double>(k + 1));
+    if (positions)
+      frame.Set(DC::PlanePositionSequence, vtkDICOMSequence(position));
+    frame.Set(DC::FrameContentSequence, vtkDICOMSequence(content));
+    perFrame.AddItem(frame);
+  }
+  meta->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.2.1"); // Enhanced CT Image Storage
+  meta->Set(DC::Modality, "CT");
+  meta->Set(DC::ImageType, "ORIGINAL\\PRIMARY\\AXIAL\\NONE");
+  meta->Set(DC::SeriesNumber, 1.0);
+  meta->Set(DC::InstanceNumber, 1.0);
+  meta->Set(DC::NumberOfFrames, static_cast<double>(files.size()));
+  meta->Set(DC::PerFrameFunctionalGroupsSequence, perFrame);
+  meta->Set(DC::PixelData, vtkDICOMValue(vtkDICOMVR::OW)); // its element is written with the frames
+  vtkNew<vtkDICOMCompiler> compiler;
+  compiler->SetFileName(path.c_str());
+  compiler->SetMetaData(meta);
+  compiler->WriteHeader();
+  const std::size_t frame = pixels.size() / files.size();
+  for (std::size_t k = 0; k < files.size(); ++k)
+    compiler->WriteFrame(reinterpret_cast<const unsigned char*>(pixels.data() + k * frame),
+      static_cast<vtkIdType>(frame * sizeof(unsigned short)));
+  compiler->Close();
+  ASSERT_EQ(compiler->GetErrorCode(), 0u);
+}
+} // namespace
+
+// The same three slices as one Enhanced CT file, their frames stored out of
+// position order: the same volume, voxel for voxel, in the same place.
+TEST(MedicalImageReader, EnhancedMultiFrameCTReadsAsItsSlicesDo)
+{
+  const std::string folder = lktest::sampleData("dicom-ct-philips-phantom");
+  const std::string dir = tempFolder("enhanced_ct");
+  writeEnhancedCT(dir + "/enhanced.dcm", folder, { "/I110", "/I90", "/I100" });
+  // The same file twice in one folder: one series (the same UIDs) whose
+  // frames lie two at each position, which vtkDICOMReader stacks as
+  // components. Said as such, not as colour images.
+  const std::string twice = tempFolder("enhanced_ct_twice");
+  vtksys::SystemTools::CopyAFile(dir + "/enhanced.dcm", twice + "/a.dcm");
+  vtksys::SystemTools::CopyAFile(dir + "/enhanced.dcm", twice + "/b.dcm");
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(twice.c_str());
+    reader->Update();
+    EXPECT_EQ(rec.errors, 1);
+    EXPECT_NE(rec.messages.find("cannot be stacked into one volume: several lie at one position"), std::string::npos)
+      << rec.messages;
+  }
+  vtkNew<vtkLKMedicalImageReader> series;
+  series->SetFileName(folder.c_str());
+  series->Update();
+  for (const std::string& input : { dir, dir + "/enhanced.dcm" })
+  {
+    SCOPED_TRACE(input);
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(input.c_str());
+    reader->Update();
+    ASSERT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+    ASSERT_STREQ(reader->GetFileFormat(), "DICOM");
+    EXPECT_EQ(reader->GetNumberOfInputSlices(), 3);
+    EXPECT_NEAR(reader->GetMinimumSliceGap(), 5.0, 1e-6);
+    vtkImageData* a = reader->GetOutput();
+    vtkImageData* b = series->GetOutput();
+    ASSERT_EQ(std::vector<int>(a->GetDimensions(), a->GetDimensions() + 3),
+      std::vector<int>(b->GetDimensions(), b->GetDimensions() + 3));
+    for (int i = 0; i < 3; ++i)
+    {
+      EXPECT_NEAR(a->GetSpacing()[i], b->GetSpacing()[i], 1e-9);
+      EXPECT_NEAR(a->GetOrigin()[i], b->GetOrigin()[i], 1e-9);
+    }
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        EXPECT_NEAR(reader->GetPatientMatrix()->GetElement(r, c), series->GetPatientMatrix()->GetElement(r, c), 1e-9);
+    vtkIdType differ = 0;
+    for (vtkIdType v = 0; v < a->GetNumberOfPoints(); ++v)
+      differ += a->GetPointData()->GetScalars()->GetComponent(v, 0) != b->GetPointData()->GetScalars()->GetComponent(v, 0);
+    EXPECT_EQ(differ, 0);
+    EXPECT_EQ(a->GetScalarRange()[0], -1024.0); // rescaled, as the slices are
+  }
+
+  // Without the orientation or the frames' positions: a clear error. (The
+  // first read above crashed the reader, which looked for the orientation
+  // outside the functional groups and read a value that was not there.)
+  for (const bool orientation : { false, true })
+  {
+    // Each in a folder of its own: the series shares its UIDs with the one above.
+    const std::string path =
+      tempFolder(orientation ? "enhanced_ct_no_positions" : "enhanced_ct_no_orientation") + "/enhanced.dcm";
+    writeEnhancedCT(path, folder, { "/I90", "/I100", "/I110" }, orientation, !orientation);
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    EXPECT_EQ(rec.errors, 1);
+    EXPECT_NE(rec.messages.find(orientation ? "a DICOM slice has no ImagePositionPatient"
+                                            : "the DICOM series has no ImageOrientationPatient or PixelSpacing"),
+      std::string::npos)
+      << rec.messages;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
   }
 }
 
