@@ -75,13 +75,13 @@ struct ErrorCatcher
 } // namespace
 
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
-  vtkAlgorithm* progress)
+  vtkAlgorithm* progress, int scanDepth)
 {
   series.clear();
   vtkNew<vtkDICOMDirectory> dir;
   ErrorCatcher catcher(dir);
   dir->SetDirectoryName(folder.c_str());
-  dir->SetScanDepth(1);
+  dir->SetScanDepth(std::max(1, scanDepth));
   dir->RequirePixelDataOn();
   {
     std::optional<ProgressRelay> relay;
@@ -110,7 +110,8 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
     [](const DICOMSeriesInfo& a, const DICOMSeriesInfo& b) { return a.files.size() > b.files.size(); });
   if (series.empty())
   {
-    error = "no DICOM image series found in '" + folder + "'";
+    error = "no DICOM image series found in '" + folder + "'" +
+      (scanDepth > 1 ? " or in its sub-folders (" + std::to_string(scanDepth - 1) + " levels down)" : "");
     if (!catcher.messages.empty())
     {
       error += " (" + catcher.messages + ")";

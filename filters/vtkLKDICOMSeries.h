@@ -44,12 +44,19 @@ struct DICOMGeometryReport
   std::vector<WideGap> wideGaps; ///< in slice order
 };
 
-/// Lists the series found in the folder (scanning one level deep), largest first.
-/// Returns false with error set when the folder cannot be read or has no image series.
+/// How many folder levels a DICOM folder is searched: a hospital's CD copied
+/// to disk keeps its images a few folders down (DICOM/ST000000/SE000000/),
+/// unless its DICOMDIR, which vtkDICOMDirectory reads instead, indexes them.
+constexpr int kDICOMScanDepth = 8;
+
+/// Lists the series found in the folder, largest first: its files and those
+/// of its sub-folders down to `scanDepth` levels (1: the folder's own files;
+/// a DICOMDIR in the folder is used instead when there is one). Returns false
+/// with error set when the folder cannot be read or has no image series.
 /// The scan of the files' headers is the first fifth of `progress`'s progress
 /// (when given), the reading of the series (readDICOMSeries) the rest.
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
-  vtkAlgorithm* progress = nullptr);
+  vtkAlgorithm* progress = nullptr, int scanDepth = 1);
 
 /// Reads the series and resamples it onto a regular grid in the slice frame:
 /// x along the rows (ImageOrientationPatient[0..2]), y along the columns

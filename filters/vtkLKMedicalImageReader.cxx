@@ -629,7 +629,10 @@ bool vtkLKMedicalImageReader::ReadVolume()
     const std::string folder = isFolder ? path : vtksys::SystemTools::GetFilenamePath(path);
     std::vector<lkvtk::DICOMSeriesInfo> series;
     std::string error;
-    if (!lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error, this))
+    // A folder is searched with its sub-folders (a CD's layout); a file's
+    // series lies in the file's own folder.
+    if (!lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error, this,
+          isFolder ? lkvtk::kDICOMScanDepth : 1))
     {
       // A folder that holds a volume file (a NIfTI beside its licence) is a
       // likely slip: name the files the user may have meant.
@@ -702,11 +705,23 @@ bool vtkLKMedicalImageReader::ReadVolume()
     }
     else if (series.size() > 1)
     {
+      // Each series with the folder it lies in, when they lie apart (a CD's
+      // series folders), so the user can tell the bone kernel's from the scout's.
+      std::vector<std::string> where;
+      for (const auto& one : series)
+      {
+        const std::string dirOf = vtksys::SystemTools::GetFilenamePath(one.files.front());
+        where.push_back(vtksys::SystemTools::RelativePath(vtksys::SystemTools::CollapseFullPath(path),
+          vtksys::SystemTools::CollapseFullPath(dirOf)));
+      }
+      const bool apart = std::any_of(where.begin(), where.end(), [&](const std::string& w) { return w != where[0]; });
       std::ostringstream os;
       for (std::size_t s = 0; s < series.size(); ++s)
       {
         os << "\n  [" << s << "] " << series[s].files.size() << " images, " << series[s].modality
            << " '" << series[s].description << "' " << series[s].uid;
+        if (apart)
+          os << " in '" << (where[s].empty() ? std::string(".") : where[s]) << "'";
       }
       vtkWarningMacro("The folder holds " << series.size()
                                           << " series; reading the largest, [0] (SeriesIndex selects another):"

@@ -715,6 +715,7 @@ TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
   EXPECT_EQ(rec.warnings, 2) << rec.warningMessages;
   EXPECT_NE(rec.warningMessages.find("2 series"), std::string::npos);
   EXPECT_NE(rec.warningMessages.find("The slices are not evenly spaced"), std::string::npos);
+  EXPECT_EQ(rec.warningMessages.find(" in '"), std::string::npos) << rec.warningMessages; // one folder
 
   reader->SetSeriesIndex(1);
   reader->Update();
@@ -733,6 +734,53 @@ TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
   reader->Update();
   EXPECT_EQ(rec.errors, 0) << rec.messages;
   EXPECT_EQ(reader->GetNumberOfInputSlices(), 5);
+}
+
+// A hospital CD copied to disk keeps its images some folders down, a series
+// per folder. Given the CD's top folder, the reader finds them, reads the
+// largest and says where each series lies (the scout's, the bone kernel's).
+TEST(MedicalImageReader, ACDsFoldersAreSearchedAndEachSeriesNamesItsFolder)
+{
+  const std::string cd = tempFolder("cd-copy");
+  const std::string head = cd + "/DICOM/ST000000/SE000000", small = cd + "/DICOM/ST000000/SE000001";
+  vtksys::SystemTools::MakeDirectory(head);
+  vtksys::SystemTools::MakeDirectory(small);
+  copyGESeries(head);
+  writeSyntheticSeries(small, "%s/IM%06d", 64, 5, 3.0, 100, "scout");
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(cd.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetNumberOfSeries(), 2);
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 28);
+  EXPECT_NE(rec.warningMessages.find("28 images, CT"), std::string::npos) << rec.warningMessages;
+  EXPECT_NE(rec.warningMessages.find("in 'DICOM/ST000000/SE000000'"), std::string::npos) << rec.warningMessages;
+  EXPECT_NE(rec.warningMessages.find("'scout'"), std::string::npos) << rec.warningMessages;
+  EXPECT_NE(rec.warningMessages.find("in 'DICOM/ST000000/SE000001'"), std::string::npos) << rec.warningMessages;
+  reader->SetSeriesIndex(1);
+  reader->Update();
+  EXPECT_EQ(reader->GetNumberOfInputSlices(), 5);
+
+  // Series in one folder are not given a folder each (the test above).
+  // Deeper than the search goes: not found, and the message says how deep
+  // it looked.
+  std::string deep = tempFolder("cd-too-deep");
+  const std::string top = deep;
+  for (int level = 0; level < 8; ++level)
+    deep += "/d";
+  vtksys::SystemTools::MakeDirectory(deep);
+  writeSyntheticSeries(deep, "%s/IM%06d", 16, 3, 2.0, 100);
+  vtkNew<vtkLKMedicalImageReader> far;
+  lktest::ErrorRecorder farRec(far);
+  far->SetFileName(top.c_str());
+  far->Update();
+  EXPECT_EQ(farRec.errors, 1);
+  EXPECT_NE(farRec.messages.find("or in its sub-folders (7 levels down)"), std::string::npos) << farRec.messages;
+  far->SetFileName((top + "/d").c_str()); // seven levels above the images: found
+  far->Update();
+  EXPECT_EQ(farRec.errors, 1) << farRec.messages;
+  EXPECT_EQ(far->GetNumberOfInputSlices(), 3);
 }
 
 TEST(MedicalImageReader, ASeriesWithAMissingSliceIsWarned)
