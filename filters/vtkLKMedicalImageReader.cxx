@@ -21,6 +21,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkObjectFactoryCollection.h>
 #include <vtkPointData.h>
+#include <vtkSMPTools.h>
 #include <vtkStringArray.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtksys/SystemTools.hxx>
@@ -437,6 +438,45 @@ void vtkLKMedicalImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileFormat: " << this->FileFormat << "\n";
 }
 
+namespace
+{
+/// v = u slope + intercept over every voxel, computed in double: in a short
+/// when the stored values are whole numbers, slope and intercept too, and
+/// the values fit (a CT's HU), in an int when they fit that, else in a float.
+vtkSmartPointer<vtkImageData> calibrated(vtkImageData* image, double slope, double intercept)
+{
+  vtkDataArray* in = image->GetPointData()->GetScalars();
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->CopyStructure(image);
+  if (!in)
+    return out;
+  double range[2];
+  in->GetRange(range, 0);
+  const double a = range[0] * slope + intercept, b = range[1] * slope + intercept;
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  const bool whole = in->GetDataType() != VTK_FLOAT && in->GetDataType() != VTK_DOUBLE &&
+    slope == std::round(slope) && intercept == std::round(intercept);
+  int type = VTK_FLOAT;
+  if (whole && lo >= VTK_SHORT_MIN && hi <= VTK_SHORT_MAX)
+    type = VTK_SHORT;
+  else if (whole && lo >= VTK_INT_MIN && hi <= VTK_INT_MAX)
+    type = VTK_INT;
+  vtkSmartPointer<vtkDataArray> values = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
+  values->SetName(in->GetName());
+  values->SetNumberOfComponents(in->GetNumberOfComponents());
+  values->SetNumberOfTuples(in->GetNumberOfTuples());
+  // Whole numbers in, whole slope and intercept: the integer result is exact.
+  const int components = in->GetNumberOfComponents();
+  vtkSMPTools::For(0, in->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end; ++t)
+      for (int c = 0; c < components; ++c)
+        values->SetComponent(t, c, in->GetComponent(t, c) * slope + intercept);
+  });
+  out->GetPointData()->SetScalars(values);
+  return out;
+}
+} // namespace
+
 bool vtkLKMedicalImageReader::ReadVolume()
 {
   this->Volume->Initialize();
@@ -575,6 +615,21 @@ bool vtkLKMedicalImageReader::ReadVolume()
       return false;
     }
     image = reader->GetOutput();
+    // scl_slope and scl_inter calibrate the stored values (NIfTI-1: v = u
+    // scl_slope + scl_inter unless scl_slope is 0). dcm2niix keeps a CT's
+    // stored values and puts its RescaleIntercept here (often -1024):
+    // without it the bone threshold would fall in soft tissue. vtkNIFTIImageReader
+    // only reports them.
+    const double slope = reader->GetRescaleSlope(), intercept = reader->GetRescaleIntercept();
+    if (!std::isfinite(slope) || !std::isfinite(intercept))
+    {
+      vtkWarningMacro("'" << path << "' has a scl_slope or scl_inter that is not a number (" << slope << ", "
+                          << intercept << "): its values are used as stored.");
+    }
+    else if (slope != 0.0 && (slope != 1.0 || intercept != 0.0))
+    {
+      image = calibrated(image, slope, intercept);
+    }
     image->GetSpacing(spacing);
     double o[3];
     image->GetOrigin(o);

@@ -17,6 +17,7 @@
 #include <vtkIntArray.h>
 #include <vtkMatrix4x4.h>
 #include <vtkMetaImageWriter.h>
+#include <vtkNIFTIImageWriter.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkStringArray.h>
@@ -594,7 +595,7 @@ namespace
 /// spacing 1, 1.5, 2, a qform turned 0.3 rad about z with offset (10, -20, 30)
 /// (RAS) and the given qfac, and, when sform is given, that sform as well.
 void writeNifti(const std::string& path, float qfac, short qformCode, short sformCode,
-  const std::array<float, 12>& sform)
+  const std::array<float, 12>& sform, float slope = 1.0f, float intercept = 0.0f)
 {
   char h[352] = {};
   auto put = [&h](int offset, const void* value, std::size_t bytes) { std::memcpy(h + offset, value, bytes); };
@@ -607,9 +608,10 @@ void writeNifti(const std::string& path, float qfac, short qformCode, short sfor
   put(72, &bitpix, 2);
   const float pixdim[8] = { qfac, 1.0f, 1.5f, 2.0f, 1, 1, 1, 1 };
   put(76, pixdim, sizeof(pixdim));
-  const float voxOffset = 352.0f, slope = 1.0f;
+  const float voxOffset = 352.0f;
   put(108, &voxOffset, 4);
   put(112, &slope, 4);
+  put(116, &intercept, 4);
   put(252, &qformCode, 2);
   put(254, &sformCode, 2);
   const float quatern[6] = { 0.0f, 0.0f, static_cast<float>(std::sin(0.15)), 10.0f, -20.0f, 30.0f };
@@ -695,6 +697,74 @@ TEST(MedicalImageReader, NiftiQformAndSformPlaceEveryVoxelInPatientSpace)
   EXPECT_NEAR(p[0], -expected[0], 1e-4);
   EXPECT_NEAR(p[1], -expected[1], 1e-4);
   EXPECT_NEAR(p[2], expected[2], 1e-4);
+}
+
+// dcm2niix keeps a CT's stored values and writes its RescaleIntercept to
+// scl_inter (often -1024). The reader ignored scl_slope and scl_inter, and a
+// 300 HU threshold then fell at -724 HU, in soft tissue, without a word.
+TEST(MedicalImageReader, NiftiSclSlopeAndInterCalibrateTheValues)
+{
+  const std::string dir = tempFolder("nifti_scl");
+  vtkNew<vtkLKMedicalImageReader> reference;
+  reference->SetFileName(lktest::sampleData("cthead/cthead_hu_approx.nii.gz").c_str());
+  reference->Update();
+  vtkImageData* hu = reference->GetOutput();
+  ASSERT_EQ(hu->GetScalarType(), VTK_SHORT);
+  ASSERT_EQ(hu->GetScalarRange()[0], -1024.0);
+  // Stored as HU + 1024 with scl_inter -1024, and as 2 (HU + 1024) in an
+  // unsigned short with scl_slope 0.5.
+  struct Case
+  {
+    const char* name;
+    int type;
+    double slope, intercept;
+    int readType;
+  };
+  for (const Case& c : { Case{ "inter.nii.gz", VTK_SHORT, 1.0, -1024.0, VTK_SHORT },
+         Case{ "slope.nii.gz", VTK_UNSIGNED_SHORT, 0.5, -1024.0, VTK_FLOAT } })
+  {
+    SCOPED_TRACE(c.name);
+    vtkNew<vtkImageData> stored;
+    stored->CopyStructure(hu);
+    stored->AllocateScalars(c.type, 1);
+    for (vtkIdType i = 0; i < hu->GetNumberOfPoints(); ++i)
+      stored->GetPointData()->GetScalars()->SetTuple1(
+        i, (hu->GetPointData()->GetScalars()->GetTuple1(i) - c.intercept) / c.slope);
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(stored);
+    writer->SetRescaleSlope(c.slope);
+    writer->SetRescaleIntercept(c.intercept);
+    writer->SetFileName((dir + "/" + c.name).c_str());
+    writer->Write();
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName((dir + "/" + c.name).c_str());
+    reader->Update();
+    ASSERT_EQ(rec.errors, 0) << rec.messages;
+    vtkImageData* read = reader->GetOutput();
+    EXPECT_EQ(read->GetScalarType(), c.readType);
+    ASSERT_EQ(read->GetNumberOfPoints(), hu->GetNumberOfPoints());
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < hu->GetNumberOfPoints(); ++i)
+      differ += read->GetPointData()->GetScalars()->GetTuple1(i) != hu->GetPointData()->GetScalars()->GetTuple1(i);
+    EXPECT_EQ(differ, 0);
+  }
+  // scl_slope 0 means no scaling (NIfTI-1); a NaN one is said and ignored.
+  const std::array<float, 12> noSform = {};
+  for (const float slope : { 0.0f, std::nanf("") })
+  {
+    const std::string path = dir + (slope == 0.0f ? "/zero.nii" : "/nan.nii");
+    writeNifti(path, 1.0f, 1, 0, noSform, slope, -1024.0f);
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    ASSERT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_EQ(reader->GetOutput()->GetScalarRange()[1], 1000.0);
+    EXPECT_EQ(rec.warnings, slope == 0.0f ? 0 : 1) << rec.warningMessages;
+    if (slope != 0.0f)
+      EXPECT_NE(rec.warningMessages.find("scl_slope or scl_inter that is not a number"), std::string::npos);
+  }
 }
 
 TEST(MedicalImageReader, TwoSeriesReadTheLargestAndWarnOrTheChosenOne)
