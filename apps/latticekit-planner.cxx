@@ -53,6 +53,8 @@ void usage(std::ostream& os)
         "  --close              close the surface where the scan's border cuts bone (padded with\n"
         "                       air as a crop is; a skull vault above the last slice): an open\n"
         "                       surface is cut in two only by a line all round its open part\n"
+        "  --label N            one label of a label map with several (a segmentation: its\n"
+        "                       voxels of value N)\n"
         "  --series I           DICOM: series I of the folder (0 = largest, the default)\n"
         "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 0;\n"
         "                       20 takes a label map's slice staircase out, moving the surface\n"
@@ -103,7 +105,7 @@ int main(int argc, char* argv[])
   std::string input, replay, shot, exportFolder, events, sessionOut = "planner_session.json";
   double iso = 300.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool isoGiven = false, seeded = false, cropped = false, closed = false;
-  long series = -1, smoothing = -1;
+  long series = -1, smoothing = -1, label = 0;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -129,6 +131,8 @@ int main(int argc, char* argv[])
       series = args.integer(a, 0, std::numeric_limits<int>::max(), "an integer >= 0");
     else if (a == "--smooth")
       smoothing = args.integer(a, 0, 1000, "an integer from 0 to 1000");
+    else if (a == "--label")
+      label = args.integer(a, 1, std::numeric_limits<int>::max(), "a label value >= 1");
     else if (a == "--replay")
       replay = args.value(a);
     else if (a == "--screenshot")
@@ -172,10 +176,10 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0)
+    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0 || label > 0)
     {
-      std::cerr << "error: --iso, --seed, --crop, --close, --series and --smooth are for a CT or label map; '" << input
-                << "' is a mesh\n";
+      std::cerr << "error: --iso, --seed, --crop, --close, --series, --smooth and --label are for a CT or label map; '"
+                << input << "' is a mesh\n";
       return 2;
     }
     mesh = lkapp::readMesh(input, error);
@@ -210,6 +214,8 @@ int main(int argc, char* argv[])
       used.series = series;
     if (smoothing >= 0)
       used.smoothing = smoothing;
+    if (label > 0)
+      used.label = label;
     used.given = true;
     reader->SetFileName(input.c_str());
     reader->SetSeriesIndex(static_cast<int>(used.series));
@@ -224,6 +230,7 @@ int main(int argc, char* argv[])
     bone->SetCropBox(used.crop.data());
     bone->SetCloseAtBorder(used.closed);
     bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
+    bone->SetLabel(static_cast<int>(used.label));
   }
   const int warningsBeforeLoad = lkapp::warningCount();
   {
@@ -260,8 +267,12 @@ int main(int argc, char* argv[])
   if (!mesh && isoGiven && bone->GetTreatedAsLabelMap())
   {
     std::ostringstream note; // the surface is not the one --iso asked for
-    note << "--iso " << iso << " is not used: '" << vtksys::SystemTools::GetFilenameName(input)
-         << "' is a 0/1 label map, taken at 0.5";
+    note << "--iso " << iso << " is not used: ";
+    if (planner.session.surface.label > 0)
+      note << "label " << planner.session.surface.label << " of '" << vtksys::SystemTools::GetFilenameName(input)
+           << "' is taken as a 0/1 label map, at 0.5";
+    else
+      note << "'" << vtksys::SystemTools::GetFilenameName(input) << "' is a 0/1 label map, taken at 0.5";
     std::cerr << "warning: " << note.str() << "\n";
     loadWarnings += (loadWarnings.empty() ? "" : "\n") + note.str();
   }
@@ -276,6 +287,8 @@ int main(int argc, char* argv[])
               << planner.bone->GetNumberOfPolys() << " triangles ("
               << (bone->GetTreatedAsLabelMap() ? "label map at level " : "CT at ") << bone->GetEffectiveIsoValue()
               << (bone->GetTreatedAsLabelMap() ? "" : " HU") << ", ";
+    if (used.label > 0)
+      std::cout << "label " << used.label << ", ";
     if (used.cropped)
       std::cout << "inside the box x " << used.crop[0] << " to " << used.crop[1] << ", y " << used.crop[2] << " to "
                 << used.crop[3] << ", z " << used.crop[4] << " to " << used.crop[5] << ", ";

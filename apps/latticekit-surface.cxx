@@ -42,6 +42,8 @@ void usage(std::ostream& os)
         "                     (default: 1 for label maps, none for CT)\n"
         "  --label-map        treat the input as a 0/1 label map (auto-detected otherwise)\n"
         "  --no-label-map     never treat the input as a label map\n"
+        "  --label N          one label of a label map with several (a segmentation: its\n"
+        "                     voxels of value N, as a 0/1 label map)\n"
         "  --series I         DICOM: read series I of the folder (0 = largest, the default)\n"
         "  --slice-spacing H  DICOM: resampled slice spacing in mm (default: smallest gap)\n"
         "  --fill-cavities    fill enclosed air (in 3D or within a slice) first: the outer\n"
@@ -64,6 +66,7 @@ int main(int argc, char* argv[])
   double sliceSpacing = 0.0;
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
   int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
+  long label = 0;
   bool repair = true, quiet = false, fillCavities = false;
   lkapp::Arguments args(argc, argv, usage);
   const double inf = std::numeric_limits<double>::max();
@@ -101,6 +104,8 @@ int main(int argc, char* argv[])
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_ON;
     else if (a == "--no-label-map")
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_OFF;
+    else if (a == "--label")
+      label = args.integer(a, 1, std::numeric_limits<int>::max(), "a label value >= 1");
     else if (a == "--series")
       series = args.integer(a, 0, std::numeric_limits<long>::max(), "an integer >= 0");
     else if (a == "--slice-spacing")
@@ -115,6 +120,11 @@ int main(int argc, char* argv[])
       args.unknown(a);
     else
       args.positional(a, input, "input");
+  }
+  if (label > 0 && labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_OFF)
+  {
+    std::cerr << "error: --label takes one label of a label map; --no-label-map says the input is none\n";
+    return 2;
   }
   if (input.empty() || output.empty())
   {
@@ -154,6 +164,7 @@ int main(int argc, char* argv[])
   surface->SetCropBox(crop);
   surface->SetCloseAtBorder(close);
   surface->SetLabelMapMode(labelMode);
+  surface->SetLabel(static_cast<int>(label));
   surface->SetRepair(repair);
   surface->SetFillCavities(fillCavities);
   {
@@ -168,9 +179,12 @@ int main(int argc, char* argv[])
   {
     // A label map is taken at 0.5 whatever --iso says: say so, as the
     // surface is not the one asked for.
-    std::cerr << "warning: --iso " << iso << " is not used: the input is a 0/1 label map, taken at 0.5"
-              << (labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO ? " (--no-label-map takes it at the --iso value)"
-                                                                       : "")
+    std::cerr << "warning: --iso " << iso << " is not used: "
+              << (label > 0 ? "--label " + std::to_string(label) + " is taken as a 0/1 label map, at 0.5"
+                            : std::string("the input is a 0/1 label map, taken at 0.5"))
+              << (labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO && label == 0
+                     ? " (--no-label-map takes it at the --iso value)"
+                     : "")
               << "\n";
   }
   vtkPolyData* mesh = surface->GetOutput();
@@ -199,7 +213,9 @@ int main(int argc, char* argv[])
     std::cout << "crop box   x " << crop[0] << " to " << crop[1] << ", y " << crop[2] << " to " << crop[3] << ", z "
               << crop[4] << " to " << crop[5] << " mm (patient), padded with air\n";
   std::cout << "iso value  " << surface->GetEffectiveIsoValue()
-            << (surface->GetTreatedAsLabelMap() ? " (label map)" : "") << "\n";
+            << (label > 0 ? " (label " + std::to_string(label) + " of the label map)"
+                          : std::string(surface->GetTreatedAsLabelMap() ? " (label map)" : ""))
+            << "\n";
   std::cout << "surface    " << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfPolys()
             << " triangles\n";
   auto field = [&](const char* name) -> long {

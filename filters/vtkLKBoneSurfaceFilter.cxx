@@ -34,6 +34,9 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <set>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkLKBoneSurfaceFilter);
@@ -95,6 +98,45 @@ bool isBinaryLabelMap(vtkImageData* image)
   }
   return true; // an integer array whose range is [0, 1] has only 0 and 1
 }
+
+/// The distinct values of an integer array, in order, or nothing when it
+/// holds floating-point values or more than `most` distinct ones.
+std::vector<long long> fewIntegerValues(vtkDataArray* s, std::size_t most)
+{
+  if (!s || s->GetDataType() == VTK_FLOAT || s->GetDataType() == VTK_DOUBLE)
+    return {};
+  std::set<long long> seen;
+  const vtkIdType n = s->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    seen.insert(static_cast<long long>(s->GetComponent(i, 0)));
+    if (seen.size() > most)
+      return {};
+  }
+  return { seen.begin(), seen.end() };
+}
+
+std::string listed(const std::vector<long long>& values)
+{
+  std::ostringstream os;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    os << (i == 0 ? "" : ", ") << values[i];
+  return os.str();
+}
+
+/// For a volume of a few small whole numbers (a segmentation with several
+/// labels, which is no 0/1 label map): how to take one of them.
+std::string labelHint(vtkImageData* image, const double range[2])
+{
+  if (!(range[0] >= 0.0 && range[1] <= 255.0))
+    return {};
+  const std::vector<long long> values = fewIntegerValues(image->GetPointData()->GetScalars(), 16);
+  if (values.size() < 3)
+    return {};
+  return " The volume holds only the values " + listed(values) +
+    ": if it is a label map with several labels, Label (--label N) takes one of them.";
+}
+
 } // namespace
 
 vtkLKBoneSurfaceFilter::vtkLKBoneSurfaceFilter() = default;
@@ -149,6 +191,7 @@ void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedPoint: " << this->SeedPoint[0] << " " << this->SeedPoint[1] << " "
      << this->SeedPoint[2] << "\n";
   os << indent << "LabelMapMode: " << this->LabelMapMode << "\n";
+  os << indent << "Label: " << this->Label << (this->Label > 0 ? "" : " (off)") << "\n";
   os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "Cropping: " << this->Cropping << "\n";
   os << indent << "CloseAtBorder: " << this->CloseAtBorder << "\n";
@@ -226,6 +269,41 @@ int vtkLKBoneSurfaceFilter::RequestData(
     }
   }
 
+  // One label of several: a 0/1 label map of it (with the input's field
+  // data, where the reader's patient matrix is).
+  vtkNew<vtkImageData> oneLabel;
+  if (this->Label > 0)
+  {
+    vtkDataArray* s = input->GetPointData()->GetScalars();
+    if (s->GetDataType() == VTK_FLOAT || s->GetDataType() == VTK_DOUBLE)
+    {
+      vtkErrorMacro("Label " << this->Label << " needs a label map of integers; this volume holds "
+                             << s->GetDataTypeAsString() << " values.");
+      return 0;
+    }
+    oneLabel->CopyStructure(input);
+    oneLabel->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    oneLabel->GetFieldData()->ShallowCopy(input->GetFieldData());
+    auto* out = static_cast<unsigned char*>(oneLabel->GetScalarPointer());
+    const vtkIdType n = s->GetNumberOfTuples();
+    vtkIdType hits = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      out[i] = s->GetComponent(i, 0) == this->Label;
+      hits += out[i];
+    }
+    if (hits == 0)
+    {
+      const std::vector<long long> labels = fewIntegerValues(s, 64);
+      vtkErrorMacro("No voxel holds label " << this->Label << "; "
+                    << (labels.empty() ? std::string("the volume holds more than 64 values (is it a label map?)")
+                                       : "the volume's values are " + listed(labels))
+                    << ".");
+      return 0;
+    }
+    input = oneLabel;
+  }
+
   // Patient matrix: explicit, else the reader's field data, else identity.
   vtkNew<vtkMatrix4x4> matrix;
   vtkSmartPointer<vtkAbstractArray> space; // the reader's "SPACE" tag, passed on with its matrix
@@ -275,7 +353,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     input = pad->GetOutput();
   }
 
-  this->TreatedAsLabelMap = this->LabelMapMode == LABEL_MAP_ON ||
+  this->TreatedAsLabelMap = this->Label > 0 || this->LabelMapMode == LABEL_MAP_ON ||
     (this->LabelMapMode == LABEL_MAP_AUTO && isBinaryLabelMap(input));
   this->EffectiveIsoValue = this->TreatedAsLabelMap ? 0.5 : this->IsoValue;
   double sigma = this->ImageSmoothing;
@@ -294,7 +372,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
                                << (range[0] == range[1] && !this->Cropping
                                       ? std::string(" Every voxel holds the same value: the scan is blank, or its "
                                                     "pixel data could not be decoded (a damaged compressed file).")
-                                      : std::string()));
+                                      : labelHint(input, range)));
     return 0;
   }
 

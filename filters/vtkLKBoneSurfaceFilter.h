@@ -33,7 +33,8 @@
  * Label maps: when LabelMapMode is on, or when it is AUTO (the default) and
  * the volume has integer voxels that are all 0 or 1, the iso value becomes
  * 0.5 and, unless ImageSmoothing was set, the volume is smoothed with a
- * Gaussian of one voxel so that the surface is not stair-stepped.
+ * Gaussian of one voxel so that the surface is not stair-stepped. Label
+ * picks one label of a label map with several.
  *
  * An iso value outside the volume's scalar range is an error, as is an empty
  * result.
@@ -108,6 +109,17 @@ public:
   ///@}
 
   ///@{
+  /// One label of a label map with several (a segmentation of 3D Slicer or
+  /// another tool: mandible 1, maxilla 2, ...): when positive, the voxels
+  /// holding it become 1 and every other voxel 0, and the volume is taken as
+  /// a 0/1 label map (iso 0.5, one voxel of Gaussian unless ImageSmoothing
+  /// says otherwise). 0 (default): off. A label no voxel holds, or a volume
+  /// that is not of integers, is an error that lists the labels there are.
+  vtkSetClampMacro(Label, int, 0, VTK_INT_MAX);
+  vtkGetMacro(Label, int);
+  ///@}
+
+  ///@{
   /// Fill enclosed cavities before the iso-surface (default off): voxels on
   /// the low side of the iso value that cannot reach the volume's border,
   /// in 3D or within their own slice (the k axis, axial for CT), take the
@@ -177,6 +189,7 @@ protected:
   int ExtractionMode = LARGEST_COMPONENT;
   double SeedPoint[3] = { 0.0, 0.0, 0.0 };
   int LabelMapMode = LABEL_MAP_AUTO;
+  int Label = 0;
   bool Repair = true;
   bool FillCavities = false;
   bool Cropping = false;

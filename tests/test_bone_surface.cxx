@@ -9,6 +9,7 @@
 #include <vtkExtractVOI.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkMassProperties.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -393,6 +394,90 @@ TEST(BoneSurface, IsoValueOutsideTheDataRangeIsAClearError)
   EXPECT_EQ(rec.errors, 1);
   EXPECT_NE(rec.messages.find("range [-1024, -1024]: no surface. Every voxel holds the same value: the scan is "
                               "blank, or its pixel data could not be decoded"),
+    std::string::npos)
+    << rec.messages;
+}
+
+// A segmentation with several labels (3D Slicer saves one label per
+// segment): the mandible's label map with its right half (voxel i < 256)
+// relabelled 2. Each label is a closed surface of its own, and the two
+// halves' volumes make up the whole.
+TEST(BoneSurface, LabelTakesOneLabelOfASegmentationWithSeveral)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(mandibles[0].c_str());
+  reader->Update();
+  vtkNew<vtkImageData> labels;
+  labels->DeepCopy(reader->GetOutput());
+  int dims[3];
+  labels->GetDimensions(dims);
+  vtkDataArray* v = labels->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < v->GetNumberOfTuples(); ++i)
+    if (v->GetTuple1(i) == 1.0 && i % dims[0] < dims[0] / 2)
+      v->SetTuple1(i, 2.0);
+  auto surface = [&](int label, Surface& out) {
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    lktest::ErrorRecorder rec(bone);
+    bone->SetInputData(labels);
+    bone->SetLabel(label);
+    bone->Update();
+    out.mesh = vtkSmartPointer<vtkPolyData>::New();
+    out.mesh->DeepCopy(bone->GetOutput());
+    out.errors = rec.errors;
+    out.messages = rec.messages;
+    return bone->GetTreatedAsLabelMap();
+  };
+  auto volume = [](vtkPolyData* pd) {
+    vtkNew<vtkMassProperties> mass;
+    mass->SetInputData(pd);
+    mass->Update();
+    return mass->GetVolume();
+  };
+  const Surface whole = extract(mandibles[0], 0.5);
+  Surface one, two;
+  EXPECT_TRUE(surface(1, one));
+  EXPECT_TRUE(surface(2, two));
+  ASSERT_EQ(one.errors + two.errors, 0) << one.messages << two.messages;
+  for (const Surface* half : { &one, &two })
+  {
+    EXPECT_EQ(components(half->mesh), 1u);
+    EXPECT_EQ(lk::countBoundaryEdges(lktest::toCore(half->mesh)), 0u);
+    EXPECT_EQ(spaceTag(half->mesh), "LPS"); // the reader's matrix and tag come through
+    EXPECT_GT(volume(half->mesh), 0.3 * volume(whole.mesh));
+  }
+  // The halves do not overlap: one lies left of the other in patient x.
+  double b1[6], b2[6];
+  one.mesh->GetBounds(b1);
+  two.mesh->GetBounds(b2);
+  EXPECT_TRUE(b1[1] <= b2[0] + 2.0 || b2[1] <= b1[0] + 2.0) << b1[0] << " " << b1[1] << " / " << b2[0] << " " << b2[1];
+  EXPECT_NEAR(volume(one.mesh) + volume(two.mesh), volume(whole.mesh), 0.02 * volume(whole.mesh));
+
+  // Without a label the iso value (300) misses the values 0, 1, 2; the
+  // error says how to take one.
+  Surface none;
+  surface(0, none);
+  EXPECT_EQ(none.errors, 1);
+  EXPECT_NE(none.messages.find("The volume holds only the values 0, 1, 2: if it is a label map with several labels, "
+                               "Label (--label N) takes one of them."),
+    std::string::npos)
+    << none.messages;
+  // A label that is not there, or a volume that is not of integers.
+  Surface missing;
+  surface(3, missing);
+  EXPECT_EQ(missing.errors, 1);
+  EXPECT_NE(missing.messages.find("No voxel holds label 3; the volume's values are 0, 1, 2."), std::string::npos)
+    << missing.messages;
+  vtkNew<vtkImageData> ct;
+  ct->SetDimensions(8, 8, 8);
+  ct->AllocateScalars(VTK_FLOAT, 1);
+  ct->GetPointData()->GetScalars()->Fill(1.0);
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  lktest::ErrorRecorder rec(bone);
+  bone->SetInputData(ct);
+  bone->SetLabel(1);
+  bone->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("Label 1 needs a label map of integers; this volume holds float values."),
     std::string::npos)
     << rec.messages;
 }

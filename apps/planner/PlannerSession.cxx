@@ -134,6 +134,8 @@ std::string sessionText(const Session& s)
       root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
     if (s.surface.smoothing > 0)
       root["surface"]["smooth"] = static_cast<Json::Int64>(s.surface.smoothing);
+    if (s.surface.label > 0)
+      root["surface"]["label"] = static_cast<Json::Int64>(s.surface.label);
   }
   if (!s.inputFile.empty())
     root["input"]["file"] = s.inputFile;
@@ -335,20 +337,24 @@ bool readSession(
   {
     const Json::Value& js = root["surface"];
     const std::string where = "the surface of " + session;
-    noteUnknownMembers(js, { "iso", "seed", "crop", "series", "close", "smooth" }, where, notes);
+    noteUnknownMembers(js, { "iso", "seed", "crop", "series", "close", "smooth", "label" }, where, notes);
     long long series = -1;
     const auto seriesIndex = [](const Json::Value& v, long long& out) {
       return jsonInteger(v, 0, std::numeric_limits<int>::max(), out);
     };
-    long long smoothing = 0;
+    long long smoothing = 0, label = 0;
     const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 1000, out); };
+    const auto labelValue = [](const Json::Value& v, long long& out) {
+      return jsonInteger(v, 1, std::numeric_limits<int>::max(), out);
+    };
     if (!js.isObject() || !jsonMember(js, "iso", s.surface.iso, jsonNumber, where, "a number", error) ||
       !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error) ||
       !jsonMember(js, "smooth", smoothing, iterations, where, "a whole number from 0 to 1000", error) ||
+      !jsonMember(js, "label", label, labelValue, where, "a label value of 1 or more", error) ||
       !jsonMember(js, "close", s.surface.closed, jsonBool, where, "true or false", error))
     {
       if (!js.isObject())
-        error = session + ": \"surface\" must be an object (iso, seed, crop, series, close, smooth)";
+        error = session + ": \"surface\" must be an object (iso, seed, crop, series, close, smooth, label)";
       return false;
     }
     if (js.isMember("seed"))
@@ -371,6 +377,7 @@ bool readSession(
     }
     s.surface.series = static_cast<long>(series);
     s.surface.smoothing = static_cast<long>(smoothing);
+    s.surface.label = static_cast<long>(label);
     s.surface.given = true;
   }
   if (root.isMember("input"))

@@ -23,7 +23,8 @@
 //   "surface": {"iso": HU, "seed": [x, y, z],
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
-//               "smooth": 0 to 1000}                windowed-sinc iterations (0)
+//               "smooth": 0 to 1000,                windowed-sinc iterations (0)
+//               "label": 1 or more}                 one label of a label map (none)
 //   "input": {"file": name,                       what the session was drawn on: the
 //             "bounds": [6 numbers]}              file (no folders) and the bone's
 //                                                 bounds; a replay on another says so
@@ -111,6 +112,7 @@ struct Session
     bool closed = false; ///< closed where the scan's border cuts bone (a crop always is)
     long series = -1; ///< -1: the largest
     long smoothing = 0; ///< windowed-sinc iterations on the surface
+    long label = 0; ///< one label of a label map with several (0: none)
   } surface;
   /// What the strokes were drawn on: the input's file name (no folders) and
   /// the bone's bounds, so that a replay on another scan (another patient's,
