@@ -33,7 +33,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <set>
 #include <sstream>
 #include <string>

@@ -151,10 +151,7 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   raw->GetDimensions(dims);
   if (raw->GetNumberOfPoints() == 0)
   {
-    // vtkDICOMReader stacks no image whose geometry it cannot find (an
-    // enhanced multi-frame file without its plane orientation or positions).
-    error = "the DICOM series gives no volume: its images are empty or lack the orientation and positions to stack "
-            "them";
+    error = "the DICOM series gives no volume: vtkDICOMReader read no voxel of its images";
     return false;
   }
   vtkDICOMMetaData* meta = reader->GetMetaData();
