@@ -53,8 +53,8 @@ void usage(std::ostream& os)
         "  --close              close the surface where the scan's border cuts bone (padded with\n"
         "                       air as a crop is; a skull vault above the last slice): an open\n"
         "                       surface is cut in two only by a line all round its open part\n"
-        "  --label N            one label of a label map with several (a segmentation: its\n"
-        "                       voxels of value N)\n"
+        "  --label N|NAME       one label of a label map with several (a segmentation: its\n"
+        "                       voxels of value N), or a 3D Slicer segmentation's segment by name\n"
         "  --series I           DICOM: series I of the folder (0 = largest, the default)\n"
         "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 0;\n"
         "                       20 takes a label map's slice staircase out, moving the surface\n"
@@ -106,6 +106,7 @@ int main(int argc, char* argv[])
   double iso = 300.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool isoGiven = false, seeded = false, cropped = false, closed = false;
   long series = -1, smoothing = -1, label = 0;
+  std::string labelName;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -132,7 +133,7 @@ int main(int argc, char* argv[])
     else if (a == "--smooth")
       smoothing = args.integer(a, 0, 1000, "an integer from 0 to 1000");
     else if (a == "--label")
-      label = args.integer(a, 1, std::numeric_limits<int>::max(), "a label value >= 1");
+      args.labelOrName(a, label, labelName);
     else if (a == "--replay")
       replay = args.value(a);
     else if (a == "--screenshot")
@@ -176,7 +177,7 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0 || label > 0)
+    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0 || label > 0 || !labelName.empty())
     {
       std::cerr << "error: --iso, --seed, --crop, --close, --series, --smooth and --label are for a CT or label map; '"
                 << input << "' is a mesh\n";
@@ -214,8 +215,11 @@ int main(int argc, char* argv[])
       used.series = series;
     if (smoothing >= 0)
       used.smoothing = smoothing;
-    if (label > 0)
+    if (label > 0 || !labelName.empty())
+    {
       used.label = label;
+      used.labelName = labelName;
+    }
     used.given = true;
     reader->SetFileName(input.c_str());
     reader->SetSeriesIndex(static_cast<int>(used.series));
@@ -231,6 +235,7 @@ int main(int argc, char* argv[])
     bone->SetCloseAtBorder(used.closed);
     bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
     bone->SetLabel(static_cast<int>(used.label));
+    bone->SetLabelName(used.labelName.empty() ? nullptr : used.labelName.c_str());
   }
   const int warningsBeforeLoad = lkapp::warningCount();
   {
@@ -268,8 +273,8 @@ int main(int argc, char* argv[])
   {
     std::ostringstream note; // the surface is not the one --iso asked for
     note << "--iso " << iso << " is not used: ";
-    if (planner.session.surface.label > 0)
-      note << "label " << planner.session.surface.label << " of '" << vtksys::SystemTools::GetFilenameName(input)
+    if (bone->GetEffectiveLabel() > 0)
+      note << "label " << bone->GetEffectiveLabel() << " of '" << vtksys::SystemTools::GetFilenameName(input)
            << "' is taken as a 0/1 label map, at 0.5";
     else
       note << "'" << vtksys::SystemTools::GetFilenameName(input) << "' is a 0/1 label map, taken at 0.5";
@@ -287,8 +292,9 @@ int main(int argc, char* argv[])
               << planner.bone->GetNumberOfPolys() << " triangles ("
               << (bone->GetTreatedAsLabelMap() ? "label map at level " : "CT at ") << bone->GetEffectiveIsoValue()
               << (bone->GetTreatedAsLabelMap() ? "" : " HU") << ", ";
-    if (used.label > 0)
-      std::cout << "label " << used.label << ", ";
+    if (bone->GetEffectiveLabel() > 0)
+      std::cout << "label " << bone->GetEffectiveLabel()
+                << (used.labelName.empty() ? std::string() : " (segment '" + used.labelName + "')") << ", ";
     if (used.cropped)
       std::cout << "inside the box x " << used.crop[0] << " to " << used.crop[1] << ", y " << used.crop[2] << " to "
                 << used.crop[3] << ", z " << used.crop[4] << " to " << used.crop[5] << ", ";

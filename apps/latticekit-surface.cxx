@@ -42,8 +42,9 @@ void usage(std::ostream& os)
         "                     (default: 1 for label maps, none for CT)\n"
         "  --label-map        treat the input as a 0/1 label map (auto-detected otherwise)\n"
         "  --no-label-map     never treat the input as a label map\n"
-        "  --label N          one label of a label map with several (a segmentation: its\n"
-        "                     voxels of value N, as a 0/1 label map)\n"
+        "  --label N|NAME     one label of a label map with several (a segmentation: its\n"
+        "                     voxels of value N, as a 0/1 label map), or a 3D Slicer\n"
+        "                     segmentation's (.seg.nrrd) segment by its name\n"
         "  --series I         DICOM: read series I of the folder (0 = largest, the default)\n"
         "  --slice-spacing H  DICOM: resampled slice spacing in mm (default: smallest gap)\n"
         "  --fill-cavities    fill enclosed air (in 3D or within a slice) first: the outer\n"
@@ -67,6 +68,7 @@ int main(int argc, char* argv[])
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
   int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
   long label = 0;
+  std::string labelName;
   bool repair = true, quiet = false, fillCavities = false;
   lkapp::Arguments args(argc, argv, usage);
   const double inf = std::numeric_limits<double>::max();
@@ -105,7 +107,7 @@ int main(int argc, char* argv[])
     else if (a == "--no-label-map")
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_OFF;
     else if (a == "--label")
-      label = args.integer(a, 1, std::numeric_limits<int>::max(), "a label value >= 1");
+      args.labelOrName(a, label, labelName);
     else if (a == "--series")
       series = args.integer(a, 0, std::numeric_limits<long>::max(), "an integer >= 0");
     else if (a == "--slice-spacing")
@@ -121,7 +123,7 @@ int main(int argc, char* argv[])
     else
       args.positional(a, input, "input");
   }
-  if (label > 0 && labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_OFF)
+  if ((label > 0 || !labelName.empty()) && labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_OFF)
   {
     std::cerr << "error: --label takes one label of a label map; --no-label-map says the input is none\n";
     return 2;
@@ -165,6 +167,7 @@ int main(int argc, char* argv[])
   surface->SetCloseAtBorder(close);
   surface->SetLabelMapMode(labelMode);
   surface->SetLabel(static_cast<int>(label));
+  surface->SetLabelName(labelName.empty() ? nullptr : labelName.c_str());
   surface->SetRepair(repair);
   surface->SetFillCavities(fillCavities);
   {
@@ -180,9 +183,10 @@ int main(int argc, char* argv[])
     // A label map is taken at 0.5 whatever --iso says: say so, as the
     // surface is not the one asked for.
     std::cerr << "warning: --iso " << iso << " is not used: "
-              << (label > 0 ? "--label " + std::to_string(label) + " is taken as a 0/1 label map, at 0.5"
-                            : std::string("the input is a 0/1 label map, taken at 0.5"))
-              << (labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO && label == 0
+              << (surface->GetEffectiveLabel() > 0
+                     ? "label " + std::to_string(surface->GetEffectiveLabel()) + " is taken as a 0/1 label map, at 0.5"
+                     : std::string("the input is a 0/1 label map, taken at 0.5"))
+              << (labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO && surface->GetEffectiveLabel() == 0
                      ? " (--no-label-map takes it at the --iso value)"
                      : "")
               << "\n";
@@ -213,8 +217,10 @@ int main(int argc, char* argv[])
     std::cout << "crop box   x " << crop[0] << " to " << crop[1] << ", y " << crop[2] << " to " << crop[3] << ", z "
               << crop[4] << " to " << crop[5] << " mm (patient), padded with air\n";
   std::cout << "iso value  " << surface->GetEffectiveIsoValue()
-            << (label > 0 ? " (label " + std::to_string(label) + " of the label map)"
-                          : std::string(surface->GetTreatedAsLabelMap() ? " (label map)" : ""))
+            << (surface->GetEffectiveLabel() > 0
+                   ? " (label " + std::to_string(surface->GetEffectiveLabel()) + " of the label map" +
+                     (labelName.empty() ? std::string() : ", segment '" + labelName + "'") + ")"
+                   : std::string(surface->GetTreatedAsLabelMap() ? " (label map)" : ""))
             << "\n";
   std::cout << "surface    " << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfPolys()
             << " triangles\n";

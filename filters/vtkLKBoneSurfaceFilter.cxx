@@ -27,11 +27,13 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkReverseSense.h>
+#include <vtkStringArray.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkWindowedSincPolyDataFilter.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -123,6 +125,36 @@ std::string listed(const std::vector<long long>& values)
   return os.str();
 }
 
+/// A 3D Slicer segmentation's segments (the reader's field data), as
+/// (label value, name); empty for any other volume.
+std::vector<std::pair<int, std::string>> segmentsOf(vtkImageData* image)
+{
+  std::vector<std::pair<int, std::string>> out;
+  auto* names = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("SegmentNames"));
+  vtkDataArray* values = image->GetFieldData()->GetArray("SegmentLabelValues");
+  if (!names || !values || names->GetNumberOfValues() != values->GetNumberOfTuples())
+    return out;
+  for (vtkIdType i = 0; i < names->GetNumberOfValues(); ++i)
+    out.emplace_back(static_cast<int>(values->GetComponent(i, 0)), names->GetValue(i));
+  return out;
+}
+
+/// "1 'mandible', 2 'maxilla'": the segments with their label values.
+std::string segmentNames(const std::vector<std::pair<int, std::string>>& segments)
+{
+  std::string text;
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    text += (i == 0 ? "" : ", ") + std::to_string(segments[i].first) + " '" + segments[i].second + "'";
+  return text;
+}
+
+/// " (segments: 1 'mandible', 2 'maxilla')", or "" without segment names.
+std::string segmentList(vtkImageData* image)
+{
+  const auto segments = segmentsOf(image);
+  return segments.empty() ? std::string() : " (segments: " + segmentNames(segments) + ")";
+}
+
 /// For a volume of a few small whole numbers (a segmentation with several
 /// labels, which is no 0/1 label map): how to take one of them.
 std::string labelHint(vtkImageData* image, const double range[2])
@@ -132,7 +164,7 @@ std::string labelHint(vtkImageData* image, const double range[2])
   const std::vector<long long> values = fewIntegerValues(image->GetPointData()->GetScalars(), 16);
   if (values.size() < 3)
     return {};
-  return " The volume holds only the values " + listed(values) +
+  return " The volume holds only the values " + listed(values) + segmentList(image) +
     ": if it is a label map with several labels, Label (--label N) takes one of them.";
 }
 
@@ -143,6 +175,7 @@ vtkLKBoneSurfaceFilter::vtkLKBoneSurfaceFilter() = default;
 vtkLKBoneSurfaceFilter::~vtkLKBoneSurfaceFilter()
 {
   this->SetPatientMatrix(nullptr);
+  this->SetLabelName(nullptr);
 }
 
 void vtkLKBoneSurfaceFilter::SetPatientMatrix(vtkMatrix4x4* m)
@@ -191,6 +224,7 @@ void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
      << this->SeedPoint[2] << "\n";
   os << indent << "LabelMapMode: " << this->LabelMapMode << "\n";
   os << indent << "Label: " << this->Label << (this->Label > 0 ? "" : " (off)") << "\n";
+  os << indent << "LabelName: " << (this->LabelName ? this->LabelName : "(none)") << "\n";
   os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "Cropping: " << this->Cropping << "\n";
   os << indent << "CloseAtBorder: " << this->CloseAtBorder << "\n";
@@ -270,13 +304,39 @@ int vtkLKBoneSurfaceFilter::RequestData(
 
   // One label of several: a 0/1 label map of it (with the input's field
   // data, where the reader's patient matrix is).
+  int label = this->Label;
+  if (this->LabelName && *this->LabelName)
+  {
+    const auto segments = segmentsOf(input);
+    const std::string wanted = this->LabelName;
+    auto lowered = [](std::string t) {
+      std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      return t;
+    };
+    label = 0;
+    for (const auto& seg : segments)
+      if (seg.second == wanted)
+        label = seg.first;
+    for (std::size_t i = 0; i < segments.size() && label == 0; ++i)
+      if (lowered(segments[i].second) == lowered(wanted))
+        label = segments[i].first;
+    if (label == 0)
+    {
+      vtkErrorMacro("No segment is named '" << wanted << "'; "
+                    << (segments.empty() ? std::string("the volume names no segments (a 3D Slicer .seg.nrrd does)")
+                                         : "its segments are " + segmentNames(segments))
+                    << ".");
+      return 0;
+    }
+  }
+  this->EffectiveLabel = label;
   vtkNew<vtkImageData> oneLabel;
-  if (this->Label > 0)
+  if (label > 0)
   {
     vtkDataArray* s = input->GetPointData()->GetScalars();
     if (s->GetDataType() == VTK_FLOAT || s->GetDataType() == VTK_DOUBLE)
     {
-      vtkErrorMacro("Label " << this->Label << " needs a label map of integers; this volume holds "
+      vtkErrorMacro("Label " << label << " needs a label map of integers; this volume holds "
                              << s->GetDataTypeAsString() << " values.");
       return 0;
     }
@@ -288,16 +348,16 @@ int vtkLKBoneSurfaceFilter::RequestData(
     vtkIdType hits = 0;
     for (vtkIdType i = 0; i < n; ++i)
     {
-      out[i] = s->GetComponent(i, 0) == this->Label;
+      out[i] = s->GetComponent(i, 0) == label;
       hits += out[i];
     }
     if (hits == 0)
     {
       const std::vector<long long> labels = fewIntegerValues(s, 64);
-      vtkErrorMacro("No voxel holds label " << this->Label << "; "
+      vtkErrorMacro("No voxel holds label " << label << "; "
                     << (labels.empty() ? std::string("the volume holds more than 64 values (is it a label map?)")
                                        : "the volume's values are " + listed(labels))
-                    << ".");
+                    << segmentList(input) << ".");
       return 0;
     }
     input = oneLabel;
@@ -352,7 +412,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     input = pad->GetOutput();
   }
 
-  this->TreatedAsLabelMap = this->Label > 0 || this->LabelMapMode == LABEL_MAP_ON ||
+  this->TreatedAsLabelMap = label > 0 || this->LabelMapMode == LABEL_MAP_ON ||
     (this->LabelMapMode == LABEL_MAP_AUTO && isBinaryLabelMap(input));
   this->EffectiveIsoValue = this->TreatedAsLabelMap ? 0.5 : this->IsoValue;
   double sigma = this->ImageSmoothing;

@@ -120,6 +120,16 @@ public:
   ///@}
 
   ///@{
+  /// One segment of a 3D Slicer segmentation by its name (the reader's
+  /// "SegmentNames" and "SegmentLabelValues" field data, from a .seg.nrrd):
+  /// when set, it gives Label. Matched as written, else ignoring case; a
+  /// name the segmentation does not have is an error that lists its
+  /// segments. Default: none.
+  vtkSetStringMacro(LabelName);
+  vtkGetStringMacro(LabelName);
+  ///@}
+
+  ///@{
   /// Fill enclosed cavities before the iso-surface (default off): voxels on
   /// the low side of the iso value that cannot reach the volume's border,
   /// in 3D or within their own slice (the k axis, axial for CT), take the
@@ -175,6 +185,8 @@ public:
   bool GetTreatedAsLabelMap() const { return this->TreatedAsLabelMap; }
   /// The iso value the last update used (0.5 for label maps).
   double GetEffectiveIsoValue() const { return this->EffectiveIsoValue; }
+  /// The label the last update took (Label, or LabelName's value; 0: none).
+  int GetEffectiveLabel() const { return this->EffectiveLabel; }
 
 protected:
   vtkLKBoneSurfaceFilter();
@@ -190,6 +202,7 @@ protected:
   double SeedPoint[3] = { 0.0, 0.0, 0.0 };
   int LabelMapMode = LABEL_MAP_AUTO;
   int Label = 0;
+  char* LabelName = nullptr;
   bool Repair = true;
   bool FillCavities = false;
   bool Cropping = false;
@@ -197,6 +210,7 @@ protected:
   double CropBox[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   vtkMatrix4x4* PatientMatrix = nullptr;
   bool TreatedAsLabelMap = false;
+  int EffectiveLabel = 0;
   double EffectiveIsoValue = 300.0;
 
 private:

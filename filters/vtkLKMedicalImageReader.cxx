@@ -12,6 +12,7 @@
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkIntArray.h>
 #include <vtkMatrix4x4.h>
 #include <vtkMetaImageReader.h>
 #include <vtkNIFTIImageHeader.h>
@@ -30,7 +31,9 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <new>
 #include <sstream>
@@ -106,6 +109,56 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
   if (headerBytes)
     *headerBytes = bytes;
   return fields;
+}
+
+/// A 3D Slicer segmentation's segments, from its NRRD header's key/value
+/// pairs "SegmentN_Name:=..." and "SegmentN_LabelValue:=..." (N from 0), with
+/// the layer each lies in ("SegmentN_Layer", 0 when absent).
+struct Segment
+{
+  std::string name;
+  int labelValue = 0;
+  int layer = 0;
+};
+
+std::vector<Segment> nrrdSegments(const std::string& path)
+{
+  std::map<std::string, std::string> pairs;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::size_t bytes = 0;
+  while (std::getline(in, line) && bytes < (1u << 20))
+  {
+    bytes += line.size() + 1;
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if (line.empty())
+      break;
+    const auto pos = line.find(":=");
+    if (pos != std::string::npos)
+      pairs[line.substr(0, pos)] = line.substr(pos + 2);
+  }
+  std::vector<Segment> segments;
+  for (int i = 0;; ++i)
+  {
+    const std::string key = "Segment" + std::to_string(i) + "_";
+    const auto name = pairs.find(key + "Name");
+    const auto value = pairs.find(key + "LabelValue");
+    if (name == pairs.end() || value == pairs.end())
+      break;
+    Segment seg;
+    seg.name = name->second;
+    char* end = nullptr;
+    const long v = std::strtol(value->second.c_str(), &end, 10);
+    if (end == value->second.c_str() || v < 1 || v > std::numeric_limits<int>::max())
+      break;
+    seg.labelValue = static_cast<int>(v);
+    const auto layer = pairs.find(key + "Layer");
+    if (layer != pairs.end())
+      seg.layer = std::atoi(layer->second.c_str());
+    segments.push_back(seg);
+  }
+  return segments;
 }
 
 std::vector<double> numbers(const std::string& text)
@@ -501,6 +554,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
   const bool isFolder = vtksys::SystemTools::FileIsDirectory(path);
   double spacing[3] = { 1, 1, 1 };
   vtkSmartPointer<vtkImageData> image;
+  std::vector<Segment> segments; // a 3D Slicer segmentation's, from its NRRD header
 
   if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr"))
   {
@@ -529,6 +583,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
       return false;
     }
     image = reader->GetOutput();
+    segments = nrrdSegments(path);
     auto dirs = header.find("space directions");
     if (dirs != header.end() && numbers(dirs->second).size() >= 9)
     {
@@ -803,8 +858,13 @@ bool vtkLKMedicalImageReader::ReadVolume()
 
   if (image->GetNumberOfScalarComponents() != 1)
   {
-    vtkErrorMacro("'" << path << "' has " << image->GetNumberOfScalarComponents()
-                      << " components per voxel; a single-component volume is needed.");
+    if (!segments.empty())
+      vtkErrorMacro("'" << path << "' is a segmentation whose segments overlap, stored in "
+                        << image->GetNumberOfScalarComponents()
+                        << " layers; one layer is needed (export the segment as a label map or a model).");
+    else
+      vtkErrorMacro("'" << path << "' has " << image->GetNumberOfScalarComponents()
+                        << " components per voxel; a single-component volume is needed.");
     return false;
   }
   this->Volume->ShallowCopy(image);
@@ -818,6 +878,22 @@ bool vtkLKMedicalImageReader::ReadVolume()
     matrix->SetValue(i, this->PatientMatrix->GetElement(i / 4, i % 4));
   }
   this->Volume->GetFieldData()->AddArray(matrix);
+  this->Volume->GetFieldData()->RemoveArray("SegmentNames"); // a NRRD reader's field data may carry none
+  this->Volume->GetFieldData()->RemoveArray("SegmentLabelValues");
+  if (!segments.empty())
+  {
+    vtkNew<vtkStringArray> names;
+    names->SetName("SegmentNames");
+    vtkNew<vtkIntArray> values;
+    values->SetName("SegmentLabelValues");
+    for (const Segment& seg : segments)
+    {
+      names->InsertNextValue(seg.name);
+      values->InsertNextValue(seg.labelValue);
+    }
+    this->Volume->GetFieldData()->AddArray(names);
+    this->Volume->GetFieldData()->AddArray(values);
+  }
   if (this->OrientationKnown)
   {
     // 3D Slicer's name for a data set's coordinate system (as its model files

@@ -31,7 +31,13 @@
  * "TransformMatrix" (one axis direction after another) and "Offset" (LPS, as
  * ITK writes them). NIfTI: the qform (or sform when qform_code is 0), from RAS
  * to LPS; a file with neither has no defined orientation, so its data
- * coordinates are kept (with a warning).
+ * coordinates are kept (with a warning); scl_slope and scl_inter calibrate
+ * the values.
+ *
+ * A segmentation of 3D Slicer (.seg.nrrd) names its segments in the header
+ * ("Segment0_Name:=mandible", "Segment0_LabelValue:=1"): the output's field
+ * data then holds "SegmentNames" (strings) and "SegmentLabelValues" (ints),
+ * which vtkLKBoneSurfaceFilter's LabelName looks up.
  */
 #ifndef vtkLKMedicalImageReader_h
 #define vtkLKMedicalImageReader_h

@@ -482,6 +482,72 @@ TEST(BoneSurface, LabelTakesOneLabelOfASegmentationWithSeveral)
     << rec.messages;
 }
 
+// 3D Slicer's .seg.nrrd names its segments in the header; LabelName takes
+// one by its name (as written, else ignoring case), and the errors list them.
+TEST(BoneSurface, LabelNameTakesASegmentOfASlicerSegmentation)
+{
+  const std::string file = std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd";
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  auto* names = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("SegmentNames"));
+  vtkDataArray* values = reader->GetOutput()->GetFieldData()->GetArray("SegmentLabelValues");
+  ASSERT_TRUE(names && values);
+  ASSERT_EQ(names->GetNumberOfValues(), 2);
+  EXPECT_EQ(names->GetValue(0), "left condyle");
+  EXPECT_EQ(names->GetValue(1), "Right Condyle");
+  EXPECT_EQ(values->GetComponent(1, 0), 2.0);
+
+  auto run = [&](const char* name, int label, Surface& out) {
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    lktest::ErrorRecorder rec(bone);
+    bone->SetInputConnection(reader->GetOutputPort());
+    bone->SetLabel(label);
+    bone->SetLabelName(name);
+    bone->Update();
+    out.mesh = vtkSmartPointer<vtkPolyData>::New();
+    out.mesh->DeepCopy(bone->GetOutput());
+    out.errors = rec.errors;
+    out.messages = rec.messages;
+    return bone->GetEffectiveLabel();
+  };
+  Surface byValue, byName, byOtherCase;
+  EXPECT_EQ(run(nullptr, 2, byValue), 2);
+  EXPECT_EQ(run("Right Condyle", 0, byName), 2);
+  EXPECT_EQ(run("right condyle", 1, byOtherCase), 2); // the name wins over Label
+  ASSERT_EQ(byValue.errors + byName.errors + byOtherCase.errors, 0) << byName.messages << byOtherCase.messages;
+  EXPECT_EQ(byName.mesh->GetNumberOfPoints(), byValue.mesh->GetNumberOfPoints());
+  EXPECT_EQ(byOtherCase.mesh->GetNumberOfPoints(), byValue.mesh->GetNumberOfPoints());
+  double b[6];
+  byName.mesh->GetBounds(b);
+  EXPECT_GT(b[0], 0.0); // the ball at x = +9, not the one at -9
+
+  Surface missing, none;
+  run("maxilla", 0, missing);
+  EXPECT_EQ(missing.errors, 1);
+  EXPECT_NE(missing.messages.find("No segment is named 'maxilla'; its segments are 1 'left condyle', 2 'Right "
+                                  "Condyle'."),
+    std::string::npos)
+    << missing.messages;
+  run(nullptr, 0, none); // the threshold misses: the hint names the segments
+  EXPECT_NE(none.messages.find("The volume holds only the values 0, 1, 2 (segments: 1 'left condyle', 2 'Right "
+                               "Condyle'): if it is a label map"),
+    std::string::npos)
+    << none.messages;
+  // A label map that names no segments.
+  vtkNew<vtkLKBoneSurfaceFilter> plain;
+  lktest::ErrorRecorder rec(plain);
+  vtkNew<vtkLKMedicalImageReader> mha;
+  mha->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_labels.mha").c_str());
+  plain->SetInputConnection(mha->GetOutputPort());
+  plain->SetLabelName("mandible");
+  plain->Update();
+  EXPECT_NE(rec.messages.find("No segment is named 'mandible'; the volume names no segments (a 3D Slicer .seg.nrrd "
+                              "does)."),
+    std::string::npos)
+    << rec.messages;
+}
+
 TEST(BoneSurface, EmptyAndFlatVolumesAreClearErrors)
 {
   vtkNew<vtkLKBoneSurfaceFilter> bone;

@@ -40,6 +40,7 @@
 
 #include <execinfo.h>
 #include <cctype>
+#include <limits>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -867,6 +868,20 @@ long Arguments::integer(const std::string& arg, long lo, long hi, const char* wh
     std::exit(2);
   }
   return x;
+}
+
+void Arguments::labelOrName(const std::string& arg, long& label, std::string& name)
+{
+  const std::string v = value(arg);
+  const bool numeric = !v.empty() && (std::isdigit(static_cast<unsigned char>(v[0])) || v[0] == '-' || v[0] == '+');
+  long x = 0;
+  if (v.empty() || (numeric && (!parseInt(v, x) || x < 1 || x > std::numeric_limits<int>::max())))
+  {
+    std::cerr << "error: " << arg << " needs a label value >= 1 or a segment's name, not '" << v << "'\n";
+    std::exit(2);
+  }
+  label = numeric ? x : 0;
+  name = numeric ? std::string() : v;
 }
 
 double Arguments::number(const std::string& arg, double lo, double hi, const char* what)

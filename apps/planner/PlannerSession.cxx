@@ -134,7 +134,9 @@ std::string sessionText(const Session& s)
       root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
     if (s.surface.smoothing > 0)
       root["surface"]["smooth"] = static_cast<Json::Int64>(s.surface.smoothing);
-    if (s.surface.label > 0)
+    if (!s.surface.labelName.empty())
+      root["surface"]["label"] = s.surface.labelName;
+    else if (s.surface.label > 0)
       root["surface"]["label"] = static_cast<Json::Int64>(s.surface.label);
   }
   if (!s.inputFile.empty())
@@ -350,7 +352,10 @@ bool readSession(
     if (!js.isObject() || !jsonMember(js, "iso", s.surface.iso, jsonNumber, where, "a number", error) ||
       !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error) ||
       !jsonMember(js, "smooth", smoothing, iterations, where, "a whole number from 0 to 1000", error) ||
-      !jsonMember(js, "label", label, labelValue, where, "a label value of 1 or more", error) ||
+      (js.isMember("label") && js["label"].isString()
+          ? !jsonMember(js, "label", s.surface.labelName, jsonString, where, "a segment's name", error)
+          : !jsonMember(js, "label", label, labelValue, where, "a label value of 1 or more or a segment's name",
+              error)) ||
       !jsonMember(js, "close", s.surface.closed, jsonBool, where, "true or false", error))
     {
       if (!js.isObject())

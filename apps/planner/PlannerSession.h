@@ -24,7 +24,8 @@
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
 //               "smooth": 0 to 1000,                windowed-sinc iterations (0)
-//               "label": 1 or more}                 one label of a label map (none)
+//               "label": 1 or more | "name"}        one label of a label map, or a
+//                                                   segment by name (none)
 //   "input": {"file": name,                       what the session was drawn on: the
 //             "bounds": [6 numbers]}              file (no folders) and the bone's
 //                                                 bounds; a replay on another says so
@@ -113,6 +114,7 @@ struct Session
     long series = -1; ///< -1: the largest
     long smoothing = 0; ///< windowed-sinc iterations on the surface
     long label = 0; ///< one label of a label map with several (0: none)
+    std::string labelName; ///< or a 3D Slicer segmentation's segment by name
   } surface;
   /// What the strokes were drawn on: the input's file name (no folders) and
   /// the bone's bounds, so that a replay on another scan (another patient's,
