@@ -112,13 +112,11 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
 }
 
 /// A 3D Slicer segmentation's segments, from its NRRD header's key/value
-/// pairs "SegmentN_Name:=..." and "SegmentN_LabelValue:=..." (N from 0), with
-/// the layer each lies in ("SegmentN_Layer", 0 when absent).
+/// pairs "SegmentN_Name:=..." and "SegmentN_LabelValue:=..." (N from 0).
 struct Segment
 {
   std::string name;
   int labelValue = 0;
-  int layer = 0;
 };
 
 std::vector<Segment> nrrdSegments(const std::string& path)
@@ -153,9 +151,6 @@ std::vector<Segment> nrrdSegments(const std::string& path)
     if (end == value->second.c_str() || v < 1 || v > std::numeric_limits<int>::max())
       break;
     seg.labelValue = static_cast<int>(v);
-    const auto layer = pairs.find(key + "Layer");
-    if (layer != pairs.end())
-      seg.layer = std::atoi(layer->second.c_str());
     segments.push_back(seg);
   }
   return segments;
@@ -878,8 +873,6 @@ bool vtkLKMedicalImageReader::ReadVolume()
     matrix->SetValue(i, this->PatientMatrix->GetElement(i / 4, i % 4));
   }
   this->Volume->GetFieldData()->AddArray(matrix);
-  this->Volume->GetFieldData()->RemoveArray("SegmentNames"); // a NRRD reader's field data may carry none
-  this->Volume->GetFieldData()->RemoveArray("SegmentLabelValues");
   if (!segments.empty())
   {
     vtkNew<vtkStringArray> names;

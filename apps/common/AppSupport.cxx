@@ -40,7 +40,6 @@
 
 #include <execinfo.h>
 #include <cctype>
-#include <limits>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -48,6 +47,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
