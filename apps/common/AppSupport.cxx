@@ -873,9 +873,9 @@ long Arguments::integer(const std::string& arg, long lo, long hi, const char* wh
 void Arguments::labelOrName(const std::string& arg, long& label, std::string& name)
 {
   const std::string v = value(arg);
-  const bool numeric = !v.empty() && (std::isdigit(static_cast<unsigned char>(v[0])) || v[0] == '-' || v[0] == '+');
   long x = 0;
-  if (v.empty() || (numeric && (!parseInt(v, x) || x < 1 || x > std::numeric_limits<int>::max())))
+  const bool numeric = parseInt(v, x); // a whole number; anything else ("3rd molar") is a name
+  if (v.empty() || (numeric && (x < 1 || x > std::numeric_limits<int>::max())))
   {
     std::cerr << "error: " << arg << " needs a label value >= 1 or a segment's name, not '" << v << "'\n";
     std::exit(2);

@@ -158,8 +158,8 @@ public:
   long integer(const std::string& arg, long lo, long hi, const char* what);
   /// A finite number in [lo, hi].
   double number(const std::string& arg, double lo, double hi, const char* what);
-  /// A label value (1 or more: `label`, `name` emptied) or a segment's name
-  /// (anything that does not start as a number: `name`, `label` 0).
+  /// A label value (a whole number, 1 or more: `label`, `name` emptied) or a
+  /// segment's name (anything else, "3rd molar" too: `name`, `label` 0).
   void labelOrName(const std::string& arg, long& label, std::string& name);
   /// Three numbers X,Y,Z.
   void triple(const std::string& arg, double v[3]);
