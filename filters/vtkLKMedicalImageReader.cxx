@@ -692,6 +692,33 @@ bool vtkLKMedicalImageReader::ReadVolume()
     {
       form = reader->GetSFormMatrix();
     }
+    if (form == reader->GetQFormMatrix() && reader->GetNIFTIHeader()->GetSFormCode() > 0 &&
+      reader->GetSFormMatrix())
+    {
+      // Both forms, and the qform is used. A registered image often keeps
+      // the scanner's qform and the target space's sform, and tools that take
+      // the sform place it elsewhere: say how far apart the two put it.
+      int d[3];
+      image->GetDimensions(d);
+      double apart = 0.0;
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        double p[4] = { o[0] + ((corner & 1) ? (d[0] - 1) * spacing[0] : 0.0),
+          o[1] + ((corner & 2) ? (d[1] - 1) * spacing[1] : 0.0), o[2] + ((corner & 4) ? (d[2] - 1) * spacing[2] : 0.0),
+          1.0 };
+        double q[4], sf[4];
+        reader->GetQFormMatrix()->MultiplyPoint(p, q);
+        reader->GetSFormMatrix()->MultiplyPoint(p, sf);
+        apart = std::max(apart, std::sqrt((q[0] - sf[0]) * (q[0] - sf[0]) + (q[1] - sf[1]) * (q[1] - sf[1]) +
+                                          (q[2] - sf[2]) * (q[2] - sf[2])));
+      }
+      if (apart > std::max(0.1, 0.1 * std::min({ spacing[0], spacing[1], spacing[2] })))
+        vtkWarningMacro("'" << path << "' has a qform and an sform that place the volume up to " << apart
+                            << " mm apart (qform_code " << reader->GetNIFTIHeader()->GetQFormCode() << ", sform_code "
+                            << reader->GetNIFTIHeader()->GetSFormCode()
+                            << "): the qform is used. Tools that take the sform (nibabel, for one) place it "
+                               "elsewhere; check which space the plan is meant in.");
+    }
     vtkNew<vtkMatrix4x4> ras2lps;
     ras2lps->SetElement(0, 0, -1.0);
     ras2lps->SetElement(1, 1, -1.0);

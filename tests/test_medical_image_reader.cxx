@@ -17,6 +17,7 @@
 #include <vtkIntArray.h>
 #include <vtkMatrix4x4.h>
 #include <vtkMetaImageWriter.h>
+#include <vtkNIFTIImageReader.h>
 #include <vtkNIFTIImageWriter.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -764,6 +765,50 @@ TEST(MedicalImageReader, NiftiSclSlopeAndInterCalibrateTheValues)
     EXPECT_EQ(rec.warnings, slope == 0.0f ? 0 : 1) << rec.warningMessages;
     if (slope != 0.0f)
       EXPECT_NE(rec.warningMessages.find("scl_slope or scl_inter that is not a number"), std::string::npos);
+  }
+}
+
+// A registered image often keeps the scanner's qform and the target space's
+// sform. The qform is used; when the two place the volume apart, a warning
+// says by how much (nothing is said when they agree).
+TEST(MedicalImageReader, NiftiQformAndSformThatDisagreeAreWarnedOf)
+{
+  const std::string dir = tempFolder("nifti_two_forms");
+  const std::array<float, 12> noSform = {};
+  writeNifti(dir + "/q.nii", 1.0f, 1, 0, noSform);
+  vtkNew<vtkNIFTIImageReader> plain;
+  plain->SetFileName((dir + "/q.nii").c_str());
+  plain->Update();
+  // The qform's own map as an sform (rows of [i j k 1] -> RAS), once as it
+  // is and once moved 5 mm along x.
+  vtkMatrix4x4* q = plain->GetQFormMatrix();
+  const double* sp = plain->GetOutput()->GetSpacing();
+  const double* o = plain->GetOutput()->GetOrigin();
+  std::array<float, 12> same{};
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int c = 0; c < 3; ++c)
+      same[4 * row + c] = static_cast<float>(q->GetElement(row, c) * sp[c]);
+    same[4 * row + 3] = static_cast<float>(q->GetElement(row, 3) + q->GetElement(row, 0) * o[0] +
+      q->GetElement(row, 1) * o[1] + q->GetElement(row, 2) * o[2]);
+  }
+  std::array<float, 12> moved = same;
+  moved[3] += 5.0f;
+  for (const bool apart : { false, true })
+  {
+    const std::string path = dir + (apart ? "/apart.nii" : "/agree.nii");
+    writeNifti(path, 1.0f, 1, 1, apart ? moved : same);
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    ASSERT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_EQ(rec.warnings, apart ? 1 : 0) << rec.warningMessages;
+    if (apart)
+      EXPECT_NE(rec.warningMessages.find("has a qform and an sform that place the volume up to 5 mm apart "
+                                         "(qform_code 1, sform_code 1): the qform is used"),
+        std::string::npos)
+        << rec.warningMessages;
   }
 }
 
