@@ -313,13 +313,11 @@ int vtkLKBoneSurfaceFilter::RequestData(
       std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
       return t;
     };
-    label = 0;
-    for (const auto& seg : segments)
-      if (seg.second == wanted)
-        label = seg.first;
-    for (std::size_t i = 0; i < segments.size() && label == 0; ++i)
-      if (lowered(segments[i].second) == lowered(wanted))
-        label = segments[i].first;
+    auto found = std::find_if(segments.begin(), segments.end(), [&](const auto& seg) { return seg.second == wanted; });
+    if (found == segments.end())
+      found = std::find_if(segments.begin(), segments.end(),
+        [&](const auto& seg) { return lowered(seg.second) == lowered(wanted); });
+    label = found == segments.end() ? 0 : found->first;
     if (label == 0)
     {
       vtkErrorMacro("No segment is named '" << wanted << "'; "

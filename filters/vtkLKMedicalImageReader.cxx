@@ -74,8 +74,10 @@ std::string trim(const std::string& s)
 /// Text header fields "key: value" (NRRD) or "key = value" (MetaImage), up to
 /// the first empty line (NRRD) or the ElementDataFile line (MetaImage).
 /// `headerBytes`, when given, receives the header's length in bytes: where
-/// data attached to the header starts.
-std::map<std::string, std::string> readHeader(const std::string& path, char separator, std::size_t* headerBytes = nullptr)
+/// data attached to the header starts. `keyValues`, when given, receives
+/// NRRD's key/value pairs "key:=value", keys as written.
+std::map<std::string, std::string> readHeader(const std::string& path, char separator, std::size_t* headerBytes = nullptr,
+  std::map<std::string, std::string>* keyValues = nullptr)
 {
   std::map<std::string, std::string> fields;
   std::ifstream in(path, std::ios::binary);
@@ -98,7 +100,9 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
     std::string value = trim(line.substr(pos + 1));
     if (separator == ':' && !value.empty() && value[0] == '=')
     {
-      continue; // NRRD key/value pair "key:=value"
+      if (keyValues) // NRRD key/value pair "key:=value"
+        (*keyValues)[trim(line.substr(0, pos))] = trim(value.substr(1));
+      continue;
     }
     fields[key] = value;
     if (key == "elementdatafile")
@@ -112,30 +116,16 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
 }
 
 /// A 3D Slicer segmentation's segments, from its NRRD header's key/value
-/// pairs "SegmentN_Name:=..." and "SegmentN_LabelValue:=..." (N from 0).
+/// pairs (readHeader's `keyValues`) "SegmentN_Name:=..." and
+/// "SegmentN_LabelValue:=..." (N from 0).
 struct Segment
 {
   std::string name;
   int labelValue = 0;
 };
 
-std::vector<Segment> nrrdSegments(const std::string& path)
+std::vector<Segment> nrrdSegments(const std::map<std::string, std::string>& pairs)
 {
-  std::map<std::string, std::string> pairs;
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::size_t bytes = 0;
-  while (std::getline(in, line) && bytes < (1u << 20))
-  {
-    bytes += line.size() + 1;
-    if (!line.empty() && line.back() == '\r')
-      line.pop_back();
-    if (line.empty())
-      break;
-    const auto pos = line.find(":=");
-    if (pos != std::string::npos)
-      pairs[line.substr(0, pos)] = line.substr(pos + 2);
-  }
   std::vector<Segment> segments;
   for (int i = 0;; ++i)
   {
@@ -570,7 +560,8 @@ bool vtkLKMedicalImageReader::ReadVolume()
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
     std::size_t headerBytes = 0;
-    const auto header = readHeader(path, ':', &headerBytes);
+    std::map<std::string, std::string> keyValues;
+    const auto header = readHeader(path, ':', &headerBytes, &keyValues);
     std::string message;
     if (!readImage(this, reader, flag, message, truncatedRawData(path, header, headerBytes, true)))
     {
@@ -578,7 +569,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
       return false;
     }
     image = reader->GetOutput();
-    segments = nrrdSegments(path);
+    segments = nrrdSegments(keyValues);
     auto dirs = header.find("space directions");
     if (dirs != header.end() && numbers(dirs->second).size() >= 9)
     {
