@@ -7,13 +7,16 @@
 #include <vtkDICOMDirectory.h>
 #include <vtkDICOMMetaData.h>
 #include <vtkDICOMReader.h>
+#include <vtkDICOMUtilities.h>
 #include <vtkDICOMValue.h>
+#include <vtkErrorCode.h>
 #include <vtkFloatArray.h>
 #include <vtkImageCast.h>
 #include <vtkImageData.h>
 #include <vtkIntArray.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
 #include <vtkStringArray.h>
@@ -21,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -72,6 +76,43 @@ struct ErrorCatcher
     object->AddObserver(vtkCommand::ErrorEvent, command);
   }
 };
+
+/// vtkDICOMReader whose compressed slices (JPEG, JPEG-LS, JPEG 2000, which
+/// it hands to GDCM) fail loudly. vtkDICOMReader ignores whether GDCM decoded
+/// the pixel data: a damaged slice that GDCM gives up on leaves the buffer as
+/// it was, and the volume gets a blank or stale slice without a word. GDCM
+/// writes nothing when it fails (seen on damaged JPEG Lossless, JPEG-LS and
+/// JPEG 2000 files), so the buffer is filled with a byte pattern first and a
+/// buffer that still holds only that pattern is a slice not decoded.
+class CheckedDICOMReader : public vtkDICOMReader
+{
+public:
+  static CheckedDICOMReader* New();
+  vtkTypeMacro(CheckedDICOMReader, vtkDICOMReader);
+
+protected:
+  CheckedDICOMReader() = default;
+
+  bool ReadFileDelegated(const char* filename, int fileIdx, unsigned char* buffer, vtkIdType bufferSize) override
+  {
+    constexpr unsigned char kUnwritten = 0xA5;
+    std::memset(buffer, kUnwritten, static_cast<std::size_t>(bufferSize));
+    const bool read = this->Superclass::ReadFileDelegated(filename, fileIdx, buffer, bufferSize);
+    const bool written =
+      read && std::any_of(buffer, buffer + bufferSize, [](unsigned char b) { return b != kUnwritten; });
+    if (!written)
+    {
+      const std::string uid = this->MetaData->Get(fileIdx, DC::TransferSyntaxUID).AsString();
+      const char* name = vtkDICOMUtilities::GetUIDName(uid.c_str());
+      this->SetErrorCode(vtkErrorCode::FileFormatError);
+      vtkErrorMacro("'" << filename << "': its pixel data, compressed as " << (name && *name ? name : "?") << " ("
+                        << uid << "), could not be decoded"
+                        << (read ? " (the compressed data is damaged)" : "") << ".");
+    }
+    return written;
+  }
+};
+vtkStandardNewMacro(CheckedDICOMReader);
 } // namespace
 
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
@@ -129,7 +170,7 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   {
     names->InsertNextValue(f);
   }
-  vtkNew<vtkDICOMReader> reader;
+  vtkNew<CheckedDICOMReader> reader;
   ErrorCatcher catcher(reader);
   reader->SetFileNames(names);
   reader->SetMemoryRowOrderToFileNative(); // row 0 in memory is the first row in the file

@@ -486,6 +486,71 @@ TEST(MedicalImageReader, CompressedSeriesReadsAsTheUncompressedOne)
     EXPECT_NEAR(a->GetOrigin()[i], b->GetOrigin()[i], 1e-9);
 }
 
+// JPEG Lossless, JPEG-LS and JPEG 2000 Lossless, one slice each (gdcmconv
+// wrote them, scripts/make_jpeg_dicom_test_data.sh; GDCM decodes them
+// inside vtkDICOMReader): the phantom, voxel for voxel.
+TEST(MedicalImageReader, JPEGCompressedSeriesReadsAsTheUncompressedOne)
+{
+  vtkNew<vtkLKMedicalImageReader> plain, jpeg;
+  plain->SetFileName(lktest::sampleData("dicom-ct-philips-phantom").c_str());
+  plain->Update();
+  lktest::ErrorRecorder rec(jpeg);
+  jpeg->SetFileName(LATTICEKIT_TEST_DATA "/dicom-phantom-jpeg");
+  jpeg->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  vtkImageData* a = jpeg->GetOutput();
+  vtkImageData* b = plain->GetOutput();
+  ASSERT_EQ(a->GetNumberOfPoints(), 512 * 512 * 3);
+  ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+  vtkIdType differ = 0;
+  for (vtkIdType v = 0; v < a->GetNumberOfPoints(); ++v)
+    differ += a->GetPointData()->GetScalars()->GetComponent(v, 0) != b->GetPointData()->GetScalars()->GetComponent(v, 0);
+  EXPECT_EQ(differ, 0);
+  double range[2];
+  a->GetScalarRange(range);
+  EXPECT_EQ(range[0], -1024.0);
+  EXPECT_GT(range[1], 700.0);
+}
+
+// A compressed slice that GDCM cannot decode: vtkDICOMReader left it as the
+// buffer was (blank) and read on without a word, so the bone surface had a
+// slice missing. Now the read fails and names the file and its compression.
+TEST(MedicalImageReader, DamagedJPEGSliceIsAnErrorNotABlankSlice)
+{
+  const std::string source = LATTICEKIT_TEST_DATA "/dicom-phantom-jpeg";
+  for (const char* name : { "/I90", "/I100" }) // JPEG Lossless, JPEG-LS
+  {
+    const std::string dir = tempFolder("damaged_jpeg");
+    for (const char* f : { "/I90", "/I100", "/I110" })
+      ASSERT_TRUE(vtksys::SystemTools::CopyAFile(source + f, dir + f));
+    {
+      // Bytes flipped in the middle of the compressed stream.
+      std::fstream file(dir + name, std::ios::in | std::ios::out | std::ios::binary);
+      ASSERT_TRUE(file.good());
+      file.seekg(0, std::ios::end);
+      const std::streamoff size = file.tellg();
+      for (std::streamoff at = size / 2; at < size / 2 + 2000; at += 7)
+      {
+        char c = 0;
+        file.seekg(at);
+        file.get(c);
+        file.seekp(at);
+        file.put(static_cast<char>(c ^ 0x5a));
+      }
+    }
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(dir.c_str());
+    reader->Update();
+    EXPECT_GE(rec.errors, 1) << name;
+    EXPECT_NE(rec.messages.find(std::string(name) + "': its pixel data, compressed as JPEG"), std::string::npos)
+      << rec.messages;
+    EXPECT_NE(rec.messages.find("could not be decoded (the compressed data is damaged)"), std::string::npos)
+      << rec.messages;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  }
+}
+
 TEST(MedicalImageReader, SliceSpacingIsHonoured)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
