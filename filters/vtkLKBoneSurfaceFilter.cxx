@@ -100,9 +100,9 @@ bool isBinaryLabelMap(vtkImageData* image)
   return true; // an integer array whose range is [0, 1] has only 0 and 1
 }
 
-/// The distinct values of an integer array, in order, or nothing when it
-/// holds floating-point values or more than `most` distinct ones.
-std::vector<long long> fewIntegerValues(vtkDataArray* s, std::size_t most)
+/// The distinct values of an integer array's component, in order, or nothing
+/// when it holds floating-point values or more than `most` distinct ones.
+std::vector<long long> fewIntegerValues(vtkDataArray* s, std::size_t most, int component = 0)
 {
   if (!s || s->GetDataType() == VTK_FLOAT || s->GetDataType() == VTK_DOUBLE)
     return {};
@@ -110,7 +110,7 @@ std::vector<long long> fewIntegerValues(vtkDataArray* s, std::size_t most)
   const vtkIdType n = s->GetNumberOfTuples();
   for (vtkIdType i = 0; i < n; ++i)
   {
-    seen.insert(static_cast<long long>(s->GetComponent(i, 0)));
+    seen.insert(static_cast<long long>(s->GetComponent(i, component)));
     if (seen.size() > most)
       return {};
   }
@@ -125,26 +125,46 @@ std::string listed(const std::vector<long long>& values)
   return os.str();
 }
 
-/// A 3D Slicer segmentation's segments (the reader's field data), as
-/// (label value, name); empty for any other volume.
-std::vector<std::pair<int, std::string>> segmentsOf(vtkImageData* image)
+/// A segment of a 3D Slicer segmentation: its label value in its layer.
+struct Segment
 {
-  std::vector<std::pair<int, std::string>> out;
+  int label = 0;
+  std::string name;
+  int layer = 0;
+};
+
+/// A 3D Slicer segmentation's segments (the reader's field data); empty for
+/// any other volume.
+std::vector<Segment> segmentsOf(vtkImageData* image)
+{
+  std::vector<Segment> out;
   auto* names = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("SegmentNames"));
   vtkDataArray* values = image->GetFieldData()->GetArray("SegmentLabelValues");
+  vtkDataArray* layers = image->GetFieldData()->GetArray("SegmentLayers");
   if (!names || !values || names->GetNumberOfValues() != values->GetNumberOfTuples())
     return out;
   for (vtkIdType i = 0; i < names->GetNumberOfValues(); ++i)
-    out.emplace_back(static_cast<int>(values->GetComponent(i, 0)), names->GetValue(i));
+  {
+    Segment seg;
+    seg.label = static_cast<int>(values->GetComponent(i, 0));
+    seg.name = names->GetValue(i);
+    if (layers && layers->GetNumberOfTuples() == names->GetNumberOfValues())
+      seg.layer = static_cast<int>(layers->GetComponent(i, 0));
+    out.push_back(seg);
+  }
   return out;
 }
 
-/// "1 'mandible', 2 'maxilla'": the segments with their label values.
-std::string segmentNames(const std::vector<std::pair<int, std::string>>& segments)
+/// "1 'mandible', 2 'maxilla'": the segments with their label values, and
+/// their layers when there are several.
+std::string segmentNames(const std::vector<Segment>& segments)
 {
+  const bool layered =
+    std::any_of(segments.begin(), segments.end(), [](const Segment& seg) { return seg.layer != 0; });
   std::string text;
   for (std::size_t i = 0; i < segments.size(); ++i)
-    text += (i == 0 ? "" : ", ") + std::to_string(segments[i].first) + " '" + segments[i].second + "'";
+    text += (i == 0 ? "" : ", ") + std::to_string(segments[i].label) + " '" + segments[i].name + "'" +
+      (layered ? " (layer " + std::to_string(segments[i].layer) + ")" : "");
   return text;
 }
 
@@ -260,7 +280,11 @@ int vtkLKBoneSurfaceFilter::RequestData(
       << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
     return 0;
   }
-  if (input->GetNumberOfScalarComponents() != 1)
+  const int components = input->GetNumberOfScalarComponents();
+  const auto segments = segmentsOf(input);
+  const bool layered = components > 1 && !segments.empty() &&
+    std::all_of(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.layer < components; });
+  if (components != 1 && !layered)
   {
     vtkErrorMacro("The input volume must have one scalar component.");
     return 0;
@@ -303,22 +327,22 @@ int vtkLKBoneSurfaceFilter::RequestData(
   }
 
   // One label of several: a 0/1 label map of it (with the input's field
-  // data, where the reader's patient matrix is).
+  // data, where the reader's patient matrix is). A layered segmentation's
+  // segment is a label value in its layer's component.
   int label = this->Label;
+  int layer = 0;
   if (this->LabelName && *this->LabelName)
   {
-    const auto segments = segmentsOf(input);
     const std::string wanted = this->LabelName;
     auto lowered = [](std::string t) {
       std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
       return t;
     };
-    auto found = std::find_if(segments.begin(), segments.end(), [&](const auto& seg) { return seg.second == wanted; });
+    auto found = std::find_if(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.name == wanted; });
     if (found == segments.end())
-      found = std::find_if(segments.begin(), segments.end(),
-        [&](const auto& seg) { return lowered(seg.second) == lowered(wanted); });
-    label = found == segments.end() ? 0 : found->first;
-    if (label == 0)
+      found = std::find_if(
+        segments.begin(), segments.end(), [&](const Segment& seg) { return lowered(seg.name) == lowered(wanted); });
+    if (found == segments.end())
     {
       vtkErrorMacro("No segment is named '" << wanted << "'; "
                     << (segments.empty() ? std::string("the volume names no segments (a 3D Slicer .seg.nrrd does)")
@@ -326,6 +350,27 @@ int vtkLKBoneSurfaceFilter::RequestData(
                     << ".");
       return 0;
     }
+    label = found->label;
+    layer = found->layer;
+  }
+  else if (layered)
+  {
+    // Each layer numbers its segments from 1: a value names a segment only
+    // when one segment has it.
+    const auto count = std::count_if(
+      segments.begin(), segments.end(), [&](const Segment& seg) { return label > 0 && seg.label == label; });
+    if (count != 1)
+    {
+      vtkErrorMacro("The input is a segmentation whose segments overlap, in " << components << " layers; "
+                    << (label == 0 ? std::string("choose one segment")
+                                   : count == 0 ? "no segment has label " + std::to_string(label) + "; choose one"
+                                                : std::to_string(count) + " segments have label " +
+                                                    std::to_string(label) + "; choose one by its name")
+                    << " with LabelName (--label NAME). Its segments are " << segmentNames(segments) << ".");
+      return 0;
+    }
+    layer = std::find_if(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.label == label; })
+              ->layer;
   }
   this->EffectiveLabel = label;
   vtkNew<vtkImageData> oneLabel;
@@ -346,15 +391,16 @@ int vtkLKBoneSurfaceFilter::RequestData(
     vtkIdType hits = 0;
     for (vtkIdType i = 0; i < n; ++i)
     {
-      out[i] = s->GetComponent(i, 0) == label;
+      out[i] = s->GetComponent(i, layer) == label;
       hits += out[i];
     }
     if (hits == 0)
     {
-      const std::vector<long long> labels = fewIntegerValues(s, 64);
-      vtkErrorMacro("No voxel holds label " << label << "; "
-                    << (labels.empty() ? std::string("the volume holds more than 64 values (is it a label map?)")
-                                       : "the volume's values are " + listed(labels))
+      const std::vector<long long> labels = fewIntegerValues(s, 64, layer);
+      const std::string where = layered ? "layer " + std::to_string(layer) : std::string("the volume");
+      vtkErrorMacro("No voxel holds label " << label << (layered ? " in " + where : std::string()) << "; "
+                    << (labels.empty() ? where + " holds more than 64 values (is it a label map?)"
+                                       : where + "'s values are " + listed(labels))
                     << segmentList(input) << ".");
       return 0;
     }

@@ -121,10 +121,14 @@ public:
 
   ///@{
   /// One segment of a 3D Slicer segmentation by its name (the reader's
-  /// "SegmentNames" and "SegmentLabelValues" field data, from a .seg.nrrd):
-  /// when set, it gives Label. Matched as written, else ignoring case; a
-  /// name the segmentation does not have is an error that lists its
-  /// segments. Default: none.
+  /// "SegmentNames", "SegmentLabelValues" and "SegmentLayers" field data,
+  /// from a .seg.nrrd): when set, it gives Label (and the layer). Matched as
+  /// written, else ignoring case; a name the segmentation does not have is an
+  /// error that lists its segments. Default: none.
+  ///
+  /// A segmentation whose segments overlap has several layers (a component
+  /// each), and each layer numbers its segments from 1: one segment must be
+  /// chosen, by its name or by a label value that only one segment has.
   vtkSetStringMacro(LabelName);
   vtkGetStringMacro(LabelName);
   ///@}

@@ -4,10 +4,13 @@
 #include "vtkLKProgressRelay.h"
 #include "vtkLKMemory.h"
 
+#include <vtkByteSwap.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCharArray.h>
 #include <vtkDataArray.h>
 #include <vtkDirectory.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
@@ -20,11 +23,11 @@
 #include <vtkNew.h>
 #include <vtkNrrdReader.h>
 #include <vtkObjectFactory.h>
-#include <vtkObjectFactoryCollection.h>
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
 #include <vtkStringArray.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtk_zlib.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -33,6 +36,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <new>
@@ -116,12 +120,14 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
 }
 
 /// A 3D Slicer segmentation's segments, from its NRRD header's key/value
-/// pairs (readHeader's `keyValues`) "SegmentN_Name:=..." and
-/// "SegmentN_LabelValue:=..." (N from 0).
+/// pairs (readHeader's `keyValues`) "SegmentN_Name:=...",
+/// "SegmentN_LabelValue:=..." and "SegmentN_Layer:=..." (N from 0; the layer
+/// is 0 when not given).
 struct Segment
 {
   std::string name;
   int labelValue = 0;
+  int layer = 0;
 };
 
 std::vector<Segment> nrrdSegments(const std::map<std::string, std::string>& pairs)
@@ -141,6 +147,14 @@ std::vector<Segment> nrrdSegments(const std::map<std::string, std::string>& pair
     if (end == value->second.c_str() || v < 1 || v > std::numeric_limits<int>::max())
       break;
     seg.labelValue = static_cast<int>(v);
+    const auto layer = pairs.find(key + "Layer");
+    if (layer != pairs.end())
+    {
+      const long l = std::strtol(layer->second.c_str(), &end, 10);
+      if (end == layer->second.c_str() || l < 0 || l > std::numeric_limits<int>::max())
+        break;
+      seg.layer = static_cast<int>(l);
+    }
     segments.push_back(seg);
   }
   return segments;
@@ -359,6 +373,104 @@ std::string wideGapsWarning(const lkvtk::DICOMGeometryReport& report)
     ". The volume is interpolated across them: check that the series is complete before planning on it.";
 }
 
+/// vtkNrrdReader that reads a 4D NRRD whose first axis is a list, as 3D
+/// Slicer saves a segmentation whose segments overlap (one label map per
+/// layer, gzip-compressed). Two mends to VTK 9.1's reader:
+/// - It takes a "space" field to mean three axes, so where "space" follows
+///   "dimension: 4" (as 3D Slicer, ITK and teem write them) it reads three of
+///   the four sizes, and the layers of a volume come out as a 2D image.
+///   Moved before "dimension", "space" no longer overrides it.
+/// - Its gzip reading of several values per voxel fills only part of the
+///   volume (the layers of tests/data/overlapping_segments.seg.nrrd came out
+///   with 419 of a ball's 1,031 voxels, without an error; the same file
+///   uncompressed reads right). The whole stream is read here.
+/// Made with its own New(), it also escapes the object factory, which in
+/// Debian's VTK may hand out an MPI variant of vtkNrrdReader that reads
+/// nothing.
+class SpaceFirstNrrdReader : public vtkNrrdReader
+{
+public:
+  static SpaceFirstNrrdReader* New();
+  vtkTypeMacro(SpaceFirstNrrdReader, vtkNrrdReader);
+
+protected:
+  SpaceFirstNrrdReader() = default;
+
+  int ReadHeader(vtkCharArray* headerBuffer) override
+  {
+    // The buffer holds the header and a terminating zero; the line moves
+    // within it, so its length (the header's size) is kept.
+    const vtkIdType size = headerBuffer->GetNumberOfTuples() - 1;
+    if (size > 0)
+    {
+      std::string text(headerBuffer->GetPointer(0), static_cast<std::size_t>(size));
+      const std::size_t firstLineEnd = text.find('\n');
+      const std::size_t space = text.find("\nspace: ");
+      const std::size_t spaceEnd = space == std::string::npos ? space : text.find('\n', space + 1);
+      if (firstLineEnd != std::string::npos && spaceEnd != std::string::npos && space > firstLineEnd)
+      {
+        const std::string line = text.substr(space + 1, spaceEnd - space);
+        text.erase(space + 1, spaceEnd - space);
+        text.insert(firstLineEnd + 1, line);
+        std::copy(text.begin(), text.end(), headerBuffer->GetPointer(0));
+      }
+    }
+    return this->Superclass::ReadHeader(headerBuffer);
+  }
+
+  int ReadDataGZip(vtkImageData* output) override
+  {
+    if (output->GetNumberOfScalarComponents() == 1 || this->GetFileNames())
+      return this->Superclass::ReadDataGZip(output);
+    const std::size_t bytes = static_cast<std::size_t>(output->GetNumberOfPoints()) *
+      static_cast<std::size_t>(output->GetNumberOfScalarComponents()) * static_cast<std::size_t>(output->GetScalarSize());
+    std::ifstream file(this->GetFileName(), std::ios::binary);
+    file.seekg(static_cast<std::streamoff>(this->GetHeaderSize()));
+    std::vector<unsigned char> compressed((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (!file.eof() && file.fail())
+    {
+      vtkErrorMacro("Cannot read the gzip data of " << this->GetFileName() << ".");
+      return 0;
+    }
+    z_stream stream{};
+    if (inflateInit2(&stream, 15 + 32) != Z_OK) // a gzip or zlib header
+    {
+      vtkErrorMacro("Cannot start zlib.");
+      return 0;
+    }
+    auto* out = static_cast<unsigned char*>(output->GetScalarPointer());
+    std::size_t in = 0, done = 0;
+    int status = Z_OK;
+    while (status == Z_OK && done < bytes)
+    {
+      // zlib counts in 32 bits: at most 1 GiB in and out per call.
+      const std::size_t inChunk = std::min<std::size_t>(compressed.size() - in, std::size_t(1) << 30);
+      const std::size_t outChunk = std::min<std::size_t>(bytes - done, std::size_t(1) << 30);
+      stream.next_in = compressed.data() + in;
+      stream.avail_in = static_cast<uInt>(inChunk);
+      stream.next_out = out + done;
+      stream.avail_out = static_cast<uInt>(outChunk);
+      status = inflate(&stream, Z_NO_FLUSH);
+      in += inChunk - stream.avail_in;
+      done += outChunk - stream.avail_out;
+      if (status == Z_BUF_ERROR && stream.avail_in == 0 && in < compressed.size())
+        status = Z_OK; // more input to give
+    }
+    inflateEnd(&stream);
+    if (done < bytes)
+    {
+      vtkErrorMacro("The gzip data of " << this->GetFileName() << " holds " << done << " of the " << bytes
+                                        << " bytes its header asks for: the file is truncated or damaged.");
+      this->SetErrorCode(vtkErrorCode::PrematureEndOfFileError);
+      return 0;
+    }
+    if (this->GetSwapBytes() && output->GetScalarSize() > 1)
+      vtkByteSwap::SwapVoidRange(out, static_cast<vtkIdType>(bytes / output->GetScalarSize()), output->GetScalarSize());
+    return 1;
+  }
+};
+vtkStandardNewMacro(SpaceFirstNrrdReader);
+
 struct ErrorFlag
 {
   bool failed = false;
@@ -544,24 +656,30 @@ bool vtkLKMedicalImageReader::ReadVolume()
   if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr"))
   {
     this->FileFormat = "NRRD";
-    // Debian's VTK may route vtkNrrdReader to an MPI variant through the object
-    // factory (once vtkIOMPIImage is loaded) that reads nothing: use the serial one.
-    vtkObjectFactory::GetRegisteredFactories(); // initialises the factory list
-    const bool overridden = vtkObjectFactory::HasOverrideAny("vtkNrrdReader") != 0;
-    if (overridden)
-    {
-      vtkObjectFactory::SetAllEnableFlags(false, "vtkNrrdReader");
-    }
-    vtkNew<vtkNrrdReader> reader;
-    if (overridden)
-    {
-      vtkObjectFactory::SetAllEnableFlags(true, "vtkNrrdReader");
-    }
+    vtkNew<SpaceFirstNrrdReader> reader;
     ErrorFlag flag(reader);
     reader->SetFileName(path.c_str());
     std::size_t headerBytes = 0;
     std::map<std::string, std::string> keyValues;
     const auto header = readHeader(path, ':', &headerBytes, &keyValues);
+    // vtkNrrdReader takes the first of four axes as the values of a voxel
+    // (3D Slicer's layers, a vector's components), whatever the file says:
+    // a fourth axis that is not first (time after space) would be read as
+    // scrambled voxels.
+    if (header.count("dimension") && numbers(header.at("dimension")) == std::vector<double>{ 4 } &&
+      header.count("kinds"))
+    {
+      std::istringstream kinds(lower(header.at("kinds")));
+      std::string first;
+      kinds >> first;
+      if (first == "domain" || first == "space" || first == "time")
+      {
+        vtkErrorMacro("Cannot read NRRD file '" << path << "': it has 4 axes (kinds: " << header.at("kinds")
+                                                << ") and its first is not a list of values per voxel; a 3D "
+                                                   "volume is needed.");
+        return false;
+      }
+    }
     std::string message;
     if (!readImage(this, reader, flag, message, truncatedRawData(path, header, headerBytes, true)))
     {
@@ -869,15 +987,22 @@ bool vtkLKMedicalImageReader::ReadVolume()
     image->GetSpacing(spacing);
   }
 
-  if (image->GetNumberOfScalarComponents() != 1)
+  // A segmentation whose segments overlap comes in layers, one component each
+  // (the bone surface filter takes one segment of one layer).
+  const int components = image->GetNumberOfScalarComponents();
+  const auto outsideTheLayers =
+    std::find_if(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.layer >= components; });
+  if (outsideTheLayers != segments.end())
   {
-    if (!segments.empty())
-      vtkErrorMacro("'" << path << "' is a segmentation whose segments overlap, stored in "
-                        << image->GetNumberOfScalarComponents()
-                        << " layers; one layer is needed (export the segment as a label map or a model).");
-    else
-      vtkErrorMacro("'" << path << "' has " << image->GetNumberOfScalarComponents()
-                        << " components per voxel; a single-component volume is needed.");
+    vtkErrorMacro("'" << path << "' is a segmentation whose segment '" << outsideTheLayers->name << "' is in layer "
+                      << outsideTheLayers->layer << ", but it has " << components << " layer"
+                      << (components == 1 ? "" : "s") << " (0 to " << components - 1 << ").");
+    return false;
+  }
+  if (components != 1 && segments.empty())
+  {
+    vtkErrorMacro("'" << path << "' has " << components
+                      << " components per voxel; a single-component volume is needed.");
     return false;
   }
   this->Volume->ShallowCopy(image);
@@ -897,13 +1022,17 @@ bool vtkLKMedicalImageReader::ReadVolume()
     names->SetName("SegmentNames");
     vtkNew<vtkIntArray> values;
     values->SetName("SegmentLabelValues");
+    vtkNew<vtkIntArray> layers;
+    layers->SetName("SegmentLayers");
     for (const Segment& seg : segments)
     {
       names->InsertNextValue(seg.name);
       values->InsertNextValue(seg.labelValue);
+      layers->InsertNextValue(seg.layer);
     }
     this->Volume->GetFieldData()->AddArray(names);
     this->Volume->GetFieldData()->AddArray(values);
+    this->Volume->GetFieldData()->AddArray(layers);
   }
   if (this->OrientationKnown)
   {

@@ -35,9 +35,15 @@
  * the values.
  *
  * A segmentation of 3D Slicer (.seg.nrrd) names its segments in the header
- * ("Segment0_Name:=mandible", "Segment0_LabelValue:=1"): the output's field
- * data then holds "SegmentNames" (strings) and "SegmentLabelValues" (ints),
- * which vtkLKBoneSurfaceFilter's LabelName looks up.
+ * ("Segment0_Name:=mandible", "Segment0_LabelValue:=1", "Segment0_Layer:=0"):
+ * the output's field data then holds "SegmentNames" (strings),
+ * "SegmentLabelValues" and "SegmentLayers" (ints), which
+ * vtkLKBoneSurfaceFilter's Label and LabelName look up.
+ *
+ * The output has one scalar component, except for a segmentation whose
+ * segments overlap: 3D Slicer stores it in layers, each a label map, and the
+ * output has a component per layer (vtkLKBoneSurfaceFilter takes one segment
+ * of it).
  */
 #ifndef vtkLKMedicalImageReader_h
 #define vtkLKMedicalImageReader_h

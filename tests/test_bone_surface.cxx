@@ -548,6 +548,101 @@ TEST(BoneSurface, LabelNameTakesASegmentOfASlicerSegmentation)
     << rec.messages;
 }
 
+// A segmentation whose segments overlap: 3D Slicer saves it in layers (a
+// 4D NRRD), each layer numbering its segments from 1. The reader keeps a
+// component per layer; a segment is taken by its name, or by a label value
+// only one segment has, whole (the overlap stays in both).
+TEST(BoneSurface, OverlappingSegmentsAreTakenFromTheirLayers)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder readErrors(reader);
+  reader->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/overlapping_segments.seg.nrrd").c_str());
+  reader->Update();
+  ASSERT_EQ(readErrors.errors, 0) << readErrors.messages;
+  vtkImageData* volume = reader->GetOutput();
+  ASSERT_EQ(volume->GetNumberOfScalarComponents(), 2);
+  vtkDataArray* layers = volume->GetFieldData()->GetArray("SegmentLayers");
+  ASSERT_TRUE(layers);
+  ASSERT_EQ(layers->GetNumberOfTuples(), 3);
+  EXPECT_EQ(layers->GetComponent(0, 0), 0.0);
+  EXPECT_EQ(layers->GetComponent(2, 0), 1.0);
+
+  auto run = [&](const char* name, int label, Surface& out) {
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    lktest::ErrorRecorder rec(bone);
+    bone->SetInputConnection(reader->GetOutputPort());
+    bone->SetLabel(label);
+    bone->SetLabelName(name);
+    bone->Update();
+    out.mesh = vtkSmartPointer<vtkPolyData>::New();
+    out.mesh->DeepCopy(bone->GetOutput());
+    out.errors = rec.errors;
+    out.messages = rec.messages;
+  };
+  auto volumeOf = [](vtkPolyData* pd) {
+    vtkNew<vtkMassProperties> mass;
+    mass->SetInputData(pd);
+    mass->Update();
+    return mass->GetVolume();
+  };
+  const double pi = 3.14159265358979;
+  // Balls (LPS, mm): mandible r 8 at x = -9, maxilla r 7 at x = +9 (layer
+  // 0), tumour r 6 at x = -1 (layer 1), which overlaps both.
+  Surface mandible, maxilla, tumour;
+  run("mandible", 0, mandible);
+  run(nullptr, 2, maxilla); // only one segment has label 2
+  run("Tumour", 0, tumour);
+  ASSERT_EQ(mandible.errors + maxilla.errors + tumour.errors, 0)
+    << mandible.messages << maxilla.messages << tumour.messages;
+  double b[6];
+  tumour.mesh->GetBounds(b);
+  EXPECT_NEAR(0.5 * (b[0] + b[1]), -1.0, 1.0);
+  EXPECT_NEAR(b[1] - b[0], 12.0, 2.0);
+  mandible.mesh->GetBounds(b);
+  EXPECT_NEAR(0.5 * (b[0] + b[1]), -9.0, 1.0);
+  EXPECT_GT(b[1], -2.5); // the part the tumour overlaps is still the mandible's
+  maxilla.mesh->GetBounds(b);
+  EXPECT_NEAR(0.5 * (b[0] + b[1]), 9.0, 1.0);
+  // A ball of 6 mm on 1 x 1 x 2 mm voxels, smoothed: about 80 % of its
+  // volume (the whole volume, mis-read, gave 17 %).
+  EXPECT_NEAR(volumeOf(tumour.mesh), 0.8 * 4.0 / 3.0 * pi * 216.0, 0.1 * 4.0 / 3.0 * pi * 216.0);
+  for (const Surface* s : { &mandible, &maxilla, &tumour })
+    EXPECT_EQ(lk::countBoundaryEdges(lktest::toCore(s->mesh)), 0u);
+  // Layer 0 holds the voxels of two_segments.seg.nrrd: the same surfaces.
+  vtkNew<vtkLKMedicalImageReader> single;
+  single->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd").c_str());
+  for (const auto& [name, layered] : { std::pair<const char*, Surface*>{ "left condyle", &mandible },
+         std::pair<const char*, Surface*>{ "Right Condyle", &maxilla } })
+  {
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputConnection(single->GetOutputPort());
+    bone->SetLabelName(name);
+    bone->Update();
+    EXPECT_EQ(bone->GetOutput()->GetNumberOfPoints(), layered->mesh->GetNumberOfPoints()) << name;
+    EXPECT_NEAR(volumeOf(bone->GetOutput()), volumeOf(layered->mesh), 1e-9) << name;
+  }
+
+  // Label 1 is two segments; no label, or one no segment has, is no segment.
+  Surface ambiguous, none, missing;
+  run(nullptr, 1, ambiguous);
+  run(nullptr, 0, none);
+  run(nullptr, 3, missing);
+  const std::string listed = " with LabelName (--label NAME). Its segments are 1 'mandible' (layer 0), 2 'maxilla' "
+                             "(layer 0), 1 'tumour' (layer 1).";
+  EXPECT_NE(ambiguous.messages.find("The input is a segmentation whose segments overlap, in 2 layers; 2 segments have "
+                                    "label 1; choose one by its name" + listed),
+    std::string::npos)
+    << ambiguous.messages;
+  EXPECT_NE(none.messages.find("in 2 layers; choose one segment" + listed), std::string::npos) << none.messages;
+  EXPECT_NE(missing.messages.find("in 2 layers; no segment has label 3; choose one" + listed), std::string::npos)
+    << missing.messages;
+  for (const Surface* s : { &ambiguous, &none, &missing })
+  {
+    EXPECT_EQ(s->errors, 1);
+    EXPECT_EQ(s->mesh->GetNumberOfPoints(), 0);
+  }
+}
+
 TEST(BoneSurface, EmptyAndFlatVolumesAreClearErrors)
 {
   vtkNew<vtkLKBoneSurfaceFilter> bone;

@@ -583,6 +583,71 @@ TEST(MedicalImageReader, SliceSpacingIsHonoured)
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
 }
 
+// A 4D NRRD whose first axis is a list of values per voxel (3D Slicer's
+// layers of overlapping segments). VTK 9.1's vtkNrrdReader read it as a 2D
+// image ("space" after "dimension: 4" cut the sizes to three) and, gzipped,
+// filled only part of the volume; a 4D file whose list axis is not first
+// would be read scrambled, and is refused.
+TEST(MedicalImageReader, NrrdWithALayerAxisReadsEveryLayer)
+{
+  const std::string file = LATTICEKIT_TEST_DATA "/overlapping_segments.seg.nrrd";
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t headerEnd = bytes.find("\n\n") + 2;
+  const std::string dir = tempFolder("layers");
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  vtkImageData* image = reader->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 40);
+  EXPECT_EQ(dims[1], 30);
+  EXPECT_EQ(dims[2], 30);
+  ASSERT_EQ(image->GetNumberOfScalarComponents(), 2);
+  EXPECT_DOUBLE_EQ(image->GetSpacing()[2], 2.0);
+  // Voxel counts of the balls (scripts/make_label_test_data.py): r 8 and 7
+  // in layer 0 (as in two_segments.seg.nrrd), r 6 in layer 1.
+  std::array<std::array<int, 3>, 2> counts{};
+  for (vtkIdType v = 0; v < image->GetNumberOfPoints(); ++v)
+    for (int c = 0; c < 2; ++c)
+      ++counts[c][static_cast<int>(image->GetPointData()->GetScalars()->GetComponent(v, c)) % 3];
+  EXPECT_EQ(counts[0][1], 1031);
+  EXPECT_EQ(counts[0][2], 695);
+  EXPECT_EQ(counts[1][1], 425);
+  EXPECT_EQ(counts[1][2], 0);
+
+  // Cut short inside the gzip stream: an error, not a volume half zeros.
+  std::ofstream(dir + "/cut.seg.nrrd", std::ios::binary) << bytes.substr(0, headerEnd + (bytes.size() - headerEnd) / 2);
+  rec.errors = 0;
+  rec.messages.clear();
+  reader->SetFileName((dir + "/cut.seg.nrrd").c_str());
+  reader->Update();
+  EXPECT_GE(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("of the 72000 bytes its header asks for: the file is truncated or damaged"),
+    std::string::npos)
+    << rec.messages;
+
+  // Time (or anything else) after the three space axes.
+  std::ofstream(dir + "/time_last.nrrd", std::ios::binary)
+    << "NRRD0004\ntype: unsigned char\ndimension: 4\nsizes: 4 4 4 2\nkinds: domain domain domain list\n"
+       "encoding: raw\n\n"
+    << std::string(128, '\1');
+  rec.errors = 0;
+  rec.messages.clear();
+  reader->SetFileName((dir + "/time_last.nrrd").c_str());
+  reader->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("it has 4 axes (kinds: domain domain domain list) and its first is not a list of values "
+                              "per voxel; a 3D volume is needed."),
+    std::string::npos)
+    << rec.messages;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 TEST(MedicalImageReader, NrrdGeometryComesFromTheHeader)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
