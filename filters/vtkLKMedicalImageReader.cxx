@@ -40,6 +40,7 @@
 #include <limits>
 #include <map>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -120,40 +121,54 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
 }
 
 /// A 3D Slicer segmentation's segments, from its NRRD header's key/value
-/// pairs (readHeader's `keyValues`) "SegmentN_Name:=...",
-/// "SegmentN_LabelValue:=..." and "SegmentN_Layer:=..." (N from 0; the layer
-/// is 0 when not given).
+/// pairs (readHeader's `keyValues`) "SegmentN_ID:=...", "SegmentN_Name:=...",
+/// "SegmentN_LabelValue:=..." and "SegmentN_Layer:=..." (N from 0). As 3D
+/// Slicer reads them: the name is the ID when not given, the label value 1,
+/// and the layer N (Slicer 4.10 and older saved every segment in a layer of
+/// its own, as a 0/1 map, without these two keys).
 struct Segment
 {
   std::string name;
-  int labelValue = 0;
+  int labelValue = 1;
   int layer = 0;
 };
 
 std::vector<Segment> nrrdSegments(const std::map<std::string, std::string>& pairs)
 {
+  // A whole number from min up, or nothing.
+  auto whole = [](const std::string& text, long min) -> std::optional<int> {
+    char* end = nullptr;
+    const long v = std::strtol(text.c_str(), &end, 10);
+    if (end == text.c_str() || v < min || v > std::numeric_limits<int>::max())
+      return std::nullopt;
+    return static_cast<int>(v);
+  };
   std::vector<Segment> segments;
   for (int i = 0;; ++i)
   {
     const std::string key = "Segment" + std::to_string(i) + "_";
+    const auto id = pairs.find(key + "ID");
     const auto name = pairs.find(key + "Name");
-    const auto value = pairs.find(key + "LabelValue");
-    if (name == pairs.end() || value == pairs.end())
+    if (id == pairs.end() && name == pairs.end())
       break;
     Segment seg;
-    seg.name = name->second;
-    char* end = nullptr;
-    const long v = std::strtol(value->second.c_str(), &end, 10);
-    if (end == value->second.c_str() || v < 1 || v > std::numeric_limits<int>::max())
-      break;
-    seg.labelValue = static_cast<int>(v);
+    seg.name = name != pairs.end() ? name->second : id->second;
+    seg.layer = i;
+    const auto value = pairs.find(key + "LabelValue");
     const auto layer = pairs.find(key + "Layer");
+    if (value != pairs.end())
+    {
+      const auto v = whole(value->second, 1);
+      if (!v)
+        break;
+      seg.labelValue = *v;
+    }
     if (layer != pairs.end())
     {
-      const long l = std::strtol(layer->second.c_str(), &end, 10);
-      if (end == layer->second.c_str() || l < 0 || l > std::numeric_limits<int>::max())
+      const auto l = whole(layer->second, 0);
+      if (!l)
         break;
-      seg.layer = static_cast<int>(l);
+      seg.layer = *l;
     }
     segments.push_back(seg);
   }

@@ -7,7 +7,10 @@ with several segments is stored:
 - overlapping_segments.seg.nrrd: a segmentation whose segments overlap, which
   3D Slicer saves in layers (a 4D NRRD, the layer axis first): layer 0 holds
   the two balls ("mandible" 1, "maxilla" 2), layer 1 a third ball ("tumour",
-  label 1 of its layer) that overlaps both.
+  label 1 of its layer) that overlaps both;
+- slicer4_segments.seg.nrrd: the two balls of two_segments.seg.nrrd as 3D
+  Slicer 4.10 and older saved segments, each a 0/1 map in a layer of its own,
+  without the LabelValue and Layer keys.
 Run with /usr/bin/python3 from the repository's root."""
 import gzip
 
@@ -111,3 +114,29 @@ Segmentation_MasterRepresentation:=Binary labelmap
 with open("tests/data/overlapping_segments.seg.nrrd", "wb") as f:
     f.write(header.encode("ascii"))
     f.write(gzip.compress(layered, mtime=0))
+
+old = bytes(v for k in range(NZ) for j in range(NY) for i in range(NX)
+            for v in (int(label(i, j, k) == 1), int(label(i, j, k) == 2)))
+header = """NRRD0004
+# Complete NRRD file format specification at:
+# http://teem.sourceforge.net/nrrd/format.html
+type: unsigned char
+dimension: 4
+space: left-posterior-superior
+sizes: 2 {nx} {ny} {nz}
+space directions: none (1,0,0) (0,1,0) (0,0,2)
+kinds: list domain domain domain
+encoding: gzip
+space origin: (-20,-15,-30)
+Segment0_Color:=0.945 0.839 0.568
+Segment0_ID:=Segment_1
+Segment0_Name:=left condyle
+Segment1_Color:=0.694 0.478 0.396
+Segment1_ID:=Segment_2
+Segment1_Name:=Right Condyle
+Segmentation_MasterRepresentation:=Binary labelmap
+
+""".format(nx=NX, ny=NY, nz=NZ)
+with open("tests/data/slicer4_segments.seg.nrrd", "wb") as f:
+    f.write(header.encode("ascii"))
+    f.write(gzip.compress(old, mtime=0))

@@ -643,6 +643,46 @@ TEST(BoneSurface, OverlappingSegmentsAreTakenFromTheirLayers)
   }
 }
 
+// 3D Slicer 4.10 and older saved each segment as a 0/1 map in a layer of
+// its own, without LabelValue and Layer keys: segment N is label 1 of layer
+// N, as Slicer reads it.
+TEST(BoneSurface, SegmentsOfOlderSlicerFilesAreTakenFromTheirLayers)
+{
+  vtkNew<vtkLKMedicalImageReader> older, current;
+  older->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/slicer4_segments.seg.nrrd").c_str());
+  current->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd").c_str());
+  for (const char* name : { "left condyle", "Right Condyle" })
+  {
+    vtkNew<vtkLKBoneSurfaceFilter> a, b;
+    lktest::ErrorRecorder rec(a);
+    a->SetInputConnection(older->GetOutputPort());
+    a->SetLabelName(name);
+    a->Update();
+    ASSERT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_EQ(a->GetEffectiveLabel(), 1) << name;
+    b->SetInputConnection(current->GetOutputPort());
+    b->SetLabelName(name);
+    b->Update();
+    // The same voxels, so the same surface.
+    EXPECT_GT(a->GetOutput()->GetNumberOfPoints(), 100) << name;
+    EXPECT_EQ(a->GetOutput()->GetNumberOfPoints(), b->GetOutput()->GetNumberOfPoints()) << name;
+    double ba[6], bb[6];
+    a->GetOutput()->GetBounds(ba);
+    b->GetOutput()->GetBounds(bb);
+    for (int i = 0; i < 6; ++i)
+      EXPECT_DOUBLE_EQ(ba[i], bb[i]) << name;
+  }
+  vtkNew<vtkLKBoneSurfaceFilter> ambiguous;
+  lktest::ErrorRecorder rec(ambiguous);
+  ambiguous->SetInputConnection(older->GetOutputPort());
+  ambiguous->SetLabel(1);
+  ambiguous->Update();
+  EXPECT_NE(rec.messages.find("2 segments have label 1; choose one by its name with LabelName (--label NAME). Its "
+                              "segments are 1 'left condyle' (layer 0), 1 'Right Condyle' (layer 1)."),
+    std::string::npos)
+    << rec.messages;
+}
+
 TEST(BoneSurface, EmptyAndFlatVolumesAreClearErrors)
 {
   vtkNew<vtkLKBoneSurfaceFilter> bone;
