@@ -271,15 +271,9 @@ int main(int argc, char* argv[])
   std::string loadWarnings = lkapp::warningsSince(warningsBeforeLoad);
   if (!mesh && isoGiven && bone->GetTreatedAsLabelMap())
   {
-    std::ostringstream note; // the surface is not the one --iso asked for
-    note << "--iso " << iso << " is not used: ";
-    if (bone->GetEffectiveLabel() > 0)
-      note << "label " << bone->GetEffectiveLabel() << " of '" << vtksys::SystemTools::GetFilenameName(input)
-           << "' is taken as a 0/1 label map, at 0.5";
-    else
-      note << "'" << vtksys::SystemTools::GetFilenameName(input) << "' is a 0/1 label map, taken at 0.5";
-    std::cerr << "warning: " << note.str() << "\n";
-    loadWarnings += (loadWarnings.empty() ? "" : "\n") + note.str();
+    const std::string note = lkapp::unusedIsoNote(iso, bone->GetEffectiveLabel(), input, false);
+    std::cerr << "warning: " << note << "\n";
+    loadWarnings += (loadWarnings.empty() ? "" : "\n") + note;
   }
   if (!loadWarnings.empty())
     planner.inputWarnings += (planner.inputWarnings.empty() ? "" : "\n") + loadWarnings;

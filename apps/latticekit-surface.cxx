@@ -182,13 +182,9 @@ int main(int argc, char* argv[])
   {
     // A label map is taken at 0.5 whatever --iso says: say so, as the
     // surface is not the one asked for.
-    std::cerr << "warning: --iso " << iso << " is not used: "
-              << (surface->GetEffectiveLabel() > 0
-                     ? "label " + std::to_string(surface->GetEffectiveLabel()) + " is taken as a 0/1 label map, at 0.5"
-                     : std::string("the input is a 0/1 label map, taken at 0.5"))
-              << (labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO && surface->GetEffectiveLabel() == 0
-                     ? " (--no-label-map takes it at the --iso value)"
-                     : "")
+    std::cerr << "warning: "
+              << lkapp::unusedIsoNote(iso, surface->GetEffectiveLabel(), input,
+                   labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO)
               << "\n";
   }
   vtkPolyData* mesh = surface->GetOutput();

@@ -884,6 +884,19 @@ void Arguments::labelOrName(const std::string& arg, long& label, std::string& na
   name = numeric ? std::string() : v;
 }
 
+std::string unusedIsoNote(double iso, int label, const std::string& input, bool noLabelMapOption)
+{
+  std::ostringstream note;
+  const std::string name = "'" + vtksys::SystemTools::GetFilenameName(input) + "'";
+  note << "--iso " << iso << " is not used: ";
+  if (label > 0)
+    note << "label " << label << " of " << name << " is taken as a 0/1 label map, at 0.5";
+  else
+    note << name << " is a 0/1 label map, taken at 0.5"
+         << (noLabelMapOption ? " (--no-label-map takes it at the --iso value)" : "");
+  return note.str();
+}
+
 double Arguments::number(const std::string& arg, double lo, double hi, const char* what)
 {
   const std::string v = value(arg);

@@ -180,6 +180,13 @@ private:
   Usage usage_;
 };
 
+/// Why --iso was not used, for a volume taken as a label map at 0.5 (the
+/// surface is not the one --iso asked for): "--iso 200 is not used: label 2
+/// of 'seg.nrrd' is taken as a 0/1 label map, at 0.5" (`label` > 0), or
+/// "... 'mask.nrrd' is a 0/1 label map, taken at 0.5", and where the tool has
+/// --no-label-map (`noLabelMapOption`), how to take it at --iso instead.
+std::string unusedIsoNote(double iso, int label, const std::string& input, bool noLabelMapOption);
+
 /// False (with error set) if the mesh file cannot be created or has an
 /// unknown extension: checked before a long run, so that the run does not
 /// end in a lost result.
