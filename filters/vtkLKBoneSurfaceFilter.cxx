@@ -182,7 +182,7 @@ std::string labelHint(vtkImageData* image, const double range[2])
   if (!(range[0] >= 0.0 && range[1] <= 255.0))
     return {};
   const std::vector<long long> values = fewIntegerValues(image->GetPointData()->GetScalars(), 16);
-  if (values.size() < 3)
+  if (values.size() < (segmentsOf(image).empty() ? 3u : 2u)) // a segmentation's one segment needs its label too
     return {};
   return " The volume holds only the values " + listed(values) + segmentList(image) +
     ": if it is a label map with several labels, Label (--label N) takes one of them.";

@@ -5,6 +5,7 @@
 #include <vtkCommand.h>
 #include <vtkDICOMDictionary.h>
 #include <vtkDICOMDirectory.h>
+#include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
 #include <vtkDICOMReader.h>
 #include <vtkDICOMUtilities.h>
@@ -20,6 +21,8 @@
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnsignedShortArray.h>
 
 #include <algorithm>
 #include <array>
@@ -144,6 +147,7 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
       info.uid = meta->Get(DC::SeriesInstanceUID).AsString();
       info.description = meta->Get(DC::SeriesDescription).AsString();
       info.modality = meta->Get(DC::Modality).AsString();
+      info.sopClass = meta->Get(DC::SOPClassUID).AsString();
     }
     series.push_back(info);
   }
@@ -477,6 +481,252 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     patientMatrix->SetElement(row, 3,
       origin[static_cast<std::size_t>(row)] + ox * dx * r[static_cast<std::size_t>(row)] +
         oy * dy * c[static_cast<std::size_t>(row)]);
+  }
+  return true;
+}
+
+bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, vtkMatrix4x4* patientMatrix,
+  std::vector<DICOMSegment>& segments, std::string& error, vtkAlgorithm* progress)
+{
+  segments.clear();
+  if (series.files.size() != 1)
+  {
+    error = "the DICOM segmentation (SEG) is in " + std::to_string(series.files.size()) +
+      " files; one file, as segmentation tools write it, is read";
+    return false;
+  }
+  // The frames in the file's order, each a slice (SortingOff): where each
+  // lies and which segment it holds are read from its functional groups.
+  vtkNew<vtkStringArray> names;
+  names->InsertNextValue(series.files.front());
+  vtkNew<CheckedDICOMReader> reader;
+  ErrorCatcher catcher(reader);
+  reader->SetFileNames(names);
+  reader->SetMemoryRowOrderToFileNative();
+  reader->SortingOff();
+  reader->AutoRescaleOff();
+  {
+    std::optional<ProgressRelay> relay;
+    if (progress)
+      relay.emplace(progress, reader, 0.2, 0.9);
+    reader->Update();
+  }
+  if (reader->GetErrorCode() != 0 || !catcher.messages.empty())
+  {
+    error = "cannot read the DICOM segmentation: " +
+      (catcher.messages.empty() ? std::string("the reader failed") : catcher.messages);
+    return false;
+  }
+  vtkImageData* frames = reader->GetOutput();
+  vtkDICOMMetaData* meta = reader->GetMetaData();
+  int dims[3];
+  frames->GetDimensions(dims);
+  vtkDataArray* values = frames->GetPointData()->GetScalars();
+  if (!values || frames->GetNumberOfScalarComponents() != 1 || dims[0] < 1 || dims[1] < 1)
+  {
+    error = "the DICOM segmentation holds no frames of one value per pixel";
+    return false;
+  }
+  const int frameCount = dims[2];
+
+  // Its segments, and how a pixel value says a frame's segment is there.
+  const std::string type = meta->Get(DC::SegmentationType).AsString();
+  if (type != "BINARY" && type != "FRACTIONAL" && type != "LABELMAP")
+  {
+    error = "the DICOM segmentation's SegmentationType is '" + type + "'; BINARY, FRACTIONAL or LABELMAP is read";
+    return false;
+  }
+  const vtkDICOMValue& sequence = meta->Get(DC::SegmentSequence);
+  const vtkDICOMItem* items = sequence.GetSequenceData();
+  int largest = 0;
+  for (unsigned int i = 0; items && i < sequence.GetNumberOfValues(); ++i)
+  {
+    DICOMSegment seg;
+    seg.number = items[i].Get(DC::SegmentNumber).AsInt();
+    seg.name = items[i].Get(DC::SegmentLabel).AsString();
+    if (seg.number < 1 || seg.number > 65535)
+    {
+      error = "a segment of the DICOM segmentation has the SegmentNumber " + std::to_string(seg.number);
+      return false;
+    }
+    largest = std::max(largest, seg.number);
+    segments.push_back(seg);
+  }
+  if (segments.empty())
+  {
+    error = "the DICOM segmentation lists no segments (SegmentSequence)";
+    return false;
+  }
+  const double fractionalMax = meta->Get(DC::MaximumFractionalValue).IsValid()
+    ? meta->Get(DC::MaximumFractionalValue).AsDouble()
+    : 255.0;
+  std::vector<int> frameSegment(static_cast<std::size_t>(frameCount), 0); // 0: LABELMAP, the value says
+  if (type != "LABELMAP")
+  {
+    for (int f = 0; f < frameCount; ++f)
+    {
+      const int number = meta->Get(0, f, DC::ReferencedSegmentNumber).AsInt();
+      if (std::none_of(segments.begin(), segments.end(), [&](const DICOMSegment& seg) { return seg.number == number; }))
+      {
+        error = "frame " + std::to_string(f + 1) + " of the DICOM segmentation names segment " + std::to_string(number) +
+          ", which its SegmentSequence does not list";
+        return false;
+      }
+      frameSegment[static_cast<std::size_t>(f)] = number;
+    }
+  }
+  // The segment number at pixel p of frame f, or 0.
+  auto segmentAt = [&](int f, vtkIdType p) -> int {
+    const double v = values->GetComponent(static_cast<vtkIdType>(f) * dims[0] * dims[1] + p, 0);
+    if (type == "LABELMAP")
+      return v >= 1.0 && v <= largest ? static_cast<int>(v) : 0;
+    const bool in = type == "BINARY" ? v != 0.0 : v >= 0.5 * fractionalMax;
+    return in ? frameSegment[static_cast<std::size_t>(f)] : 0;
+  };
+
+  // The frames' grid.
+  double iop[6], ps[2];
+  const vtkDICOMValue& orientation = meta->Get(0, 0, DC::ImageOrientationPatient);
+  const vtkDICOMValue& pixelSpacing = meta->Get(0, 0, DC::PixelSpacing);
+  if (orientation.GetNumberOfValues() < 6 || pixelSpacing.GetNumberOfValues() < 2)
+  {
+    error = "the DICOM segmentation has no ImageOrientationPatient or PixelSpacing";
+    return false;
+  }
+  orientation.GetValues(iop, 6);
+  pixelSpacing.GetValues(ps, 2);
+  V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
+  const double rn = std::sqrt(dot(r, r)), cn = std::sqrt(dot(c, c));
+  const double dx = ps[1], dy = ps[0];
+  if (!(rn > 0.5) || !(cn > 0.5) || !(dx > 0.0) || !(dy > 0.0))
+  {
+    error = "the DICOM segmentation's ImageOrientationPatient or PixelSpacing is degenerate";
+    return false;
+  }
+  for (std::size_t a = 0; a < 3; ++a)
+  {
+    r[a] /= rn;
+    c[a] /= cn;
+  }
+  const V3 n = cross(r, c);
+  std::vector<V3> positions(static_cast<std::size_t>(frameCount));
+  std::vector<double> zs(static_cast<std::size_t>(frameCount));
+  for (int f = 0; f < frameCount; ++f)
+  {
+    const vtkDICOMValue& p = meta->Get(0, f, DC::ImagePositionPatient);
+    if (p.GetNumberOfValues() < 3)
+    {
+      error = "frame " + std::to_string(f + 1) + " of the DICOM segmentation has no ImagePositionPatient";
+      return false;
+    }
+    double q[3];
+    p.GetValues(q, 3);
+    positions[static_cast<std::size_t>(f)] = { q[0], q[1], q[2] };
+    zs[static_cast<std::size_t>(f)] = dot(n, positions[static_cast<std::size_t>(f)]);
+    const V3 d = sub(positions[static_cast<std::size_t>(f)], positions[0]);
+    if (std::abs(dot(r, d)) > 0.01 * dx || std::abs(dot(c, d)) > 0.01 * dy)
+    {
+      error = "the frames of the DICOM segmentation are shifted against each other in their plane";
+      return false;
+    }
+  }
+  std::vector<double> levels = zs;
+  std::sort(levels.begin(), levels.end());
+  double h = meta->Get(0, 0, DC::SpacingBetweenSlices).AsDouble();
+  if (!(h > 0.0))
+  {
+    h = 0.0;
+    for (std::size_t k = 1; k < levels.size(); ++k)
+      if (levels[k] - levels[k - 1] > 1e-3 && (h == 0.0 || levels[k] - levels[k - 1] < h))
+        h = levels[k] - levels[k - 1];
+    if (h == 0.0)
+      h = meta->Get(0, 0, DC::SliceThickness).AsDouble() > 0.0 ? meta->Get(0, 0, DC::SliceThickness).AsDouble() : 1.0;
+  }
+  constexpr int kPad = 2; // empty slices beyond the first and last frame
+  const double z0 = levels.front() - kPad * h;
+  const double slicesSpanned = (levels.back() - levels.front()) / h;
+  if (!(slicesSpanned < 1e5))
+  {
+    error = "the frames of the DICOM segmentation span too many slices of " + std::to_string(h) + " mm";
+    return false;
+  }
+  const int nz = static_cast<int>(std::lround(slicesSpanned)) + 1 + 2 * kPad;
+  std::vector<int> frameSlice(static_cast<std::size_t>(frameCount));
+  for (int f = 0; f < frameCount; ++f)
+  {
+    const double at = (zs[static_cast<std::size_t>(f)] - z0) / h;
+    if (std::abs(at - std::round(at)) > 0.01)
+    {
+      error = "the frames of the DICOM segmentation do not lie on a grid of " + std::to_string(h) + " mm slices";
+      return false;
+    }
+    frameSlice[static_cast<std::size_t>(f)] = static_cast<int>(std::lround(at));
+  }
+
+  // Layers: each segment goes to the first layer where it overlaps no other
+  // (a LABELMAP's segments cannot overlap: one layer).
+  const vtkIdType sliceSize = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const vtkIdType voxels = sliceSize * nz;
+  std::vector<std::vector<unsigned short>> layers;
+  for (DICOMSegment& seg : segments)
+  {
+    std::vector<int> own; // its frames
+    for (int f = 0; f < frameCount; ++f)
+      if (type == "LABELMAP" || frameSegment[static_cast<std::size_t>(f)] == seg.number)
+        own.push_back(f);
+    auto fits = [&](const std::vector<unsigned short>& layer) {
+      for (int f : own)
+      {
+        const unsigned short* slice = layer.data() + frameSlice[static_cast<std::size_t>(f)] * sliceSize;
+        for (vtkIdType p = 0; p < sliceSize; ++p)
+          if (slice[p] != 0 && slice[p] != seg.number && segmentAt(f, p) == seg.number)
+            return false;
+      }
+      return true;
+    };
+    std::size_t l = 0;
+    while (l < layers.size() && type != "LABELMAP" && !fits(layers[l]))
+      ++l;
+    if (l == layers.size())
+    {
+      if (static_cast<double>(voxels) * static_cast<double>(l + 1) > 2.0e9)
+      {
+        error = "the DICOM segmentation's segments overlap in more layers than fit in memory";
+        return false;
+      }
+      layers.emplace_back(static_cast<std::size_t>(voxels), 0);
+    }
+    seg.layer = static_cast<int>(l);
+    for (int f : own)
+    {
+      unsigned short* slice = layers[l].data() + frameSlice[static_cast<std::size_t>(f)] * sliceSize;
+      for (vtkIdType p = 0; p < sliceSize; ++p)
+        if (segmentAt(f, p) == seg.number)
+          slice[p] = static_cast<unsigned short>(seg.number);
+    }
+  }
+
+  output->Initialize();
+  output->SetDimensions(dims[0], dims[1], nz);
+  output->SetSpacing(dx, dy, h);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  const int components = static_cast<int>(layers.size());
+  output->AllocateScalars(largest <= 255 ? VTK_UNSIGNED_CHAR : VTK_UNSIGNED_SHORT, components);
+  vtkDataArray* out = output->GetPointData()->GetScalars();
+  out->SetName("Segments");
+  for (vtkIdType v = 0; v < voxels; ++v)
+    for (int l = 0; l < components; ++l)
+      out->SetComponent(v, l, layers[static_cast<std::size_t>(l)][static_cast<std::size_t>(v)]);
+
+  const V3 origin = positions[0];
+  const double lift = z0 - zs[0]; // from the first frame down to the grid's first slice
+  patientMatrix->Identity();
+  for (std::size_t row = 0; row < 3; ++row)
+  {
+    patientMatrix->SetElement(static_cast<int>(row), 0, r[row]);
+    patientMatrix->SetElement(static_cast<int>(row), 1, c[row]);
+    patientMatrix->SetElement(static_cast<int>(row), 2, n[row]);
+    patientMatrix->SetElement(static_cast<int>(row), 3, origin[row] + lift * n[row]);
   }
   return true;
 }

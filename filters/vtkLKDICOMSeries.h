@@ -22,7 +22,23 @@ struct DICOMSeriesInfo
   std::string uid;
   std::string description;
   std::string modality;
+  std::string sopClass; ///< SOPClassUID of its first image (kSegmentationStorage: a DICOM SEG)
   std::vector<std::string> files;
+};
+
+/// The SOP class of a DICOM segmentation (DICOM SEG), as segmentation tools
+/// and PACS store them: frames of 0/1 maps (BINARY), of occupancies
+/// (FRACTIONAL) or of segment numbers (LABELMAP), each frame placed by its
+/// own position and, but for LABELMAP, naming its segment.
+constexpr const char* kSegmentationStorage = "1.2.840.10008.5.1.4.1.1.66.4";
+
+/// A segment of a DICOM SEG: its SegmentNumber, SegmentLabel, and the
+/// component (layer) of readDICOMSegmentation's output that holds it.
+struct DICOMSegment
+{
+  int number = 0;
+  std::string name;
+  int layer = 0;
 };
 
 struct DICOMGeometryReport
@@ -68,5 +84,16 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
 /// coordinates to DICOM patient (LPS) coordinates in millimetres.
 bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,
   vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error, vtkAlgorithm* progress = nullptr);
+
+/// Reads a DICOM SEG (one file) into a label volume on the grid of its
+/// frames: x along the rows, y along the columns, z along their cross
+/// product, from the lowest frame to the highest, with two empty slices
+/// beyond each (frames a SEG leaves out are empty). Each voxel of a layer
+/// (a component) holds the number of the segment there or 0; segments that
+/// overlap go to layers of their own, as 3D Slicer packs them. FRACTIONAL
+/// frames count where at least half the MaximumFractionalValue.
+/// patientMatrix maps the output's data coordinates to patient (LPS) mm.
+bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, vtkMatrix4x4* patientMatrix,
+  std::vector<DICOMSegment>& segments, std::string& error, vtkAlgorithm* progress = nullptr);
 
 } // namespace lkvtk

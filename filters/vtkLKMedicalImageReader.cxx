@@ -984,22 +984,49 @@ bool vtkLKMedicalImageReader::ReadVolume()
                                           << os.str());
     }
     vtkNew<vtkImageData> volume;
-    lkvtk::DICOMGeometryReport report;
-    if (!lkvtk::readDICOMSeries(series[static_cast<std::size_t>(chosen)], this->SliceSpacing, volume,
-          this->PatientMatrix, report, error, this))
+    if (series[static_cast<std::size_t>(chosen)].sopClass == lkvtk::kSegmentationStorage)
     {
-      vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
-      return false;
+      // A DICOM SEG: its segments, by number and name, in layers as 3D
+      // Slicer's are (the bone surface filter takes one).
+      this->FileFormat = "DICOM SEG";
+      std::vector<lkvtk::DICOMSegment> found;
+      if (!lkvtk::readDICOMSegmentation(
+            series[static_cast<std::size_t>(chosen)], volume, this->PatientMatrix, found, error, this))
+      {
+        vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
+        return false;
+      }
+      for (const lkvtk::DICOMSegment& one : found)
+      {
+        Segment seg;
+        seg.name = one.name;
+        seg.labelValue = one.number;
+        seg.layer = one.layer;
+        segments.push_back(seg);
+      }
+      this->OrientationKnown = true;
+      image = volume;
+      image->GetSpacing(spacing);
     }
-    if (!report.wideGaps.empty())
-      vtkWarningMacro(<< wideGapsWarning(report));
-    this->GantryTilt = report.gantryTiltDegrees;
-    this->MinimumSliceGap = report.minGap;
-    this->MaximumSliceGap = report.maxGap;
-    this->NumberOfInputSlices = report.inputSlices;
-    this->OrientationKnown = true; // every slice's ImagePositionPatient and ImageOrientationPatient
-    image = volume;
-    image->GetSpacing(spacing);
+    else
+    {
+      lkvtk::DICOMGeometryReport report;
+      if (!lkvtk::readDICOMSeries(series[static_cast<std::size_t>(chosen)], this->SliceSpacing, volume,
+            this->PatientMatrix, report, error, this))
+      {
+        vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
+        return false;
+      }
+      if (!report.wideGaps.empty())
+        vtkWarningMacro(<< wideGapsWarning(report));
+      this->GantryTilt = report.gantryTiltDegrees;
+      this->MinimumSliceGap = report.minGap;
+      this->MaximumSliceGap = report.maxGap;
+      this->NumberOfInputSlices = report.inputSlices;
+      this->OrientationKnown = true; // every slice's ImagePositionPatient and ImageOrientationPatient
+      image = volume;
+      image->GetSpacing(spacing);
+    }
   }
 
   // A segmentation whose segments overlap comes in layers, one component each

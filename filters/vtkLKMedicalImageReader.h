@@ -93,7 +93,7 @@ public:
   /// vtkLKBoneSurfaceFilter passes on to its surface; otherwise the patient
   /// matrix only scales (and shifts) the data coordinates.
   bool GetOrientationKnown() const { return this->OrientationKnown; }
-  /// "DICOM", "NRRD", "MetaImage" or "NIfTI" after an update.
+  /// "DICOM", "DICOM SEG", "NRRD", "MetaImage" or "NIfTI" after an update.
   const char* GetFileFormat() { return this->FileFormat.c_str(); }
 
   ///@{

@@ -5,6 +5,11 @@
 #include "vtkLKMeshRepairFilter.h"
 
 #include <vtkCellData.h>
+#include <vtkDICOMCompiler.h>
+#include <vtkDICOMItem.h>
+#include <vtkDICOMMetaData.h>
+#include <vtkDICOMSequence.h>
+#include <vtkDICOMValue.h>
 #include <vtkDataArray.h>
 #include <vtkExtractVOI.h>
 #include <vtkFieldData.h>
@@ -18,10 +23,12 @@
 #include <vtkSphereSource.h>
 #include <vtkStringArray.h>
 #include <vtkStripper.h>
+#include <vtksys/SystemTools.hxx>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -681,6 +688,243 @@ TEST(BoneSurface, SegmentsOfOlderSlicerFilesAreTakenFromTheirLayers)
                               "segments are 1 'left condyle' (layer 0), 1 'Right Condyle' (layer 1)."),
     std::string::npos)
     << rec.messages;
+}
+
+namespace
+{
+// The balls of scripts/make_label_test_data.py (40 x 30 x 30 voxels of
+// 1 x 1 x 2 mm from (-20, -15, -30)) as a DICOM SEG, as segmentation tools
+// write one: a frame per segment and slice where the segment is, placed by
+// its own position, frames of the segments interleaved. BINARY frames are
+// bit-packed; FRACTIONAL ones hold 255 inside and, as a trap, 100 (below
+// half) in a shell around it.
+struct SegSegment
+{
+  int number;
+  const char* name;
+  std::function<bool(int, int, int)> inside; // at x, y, z (mm)
+};
+
+std::string writeSeg(const std::string& name, const std::vector<SegSegment>& segments, bool fractional,
+  int claimedSegment = 0)
+{
+  const int NX = 40, NY = 30, NZ = 30;
+  const std::string dir = std::string(LATTICEKIT_TEST_TMP) + "/" + name;
+  vtksys::SystemTools::RemoveADirectory(dir);
+  vtksys::SystemTools::MakeDirectory(dir);
+  vtkNew<vtkDICOMMetaData> meta;
+  meta->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.66.4"); // Segmentation Storage
+  meta->Set(DC::Modality, "SEG");
+  meta->Set(DC::PatientID, "seg");
+  meta->Set(DC::SeriesNumber, 100.0);
+  meta->Set(DC::InstanceNumber, 1.0);
+  meta->Set(DC::ImageType, "DERIVED\\PRIMARY");
+  meta->Set(DC::Rows, static_cast<double>(NY));
+  meta->Set(DC::Columns, static_cast<double>(NX));
+  meta->Set(DC::SamplesPerPixel, 1.0);
+  meta->Set(DC::PhotometricInterpretation, "MONOCHROME2");
+  meta->Set(DC::BitsAllocated, fractional ? 8.0 : 1.0);
+  meta->Set(DC::BitsStored, fractional ? 8.0 : 1.0);
+  meta->Set(DC::HighBit, fractional ? 7.0 : 0.0);
+  meta->Set(DC::PixelRepresentation, 0.0);
+  meta->Set(DC::SegmentationType, fractional ? "FRACTIONAL" : "BINARY");
+  if (fractional)
+  {
+    meta->Set(DC::SegmentationFractionalType, "OCCUPANCY");
+    meta->Set(DC::MaximumFractionalValue, 255.0);
+  }
+  vtkDICOMSequence list;
+  for (const SegSegment& seg : segments)
+  {
+    vtkDICOMItem item;
+    item.Set(DC::SegmentNumber, static_cast<double>(seg.number));
+    item.Set(DC::SegmentLabel, seg.name);
+    item.Set(DC::SegmentAlgorithmType, "MANUAL");
+    list.AddItem(item);
+  }
+  meta->Set(DC::SegmentSequence, list);
+  vtkDICOMItem measures, plane, shared;
+  measures.Set(DC::PixelSpacing, "1\\1");
+  measures.Set(DC::SliceThickness, 2.0);
+  measures.Set(DC::SpacingBetweenSlices, 2.0);
+  plane.Set(DC::ImageOrientationPatient, "1\\0\\0\\0\\1\\0");
+  shared.Set(DC::PixelMeasuresSequence, vtkDICOMSequence(measures));
+  shared.Set(DC::PlaneOrientationSequence, vtkDICOMSequence(plane));
+  meta->Set(DC::SharedFunctionalGroupsSequence, vtkDICOMSequence(shared));
+  vtkDICOMSequence perFrame;
+  std::vector<std::vector<unsigned char>> frames;
+  for (int k = 0; k < NZ; ++k)
+    for (const SegSegment& seg : segments)
+    {
+      std::vector<unsigned char> frame(fractional ? NX * NY : NX * NY / 8, 0);
+      bool any = false;
+      for (int j = 0; j < NY; ++j)
+        for (int i = 0; i < NX; ++i)
+        {
+          const int x = -20 + i, y = -15 + j, z = -30 + 2 * k, n = j * NX + i;
+          const bool in = seg.inside(x, y, z);
+          any = any || in;
+          if (fractional)
+            frame[static_cast<std::size_t>(n)] = in ? 255 : (seg.inside(x + 1, y, z) || seg.inside(x - 1, y, z)) ? 100 : 0;
+          else if (in)
+            frame[static_cast<std::size_t>(n / 8)] |= static_cast<unsigned char>(1 << (n % 8));
+        }
+      if (!any)
+        continue;
+      frames.push_back(frame);
+      vtkDICOMItem position, ident, item;
+      position.Set(DC::ImagePositionPatient, "-20\\-15\\" + std::to_string(-30 + 2 * k));
+      ident.Set(DC::ReferencedSegmentNumber, static_cast<double>(claimedSegment ? claimedSegment : seg.number));
+      item.Set(DC::PlanePositionSequence, vtkDICOMSequence(position));
+      item.Set(DC::SegmentIdentificationSequence, vtkDICOMSequence(ident));
+      perFrame.AddItem(item);
+    }
+  meta->Set(DC::NumberOfFrames, static_cast<double>(frames.size()));
+  meta->Set(DC::PerFrameFunctionalGroupsSequence, perFrame);
+  meta->Set(DC::PixelData, vtkDICOMValue(vtkDICOMVR::OB));
+  vtkNew<vtkDICOMCompiler> compiler;
+  compiler->SetFileName((dir + "/seg.dcm").c_str());
+  compiler->SetMetaData(meta);
+  compiler->WriteHeader();
+  for (const auto& frame : frames)
+    compiler->WriteFrame(frame.data(), static_cast<vtkIdType>(frame.size()));
+  compiler->Close();
+  EXPECT_EQ(compiler->GetErrorCode(), 0u);
+  return dir + "/seg.dcm";
+}
+
+bool mandibleBall(int x, int y, int z)
+{
+  return (x + 9) * (x + 9) + y * y + z * z < 64;
+}
+bool maxillaBall(int x, int y, int z)
+{
+  return (x - 9) * (x - 9) + y * y + z * z < 49;
+}
+bool tumourBall(int x, int y, int z)
+{
+  return (x + 1) * (x + 1) + y * y + z * z < 36;
+}
+
+/// The surface of one segment (by name, or by number when name is null).
+Surface segmentSurface(const std::string& file, const char* name, int label = 0, int* effective = nullptr)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(file.c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  lktest::ErrorRecorder rec(bone);
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->SetLabelName(name);
+  bone->SetLabel(label);
+  bone->Update();
+  Surface s;
+  s.mesh = vtkSmartPointer<vtkPolyData>::New();
+  s.mesh->DeepCopy(bone->GetOutput());
+  s.errors = rec.errors;
+  s.messages = rec.messages;
+  if (effective)
+    *effective = bone->GetEffectiveLabel();
+  return s;
+}
+
+double volumeOf(vtkPolyData* pd)
+{
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(pd);
+  mass->Update();
+  return mass->GetVolume();
+}
+
+/// The same segment's surfaces from two files: the same place and size.
+void expectSameSurface(const Surface& a, const Surface& b, const std::string& what)
+{
+  ASSERT_EQ(a.errors + b.errors, 0) << what << ": " << a.messages << b.messages;
+  ASSERT_GT(a.mesh->GetNumberOfPoints(), 100) << what;
+  double ba[6], bb[6];
+  a.mesh->GetBounds(ba);
+  b.mesh->GetBounds(bb);
+  for (int i = 0; i < 6; ++i)
+    EXPECT_NEAR(ba[i], bb[i], 0.3) << what << " bound " << i;
+  EXPECT_NEAR(volumeOf(a.mesh), volumeOf(b.mesh), 0.01 * volumeOf(b.mesh)) << what;
+  EXPECT_EQ(lk::countBoundaryEdges(lktest::toCore(a.mesh)), 0u) << what;
+}
+} // namespace
+
+// A DICOM SEG (as AI segmentation tools and PACS store segmentations) gave
+// "images cannot be stacked into one volume". Its segments are now read by
+// number and name, each frame placed by its own position: the same surfaces
+// as the same balls in 3D Slicer's .seg.nrrd.
+TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
+{
+  const std::string seg =
+    writeSeg("dicom_seg_binary", { { 1, "Mandible", mandibleBall }, { 2, "Maxilla", maxillaBall } }, false);
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(seg.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_STREQ(reader->GetFileFormat(), "DICOM SEG");
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfScalarComponents(), 1); // they do not overlap: one layer
+  double range[2];
+  reader->GetOutput()->GetPointData()->GetScalars()->GetRange(range);
+  EXPECT_EQ(range[1], 2.0);
+  auto* names = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("SegmentNames"));
+  ASSERT_TRUE(names);
+  ASSERT_EQ(names->GetNumberOfValues(), 2);
+  EXPECT_EQ(names->GetValue(1), "Maxilla");
+
+  const std::string nrrd = std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd";
+  int effective = 0;
+  expectSameSurface(segmentSurface(seg, "mandible"), segmentSurface(nrrd, "left condyle"), "Mandible by name");
+  expectSameSurface(segmentSurface(seg, nullptr, 2, &effective), segmentSurface(nrrd, "Right Condyle"), "Maxilla by number");
+  EXPECT_EQ(effective, 2);
+
+  // One segment numbered 3: no 0/1 map, so it needs its label, and the
+  // error says so.
+  const std::string one = writeSeg("dicom_seg_one", { { 3, "Mandible", mandibleBall } }, false);
+  const Surface unnamed = segmentSurface(one, nullptr);
+  EXPECT_NE(unnamed.messages.find("The volume holds only the values 0, 3 (segments: 3 'Mandible'): if it is a label "
+                                  "map with several labels, Label (--label N) takes one of them."),
+    std::string::npos)
+    << unnamed.messages;
+  expectSameSurface(segmentSurface(one, nullptr, 3), segmentSurface(nrrd, "left condyle"), "one segment, number 3");
+
+  // A frame that names a segment the SEG does not list.
+  const std::string wrong = writeSeg("dicom_seg_wrong", { { 1, "Mandible", mandibleBall } }, false, 7);
+  vtkNew<vtkLKMedicalImageReader> bad;
+  lktest::ErrorRecorder badRec(bad);
+  bad->SetFileName(wrong.c_str());
+  bad->Update();
+  EXPECT_EQ(badRec.errors, 1);
+  EXPECT_NE(badRec.messages.find("frame 1 of the DICOM segmentation names segment 7, which its SegmentSequence does "
+                                 "not list."),
+    std::string::npos)
+    << badRec.messages;
+  EXPECT_EQ(bad->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+// FRACTIONAL frames (occupancy 0 to 255) count from half the maximum; a
+// segment that overlaps another goes to a layer of its own, as in 3D
+// Slicer's layered .seg.nrrd.
+TEST(BoneSurface, DicomSegOverlappingFractionalSegmentsGoToLayers)
+{
+  const std::string seg = writeSeg("dicom_seg_fractional",
+    { { 1, "mandible", mandibleBall }, { 2, "maxilla", maxillaBall }, { 3, "tumour", tumourBall } }, true);
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(seg.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfScalarComponents(), 2);
+  vtkDataArray* layers = reader->GetOutput()->GetFieldData()->GetArray("SegmentLayers");
+  ASSERT_TRUE(layers);
+  EXPECT_EQ(layers->GetComponent(0, 0), 0.0);
+  EXPECT_EQ(layers->GetComponent(1, 0), 0.0);
+  EXPECT_EQ(layers->GetComponent(2, 0), 1.0);
+
+  const std::string nrrd = std::string(LATTICEKIT_TEST_DATA) + "/overlapping_segments.seg.nrrd";
+  expectSameSurface(segmentSurface(seg, nullptr, 3), segmentSurface(nrrd, "tumour"), "tumour by number");
+  expectSameSurface(segmentSurface(seg, "mandible"), segmentSurface(nrrd, "mandible"), "mandible by name");
 }
 
 TEST(BoneSurface, EmptyAndFlatVolumesAreClearErrors)
