@@ -705,9 +705,17 @@ struct SegSegment
   std::function<bool(int, int, int)> inside; // at x, y, z (mm)
 };
 
-std::string writeSeg(const std::string& name, const std::vector<SegSegment>& segments, bool fractional,
+enum class SegType
+{
+  Binary,
+  Fractional,
+  LabelMap // one frame per slice, each pixel the number of its segment
+};
+
+std::string writeSeg(const std::string& name, const std::vector<SegSegment>& segments, SegType type,
   int claimedSegment = 0)
 {
+  const bool fractional = type == SegType::Fractional, labelMap = type == SegType::LabelMap;
   const int NX = 40, NY = 30, NZ = 30;
   const std::string dir = std::string(LATTICEKIT_TEST_TMP) + "/" + name;
   vtksys::SystemTools::RemoveADirectory(dir);
@@ -723,11 +731,11 @@ std::string writeSeg(const std::string& name, const std::vector<SegSegment>& seg
   meta->Set(DC::Columns, static_cast<double>(NX));
   meta->Set(DC::SamplesPerPixel, 1.0);
   meta->Set(DC::PhotometricInterpretation, "MONOCHROME2");
-  meta->Set(DC::BitsAllocated, fractional ? 8.0 : 1.0);
-  meta->Set(DC::BitsStored, fractional ? 8.0 : 1.0);
-  meta->Set(DC::HighBit, fractional ? 7.0 : 0.0);
+  meta->Set(DC::BitsAllocated, fractional || labelMap ? 8.0 : 1.0);
+  meta->Set(DC::BitsStored, fractional || labelMap ? 8.0 : 1.0);
+  meta->Set(DC::HighBit, fractional || labelMap ? 7.0 : 0.0);
   meta->Set(DC::PixelRepresentation, 0.0);
-  meta->Set(DC::SegmentationType, fractional ? "FRACTIONAL" : "BINARY");
+  meta->Set(DC::SegmentationType, fractional ? "FRACTIONAL" : labelMap ? "LABELMAP" : "BINARY");
   if (fractional)
   {
     meta->Set(DC::SegmentationFractionalType, "OCCUPANCY");
@@ -753,7 +761,23 @@ std::string writeSeg(const std::string& name, const std::vector<SegSegment>& seg
   meta->Set(DC::SharedFunctionalGroupsSequence, vtkDICOMSequence(shared));
   vtkDICOMSequence perFrame;
   std::vector<std::vector<unsigned char>> frames;
-  for (int k = 0; k < NZ; ++k)
+  for (int k = 0; k < NZ && labelMap; ++k)
+  {
+    std::vector<unsigned char> frame(NX * NY, 0);
+    for (int j = 0; j < NY; ++j)
+      for (int i = 0; i < NX; ++i)
+        for (const SegSegment& seg : segments)
+          if (seg.inside(-20 + i, -15 + j, -30 + 2 * k))
+            frame[static_cast<std::size_t>(j * NX + i)] = static_cast<unsigned char>(seg.number);
+    if (std::all_of(frame.begin(), frame.end(), [](unsigned char v) { return v == 0; }))
+      continue;
+    frames.push_back(frame);
+    vtkDICOMItem position, item;
+    position.Set(DC::ImagePositionPatient, "-20\\-15\\" + std::to_string(-30 + 2 * k));
+    item.Set(DC::PlanePositionSequence, vtkDICOMSequence(position));
+    perFrame.AddItem(item);
+  }
+  for (int k = 0; k < NZ && !labelMap; ++k)
     for (const SegSegment& seg : segments)
     {
       std::vector<unsigned char> frame(fractional ? NX * NY : NX * NY / 8, 0);
@@ -857,7 +881,7 @@ void expectSameSurface(const Surface& a, const Surface& b, const std::string& wh
 TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
 {
   const std::string seg =
-    writeSeg("dicom_seg_binary", { { 1, "Mandible", mandibleBall }, { 2, "Maxilla", maxillaBall } }, false);
+    writeSeg("dicom_seg_binary", { { 1, "Mandible", mandibleBall }, { 2, "Maxilla", maxillaBall } }, SegType::Binary);
   vtkNew<vtkLKMedicalImageReader> reader;
   lktest::ErrorRecorder rec(reader);
   reader->SetFileName(seg.c_str());
@@ -879,9 +903,16 @@ TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
   expectSameSurface(segmentSurface(seg, nullptr, 2, &effective), segmentSurface(nrrd, "Right Condyle"), "Maxilla by number");
   EXPECT_EQ(effective, 2);
 
+  // The same segments as a LABELMAP SEG (one frame per slice, the pixels
+  // holding segment numbers).
+  const std::string labels =
+    writeSeg("dicom_seg_labelmap", { { 1, "Mandible", mandibleBall }, { 2, "Maxilla", maxillaBall } }, SegType::LabelMap);
+  expectSameSurface(segmentSurface(labels, "Maxilla"), segmentSurface(nrrd, "Right Condyle"), "LABELMAP maxilla");
+  expectSameSurface(segmentSurface(labels, nullptr, 1), segmentSurface(nrrd, "left condyle"), "LABELMAP mandible");
+
   // One segment numbered 3: no 0/1 map, so it needs its label, and the
   // error says so.
-  const std::string one = writeSeg("dicom_seg_one", { { 3, "Mandible", mandibleBall } }, false);
+  const std::string one = writeSeg("dicom_seg_one", { { 3, "Mandible", mandibleBall } }, SegType::Binary);
   const Surface unnamed = segmentSurface(one, nullptr);
   EXPECT_NE(unnamed.messages.find("The volume holds only the values 0, 3 (segments: 3 'Mandible'): if it is a label "
                                   "map with several labels, Label (--label N) takes one of them."),
@@ -890,7 +921,7 @@ TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
   expectSameSurface(segmentSurface(one, nullptr, 3), segmentSurface(nrrd, "left condyle"), "one segment, number 3");
 
   // A frame that names a segment the SEG does not list.
-  const std::string wrong = writeSeg("dicom_seg_wrong", { { 1, "Mandible", mandibleBall } }, false, 7);
+  const std::string wrong = writeSeg("dicom_seg_wrong", { { 1, "Mandible", mandibleBall } }, SegType::Binary, 7);
   vtkNew<vtkLKMedicalImageReader> bad;
   lktest::ErrorRecorder badRec(bad);
   bad->SetFileName(wrong.c_str());
@@ -909,7 +940,8 @@ TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
 TEST(BoneSurface, DicomSegOverlappingFractionalSegmentsGoToLayers)
 {
   const std::string seg = writeSeg("dicom_seg_fractional",
-    { { 1, "mandible", mandibleBall }, { 2, "maxilla", maxillaBall }, { 3, "tumour", tumourBall } }, true);
+    { { 1, "mandible", mandibleBall }, { 2, "maxilla", maxillaBall }, { 3, "tumour", tumourBall } },
+    SegType::Fractional);
   vtkNew<vtkLKMedicalImageReader> reader;
   lktest::ErrorRecorder rec(reader);
   reader->SetFileName(seg.c_str());
