@@ -125,7 +125,8 @@ std::string listed(const std::vector<long long>& values)
   return os.str();
 }
 
-/// A segment of a 3D Slicer segmentation: its label value in its layer.
+/// A segment of a segmentation (3D Slicer's .seg.nrrd, a DICOM SEG): its
+/// label value in its layer.
 struct Segment
 {
   int label = 0;
@@ -133,8 +134,8 @@ struct Segment
   int layer = 0;
 };
 
-/// A 3D Slicer segmentation's segments (the reader's field data); empty for
-/// any other volume.
+/// A segmentation's segments (the reader's field data); empty for any other
+/// volume.
 std::vector<Segment> segmentsOf(vtkImageData* image)
 {
   std::vector<Segment> out;
@@ -345,7 +346,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     if (found == segments.end())
     {
       vtkErrorMacro("No segment is named '" << wanted << "'; "
-                    << (segments.empty() ? std::string("the volume names no segments (a 3D Slicer .seg.nrrd does)")
+                    << (segments.empty() ? std::string("the volume names no segments (a 3D Slicer .seg.nrrd or a DICOM SEG does)")
                                          : "its segments are " + segmentNames(segments))
                     << ".");
       return 0;
@@ -355,18 +356,21 @@ int vtkLKBoneSurfaceFilter::RequestData(
   }
   else if (layered)
   {
-    // Each layer numbers its segments from 1: a value names a segment only
-    // when one segment has it.
+    // Each layer of a 3D Slicer segmentation numbers its segments from 1 (a
+    // DICOM SEG's numbers are its own): a value names a segment only when
+    // one segment has it.
     const auto count = std::count_if(
       segments.begin(), segments.end(), [&](const Segment& seg) { return label > 0 && seg.label == label; });
     if (count != 1)
     {
+      const std::string byName = "by its name (LabelName, --label NAME)";
+      const std::string byEither = byName + " or by a label value only it has (Label, --label N)";
       vtkErrorMacro("The input is a segmentation whose segments overlap, in " << components << " layers; "
-                    << (label == 0 ? std::string("choose one segment")
-                                   : count == 0 ? "no segment has label " + std::to_string(label) + "; choose one"
+                    << (label == 0 ? "choose one segment " + byEither
+                                   : count == 0 ? "no segment has label " + std::to_string(label) + "; choose one " + byEither
                                                 : std::to_string(count) + " segments have label " +
-                                                    std::to_string(label) + "; choose one by its name")
-                    << " with LabelName (--label NAME). Its segments are " << segmentNames(segments) << ".");
+                                                    std::to_string(label) + "; choose one " + byName)
+                    << ". Its segments are " << segmentNames(segments) << ".");
       return 0;
     }
     layer = std::find_if(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.label == label; })

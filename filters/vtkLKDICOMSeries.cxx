@@ -21,8 +21,6 @@
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
 #include <vtkStringArray.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkUnsignedShortArray.h>
 
 #include <algorithm>
 #include <array>
@@ -31,6 +29,7 @@
 #include <numeric>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 namespace lkvtk
 {
@@ -561,7 +560,8 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
     ? meta->Get(DC::MaximumFractionalValue).AsDouble()
     : 255.0;
   std::vector<int> frameSegment(static_cast<std::size_t>(frameCount), 0); // 0: LABELMAP, the value says
-  if (type != "LABELMAP")
+  const bool labelMap = type == "LABELMAP", binary = type == "BINARY";
+  if (!labelMap)
   {
     for (int f = 0; f < frameCount; ++f)
     {
@@ -575,12 +575,20 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
       frameSegment[static_cast<std::size_t>(f)] = number;
     }
   }
-  // The segment number at pixel p of frame f, or 0.
+  // The segment number at pixel p of frame f, or 0. The frames are read as
+  // unsigned char (BINARY, FRACTIONAL) or unsigned short (a LABELMAP of
+  // more than 255 segments): read directly, a SEG of a hundred segments
+  // has billions of pixels.
+  const int scalarType = frames->GetScalarType();
+  const void* pixels = frames->GetScalarPointer();
   auto segmentAt = [&](int f, vtkIdType p) -> int {
-    const double v = values->GetComponent(static_cast<vtkIdType>(f) * dims[0] * dims[1] + p, 0);
-    if (type == "LABELMAP")
+    const vtkIdType i = static_cast<vtkIdType>(f) * dims[0] * dims[1] + p;
+    const double v = scalarType == VTK_UNSIGNED_CHAR ? static_cast<const unsigned char*>(pixels)[i]
+      : scalarType == VTK_UNSIGNED_SHORT             ? static_cast<const unsigned short*>(pixels)[i]
+                                                     : values->GetComponent(i, 0);
+    if (labelMap)
       return v >= 1.0 && v <= largest ? static_cast<int>(v) : 0;
-    const bool in = type == "BINARY" ? v != 0.0 : v >= 0.5 * fractionalMax;
+    const bool in = binary ? v != 0.0 : v >= 0.5 * fractionalMax;
     return in ? frameSegment[static_cast<std::size_t>(f)] : 0;
   };
 
@@ -619,8 +627,19 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
       error = "frame " + std::to_string(f + 1) + " of the DICOM segmentation has no ImagePositionPatient";
       return false;
     }
-    double q[3];
+    double q[3], o[6];
     p.GetValues(q, 3);
+    const vtkDICOMValue& frameOrientation = meta->Get(0, f, DC::ImageOrientationPatient);
+    if (frameOrientation.GetNumberOfValues() >= 6)
+    {
+      frameOrientation.GetValues(o, 6);
+      for (int i = 0; i < 6; ++i)
+        if (std::abs(o[i] - iop[i]) > 1e-4)
+        {
+          error = "the frames of the DICOM segmentation do not share one ImageOrientationPatient";
+          return false;
+        }
+    }
     positions[static_cast<std::size_t>(f)] = { q[0], q[1], q[2] };
     zs[static_cast<std::size_t>(f)] = dot(n, positions[static_cast<std::size_t>(f)]);
     const V3 d = sub(positions[static_cast<std::size_t>(f)], positions[0]);
@@ -642,12 +661,14 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
     if (h == 0.0)
       h = meta->Get(0, 0, DC::SliceThickness).AsDouble() > 0.0 ? meta->Get(0, 0, DC::SliceThickness).AsDouble() : 1.0;
   }
+  std::ostringstream spacingText; // "2 mm", not "2.000000 mm"
+  spacingText << h << " mm";
   constexpr int kPad = 2; // empty slices beyond the first and last frame
   const double z0 = levels.front() - kPad * h;
   const double slicesSpanned = (levels.back() - levels.front()) / h;
   if (!(slicesSpanned < 1e5))
   {
-    error = "the frames of the DICOM segmentation span too many slices of " + std::to_string(h) + " mm";
+    error = "the frames of the DICOM segmentation span too many slices of " + spacingText.str();
     return false;
   }
   const int nz = static_cast<int>(std::lround(slicesSpanned)) + 1 + 2 * kPad;
@@ -657,7 +678,7 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
     const double at = (zs[static_cast<std::size_t>(f)] - z0) / h;
     if (std::abs(at - std::round(at)) > 0.01)
     {
-      error = "the frames of the DICOM segmentation do not lie on a grid of " + std::to_string(h) + " mm slices";
+      error = "the frames of the DICOM segmentation do not lie on a grid of " + spacingText.str() + " slices";
       return false;
     }
     frameSlice[static_cast<std::size_t>(f)] = static_cast<int>(std::lround(at));
@@ -672,7 +693,7 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   {
     std::vector<int> own; // its frames
     for (int f = 0; f < frameCount; ++f)
-      if (type == "LABELMAP" || frameSegment[static_cast<std::size_t>(f)] == seg.number)
+      if (labelMap || frameSegment[static_cast<std::size_t>(f)] == seg.number)
         own.push_back(f);
     auto fits = [&](const std::vector<unsigned short>& layer) {
       for (int f : own)
@@ -685,7 +706,7 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
       return true;
     };
     std::size_t l = 0;
-    while (l < layers.size() && type != "LABELMAP" && !fits(layers[l]))
+    while (l < layers.size() && !labelMap && !fits(layers[l]))
       ++l;
     if (l == layers.size())
     {
@@ -712,11 +733,17 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   output->SetOrigin(0.0, 0.0, 0.0);
   const int components = static_cast<int>(layers.size());
   output->AllocateScalars(largest <= 255 ? VTK_UNSIGNED_CHAR : VTK_UNSIGNED_SHORT, components);
-  vtkDataArray* out = output->GetPointData()->GetScalars();
-  out->SetName("Segments");
-  for (vtkIdType v = 0; v < voxels; ++v)
-    for (int l = 0; l < components; ++l)
-      out->SetComponent(v, l, layers[static_cast<std::size_t>(l)][static_cast<std::size_t>(v)]);
+  output->GetPointData()->GetScalars()->SetName("Segments");
+  auto fill = [&](auto* out) {
+    for (vtkIdType v = 0; v < voxels; ++v)
+      for (int l = 0; l < components; ++l)
+        out[v * components + l] =
+          static_cast<std::remove_pointer_t<decltype(out)>>(layers[static_cast<std::size_t>(l)][static_cast<std::size_t>(v)]);
+  };
+  if (largest <= 255)
+    fill(static_cast<unsigned char*>(output->GetScalarPointer()));
+  else
+    fill(static_cast<unsigned short*>(output->GetScalarPointer()));
 
   const V3 origin = positions[0];
   const double lift = z0 - zs[0]; // from the first frame down to the grid's first slice

@@ -550,7 +550,7 @@ TEST(BoneSurface, LabelNameTakesASegmentOfASlicerSegmentation)
   plain->SetLabelName("mandible");
   plain->Update();
   EXPECT_NE(rec.messages.find("No segment is named 'mandible'; the volume names no segments (a 3D Slicer .seg.nrrd "
-                              "does)."),
+                              "or a DICOM SEG does)."),
     std::string::npos)
     << rec.messages;
 }
@@ -634,14 +634,17 @@ TEST(BoneSurface, OverlappingSegmentsAreTakenFromTheirLayers)
   run(nullptr, 1, ambiguous);
   run(nullptr, 0, none);
   run(nullptr, 3, missing);
-  const std::string listed = " with LabelName (--label NAME). Its segments are 1 'mandible' (layer 0), 2 'maxilla' "
-                             "(layer 0), 1 'tumour' (layer 1).";
+  const std::string byName = " by its name (LabelName, --label NAME)";
+  const std::string byEither = byName + " or by a label value only it has (Label, --label N)";
+  const std::string listed = ". Its segments are 1 'mandible' (layer 0), 2 'maxilla' (layer 0), 1 'tumour' (layer 1).";
   EXPECT_NE(ambiguous.messages.find("The input is a segmentation whose segments overlap, in 2 layers; 2 segments have "
-                                    "label 1; choose one by its name" + listed),
+                                    "label 1; choose one" + byName + listed),
     std::string::npos)
     << ambiguous.messages;
-  EXPECT_NE(none.messages.find("in 2 layers; choose one segment" + listed), std::string::npos) << none.messages;
-  EXPECT_NE(missing.messages.find("in 2 layers; no segment has label 3; choose one" + listed), std::string::npos)
+  EXPECT_NE(none.messages.find("in 2 layers; choose one segment" + byEither + listed), std::string::npos)
+    << none.messages;
+  EXPECT_NE(missing.messages.find("in 2 layers; no segment has label 3; choose one" + byEither + listed),
+    std::string::npos)
     << missing.messages;
   for (const Surface* s : { &ambiguous, &none, &missing })
   {
@@ -684,7 +687,7 @@ TEST(BoneSurface, SegmentsOfOlderSlicerFilesAreTakenFromTheirLayers)
   ambiguous->SetInputConnection(older->GetOutputPort());
   ambiguous->SetLabel(1);
   ambiguous->Update();
-  EXPECT_NE(rec.messages.find("2 segments have label 1; choose one by its name with LabelName (--label NAME). Its "
+  EXPECT_NE(rec.messages.find("2 segments have label 1; choose one by its name (LabelName, --label NAME). Its "
                               "segments are 1 'left condyle' (layer 0), 1 'Right Condyle' (layer 1)."),
     std::string::npos)
     << rec.messages;
@@ -713,7 +716,7 @@ enum class SegType
 };
 
 std::string writeSeg(const std::string& name, const std::vector<SegSegment>& segments, SegType type,
-  int claimedSegment = 0)
+  int claimedSegment = 0, double spacingBetweenSlices = 2.0)
 {
   const bool fractional = type == SegType::Fractional, labelMap = type == SegType::LabelMap;
   const int NX = 40, NY = 30, NZ = 30;
@@ -754,7 +757,7 @@ std::string writeSeg(const std::string& name, const std::vector<SegSegment>& seg
   vtkDICOMItem measures, plane, shared;
   measures.Set(DC::PixelSpacing, "1\\1");
   measures.Set(DC::SliceThickness, 2.0);
-  measures.Set(DC::SpacingBetweenSlices, 2.0);
+  measures.Set(DC::SpacingBetweenSlices, spacingBetweenSlices);
   plane.Set(DC::ImageOrientationPatient, "1\\0\\0\\0\\1\\0");
   shared.Set(DC::PixelMeasuresSequence, vtkDICOMSequence(measures));
   shared.Set(DC::PlaneOrientationSequence, vtkDICOMSequence(plane));
@@ -932,6 +935,16 @@ TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
     std::string::npos)
     << badRec.messages;
   EXPECT_EQ(bad->GetOutput()->GetNumberOfPoints(), 0);
+  // Frames 2 mm apart, but a SpacingBetweenSlices of 3 mm.
+  const std::string offGrid = writeSeg("dicom_seg_off_grid", { { 1, "Mandible", mandibleBall } }, SegType::Binary, 0, 3.0);
+  badRec.errors = 0;
+  badRec.messages.clear();
+  bad->SetFileName(offGrid.c_str());
+  bad->Update();
+  EXPECT_EQ(badRec.errors, 1);
+  EXPECT_NE(badRec.messages.find("the frames of the DICOM segmentation do not lie on a grid of 3 mm slices."),
+    std::string::npos)
+    << badRec.messages;
 }
 
 // FRACTIONAL frames (occupancy 0 to 255) count from half the maximum; a
