@@ -46,33 +46,40 @@ w.SetFileName("tests/data/two_labels.mha")
 w.SetCompression(True)
 w.Write()
 
-header = """NRRD0004
-# Complete NRRD file format specification at:
-# http://teem.sourceforge.net/nrrd/format.html
-type: unsigned char
-dimension: 3
-space: left-posterior-superior
-sizes: {nx} {ny} {nz}
-space directions: (1,0,0) (0,1,0) (0,0,2)
-kinds: domain domain domain
-encoding: gzip
-space origin: (-20,-15,-30)
-Segment0_Color:=0.945 0.839 0.568
-Segment0_ID:=Segment_1
-Segment0_LabelValue:=1
-Segment0_Layer:=0
-Segment0_Name:=left condyle
-Segment1_Color:=0.694 0.478 0.396
-Segment1_ID:=Segment_2
-Segment1_LabelValue:=2
-Segment1_Layer:=0
-Segment1_Name:=Right Condyle
-Segmentation_MasterRepresentation:=Binary labelmap
 
-""".format(nx=NX, ny=NY, nz=NZ)
-with open("tests/data/two_segments.seg.nrrd", "wb") as f:
-    f.write(header.encode("ascii"))
-    f.write(gzip.compress(values, mtime=0))
+def write_segmentation(path, layers, segments, data):
+    """A 3D Slicer .seg.nrrd of the volume's grid: `layers` values per voxel
+    (0: a 3D file), `segments` (colour, ID, label value, layer, name; the
+    value and layer None where the file leaves them out), gzip `data`."""
+    four = layers > 0
+    lines = ["NRRD0004",
+             "# Complete NRRD file format specification at:",
+             "# http://teem.sourceforge.net/nrrd/format.html",
+             "type: unsigned char",
+             "dimension: %d" % (4 if four else 3),
+             "space: left-posterior-superior",
+             "sizes: %s%d %d %d" % ("%d " % layers if four else "", NX, NY, NZ),
+             "space directions: %s(1,0,0) (0,1,0) (0,0,2)" % ("none " if four else ""),
+             "kinds: %sdomain domain domain" % ("list " if four else ""),
+             "encoding: gzip",
+             "space origin: (-20,-15,-30)"]
+    for n, (colour, ident, value, layer, name) in enumerate(segments):
+        lines.append("Segment%d_Color:=%s" % (n, colour))
+        lines.append("Segment%d_ID:=%s" % (n, ident))
+        if value is not None:
+            lines.append("Segment%d_LabelValue:=%d" % (n, value))
+        if layer is not None:
+            lines.append("Segment%d_Layer:=%d" % (n, layer))
+        lines.append("Segment%d_Name:=%s" % (n, name))
+    lines.append("Segmentation_MasterRepresentation:=Binary labelmap")
+    with open(path, "wb") as f:
+        f.write(("\n".join(lines) + "\n\n").encode("ascii"))
+        f.write(gzip.compress(data, mtime=0))
+
+
+CONDYLES = [("0.945 0.839 0.568", "Segment_1", 1, 0, "left condyle"),
+            ("0.694 0.478 0.396", "Segment_2", 2, 0, "Right Condyle")]
+write_segmentation("tests/data/two_segments.seg.nrrd", 0, CONDYLES, values)
 
 
 def tumour(i, j, k):
@@ -82,61 +89,12 @@ def tumour(i, j, k):
 
 layered = bytes(v for k in range(NZ) for j in range(NY) for i in range(NX)
                 for v in (label(i, j, k), tumour(i, j, k)))
-header = """NRRD0004
-# Complete NRRD file format specification at:
-# http://teem.sourceforge.net/nrrd/format.html
-type: unsigned char
-dimension: 4
-space: left-posterior-superior
-sizes: 2 {nx} {ny} {nz}
-space directions: none (1,0,0) (0,1,0) (0,0,2)
-kinds: list domain domain domain
-encoding: gzip
-space origin: (-20,-15,-30)
-Segment0_Color:=0.945 0.839 0.568
-Segment0_ID:=Segment_1
-Segment0_LabelValue:=1
-Segment0_Layer:=0
-Segment0_Name:=mandible
-Segment1_Color:=0.694 0.478 0.396
-Segment1_ID:=Segment_2
-Segment1_LabelValue:=2
-Segment1_Layer:=0
-Segment1_Name:=maxilla
-Segment2_Color:=0.8 0.2 0.2
-Segment2_ID:=Segment_3
-Segment2_LabelValue:=1
-Segment2_Layer:=1
-Segment2_Name:=tumour
-Segmentation_MasterRepresentation:=Binary labelmap
-
-""".format(nx=NX, ny=NY, nz=NZ)
-with open("tests/data/overlapping_segments.seg.nrrd", "wb") as f:
-    f.write(header.encode("ascii"))
-    f.write(gzip.compress(layered, mtime=0))
+write_segmentation("tests/data/overlapping_segments.seg.nrrd", 2,
+                   [("0.945 0.839 0.568", "Segment_1", 1, 0, "mandible"),
+                    ("0.694 0.478 0.396", "Segment_2", 2, 0, "maxilla"),
+                    ("0.8 0.2 0.2", "Segment_3", 1, 1, "tumour")], layered)
 
 old = bytes(v for k in range(NZ) for j in range(NY) for i in range(NX)
             for v in (int(label(i, j, k) == 1), int(label(i, j, k) == 2)))
-header = """NRRD0004
-# Complete NRRD file format specification at:
-# http://teem.sourceforge.net/nrrd/format.html
-type: unsigned char
-dimension: 4
-space: left-posterior-superior
-sizes: 2 {nx} {ny} {nz}
-space directions: none (1,0,0) (0,1,0) (0,0,2)
-kinds: list domain domain domain
-encoding: gzip
-space origin: (-20,-15,-30)
-Segment0_Color:=0.945 0.839 0.568
-Segment0_ID:=Segment_1
-Segment0_Name:=left condyle
-Segment1_Color:=0.694 0.478 0.396
-Segment1_ID:=Segment_2
-Segment1_Name:=Right Condyle
-Segmentation_MasterRepresentation:=Binary labelmap
-
-""".format(nx=NX, ny=NY, nz=NZ)
-with open("tests/data/slicer4_segments.seg.nrrd", "wb") as f:
-    f.write(header.encode("ascii"))
-    f.write(gzip.compress(old, mtime=0))
+write_segmentation("tests/data/slicer4_segments.seg.nrrd", 2,
+                   [(c, i, None, None, n) for c, i, _, _, n in CONDYLES], old)

@@ -489,210 +489,6 @@ TEST(BoneSurface, LabelTakesOneLabelOfASegmentationWithSeveral)
     << rec.messages;
 }
 
-// 3D Slicer's .seg.nrrd names its segments in the header; LabelName takes
-// one by its name (as written, else ignoring case), and the errors list them.
-TEST(BoneSurface, LabelNameTakesASegmentOfASlicerSegmentation)
-{
-  const std::string file = std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd";
-  vtkNew<vtkLKMedicalImageReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  auto* names = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("SegmentNames"));
-  vtkDataArray* values = reader->GetOutput()->GetFieldData()->GetArray("SegmentLabelValues");
-  ASSERT_TRUE(names && values);
-  ASSERT_EQ(names->GetNumberOfValues(), 2);
-  EXPECT_EQ(names->GetValue(0), "left condyle");
-  EXPECT_EQ(names->GetValue(1), "Right Condyle");
-  EXPECT_EQ(values->GetComponent(1, 0), 2.0);
-
-  auto run = [&](const char* name, int label, Surface& out) {
-    vtkNew<vtkLKBoneSurfaceFilter> bone;
-    lktest::ErrorRecorder rec(bone);
-    bone->SetInputConnection(reader->GetOutputPort());
-    bone->SetLabel(label);
-    bone->SetLabelName(name);
-    bone->Update();
-    out.mesh = vtkSmartPointer<vtkPolyData>::New();
-    out.mesh->DeepCopy(bone->GetOutput());
-    out.errors = rec.errors;
-    out.messages = rec.messages;
-    return bone->GetEffectiveLabel();
-  };
-  Surface byValue, byName, byOtherCase;
-  EXPECT_EQ(run(nullptr, 2, byValue), 2);
-  EXPECT_EQ(run("Right Condyle", 0, byName), 2);
-  EXPECT_EQ(run("right condyle", 1, byOtherCase), 2); // the name wins over Label
-  ASSERT_EQ(byValue.errors + byName.errors + byOtherCase.errors, 0) << byName.messages << byOtherCase.messages;
-  EXPECT_EQ(byName.mesh->GetNumberOfPoints(), byValue.mesh->GetNumberOfPoints());
-  EXPECT_EQ(byOtherCase.mesh->GetNumberOfPoints(), byValue.mesh->GetNumberOfPoints());
-  double b[6];
-  byName.mesh->GetBounds(b);
-  EXPECT_GT(b[0], 0.0); // the ball at x = +9, not the one at -9
-
-  Surface missing, none;
-  run("maxilla", 0, missing);
-  EXPECT_EQ(missing.errors, 1);
-  EXPECT_NE(missing.messages.find("No segment is named 'maxilla'; its segments are 1 'left condyle', 2 'Right "
-                                  "Condyle'."),
-    std::string::npos)
-    << missing.messages;
-  run(nullptr, 0, none); // the threshold misses: the hint names the segments
-  EXPECT_NE(none.messages.find("The volume holds only the values 0, 1, 2 (segments: 1 'left condyle', 2 'Right "
-                               "Condyle'): if it is a label map"),
-    std::string::npos)
-    << none.messages;
-  // A label map that names no segments.
-  vtkNew<vtkLKBoneSurfaceFilter> plain;
-  lktest::ErrorRecorder rec(plain);
-  vtkNew<vtkLKMedicalImageReader> mha;
-  mha->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_labels.mha").c_str());
-  plain->SetInputConnection(mha->GetOutputPort());
-  plain->SetLabelName("mandible");
-  plain->Update();
-  EXPECT_NE(rec.messages.find("No segment is named 'mandible'; the volume names no segments (a 3D Slicer .seg.nrrd "
-                              "or a DICOM SEG does)."),
-    std::string::npos)
-    << rec.messages;
-}
-
-// A segmentation whose segments overlap: 3D Slicer saves it in layers (a
-// 4D NRRD), each layer numbering its segments from 1. The reader keeps a
-// component per layer; a segment is taken by its name, or by a label value
-// only one segment has, whole (the overlap stays in both).
-TEST(BoneSurface, OverlappingSegmentsAreTakenFromTheirLayers)
-{
-  vtkNew<vtkLKMedicalImageReader> reader;
-  lktest::ErrorRecorder readErrors(reader);
-  reader->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/overlapping_segments.seg.nrrd").c_str());
-  reader->Update();
-  ASSERT_EQ(readErrors.errors, 0) << readErrors.messages;
-  vtkImageData* volume = reader->GetOutput();
-  ASSERT_EQ(volume->GetNumberOfScalarComponents(), 2);
-  vtkDataArray* layers = volume->GetFieldData()->GetArray("SegmentLayers");
-  ASSERT_TRUE(layers);
-  ASSERT_EQ(layers->GetNumberOfTuples(), 3);
-  EXPECT_EQ(layers->GetComponent(0, 0), 0.0);
-  EXPECT_EQ(layers->GetComponent(2, 0), 1.0);
-
-  auto run = [&](const char* name, int label, Surface& out) {
-    vtkNew<vtkLKBoneSurfaceFilter> bone;
-    lktest::ErrorRecorder rec(bone);
-    bone->SetInputConnection(reader->GetOutputPort());
-    bone->SetLabel(label);
-    bone->SetLabelName(name);
-    bone->Update();
-    out.mesh = vtkSmartPointer<vtkPolyData>::New();
-    out.mesh->DeepCopy(bone->GetOutput());
-    out.errors = rec.errors;
-    out.messages = rec.messages;
-  };
-  auto volumeOf = [](vtkPolyData* pd) {
-    vtkNew<vtkMassProperties> mass;
-    mass->SetInputData(pd);
-    mass->Update();
-    return mass->GetVolume();
-  };
-  const double pi = 3.14159265358979;
-  // Balls (LPS, mm): mandible r 8 at x = -9, maxilla r 7 at x = +9 (layer
-  // 0), tumour r 6 at x = -1 (layer 1), which overlaps both.
-  Surface mandible, maxilla, tumour;
-  run("mandible", 0, mandible);
-  run(nullptr, 2, maxilla); // only one segment has label 2
-  run("Tumour", 0, tumour);
-  ASSERT_EQ(mandible.errors + maxilla.errors + tumour.errors, 0)
-    << mandible.messages << maxilla.messages << tumour.messages;
-  double b[6];
-  tumour.mesh->GetBounds(b);
-  EXPECT_NEAR(0.5 * (b[0] + b[1]), -1.0, 1.0);
-  EXPECT_NEAR(b[1] - b[0], 12.0, 2.0);
-  mandible.mesh->GetBounds(b);
-  EXPECT_NEAR(0.5 * (b[0] + b[1]), -9.0, 1.0);
-  EXPECT_GT(b[1], -2.5); // the part the tumour overlaps is still the mandible's
-  maxilla.mesh->GetBounds(b);
-  EXPECT_NEAR(0.5 * (b[0] + b[1]), 9.0, 1.0);
-  // A ball of 6 mm on 1 x 1 x 2 mm voxels, smoothed: about 80 % of its
-  // volume (the whole volume, mis-read, gave 17 %).
-  EXPECT_NEAR(volumeOf(tumour.mesh), 0.8 * 4.0 / 3.0 * pi * 216.0, 0.1 * 4.0 / 3.0 * pi * 216.0);
-  for (const Surface* s : { &mandible, &maxilla, &tumour })
-    EXPECT_EQ(lk::countBoundaryEdges(lktest::toCore(s->mesh)), 0u);
-  // Layer 0 holds the voxels of two_segments.seg.nrrd: the same surfaces.
-  vtkNew<vtkLKMedicalImageReader> single;
-  single->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd").c_str());
-  for (const auto& [name, layered] : { std::pair<const char*, Surface*>{ "left condyle", &mandible },
-         std::pair<const char*, Surface*>{ "Right Condyle", &maxilla } })
-  {
-    vtkNew<vtkLKBoneSurfaceFilter> bone;
-    bone->SetInputConnection(single->GetOutputPort());
-    bone->SetLabelName(name);
-    bone->Update();
-    EXPECT_EQ(bone->GetOutput()->GetNumberOfPoints(), layered->mesh->GetNumberOfPoints()) << name;
-    EXPECT_NEAR(volumeOf(bone->GetOutput()), volumeOf(layered->mesh), 1e-9) << name;
-  }
-
-  // Label 1 is two segments; no label, or one no segment has, is no segment.
-  Surface ambiguous, none, missing;
-  run(nullptr, 1, ambiguous);
-  run(nullptr, 0, none);
-  run(nullptr, 3, missing);
-  const std::string byName = " by its name (LabelName, --label NAME)";
-  const std::string byEither = byName + " or by a label value only it has (Label, --label N)";
-  const std::string listed = ". Its segments are 1 'mandible' (layer 0), 2 'maxilla' (layer 0), 1 'tumour' (layer 1).";
-  EXPECT_NE(ambiguous.messages.find("The input is a segmentation whose segments overlap, in 2 layers; 2 segments have "
-                                    "label 1; choose one" + byName + listed),
-    std::string::npos)
-    << ambiguous.messages;
-  EXPECT_NE(none.messages.find("in 2 layers; choose one segment" + byEither + listed), std::string::npos)
-    << none.messages;
-  EXPECT_NE(missing.messages.find("in 2 layers; no segment has label 3; choose one" + byEither + listed),
-    std::string::npos)
-    << missing.messages;
-  for (const Surface* s : { &ambiguous, &none, &missing })
-  {
-    EXPECT_EQ(s->errors, 1);
-    EXPECT_EQ(s->mesh->GetNumberOfPoints(), 0);
-  }
-}
-
-// 3D Slicer 4.10 and older saved each segment as a 0/1 map in a layer of
-// its own, without LabelValue and Layer keys: segment N is label 1 of layer
-// N, as Slicer reads it.
-TEST(BoneSurface, SegmentsOfOlderSlicerFilesAreTakenFromTheirLayers)
-{
-  vtkNew<vtkLKMedicalImageReader> older, current;
-  older->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/slicer4_segments.seg.nrrd").c_str());
-  current->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd").c_str());
-  for (const char* name : { "left condyle", "Right Condyle" })
-  {
-    vtkNew<vtkLKBoneSurfaceFilter> a, b;
-    lktest::ErrorRecorder rec(a);
-    a->SetInputConnection(older->GetOutputPort());
-    a->SetLabelName(name);
-    a->Update();
-    ASSERT_EQ(rec.errors, 0) << rec.messages;
-    EXPECT_EQ(a->GetEffectiveLabel(), 1) << name;
-    b->SetInputConnection(current->GetOutputPort());
-    b->SetLabelName(name);
-    b->Update();
-    // The same voxels, so the same surface.
-    EXPECT_GT(a->GetOutput()->GetNumberOfPoints(), 100) << name;
-    EXPECT_EQ(a->GetOutput()->GetNumberOfPoints(), b->GetOutput()->GetNumberOfPoints()) << name;
-    double ba[6], bb[6];
-    a->GetOutput()->GetBounds(ba);
-    b->GetOutput()->GetBounds(bb);
-    for (int i = 0; i < 6; ++i)
-      EXPECT_DOUBLE_EQ(ba[i], bb[i]) << name;
-  }
-  vtkNew<vtkLKBoneSurfaceFilter> ambiguous;
-  lktest::ErrorRecorder rec(ambiguous);
-  ambiguous->SetInputConnection(older->GetOutputPort());
-  ambiguous->SetLabel(1);
-  ambiguous->Update();
-  EXPECT_NE(rec.messages.find("2 segments have label 1; choose one by its name (LabelName, --label NAME). Its "
-                              "segments are 1 'left condyle' (layer 0), 1 'Right Condyle' (layer 1)."),
-    std::string::npos)
-    << rec.messages;
-}
-
 namespace
 {
 // The balls of scripts/make_label_test_data.py (40 x 30 x 30 voxels of
@@ -876,6 +672,173 @@ void expectSameSurface(const Surface& a, const Surface& b, const std::string& wh
   EXPECT_EQ(lk::countBoundaryEdges(lktest::toCore(a.mesh)), 0u) << what;
 }
 } // namespace
+
+// 3D Slicer's .seg.nrrd names its segments in the header; LabelName takes
+// one by its name (as written, else ignoring case), and the errors list them.
+TEST(BoneSurface, LabelNameTakesASegmentOfASlicerSegmentation)
+{
+  const std::string file = std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd";
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  auto* names = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("SegmentNames"));
+  vtkDataArray* values = reader->GetOutput()->GetFieldData()->GetArray("SegmentLabelValues");
+  ASSERT_TRUE(names && values);
+  ASSERT_EQ(names->GetNumberOfValues(), 2);
+  EXPECT_EQ(names->GetValue(0), "left condyle");
+  EXPECT_EQ(names->GetValue(1), "Right Condyle");
+  EXPECT_EQ(values->GetComponent(1, 0), 2.0);
+
+  auto run = [&](const char* name, int label, Surface& out) {
+    int effective = 0;
+    out = segmentSurface(file, name, label, &effective);
+    return effective;
+  };
+  Surface byValue, byName, byOtherCase;
+  EXPECT_EQ(run(nullptr, 2, byValue), 2);
+  EXPECT_EQ(run("Right Condyle", 0, byName), 2);
+  EXPECT_EQ(run("right condyle", 1, byOtherCase), 2); // the name wins over Label
+  ASSERT_EQ(byValue.errors + byName.errors + byOtherCase.errors, 0) << byName.messages << byOtherCase.messages;
+  EXPECT_EQ(byName.mesh->GetNumberOfPoints(), byValue.mesh->GetNumberOfPoints());
+  EXPECT_EQ(byOtherCase.mesh->GetNumberOfPoints(), byValue.mesh->GetNumberOfPoints());
+  double b[6];
+  byName.mesh->GetBounds(b);
+  EXPECT_GT(b[0], 0.0); // the ball at x = +9, not the one at -9
+
+  Surface missing, none;
+  run("maxilla", 0, missing);
+  EXPECT_EQ(missing.errors, 1);
+  EXPECT_NE(missing.messages.find("No segment is named 'maxilla'; its segments are 1 'left condyle', 2 'Right "
+                                  "Condyle'."),
+    std::string::npos)
+    << missing.messages;
+  run(nullptr, 0, none); // the threshold misses: the hint names the segments
+  EXPECT_NE(none.messages.find("The volume holds only the values 0, 1, 2 (segments: 1 'left condyle', 2 'Right "
+                               "Condyle'): if it is a label map"),
+    std::string::npos)
+    << none.messages;
+  // A label map that names no segments.
+  vtkNew<vtkLKBoneSurfaceFilter> plain;
+  lktest::ErrorRecorder rec(plain);
+  vtkNew<vtkLKMedicalImageReader> mha;
+  mha->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_labels.mha").c_str());
+  plain->SetInputConnection(mha->GetOutputPort());
+  plain->SetLabelName("mandible");
+  plain->Update();
+  EXPECT_NE(rec.messages.find("No segment is named 'mandible'; the volume names no segments (a 3D Slicer .seg.nrrd "
+                              "or a DICOM SEG does)."),
+    std::string::npos)
+    << rec.messages;
+}
+
+// A segmentation whose segments overlap: 3D Slicer saves it in layers (a
+// 4D NRRD), each layer numbering its segments from 1. The reader keeps a
+// component per layer; a segment is taken by its name, or by a label value
+// only one segment has, whole (the overlap stays in both).
+TEST(BoneSurface, OverlappingSegmentsAreTakenFromTheirLayers)
+{
+  const std::string file = std::string(LATTICEKIT_TEST_DATA) + "/overlapping_segments.seg.nrrd";
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder readErrors(reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  ASSERT_EQ(readErrors.errors, 0) << readErrors.messages;
+  vtkImageData* volume = reader->GetOutput();
+  ASSERT_EQ(volume->GetNumberOfScalarComponents(), 2);
+  vtkDataArray* layers = volume->GetFieldData()->GetArray("SegmentLayers");
+  ASSERT_TRUE(layers);
+  ASSERT_EQ(layers->GetNumberOfTuples(), 3);
+  EXPECT_EQ(layers->GetComponent(0, 0), 0.0);
+  EXPECT_EQ(layers->GetComponent(2, 0), 1.0);
+
+  auto run = [&](const char* name, int label, Surface& out) { out = segmentSurface(file, name, label); };
+  const double pi = 3.14159265358979;
+  // Balls (LPS, mm): mandible r 8 at x = -9, maxilla r 7 at x = +9 (layer
+  // 0), tumour r 6 at x = -1 (layer 1), which overlaps both.
+  Surface mandible, maxilla, tumour;
+  run("mandible", 0, mandible);
+  run(nullptr, 2, maxilla); // only one segment has label 2
+  run("Tumour", 0, tumour);
+  ASSERT_EQ(mandible.errors + maxilla.errors + tumour.errors, 0)
+    << mandible.messages << maxilla.messages << tumour.messages;
+  double b[6];
+  tumour.mesh->GetBounds(b);
+  EXPECT_NEAR(0.5 * (b[0] + b[1]), -1.0, 1.0);
+  EXPECT_NEAR(b[1] - b[0], 12.0, 2.0);
+  mandible.mesh->GetBounds(b);
+  EXPECT_NEAR(0.5 * (b[0] + b[1]), -9.0, 1.0);
+  EXPECT_GT(b[1], -2.5); // the part the tumour overlaps is still the mandible's
+  maxilla.mesh->GetBounds(b);
+  EXPECT_NEAR(0.5 * (b[0] + b[1]), 9.0, 1.0);
+  // A ball of 6 mm on 1 x 1 x 2 mm voxels, smoothed: about 80 % of its
+  // volume (the whole volume, mis-read, gave 17 %).
+  EXPECT_NEAR(volumeOf(tumour.mesh), 0.8 * 4.0 / 3.0 * pi * 216.0, 0.1 * 4.0 / 3.0 * pi * 216.0);
+  for (const Surface* s : { &mandible, &maxilla, &tumour })
+    EXPECT_EQ(lk::countBoundaryEdges(lktest::toCore(s->mesh)), 0u);
+  // Layer 0 holds the voxels of two_segments.seg.nrrd: the same surfaces.
+  const std::string single = std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd";
+  for (const auto& [name, layered] : { std::pair<const char*, Surface*>{ "left condyle", &mandible },
+         std::pair<const char*, Surface*>{ "Right Condyle", &maxilla } })
+  {
+    const Surface same = segmentSurface(single, name);
+    EXPECT_EQ(same.mesh->GetNumberOfPoints(), layered->mesh->GetNumberOfPoints()) << name;
+    EXPECT_NEAR(volumeOf(same.mesh), volumeOf(layered->mesh), 1e-9) << name;
+  }
+
+  // Label 1 is two segments; no label, or one no segment has, is no segment.
+  Surface ambiguous, none, missing;
+  run(nullptr, 1, ambiguous);
+  run(nullptr, 0, none);
+  run(nullptr, 3, missing);
+  const std::string byName = " by its name (LabelName, --label NAME)";
+  const std::string byEither = byName + " or by a label value only it has (Label, --label N)";
+  const std::string listed = ". Its segments are 1 'mandible' (layer 0), 2 'maxilla' (layer 0), 1 'tumour' (layer 1).";
+  EXPECT_NE(ambiguous.messages.find("The input is a segmentation whose segments overlap, in 2 layers; 2 segments have "
+                                    "label 1; choose one" + byName + listed),
+    std::string::npos)
+    << ambiguous.messages;
+  EXPECT_NE(none.messages.find("in 2 layers; choose one segment" + byEither + listed), std::string::npos)
+    << none.messages;
+  EXPECT_NE(missing.messages.find("in 2 layers; no segment has label 3; choose one" + byEither + listed),
+    std::string::npos)
+    << missing.messages;
+  for (const Surface* s : { &ambiguous, &none, &missing })
+  {
+    EXPECT_EQ(s->errors, 1);
+    EXPECT_EQ(s->mesh->GetNumberOfPoints(), 0);
+  }
+}
+
+// 3D Slicer 4.10 and older saved each segment as a 0/1 map in a layer of
+// its own, without LabelValue and Layer keys: segment N is label 1 of layer
+// N, as Slicer reads it.
+TEST(BoneSurface, SegmentsOfOlderSlicerFilesAreTakenFromTheirLayers)
+{
+  const std::string older = std::string(LATTICEKIT_TEST_DATA) + "/slicer4_segments.seg.nrrd";
+  const std::string current = std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd";
+  for (const char* name : { "left condyle", "Right Condyle" })
+  {
+    int effective = 0;
+    const Surface a = segmentSurface(older, name, 0, &effective);
+    const Surface b = segmentSurface(current, name);
+    ASSERT_EQ(a.errors, 0) << a.messages;
+    EXPECT_EQ(effective, 1) << name;
+    // The same voxels, so the same surface.
+    EXPECT_GT(a.mesh->GetNumberOfPoints(), 100) << name;
+    EXPECT_EQ(a.mesh->GetNumberOfPoints(), b.mesh->GetNumberOfPoints()) << name;
+    double ba[6], bb[6];
+    a.mesh->GetBounds(ba);
+    b.mesh->GetBounds(bb);
+    for (int i = 0; i < 6; ++i)
+      EXPECT_DOUBLE_EQ(ba[i], bb[i]) << name;
+  }
+  const Surface ambiguous = segmentSurface(older, nullptr, 1);
+  EXPECT_NE(ambiguous.messages.find("2 segments have label 1; choose one by its name (LabelName, --label NAME). Its "
+                                    "segments are 1 'left condyle' (layer 0), 1 'Right Condyle' (layer 1)."),
+    std::string::npos)
+    << ambiguous.messages;
+}
+
 
 // A DICOM SEG (as AI segmentation tools and PACS store segmentations) gave
 // "images cannot be stacked into one volume". Its segments are now read by
