@@ -678,20 +678,25 @@ bool vtkLKMedicalImageReader::ReadVolume()
     std::map<std::string, std::string> keyValues;
     const auto header = readHeader(path, ':', &headerBytes, &keyValues);
     // vtkNrrdReader takes the first of four axes as the values of a voxel
-    // (3D Slicer's layers, a vector's components), whatever the file says:
-    // a fourth axis that is not first (time after space) would be read as
-    // scrambled voxels.
-    if (header.count("dimension") && numbers(header.at("dimension")) == std::vector<double>{ 4 } &&
-      header.count("kinds"))
+    // (3D Slicer's layers, a vector's components), whatever the file says,
+    // and of five or more it reads part: a fourth axis that is not first
+    // (time after space) would be read as scrambled voxels.
+    const std::vector<double> axes = header.count("dimension") ? numbers(header.at("dimension")) : std::vector<double>{};
+    if (axes.size() == 1 && axes[0] >= 4)
     {
-      std::istringstream kinds(lower(header.at("kinds")));
+      const std::vector<double> sizes = header.count("sizes") ? numbers(header.at("sizes")) : std::vector<double>{};
       std::string first;
-      kinds >> first;
-      if (first == "domain" || first == "space" || first == "time")
+      if (header.count("kinds"))
+        std::istringstream(lower(header.at("kinds"))) >> first;
+      const bool listFirst = header.count("kinds") ? first != "domain" && first != "space" && first != "time"
+                                                   : !sizes.empty() && sizes[0] <= 9; // VTK's own guess
+      if (axes[0] > 4 || !listFirst)
       {
-        vtkErrorMacro("Cannot read NRRD file '" << path << "': it has 4 axes (kinds: " << header.at("kinds")
-                                                << ") and its first is not a list of values per voxel; a 3D "
-                                                   "volume is needed.");
+        vtkErrorMacro("Cannot read NRRD file '" << path << "': it has " << axes[0] << " axes ("
+                                                << (header.count("kinds") ? "kinds: " + header.at("kinds")
+                                                                          : "sizes: " + header.at("sizes"))
+                                                << ") and only a 3D volume, with a list of values per voxel "
+                                                   "first where there are 4, is read.");
         return false;
       }
     }

@@ -641,11 +641,30 @@ TEST(MedicalImageReader, NrrdWithALayerAxisReadsEveryLayer)
   reader->SetFileName((dir + "/time_last.nrrd").c_str());
   reader->Update();
   EXPECT_EQ(rec.errors, 1);
-  EXPECT_NE(rec.messages.find("it has 4 axes (kinds: domain domain domain list) and its first is not a list of values "
-                              "per voxel; a 3D volume is needed."),
+  EXPECT_NE(rec.messages.find("it has 4 axes (kinds: domain domain domain list) and only a 3D volume, with a list of "
+                              "values per voxel first where there are 4, is read."),
     std::string::npos)
     << rec.messages;
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  // Without kinds, a first axis of more than 9 is no list (VTK's own guess);
+  // five axes are never read whole.
+  std::ofstream(dir + "/no_kinds.nrrd", std::ios::binary)
+    << "NRRD0004\ntype: unsigned char\ndimension: 4\nsizes: 12 4 4 2\nencoding: raw\n\n" << std::string(384, '\1');
+  std::ofstream(dir + "/five.nrrd", std::ios::binary)
+    << "NRRD0004\ntype: unsigned char\ndimension: 5\nsizes: 2 4 4 4 2\nkinds: list domain domain domain list\n"
+       "encoding: raw\n\n"
+    << std::string(256, '\1');
+  for (const auto& [file, what] : { std::make_pair("no_kinds.nrrd", "it has 4 axes (sizes: 12 4 4 2)"),
+         std::make_pair("five.nrrd", "it has 5 axes (kinds: list domain domain domain list)") })
+  {
+    rec.errors = 0;
+    rec.messages.clear();
+    reader->SetFileName((dir + "/" + file).c_str());
+    reader->Update();
+    EXPECT_EQ(rec.errors, 1) << file;
+    EXPECT_NE(rec.messages.find(what), std::string::npos) << rec.messages;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << file;
+  }
 }
 
 TEST(MedicalImageReader, NrrdGeometryComesFromTheHeader)
