@@ -10,6 +10,7 @@
 #include <vtkMassProperties.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 #include <chrono>
 #include <cstring>
@@ -212,10 +213,25 @@ int main(int argc, char* argv[])
   if (cropping)
     std::cout << "crop box   x " << crop[0] << " to " << crop[1] << ", y " << crop[2] << " to " << crop[3] << ", z "
               << crop[4] << " to " << crop[5] << " mm (patient), padded with air\n";
+  {
+    // A segmentation's segments, so that the next run can name another.
+    vtkFieldData* fields = reader->GetOutput()->GetFieldData();
+    auto* names = vtkStringArray::SafeDownCast(fields->GetAbstractArray("SegmentNames"));
+    vtkDataArray* values = fields->GetArray("SegmentLabelValues");
+    if (names && values && names->GetNumberOfValues() == values->GetNumberOfTuples())
+    {
+      std::cout << "segments   ";
+      for (vtkIdType i = 0; i < names->GetNumberOfValues(); ++i)
+        std::cout << (i ? ", " : "") << values->GetTuple1(i) << " '" << names->GetValue(i) << "'";
+      const int layers = reader->GetOutput()->GetNumberOfScalarComponents();
+      std::cout << (layers > 1 ? " (in " + std::to_string(layers) + " layers: they overlap)" : std::string()) << "\n";
+    }
+  }
+  const std::string segment = surface->GetEffectiveSegmentName();
   std::cout << "iso value  " << surface->GetEffectiveIsoValue()
             << (surface->GetEffectiveLabel() > 0
                    ? " (label " + std::to_string(surface->GetEffectiveLabel()) + " of the label map" +
-                     (labelName.empty() ? std::string() : ", segment '" + labelName + "'") + ")"
+                     (segment.empty() ? std::string() : ", segment '" + segment + "'") + ")"
                    : std::string(surface->GetTreatedAsLabelMap() ? " (label map)" : ""))
             << "\n";
   std::cout << "surface    " << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfPolys()

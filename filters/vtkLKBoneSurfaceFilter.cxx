@@ -268,6 +268,8 @@ int vtkLKBoneSurfaceFilter::RequestData(
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->EffectiveLabel = 0;
+  this->EffectiveSegmentName.clear();
   if (!input || input->GetNumberOfPoints() == 0 || !input->GetPointData()->GetScalars())
   {
     vtkErrorMacro("The input volume is empty.");
@@ -377,6 +379,10 @@ int vtkLKBoneSurfaceFilter::RequestData(
               ->layer;
   }
   this->EffectiveLabel = label;
+  const auto taken =
+    std::find_if(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.label == label && seg.layer == layer; });
+  if (label > 0 && taken != segments.end())
+    this->EffectiveSegmentName = taken->name;
   vtkNew<vtkImageData> oneLabel;
   if (label > 0)
   {

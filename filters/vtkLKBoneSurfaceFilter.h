@@ -45,6 +45,8 @@
 #include "LatticeKitFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <string>
+
 class vtkMatrix4x4;
 
 class LATTICEKITFILTERS_EXPORT vtkLKBoneSurfaceFilter : public vtkPolyDataAlgorithm
@@ -191,6 +193,9 @@ public:
   double GetEffectiveIsoValue() const { return this->EffectiveIsoValue; }
   /// The label the last update took (Label, or LabelName's value; 0: none).
   int GetEffectiveLabel() const { return this->EffectiveLabel; }
+  /// The name of the segment the last update took (a segmentation's, by
+  /// LabelName or by Label), or "".
+  const char* GetEffectiveSegmentName() const { return this->EffectiveSegmentName.c_str(); }
 
 protected:
   vtkLKBoneSurfaceFilter();
@@ -215,6 +220,7 @@ protected:
   vtkMatrix4x4* PatientMatrix = nullptr;
   bool TreatedAsLabelMap = false;
   int EffectiveLabel = 0;
+  std::string EffectiveSegmentName;
   double EffectiveIsoValue = 300.0;
 
 private:

@@ -10,6 +10,7 @@ SAMPLE_DATA = os.environ.get("LATTICEKIT_SAMPLE_DATA",
 MANDIBLE = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_0522c0017_Mandible.nrrd")
 GE = os.path.join(SAMPLE_DATA, "dicom-ct-ge-tilt")
 CTHEAD = os.path.join(SAMPLE_DATA, "cthead", "cthead_hu_approx.nii.gz")
+TEST_DATA = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "data")
 
 
 class ImportTest(unittest.TestCase):
@@ -139,6 +140,36 @@ class PipelineTest(unittest.TestCase):
         mean_pct = metro.GetOutput().GetFieldData().GetArray("Hausdorff_MeanPercent").GetValue(0)
         self.assertGreater(mean_pct, 0.0)
         self.assertLess(mean_pct, 0.1)
+
+    def test_a_segment_of_a_segmentation_whose_segments_overlap(self):
+        """3D Slicer's layered .seg.nrrd: a component per layer, and a
+        segment taken by its name or by a label value only it has."""
+        import latticekit
+
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(os.path.join(TEST_DATA, "overlapping_segments.seg.nrrd"))
+        bone = latticekit.vtkLKBoneSurfaceFilter()
+        bone.SetInputConnection(reader.GetOutputPort())
+        bone.SetLabelName("tumour")
+        bone.Update()
+        volume = reader.GetOutput()
+        self.assertEqual(volume.GetNumberOfScalarComponents(), 2)
+        names = volume.GetFieldData().GetAbstractArray("SegmentNames")
+        self.assertEqual([names.GetValue(i) for i in range(names.GetNumberOfValues())],
+                         ["mandible", "maxilla", "tumour"])
+        layers = volume.GetFieldData().GetArray("SegmentLayers")
+        self.assertEqual([layers.GetValue(i) for i in range(3)], [0, 0, 1])
+        self.assertEqual(bone.GetEffectiveLabel(), 1)
+        self.assertEqual(bone.GetEffectiveSegmentName(), "tumour")
+        b = bone.GetOutput().GetBounds()
+        self.assertAlmostEqual(0.5 * (b[0] + b[1]), -1.0, delta=1.0)  # the ball at x = -1
+        self.assertEqual(bone.GetOutput().GetFieldData().GetArray("BoundaryEdges").GetValue(0), 0)
+
+        bone.SetLabelName(None)
+        bone.SetLabel(2)  # only the maxilla has 2
+        bone.Update()
+        self.assertEqual(bone.GetEffectiveSegmentName(), "maxilla")
+        self.assertGreater(bone.GetOutput().GetBounds()[0], 0.0)
 
     def test_close_at_border_closes_a_scan_that_ends_in_the_bone(self):
         """A scan that ends inside the bone (here the label map's slices cut
