@@ -51,12 +51,16 @@ V3 sub(const V3& a, const V3& b)
   return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
 }
 
-/// Collects the messages of VTK errors raised by an object.
+/// Collects the messages of VTK errors raised by an object while it lives
+/// (the object may outlive it: the observer goes with it).
 struct ErrorCatcher
 {
   std::string messages;
   vtkNew<vtkCallbackCommand> command;
+  vtkObject* observed;
+  unsigned long tag;
   explicit ErrorCatcher(vtkObject* object)
+    : observed(object)
   {
     command->SetClientData(this);
     command->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
@@ -75,8 +79,11 @@ struct ErrorCatcher
         self->messages += m;
       }
     });
-    object->AddObserver(vtkCommand::ErrorEvent, command);
+    tag = object->AddObserver(vtkCommand::ErrorEvent, command);
   }
+  ~ErrorCatcher() { observed->RemoveObserver(tag); }
+  ErrorCatcher(const ErrorCatcher&) = delete;
+  ErrorCatcher& operator=(const ErrorCatcher&) = delete;
 };
 
 /// vtkDICOMReader whose compressed slices (JPEG, JPEG-LS, JPEG 2000, which
@@ -115,6 +122,75 @@ protected:
   }
 };
 vtkStandardNewMacro(CheckedDICOMReader);
+
+/// Runs `reader` (set up by the caller) over `files`, its progress the part
+/// from 0.2 to `progressEnd` of `progress`'s; false with error "cannot read
+/// the DICOM <what>: ..." when it fails.
+bool readFiles(CheckedDICOMReader* reader, const std::vector<std::string>& files, const char* what,
+  vtkAlgorithm* progress, double progressEnd, std::string& error)
+{
+  vtkNew<vtkStringArray> names;
+  for (const std::string& f : files)
+    names->InsertNextValue(f);
+  ErrorCatcher catcher(reader);
+  reader->SetFileNames(names);
+  reader->SetMemoryRowOrderToFileNative(); // row 0 in memory is the first row in the file
+  {
+    std::optional<ProgressRelay> relay;
+    if (progress)
+      relay.emplace(progress, reader, 0.2, progressEnd);
+    reader->Update();
+  }
+  if (reader->GetErrorCode() != 0 || !catcher.messages.empty())
+  {
+    error = std::string("cannot read the DICOM ") + what + ": " +
+      (catcher.messages.empty() ? std::string("the reader failed") : catcher.messages);
+    return false;
+  }
+  return true;
+}
+
+/// The slice frame of an ImageOrientationPatient: the rows' direction r, the
+/// columns' c and their cross product n. Direction cosines are stored rounded
+/// (often to 6 decimals): they are made orthonormal (Gram-Schmidt) so that
+/// the patient matrix is a rotation. False when either is degenerate.
+struct SliceFrame
+{
+  V3 r, c, n;
+};
+
+bool sliceFrame(const double iop[6], SliceFrame& frame)
+{
+  V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
+  const double rn = std::sqrt(dot(r, r));
+  if (!(rn > 0.5))
+    return false;
+  for (double& v : r)
+    v /= rn;
+  const double rc = dot(r, c);
+  for (std::size_t a = 0; a < 3; ++a)
+    c[a] -= rc * r[a];
+  const double cn = std::sqrt(dot(c, c));
+  if (!(cn > 0.5))
+    return false;
+  for (double& v : c)
+    v /= cn;
+  frame = { r, c, cross(r, c) };
+  return true;
+}
+
+/// Data coordinates on the frame's axes, from `origin`, to patient (LPS) mm.
+void setPatientMatrix(vtkMatrix4x4* m, const SliceFrame& frame, const V3& origin)
+{
+  m->Identity();
+  for (std::size_t row = 0; row < 3; ++row)
+  {
+    m->SetElement(static_cast<int>(row), 0, frame.r[row]);
+    m->SetElement(static_cast<int>(row), 1, frame.c[row]);
+    m->SetElement(static_cast<int>(row), 2, frame.n[row]);
+    m->SetElement(static_cast<int>(row), 3, origin[row]);
+  }
+}
 } // namespace
 
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
@@ -168,28 +244,10 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
 bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,
   vtkMatrix4x4* patientMatrix, DICOMGeometryReport& report, std::string& error, vtkAlgorithm* progress)
 {
-  vtkNew<vtkStringArray> names;
-  for (const std::string& f : series.files)
-  {
-    names->InsertNextValue(f);
-  }
   vtkNew<CheckedDICOMReader> reader;
-  ErrorCatcher catcher(reader);
-  reader->SetFileNames(names);
-  reader->SetMemoryRowOrderToFileNative(); // row 0 in memory is the first row in the file
   reader->TimeAsVectorOff();
-  {
-    std::optional<ProgressRelay> relay;
-    if (progress)
-      relay.emplace(progress, reader, 0.2, 0.95); // the resampling after it is quick
-    reader->Update();
-  }
-  if (reader->GetErrorCode() != 0 || !catcher.messages.empty())
-  {
-    error = "cannot read the DICOM series: " +
-      (catcher.messages.empty() ? std::string("the reader failed") : catcher.messages);
+  if (!readFiles(reader, series.files, "series", progress, 0.95, error)) // the resampling after it is quick
     return false;
-  }
   vtkImageData* raw = reader->GetOutput();
   int dims[3];
   raw->GetDimensions(dims);
@@ -246,35 +304,13 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     error = "the DICOM series has no ImageOrientationPatient or PixelSpacing";
     return false;
   }
-  // Direction cosines are stored rounded (often to 6 decimals): make them
-  // orthonormal (Gram-Schmidt) so that the patient matrix is a rotation.
-  V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
-  const double rn = std::sqrt(dot(r, r));
-  if (!(rn > 0.5))
+  SliceFrame frame;
+  if (!sliceFrame(iop, frame))
   {
     error = "the DICOM ImageOrientationPatient is degenerate";
     return false;
   }
-  for (double& v : r)
-  {
-    v /= rn;
-  }
-  const double rc = dot(r, c);
-  for (int a = 0; a < 3; ++a)
-  {
-    c[static_cast<std::size_t>(a)] -= rc * r[static_cast<std::size_t>(a)];
-  }
-  const double cn = std::sqrt(dot(c, c));
-  if (!(cn > 0.5))
-  {
-    error = "the DICOM ImageOrientationPatient is degenerate";
-    return false;
-  }
-  for (double& v : c)
-  {
-    v /= cn;
-  }
-  const V3 n = cross(r, c);
+  const V3 &r = frame.r, &c = frame.c, &n = frame.n;
   const double dx = ps[1], dy = ps[0]; // PixelSpacing is (row spacing, column spacing)
   if (!(dx > 0.0) || !(dy > 0.0))
   {
@@ -471,21 +507,15 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     }
   });
 
-  patientMatrix->Identity();
-  for (int row = 0; row < 3; ++row)
-  {
-    patientMatrix->SetElement(row, 0, r[static_cast<std::size_t>(row)]);
-    patientMatrix->SetElement(row, 1, c[static_cast<std::size_t>(row)]);
-    patientMatrix->SetElement(row, 2, n[static_cast<std::size_t>(row)]);
-    patientMatrix->SetElement(row, 3,
-      origin[static_cast<std::size_t>(row)] + ox * dx * r[static_cast<std::size_t>(row)] +
-        oy * dy * c[static_cast<std::size_t>(row)]);
-  }
+  V3 corner; // the grid's first voxel: the lowest slice's, moved to cover every footprint
+  for (std::size_t a = 0; a < 3; ++a)
+    corner[a] = origin[a] + ox * dx * r[a] + oy * dy * c[a];
+  setPatientMatrix(patientMatrix, frame, corner);
   return true;
 }
 
 bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, vtkMatrix4x4* patientMatrix,
-  std::vector<DICOMSegment>& segments, std::string& error, vtkAlgorithm* progress)
+  std::vector<Segment>& segments, std::string& error, vtkAlgorithm* progress)
 {
   segments.clear();
   if (series.files.size() != 1)
@@ -496,26 +526,11 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   }
   // The frames in the file's order, each a slice (SortingOff): where each
   // lies and which segment it holds are read from its functional groups.
-  vtkNew<vtkStringArray> names;
-  names->InsertNextValue(series.files.front());
   vtkNew<CheckedDICOMReader> reader;
-  ErrorCatcher catcher(reader);
-  reader->SetFileNames(names);
-  reader->SetMemoryRowOrderToFileNative();
   reader->SortingOff();
   reader->AutoRescaleOff();
-  {
-    std::optional<ProgressRelay> relay;
-    if (progress)
-      relay.emplace(progress, reader, 0.2, 0.9);
-    reader->Update();
-  }
-  if (reader->GetErrorCode() != 0 || !catcher.messages.empty())
-  {
-    error = "cannot read the DICOM segmentation: " +
-      (catcher.messages.empty() ? std::string("the reader failed") : catcher.messages);
+  if (!readFiles(reader, series.files, "segmentation", progress, 0.9, error))
     return false;
-  }
   vtkImageData* frames = reader->GetOutput();
   vtkDICOMMetaData* meta = reader->GetMetaData();
   int dims[3];
@@ -540,15 +555,15 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   int largest = 0;
   for (unsigned int i = 0; items && i < sequence.GetNumberOfValues(); ++i)
   {
-    DICOMSegment seg;
-    seg.number = items[i].Get(DC::SegmentNumber).AsInt();
+    Segment seg;
+    seg.label = items[i].Get(DC::SegmentNumber).AsInt();
     seg.name = items[i].Get(DC::SegmentLabel).AsString();
-    if (seg.number < 1 || seg.number > 65535)
+    if (seg.label < 1 || seg.label > 65535)
     {
-      error = "a segment of the DICOM segmentation has the SegmentNumber " + std::to_string(seg.number);
+      error = "a segment of the DICOM segmentation has the SegmentNumber " + std::to_string(seg.label);
       return false;
     }
-    largest = std::max(largest, seg.number);
+    largest = std::max(largest, seg.label);
     segments.push_back(seg);
   }
   if (segments.empty())
@@ -566,7 +581,7 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
     for (int f = 0; f < frameCount; ++f)
     {
       const int number = meta->Get(0, f, DC::ReferencedSegmentNumber).AsInt();
-      if (std::none_of(segments.begin(), segments.end(), [&](const DICOMSegment& seg) { return seg.number == number; }))
+      if (std::none_of(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.label == number; }))
       {
         error = "frame " + std::to_string(f + 1) + " of the DICOM segmentation names segment " + std::to_string(number) +
           ", which its SegmentSequence does not list";
@@ -603,20 +618,14 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   }
   orientation.GetValues(iop, 6);
   pixelSpacing.GetValues(ps, 2);
-  V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
-  const double rn = std::sqrt(dot(r, r)), cn = std::sqrt(dot(c, c));
-  const double dx = ps[1], dy = ps[0];
-  if (!(rn > 0.5) || !(cn > 0.5) || !(dx > 0.0) || !(dy > 0.0))
+  SliceFrame frame;
+  const double dx = ps[1], dy = ps[0]; // PixelSpacing is (row spacing, column spacing)
+  if (!sliceFrame(iop, frame) || !(dx > 0.0) || !(dy > 0.0))
   {
     error = "the DICOM segmentation's ImageOrientationPatient or PixelSpacing is degenerate";
     return false;
   }
-  for (std::size_t a = 0; a < 3; ++a)
-  {
-    r[a] /= rn;
-    c[a] /= cn;
-  }
-  const V3 n = cross(r, c);
+  const V3 &r = frame.r, &c = frame.c, &n = frame.n;
   std::vector<V3> positions(static_cast<std::size_t>(frameCount));
   std::vector<double> zs(static_cast<std::size_t>(frameCount));
   for (int f = 0; f < frameCount; ++f)
@@ -689,18 +698,18 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   const vtkIdType sliceSize = static_cast<vtkIdType>(dims[0]) * dims[1];
   const vtkIdType voxels = sliceSize * nz;
   std::vector<std::vector<unsigned short>> layers;
-  for (DICOMSegment& seg : segments)
+  for (Segment& seg : segments)
   {
     std::vector<int> own; // its frames
     for (int f = 0; f < frameCount; ++f)
-      if (labelMap || frameSegment[static_cast<std::size_t>(f)] == seg.number)
+      if (labelMap || frameSegment[static_cast<std::size_t>(f)] == seg.label)
         own.push_back(f);
     auto fits = [&](const std::vector<unsigned short>& layer) {
       for (int f : own)
       {
         const unsigned short* slice = layer.data() + frameSlice[static_cast<std::size_t>(f)] * sliceSize;
         for (vtkIdType p = 0; p < sliceSize; ++p)
-          if (slice[p] != 0 && slice[p] != seg.number && segmentAt(f, p) == seg.number)
+          if (slice[p] != 0 && slice[p] != seg.label && segmentAt(f, p) == seg.label)
             return false;
       }
       return true;
@@ -722,8 +731,8 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
     {
       unsigned short* slice = layers[l].data() + frameSlice[static_cast<std::size_t>(f)] * sliceSize;
       for (vtkIdType p = 0; p < sliceSize; ++p)
-        if (segmentAt(f, p) == seg.number)
-          slice[p] = static_cast<unsigned short>(seg.number);
+        if (segmentAt(f, p) == seg.label)
+          slice[p] = static_cast<unsigned short>(seg.label);
     }
   }
 
@@ -745,16 +754,10 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   else
     fill(static_cast<unsigned short*>(output->GetScalarPointer()));
 
-  const V3 origin = positions[0];
-  const double lift = z0 - zs[0]; // from the first frame down to the grid's first slice
-  patientMatrix->Identity();
-  for (std::size_t row = 0; row < 3; ++row)
-  {
-    patientMatrix->SetElement(static_cast<int>(row), 0, r[row]);
-    patientMatrix->SetElement(static_cast<int>(row), 1, c[row]);
-    patientMatrix->SetElement(static_cast<int>(row), 2, n[row]);
-    patientMatrix->SetElement(static_cast<int>(row), 3, origin[row] + lift * n[row]);
-  }
+  V3 corner; // the first frame, moved along the normal down to the grid's first slice
+  for (std::size_t a = 0; a < 3; ++a)
+    corner[a] = positions[0][a] + (z0 - zs[0]) * n[a];
+  setPatientMatrix(patientMatrix, frame, corner);
   return true;
 }
 

@@ -32,11 +32,12 @@ struct DICOMSeriesInfo
 /// own position and, but for LABELMAP, naming its segment.
 constexpr const char* kSegmentationStorage = "1.2.840.10008.5.1.4.1.1.66.4";
 
-/// A segment of a DICOM SEG: its SegmentNumber, SegmentLabel, and the
-/// component (layer) of readDICOMSegmentation's output that holds it.
-struct DICOMSegment
+/// A segment of a segmentation (a DICOM SEG's, a 3D Slicer .seg.nrrd's):
+/// its label value (a DICOM SEG's SegmentNumber), its name, and the
+/// component (layer) of the volume that holds it.
+struct Segment
 {
-  int number = 0;
+  int label = 1;
   std::string name;
   int layer = 0;
 };
@@ -94,6 +95,6 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
 /// frames count where at least half the MaximumFractionalValue.
 /// patientMatrix maps the output's data coordinates to patient (LPS) mm.
 bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, vtkMatrix4x4* patientMatrix,
-  std::vector<DICOMSegment>& segments, std::string& error, vtkAlgorithm* progress = nullptr);
+  std::vector<Segment>& segments, std::string& error, vtkAlgorithm* progress = nullptr);
 
 } // namespace lkvtk

@@ -120,19 +120,14 @@ std::map<std::string, std::string> readHeader(const std::string& path, char sepa
   return fields;
 }
 
+using lkvtk::Segment;
+
 /// A 3D Slicer segmentation's segments, from its NRRD header's key/value
 /// pairs (readHeader's `keyValues`) "SegmentN_ID:=...", "SegmentN_Name:=...",
 /// "SegmentN_LabelValue:=..." and "SegmentN_Layer:=..." (N from 0). As 3D
 /// Slicer reads them: the name is the ID when not given, the label value 1,
 /// and the layer N (Slicer 4.10 and older saved every segment in a layer of
 /// its own, as a 0/1 map, without these two keys).
-struct Segment
-{
-  std::string name;
-  int labelValue = 1;
-  int layer = 0;
-};
-
 std::vector<Segment> nrrdSegments(const std::map<std::string, std::string>& pairs)
 {
   // A whole number from min up, or nothing.
@@ -161,7 +156,7 @@ std::vector<Segment> nrrdSegments(const std::map<std::string, std::string>& pair
       const auto v = whole(value->second, 1);
       if (!v)
         break;
-      seg.labelValue = *v;
+      seg.label = *v;
     }
     if (layer != pairs.end())
     {
@@ -666,7 +661,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
   const bool isFolder = vtksys::SystemTools::FileIsDirectory(path);
   double spacing[3] = { 1, 1, 1 };
   vtkSmartPointer<vtkImageData> image;
-  std::vector<Segment> segments; // a 3D Slicer segmentation's, from its NRRD header
+  std::vector<Segment> segments; // a segmentation's: a .seg.nrrd's header, a DICOM SEG's
 
   if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr"))
   {
@@ -994,20 +989,11 @@ bool vtkLKMedicalImageReader::ReadVolume()
       // A DICOM SEG: its segments, by number and name, in layers as 3D
       // Slicer's are (the bone surface filter takes one).
       this->FileFormat = "DICOM SEG";
-      std::vector<lkvtk::DICOMSegment> found;
       if (!lkvtk::readDICOMSegmentation(
-            series[static_cast<std::size_t>(chosen)], volume, this->PatientMatrix, found, error, this))
+            series[static_cast<std::size_t>(chosen)], volume, this->PatientMatrix, segments, error, this))
       {
         vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
         return false;
-      }
-      for (const lkvtk::DICOMSegment& one : found)
-      {
-        Segment seg;
-        seg.name = one.name;
-        seg.labelValue = one.number;
-        seg.layer = one.layer;
-        segments.push_back(seg);
       }
       this->OrientationKnown = true;
       image = volume;
@@ -1074,7 +1060,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     for (const Segment& seg : segments)
     {
       names->InsertNextValue(seg.name);
-      values->InsertNextValue(seg.labelValue);
+      values->InsertNextValue(seg.label);
       layers->InsertNextValue(seg.layer);
     }
     this->Volume->GetFieldData()->AddArray(names);
