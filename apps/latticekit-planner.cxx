@@ -288,7 +288,9 @@ int main(int argc, char* argv[])
               << (bone->GetTreatedAsLabelMap() ? "" : " HU") << ", ";
     if (bone->GetEffectiveLabel() > 0)
       std::cout << "label " << bone->GetEffectiveLabel()
-                << (used.labelName.empty() ? std::string() : " (segment '" + used.labelName + "')") << ", ";
+                << (*bone->GetEffectiveSegmentName() ? " (segment '" + std::string(bone->GetEffectiveSegmentName()) + "')"
+                                                      : std::string())
+                << ", ";
     if (used.cropped)
       std::cout << "inside the box x " << used.crop[0] << " to " << used.crop[1] << ", y " << used.crop[2] << " to "
                 << used.crop[3] << ", z " << used.crop[4] << " to " << used.crop[5] << ", ";

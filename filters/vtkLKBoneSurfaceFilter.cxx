@@ -332,8 +332,11 @@ int vtkLKBoneSurfaceFilter::RequestData(
   // One label of several: a 0/1 label map of it (with the input's field
   // data, where the reader's patient matrix is). A layered segmentation's
   // segment is a label value in its layer's component.
-  int label = this->Label;
-  int layer = 0;
+  // The segment taken, by its name or by its label value (unique in a
+  // single layer; in several, each layer of a 3D Slicer segmentation numbers
+  // its segments from 1, while a DICOM SEG's numbers are its own, so a value
+  // names a segment only when one segment has it).
+  const Segment* chosen = nullptr;
   if (this->LabelName && *this->LabelName)
   {
     const std::string wanted = this->LabelName;
@@ -353,36 +356,41 @@ int vtkLKBoneSurfaceFilter::RequestData(
                     << ".");
       return 0;
     }
-    label = found->label;
-    layer = found->layer;
+    chosen = &*found;
   }
-  else if (layered)
+  else if (this->Label > 0 || layered)
   {
-    // Each layer of a 3D Slicer segmentation numbers its segments from 1 (a
-    // DICOM SEG's numbers are its own): a value names a segment only when
-    // one segment has it.
-    const auto count = std::count_if(
-      segments.begin(), segments.end(), [&](const Segment& seg) { return label > 0 && seg.label == label; });
-    if (count != 1)
+    std::vector<const Segment*> withLabel;
+    for (const Segment& seg : segments)
+      if (this->Label > 0 && seg.label == this->Label)
+        withLabel.push_back(&seg);
+    if (layered && withLabel.size() != 1)
     {
+      const std::string label = std::to_string(this->Label);
       const std::string byName = "by its name (LabelName, --label NAME)";
       const std::string byEither = byName + " or by a label value only it has (Label, --label N)";
       vtkErrorMacro("The input is a segmentation whose segments overlap, in " << components << " layers; "
-                    << (label == 0 ? "choose one segment " + byEither
-                                   : count == 0 ? "no segment has label " + std::to_string(label) + "; choose one " + byEither
-                                                : std::to_string(count) + " segments have label " +
-                                                    std::to_string(label) + "; choose one " + byName)
+                    << (this->Label == 0 ? "choose one segment " + byEither
+                          : withLabel.empty() ? "no segment has label " + label + "; choose one " + byEither
+                                              : std::to_string(withLabel.size()) + " segments have label " + label +
+                                                "; choose one " + byName)
                     << ". Its segments are " << segmentNames(segments) << ".");
       return 0;
     }
-    layer = std::find_if(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.label == label; })
-              ->layer;
+    if (!withLabel.empty())
+      chosen = withLabel.front();
   }
+  if (chosen && chosen->layer >= components) // field data that does not fit the volume (made by hand)
+  {
+    vtkErrorMacro("Segment '" << chosen->name << "' is in layer " << chosen->layer << ", but the volume has "
+                              << components << " component" << (components == 1 ? "" : "s") << ".");
+    return 0;
+  }
+  const int label = chosen ? chosen->label : this->Label;
+  const int layer = chosen ? chosen->layer : 0;
   this->EffectiveLabel = label;
-  const auto taken =
-    std::find_if(segments.begin(), segments.end(), [&](const Segment& seg) { return seg.label == label && seg.layer == layer; });
-  if (label > 0 && taken != segments.end())
-    this->EffectiveSegmentName = taken->name;
+  if (chosen)
+    this->EffectiveSegmentName = chosen->name;
   vtkNew<vtkImageData> oneLabel;
   if (label > 0)
   {

@@ -807,6 +807,23 @@ TEST(BoneSurface, OverlappingSegmentsAreTakenFromTheirLayers)
     EXPECT_EQ(s->errors, 1);
     EXPECT_EQ(s->mesh->GetNumberOfPoints(), 0);
   }
+
+  // Field data made by hand that puts a segment in a layer the volume does
+  // not have: an error, not a read beyond the voxels' values.
+  vtkNew<vtkImageData> one;
+  one->SetDimensions(volume->GetDimensions());
+  one->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  one->GetPointData()->GetScalars()->Fill(1.0);
+  one->GetFieldData()->ShallowCopy(volume->GetFieldData());
+  vtkNew<vtkLKBoneSurfaceFilter> beyond;
+  lktest::ErrorRecorder beyondErrors(beyond);
+  beyond->SetInputData(one);
+  beyond->SetLabelName("tumour");
+  beyond->Update();
+  EXPECT_EQ(beyondErrors.errors, 1);
+  EXPECT_NE(beyondErrors.messages.find("Segment 'tumour' is in layer 1, but the volume has 1 component."),
+    std::string::npos)
+    << beyondErrors.messages;
 }
 
 // 3D Slicer 4.10 and older saved each segment as a 0/1 map in a layer of
