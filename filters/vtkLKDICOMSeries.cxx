@@ -34,58 +34,68 @@
 namespace lkvtk
 {
 
+ErrorCatcher::ErrorCatcher(vtkObject* object)
+  : observed(object)
+{
+  command->SetClientData(this);
+  command->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* self = static_cast<ErrorCatcher*>(clientData);
+    if (callData)
+    {
+      if (!self->messages.empty())
+      {
+        self->messages += "; ";
+      }
+      std::string m = static_cast<const char*>(callData);
+      while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+      {
+        m.pop_back();
+      }
+      self->messages += m;
+    }
+  });
+  tag = object->AddObserver(vtkCommand::ErrorEvent, command);
+}
+
+ErrorCatcher::~ErrorCatcher()
+{
+  observed->RemoveObserver(tag);
+}
+
+bool sliceFrame(const double iop[6], SliceFrame& frame)
+{
+  V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
+  const double rn = std::sqrt(dot(r, r));
+  if (!(rn > 0.5))
+    return false;
+  for (double& v : r)
+    v /= rn;
+  const double rc = dot(r, c);
+  for (std::size_t a = 0; a < 3; ++a)
+    c[a] -= rc * r[a];
+  const double cn = std::sqrt(dot(c, c));
+  if (!(cn > 0.5))
+    return false;
+  for (double& v : c)
+    v /= cn;
+  frame = { r, c, cross(r, c) };
+  return true;
+}
+
+void setPatientMatrix(vtkMatrix4x4* m, const SliceFrame& frame, const V3& origin)
+{
+  m->Identity();
+  for (std::size_t row = 0; row < 3; ++row)
+  {
+    m->SetElement(static_cast<int>(row), 0, frame.r[row]);
+    m->SetElement(static_cast<int>(row), 1, frame.c[row]);
+    m->SetElement(static_cast<int>(row), 2, frame.n[row]);
+    m->SetElement(static_cast<int>(row), 3, origin[row]);
+  }
+}
+
 namespace
 {
-using V3 = std::array<double, 3>;
-
-double dot(const V3& a, const V3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-V3 cross(const V3& a, const V3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-V3 sub(const V3& a, const V3& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-
-/// Collects the messages of VTK errors raised by an object while it lives
-/// (the object may outlive it: the observer goes with it).
-struct ErrorCatcher
-{
-  std::string messages;
-  vtkNew<vtkCallbackCommand> command;
-  vtkObject* observed;
-  unsigned long tag;
-  explicit ErrorCatcher(vtkObject* object)
-    : observed(object)
-  {
-    command->SetClientData(this);
-    command->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-      auto* self = static_cast<ErrorCatcher*>(clientData);
-      if (callData)
-      {
-        if (!self->messages.empty())
-        {
-          self->messages += "; ";
-        }
-        std::string m = static_cast<const char*>(callData);
-        while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
-        {
-          m.pop_back();
-        }
-        self->messages += m;
-      }
-    });
-    tag = object->AddObserver(vtkCommand::ErrorEvent, command);
-  }
-  ~ErrorCatcher() { observed->RemoveObserver(tag); }
-  ErrorCatcher(const ErrorCatcher&) = delete;
-  ErrorCatcher& operator=(const ErrorCatcher&) = delete;
-};
-
 /// vtkDICOMReader whose compressed slices (JPEG, JPEG-LS, JPEG 2000, which
 /// it hands to GDCM) fail loudly. vtkDICOMReader ignores whether GDCM decoded
 /// the pixel data: a damaged slice that GDCM gives up on leaves the buffer as
@@ -150,47 +160,6 @@ bool readFiles(CheckedDICOMReader* reader, const std::vector<std::string>& files
   return true;
 }
 
-/// The slice frame of an ImageOrientationPatient: the rows' direction r, the
-/// columns' c and their cross product n. Direction cosines are stored rounded
-/// (often to 6 decimals): they are made orthonormal (Gram-Schmidt) so that
-/// the patient matrix is a rotation. False when either is degenerate.
-struct SliceFrame
-{
-  V3 r, c, n;
-};
-
-bool sliceFrame(const double iop[6], SliceFrame& frame)
-{
-  V3 r{ iop[0], iop[1], iop[2] }, c{ iop[3], iop[4], iop[5] };
-  const double rn = std::sqrt(dot(r, r));
-  if (!(rn > 0.5))
-    return false;
-  for (double& v : r)
-    v /= rn;
-  const double rc = dot(r, c);
-  for (std::size_t a = 0; a < 3; ++a)
-    c[a] -= rc * r[a];
-  const double cn = std::sqrt(dot(c, c));
-  if (!(cn > 0.5))
-    return false;
-  for (double& v : c)
-    v /= cn;
-  frame = { r, c, cross(r, c) };
-  return true;
-}
-
-/// Data coordinates on the frame's axes, from `origin`, to patient (LPS) mm.
-void setPatientMatrix(vtkMatrix4x4* m, const SliceFrame& frame, const V3& origin)
-{
-  m->Identity();
-  for (std::size_t row = 0; row < 3; ++row)
-  {
-    m->SetElement(static_cast<int>(row), 0, frame.r[row]);
-    m->SetElement(static_cast<int>(row), 1, frame.c[row]);
-    m->SetElement(static_cast<int>(row), 2, frame.n[row]);
-    m->SetElement(static_cast<int>(row), 3, origin[row]);
-  }
-}
 } // namespace
 
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
@@ -736,29 +705,38 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
     }
   }
 
-  output->Initialize();
-  output->SetDimensions(dims[0], dims[1], nz);
-  output->SetSpacing(dx, dy, h);
-  output->SetOrigin(0.0, 0.0, 0.0);
-  const int components = static_cast<int>(layers.size());
-  output->AllocateScalars(largest <= 255 ? VTK_UNSIGNED_CHAR : VTK_UNSIGNED_SHORT, components);
-  output->GetPointData()->GetScalars()->SetName("Segments");
-  auto fill = [&](auto* out) {
-    for (vtkIdType v = 0; v < voxels; ++v)
-      for (int l = 0; l < components; ++l)
-        out[v * components + l] =
-          static_cast<std::remove_pointer_t<decltype(out)>>(layers[static_cast<std::size_t>(l)][static_cast<std::size_t>(v)]);
-  };
-  if (largest <= 255)
-    fill(static_cast<unsigned char*>(output->GetScalarPointer()));
-  else
-    fill(static_cast<unsigned short*>(output->GetScalarPointer()));
+  const int gridDims[3] = { dims[0], dims[1], nz };
+  const double spacing[3] = { dx, dy, h };
+  setLayers(output, gridDims, spacing, layers, largest);
 
   V3 corner; // the first frame, moved along the normal down to the grid's first slice
   for (std::size_t a = 0; a < 3; ++a)
     corner[a] = positions[0][a] + (z0 - zs[0]) * n[a];
   setPatientMatrix(patientMatrix, frame, corner);
   return true;
+}
+
+void setLayers(vtkImageData* output, const int dims[3], const double spacing[3],
+  const std::vector<std::vector<unsigned short>>& layers, int largestLabel)
+{
+  output->Initialize();
+  output->SetDimensions(dims[0], dims[1], dims[2]);
+  output->SetSpacing(spacing[0], spacing[1], spacing[2]);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  const int components = static_cast<int>(layers.size());
+  output->AllocateScalars(largestLabel <= 255 ? VTK_UNSIGNED_CHAR : VTK_UNSIGNED_SHORT, components);
+  output->GetPointData()->GetScalars()->SetName("Segments");
+  const vtkIdType voxels = static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2];
+  auto fill = [&](auto* out) {
+    for (vtkIdType v = 0; v < voxels; ++v)
+      for (int l = 0; l < components; ++l)
+        out[v * components + l] =
+          static_cast<std::remove_pointer_t<decltype(out)>>(layers[static_cast<std::size_t>(l)][static_cast<std::size_t>(v)]);
+  };
+  if (largestLabel <= 255)
+    fill(static_cast<unsigned char*>(output->GetScalarPointer()));
+  else
+    fill(static_cast<unsigned short*>(output->GetScalarPointer()));
 }
 
 } // namespace lkvtk

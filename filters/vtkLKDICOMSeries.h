@@ -6,6 +6,9 @@
 /// from every slice's own ImagePositionPatient, so that gantry tilt (a shear)
 /// and variable slice spacing are resolved by resampling rather than ignored.
 
+#include <vtkCallbackCommand.h>
+#include <vtkNew.h>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -16,6 +19,49 @@ class vtkMatrix4x4;
 
 namespace lkvtk
 {
+
+using V3 = std::array<double, 3>;
+inline double dot(const V3& a, const V3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline V3 cross(const V3& a, const V3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+inline V3 sub(const V3& a, const V3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+/// The slice frame of an ImageOrientationPatient: the rows' direction r, the
+/// columns' c and their cross product n.
+struct SliceFrame
+{
+  V3 r, c, n;
+};
+
+/// Direction cosines are stored rounded (often to 6 decimals): they are made
+/// orthonormal (Gram-Schmidt) so that the patient matrix is a rotation.
+/// False when either is degenerate.
+bool sliceFrame(const double iop[6], SliceFrame& frame);
+
+/// Data coordinates on the frame's axes, from `origin`, to patient (LPS) mm.
+void setPatientMatrix(vtkMatrix4x4* m, const SliceFrame& frame, const V3& origin);
+
+/// Collects the messages of VTK errors raised by an object while it lives
+/// (the object may outlive it: the observer goes with it).
+struct ErrorCatcher
+{
+  std::string messages;
+  vtkNew<vtkCallbackCommand> command;
+  vtkObject* observed;
+  unsigned long tag;
+  explicit ErrorCatcher(vtkObject* object);
+  ~ErrorCatcher();
+  ErrorCatcher(const ErrorCatcher&) = delete;
+  ErrorCatcher& operator=(const ErrorCatcher&) = delete;
+};
 
 struct DICOMSeriesInfo
 {
@@ -96,5 +142,39 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
 /// patientMatrix maps the output's data coordinates to patient (LPS) mm.
 bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, vtkMatrix4x4* patientMatrix,
   std::vector<Segment>& segments, std::string& error, vtkAlgorithm* progress = nullptr);
+
+/// Makes `output` a label volume of `dims` voxels of `spacing` mm, one
+/// component per layer (each `dims` voxels, x fastest): unsigned char when no
+/// label exceeds 255, else unsigned short; its scalars are named "Segments".
+void setLayers(vtkImageData* output, const int dims[3], const double spacing[3],
+  const std::vector<std::vector<unsigned short>>& layers, int largestLabel);
+
+/// The SOP class of an RT structure set (RTSTRUCT), as radiotherapy planning
+/// systems store the organs they contour: each ROI a stack of closed planar
+/// contours in patient coordinates, without pixel data.
+constexpr const char* kRTStructureSetStorage = "1.2.840.10008.5.1.4.1.1.481.3";
+
+/// Whether `file` is a DICOM RT structure set (its header is read).
+bool isDICOMStructureSet(const std::string& file);
+
+/// Reads an RT structure set (one file) into a label volume: each ROI with
+/// closed planar contours is a segment, its label its ROINumber (or its
+/// place in the list, 1 up, when the numbers do not fit 1 to 65535), its
+/// name its ROIName; voxels whose centre lies inside a contour of its slice
+/// are the ROI's (even-odd, so a contour inside another is a hole). ROIs
+/// that overlap go to layers of their own, as a DICOM SEG's.
+///
+/// The grid: when `imageSeries` (the image series of the file's folder)
+/// holds the series the structure set references, its slice frame and pixel
+/// lattice; otherwise the contours' own frame and 1 mm pixels (or the slice
+/// spacing, when finer). Slices lie on the contours' planes, spaced by the
+/// smallest gap between them, with two empty slices and pixels beyond the
+/// contours on each side. Contours of other types (POINT, OPEN_PLANAR) are
+/// not read. `notes` says what the caller should warn about: ROIs without
+/// closed contours, the grid guessed, planes moved onto it, slices an ROI
+/// skips.
+bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
+  vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,
+  std::vector<std::string>& notes, std::string& error, vtkAlgorithm* progress = nullptr);
 
 } // namespace lkvtk

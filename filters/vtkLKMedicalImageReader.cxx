@@ -874,6 +874,29 @@ bool vtkLKMedicalImageReader::ReadVolume()
                           << "orientation is unknown, so data coordinates are used as they are.");
     }
   }
+  else if (!isFolder && lkvtk::isDICOMStructureSet(path))
+  {
+    // An RT structure set: its ROIs' contours filled into a label volume, on
+    // the pixel lattice of the CT they were drawn on when it lies beside them.
+    this->FileFormat = "DICOM RTSTRUCT";
+    const std::string folder = vtksys::SystemTools::GetFilenamePath(path);
+    std::vector<lkvtk::DICOMSeriesInfo> series;
+    std::string error;
+    // No image beside it is no error: the contours make a grid of their own.
+    lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error, this, 1);
+    vtkNew<vtkImageData> volume;
+    std::vector<std::string> notes;
+    if (!lkvtk::readDICOMStructureSet(path, series, volume, this->PatientMatrix, segments, notes, error, this))
+    {
+      vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
+      return false;
+    }
+    for (const std::string& note : notes)
+      vtkWarningMacro("'" << path << "': " << note << ".");
+    this->OrientationKnown = true;
+    image = volume;
+    image->GetSpacing(spacing);
+  }
   else
   {
     this->FileFormat = "DICOM";

@@ -3,8 +3,8 @@
  * @brief   One front end for CT volumes: DICOM series folders, NRRD, MetaImage, NIfTI.
  *
  * FileName may be a folder (DICOM series), a DICOM file (its folder is scanned
- * and the series holding the file is read), or a .nrrd/.nhdr, .mha/.mhd,
- * .nii/.nii.gz file.
+ * and the series holding the file is read; an RT structure set, see below),
+ * or a .nrrd/.nhdr, .mha/.mhd, .nii/.nii.gz file.
  *
  * The output is a vtkImageData with origin (0,0,0) and the voxel spacing in
  * millimetres; GetPatientMatrix() maps its data coordinates to patient
@@ -39,6 +39,20 @@
  * the output's field data then holds "SegmentNames" (strings),
  * "SegmentLabelValues" and "SegmentLayers" (ints), which
  * vtkLKBoneSurfaceFilter's Label and LabelName look up.
+ *
+ * A DICOM RT structure set (RTSTRUCT: FileName is its file), as
+ * radiotherapy planning systems export the organs they contour (the
+ * mandible among them), becomes a label volume: each ROI's closed planar
+ * contours are filled slice by slice (a voxel is the ROI's when its centre
+ * lies inside; a contour inside another is a hole), each ROI a segment named
+ * by its ROIName with its ROINumber as label, in field data as a
+ * .seg.nrrd's. The grid lies in the contours' planes, spaced by the smallest
+ * gap between them; in plane it is the pixel lattice of the CT the structure
+ * set references when that series lies in the same folder, otherwise 1 mm
+ * pixels (or the slice gap, when finer) in the contours' own frame, with a
+ * warning. ROIs without closed contours (points, open lines), planes moved
+ * onto the grid and slices an ROI skips are warned of. A folder holding a
+ * CT and its structure set reads the CT: give the structure set's file.
  *
  * The output has one scalar component, except for a segmentation whose
  * segments overlap: 3D Slicer stores it in layers, each a label map, and the
@@ -93,7 +107,8 @@ public:
   /// vtkLKBoneSurfaceFilter passes on to its surface; otherwise the patient
   /// matrix only scales (and shifts) the data coordinates.
   bool GetOrientationKnown() const { return this->OrientationKnown; }
-  /// "DICOM", "DICOM SEG", "NRRD", "MetaImage" or "NIfTI" after an update.
+  /// "DICOM", "DICOM SEG", "DICOM RTSTRUCT", "NRRD", "MetaImage" or "NIfTI"
+  /// after an update.
   const char* GetFileFormat() { return this->FileFormat.c_str(); }
 
   ///@{

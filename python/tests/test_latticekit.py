@@ -171,6 +171,77 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(bone.GetEffectiveSegmentName(), "maxilla")
         self.assertGreater(bone.GetOutput().GetBounds()[0], 0.0)
 
+    def test_an_organ_of_a_radiotherapy_structure_set(self):
+        """A DICOM RT structure set written with vtkDICOM's own Python
+        wrappers (a ball contoured on 9 axial slices, and an isocentre
+        point) is read as segments; the ball is taken by its ROI name."""
+        import math
+        import vtkdicom
+        import latticekit
+
+        def tag(name):
+            value = int(getattr(vtkdicom.DC, name))
+            return vtkdicom.vtkDICOMTag(value >> 16, value & 0xFFFF)
+
+        meta = vtkdicom.vtkDICOMMetaData()
+        meta.Set(tag("SOPClassUID"), "1.2.840.10008.5.1.4.1.1.481.3")
+        meta.Set(tag("Modality"), "RTSTRUCT")
+        listed = vtkdicom.vtkDICOMSequence()
+        contoured = vtkdicom.vtkDICOMSequence()
+        for number, name, kind in ((4, "Mandible", "CLOSED_PLANAR"), (7, "Isocenter", "POINT")):
+            roi = vtkdicom.vtkDICOMItem()
+            roi.Set(tag("ROINumber"), number)
+            roi.Set(tag("ROIName"), name)
+            listed.AddItem(roi)
+            contours = vtkdicom.vtkDICOMSequence()
+            for k in range(-4, 5) if kind == "CLOSED_PLANAR" else (0,):
+                z = 2.5 * k
+                r = math.sqrt(12.0 ** 2 - z * z)
+                count = 48 if kind == "CLOSED_PLANAR" else 1
+                points = []
+                for i in range(count):
+                    a = 2.0 * math.pi * i / count
+                    points += [10.0 + r * math.cos(a), -20.0 + r * math.sin(a), 30.0 + z]
+                contour = vtkdicom.vtkDICOMItem()
+                contour.Set(tag("ContourGeometricType"), kind)
+                contour.Set(tag("NumberOfContourPoints"), count)
+                contour.Set(tag("ContourData"), "\\".join("%.4f" % v for v in points))
+                contours.AddItem(contour)
+            item = vtkdicom.vtkDICOMItem()
+            item.Set(tag("ReferencedROINumber"), number)
+            item.Set(tag("ContourSequence"), contours)
+            contoured.AddItem(item)
+        meta.Set(tag("StructureSetROISequence"), listed)
+        meta.Set(tag("ROIContourSequence"), contoured)
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "rtstruct.dcm")
+            compiler = vtkdicom.vtkDICOMCompiler()
+            compiler.SetFileName(path)
+            compiler.SetMetaData(meta)
+            compiler.WriteHeader()
+            compiler.Close()
+            self.assertEqual(compiler.GetErrorCode(), 0)
+
+            reader = latticekit.vtkLKMedicalImageReader()
+            reader.SetFileName(path)
+            warnings = []
+            reader.AddObserver("WarningEvent", lambda caller, event: warnings.append(event))
+            bone = latticekit.vtkLKBoneSurfaceFilter()
+            bone.SetInputConnection(reader.GetOutputPort())
+            bone.SetLabelName("Mandible")
+            bone.Update()
+        self.assertEqual(reader.GetFileFormat(), "DICOM RTSTRUCT")
+        self.assertEqual(len(warnings), 2)  # no CT beside it; the isocentre is a point
+        names = reader.GetOutput().GetFieldData().GetAbstractArray("SegmentNames")
+        self.assertEqual([names.GetValue(i) for i in range(names.GetNumberOfValues())], ["Mandible"])
+        self.assertEqual(bone.GetEffectiveLabel(), 4)
+        b = bone.GetOutput().GetBounds()
+        for centre, expected in zip((0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])),
+                                    (10.0, -20.0, 30.0)):
+            self.assertAlmostEqual(centre, expected, delta=0.6)
+        self.assertAlmostEqual(b[1] - b[0], 24.0, delta=2.0)
+        self.assertEqual(bone.GetOutput().GetFieldData().GetArray("BoundaryEdges").GetValue(0), 0)
+
     def test_close_at_border_closes_a_scan_that_ends_in_the_bone(self):
         """A scan that ends inside the bone (here the label map's slices cut
         to the lower part of the mandible) gives an open surface there;

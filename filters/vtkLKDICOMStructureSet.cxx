@@ -1,0 +1,571 @@
+/// \file vtkLKDICOMStructureSet.cxx
+/// Private: a DICOM RT structure set (RTSTRUCT) read into a label volume.
+/// Radiotherapy planning systems store the organs they contour (the
+/// mandible is an organ at risk of every head and neck plan) as stacks of
+/// closed polygons in patient coordinates, one per slice, without pixels.
+/// Each ROI's polygons are filled slice by slice by VTK's
+/// vtkPolyDataToImageStencil (even-odd: a polygon inside another is a hole)
+/// on a grid in the polygons' planes; ROIs that overlap (the body and the
+/// organs in it) go to layers of their own.
+
+#include "vtkLKDICOMSeries.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkDICOMItem.h>
+#include <vtkDICOMMetaData.h>
+#include <vtkDICOMParser.h>
+#include <vtkDICOMSequence.h>
+#include <vtkDICOMValue.h>
+#include <vtkImageData.h>
+#include <vtkImageStencilData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataToImageStencil.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace lkvtk
+{
+
+namespace
+{
+
+/// Two contour planes closer than this (mm) are one: ContourData is stored
+/// as decimal strings, rounded far below it, and no scan has slices this close.
+constexpr double kPlaneTolerance = 0.05;
+
+/// Empty slices and pixels around the contours, so that the surface closes.
+constexpr int kPad = 2;
+
+struct Contour
+{
+  std::vector<V3> points; // patient (LPS) mm
+  double w = 0.0;         // along the frame's normal
+  int slice = 0;
+};
+
+struct ROI
+{
+  int number = 0;
+  std::string name;
+  std::vector<Contour> contours; // closed planar ones
+  std::set<std::string> otherTypes;
+};
+
+bool parse(const std::string& file, vtkDICOMMetaData* meta, std::string& error)
+{
+  vtkNew<vtkDICOMParser> parser;
+  ErrorCatcher catcher(parser);
+  parser->SetFileName(file.c_str());
+  parser->SetMetaData(meta);
+  parser->Update();
+  if (parser->GetErrorCode() != 0 || !catcher.messages.empty())
+  {
+    error = "cannot read the DICOM file '" + file + "'" + (catcher.messages.empty() ? "" : ": " + catcher.messages);
+    return false;
+  }
+  return true;
+}
+
+std::string mm(double v)
+{
+  std::ostringstream os;
+  os << v << " mm";
+  return os.str();
+}
+
+/// The numbers of a decimal string value (DS: "1.5\\-2\\+3e1"), each read
+/// as written: vtkDICOMValue reads what is not a number ("nan", "1,5",
+/// "") as 0, which would put a contour's point at the patient origin.
+bool decimals(const std::string& text, std::vector<double>& out)
+{
+  out.clear();
+  std::size_t start = 0;
+  while (start <= text.size())
+  {
+    std::size_t end = text.find('\\', start);
+    if (end == std::string::npos)
+      end = text.size();
+    std::size_t a = start, b = end;
+    while (a < b && text[a] == ' ')
+      ++a;
+    while (b > a && text[b - 1] == ' ')
+      --b;
+    if (a < b && text[a] == '+')
+      ++a;
+    double v = 0.0;
+    const auto [ptr, ec] = std::from_chars(text.data() + a, text.data() + b, v);
+    if (a == b || ec != std::errc() || ptr != text.data() + b || !std::isfinite(v))
+      return false;
+    out.push_back(v);
+    start = end + 1;
+  }
+  return true;
+}
+
+/// The ROIs of the structure set, each with its closed planar contours.
+bool readROIs(vtkDICOMMetaData* meta, std::vector<ROI>& rois, int& skippedShort, std::string& error)
+{
+  std::map<int, std::size_t> byNumber;
+  const vtkDICOMValue& list = meta->Get(DC::StructureSetROISequence);
+  for (unsigned int i = 0; i < list.GetNumberOfValues(); ++i)
+  {
+    const vtkDICOMItem& item = list.GetSequenceData()[i];
+    ROI roi;
+    roi.number = item.Get(DC::ROINumber).AsInt();
+    roi.name = item.Get(DC::ROIName).AsString();
+    if (roi.name.empty())
+      roi.name = "ROI " + std::to_string(roi.number);
+    if (byNumber.count(roi.number))
+    {
+      error = "two ROIs of the RT structure set have the ROINumber " + std::to_string(roi.number);
+      return false;
+    }
+    byNumber[roi.number] = rois.size();
+    rois.push_back(roi);
+  }
+  if (rois.empty())
+  {
+    error = "the RT structure set lists no ROIs (StructureSetROISequence)";
+    return false;
+  }
+  const vtkDICOMValue& contoured = meta->Get(DC::ROIContourSequence);
+  for (unsigned int i = 0; i < contoured.GetNumberOfValues(); ++i)
+  {
+    const vtkDICOMItem& item = contoured.GetSequenceData()[i];
+    const int number = item.Get(DC::ReferencedROINumber).AsInt();
+    const auto found = byNumber.find(number);
+    if (found == byNumber.end())
+    {
+      error = "the RT structure set has contours of ROI " + std::to_string(number) +
+        ", which its StructureSetROISequence does not list";
+      return false;
+    }
+    ROI& roi = rois[found->second];
+    const vtkDICOMValue& contours = item.Get(DC::ContourSequence);
+    for (unsigned int c = 0; c < contours.GetNumberOfValues(); ++c)
+    {
+      const vtkDICOMItem& contour = contours.GetSequenceData()[c];
+      const std::string type = contour.Get(DC::ContourGeometricType).AsString();
+      if (type != "CLOSED_PLANAR" && type != "CLOSEDPLANAR_XOR")
+      {
+        roi.otherTypes.insert(type.empty() ? std::string("no type") : type);
+        continue;
+      }
+      const vtkDICOMValue& data = contour.Get(DC::ContourData);
+      const unsigned int values = data.GetNumberOfValues();
+      const vtkDICOMValue& count = contour.Get(DC::NumberOfContourPoints);
+      if (values % 3 != 0 || (count.IsValid() && static_cast<unsigned int>(count.AsInt()) * 3 != values))
+      {
+        error = "a contour of ROI '" + roi.name + "' has " + std::to_string(values) +
+          " ContourData values, which is not three per point" +
+          (count.IsValid() ? " of its NumberOfContourPoints (" + std::to_string(count.AsInt()) + ")" : "");
+        return false;
+      }
+      if (values < 9)
+      {
+        ++skippedShort; // a point or a segment encloses nothing
+        continue;
+      }
+      std::vector<double> xyz;
+      if (!decimals(data.AsString(), xyz) || xyz.size() != values)
+      {
+        error = "a contour of ROI '" + roi.name + "' has a coordinate that is not a number";
+        return false;
+      }
+      Contour one;
+      for (unsigned int p = 0; p < values; p += 3)
+        one.points.push_back({ xyz[p], xyz[p + 1], xyz[p + 2] });
+      roi.contours.push_back(std::move(one));
+    }
+  }
+  return true;
+}
+
+/// The normal of a polygon (Newell), as long as twice its area.
+V3 areaNormal(const std::vector<V3>& points)
+{
+  V3 n{ 0.0, 0.0, 0.0 };
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const V3& a = points[i];
+    const V3& b = points[(i + 1) % points.size()];
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  return n;
+}
+
+/// A frame whose normal is that of the largest contour (made to point along
+/// the positive side of its main axis), its rows along the patient axis most
+/// across it: axial contours get the frame of an axial CT.
+bool contourFrame(const std::vector<ROI>& rois, SliceFrame& frame)
+{
+  V3 best{ 0.0, 0.0, 0.0 };
+  for (const ROI& roi : rois)
+    for (const Contour& c : roi.contours)
+    {
+      const V3 n = areaNormal(c.points);
+      if (dot(n, n) > dot(best, best))
+        best = n;
+    }
+  const double length = std::sqrt(dot(best, best));
+  if (!(length > 1e-9))
+    return false;
+  V3 n{ best[0] / length, best[1] / length, best[2] / length };
+  const std::size_t main = static_cast<std::size_t>(
+    std::max_element(n.begin(), n.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }) - n.begin());
+  if (n[main] < 0.0)
+    n = { -n[0], -n[1], -n[2] };
+  const std::size_t across = static_cast<std::size_t>(
+    std::min_element(n.begin(), n.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }) - n.begin());
+  V3 r{ 0.0, 0.0, 0.0 };
+  r[across] = 1.0;
+  const double along = dot(r, n);
+  for (std::size_t a = 0; a < 3; ++a)
+    r[a] -= along * n[a];
+  const double rl = std::sqrt(dot(r, r));
+  for (double& v : r)
+    v /= rl;
+  frame = { r, cross(n, r), n };
+  return true;
+}
+
+/// Whether every contour lies in a plane of the frame; sets each one's w.
+bool planarIn(const SliceFrame& frame, std::vector<ROI>& rois)
+{
+  for (ROI& roi : rois)
+    for (Contour& c : roi.contours)
+    {
+      double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+      for (const V3& p : c.points)
+      {
+        const double w = dot(frame.n, p);
+        lo = std::min(lo, w);
+        hi = std::max(hi, w);
+      }
+      if (hi - lo > kPlaneTolerance)
+        return false;
+      c.w = 0.5 * (lo + hi);
+    }
+  return true;
+}
+
+/// The first file of the image series the structure set references, or "".
+std::string referencedImageFile(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& imageSeries)
+{
+  const vtkDICOMValue& frames = meta->Get(DC::ReferencedFrameOfReferenceSequence);
+  for (unsigned int f = 0; f < frames.GetNumberOfValues(); ++f)
+  {
+    const vtkDICOMValue& studies = frames.GetSequenceData()[f].Get(DC::RTReferencedStudySequence);
+    for (unsigned int s = 0; s < studies.GetNumberOfValues(); ++s)
+    {
+      const vtkDICOMValue& series = studies.GetSequenceData()[s].Get(DC::RTReferencedSeriesSequence);
+      for (unsigned int i = 0; i < series.GetNumberOfValues(); ++i)
+      {
+        const std::string uid = series.GetSequenceData()[i].Get(DC::SeriesInstanceUID).AsString();
+        for (const DICOMSeriesInfo& one : imageSeries)
+          if (!uid.empty() && one.uid == uid && !one.files.empty())
+            return one.files.front();
+      }
+    }
+  }
+  return "";
+}
+
+std::string referencedSeriesUID(vtkDICOMMetaData* meta)
+{
+  const vtkDICOMValue& frames = meta->Get(DC::ReferencedFrameOfReferenceSequence);
+  for (unsigned int f = 0; f < frames.GetNumberOfValues(); ++f)
+  {
+    const vtkDICOMValue& studies = frames.GetSequenceData()[f].Get(DC::RTReferencedStudySequence);
+    for (unsigned int s = 0; s < studies.GetNumberOfValues(); ++s)
+    {
+      const vtkDICOMValue& series = studies.GetSequenceData()[s].Get(DC::RTReferencedSeriesSequence);
+      if (series.GetNumberOfValues() > 0)
+        return series.GetSequenceData()[0].Get(DC::SeriesInstanceUID).AsString();
+    }
+  }
+  return "";
+}
+
+} // namespace
+
+bool isDICOMStructureSet(const std::string& file)
+{
+  // A file cut short still says what it is (its SOP class comes first):
+  // reading it then says what is wrong.
+  vtkNew<vtkDICOMMetaData> meta;
+  std::string error;
+  parse(file, meta, error);
+  return meta->Get(DC::SOPClassUID).AsString() == kRTStructureSetStorage;
+}
+
+bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
+  vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,
+  std::vector<std::string>& notes, std::string& error, vtkAlgorithm* progress)
+{
+  segments.clear();
+  notes.clear();
+  vtkNew<vtkDICOMMetaData> meta;
+  if (!parse(file, meta, error))
+    return false;
+  if (meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
+  {
+    error = "'" + file + "' is not an RT structure set";
+    return false;
+  }
+  std::vector<ROI> rois;
+  int skippedShort = 0;
+  if (!readROIs(meta, rois, skippedShort, error))
+    return false;
+  std::vector<std::string> without;
+  for (const ROI& roi : rois)
+    if (roi.contours.empty())
+    {
+      std::string types;
+      for (const std::string& t : roi.otherTypes)
+        types += (types.empty() ? "" : ", ") + t;
+      without.push_back("'" + roi.name + "'" + (types.empty() ? std::string(" (no contours)") : " (" + types + ")"));
+    }
+  rois.erase(std::remove_if(rois.begin(), rois.end(), [](const ROI& roi) { return roi.contours.empty(); }), rois.end());
+  if (rois.empty())
+  {
+    error = "no ROI of the RT structure set has closed planar contours";
+    if (!without.empty())
+    {
+      error += ":";
+      for (const std::string& w : without)
+        error += " " + w;
+    }
+    return false;
+  }
+  if (!without.empty())
+  {
+    std::string note = "ROIs without closed planar contours are not read:";
+    for (const std::string& w : without)
+      note += " " + w;
+    notes.push_back(note);
+  }
+  if (skippedShort > 0)
+    notes.push_back(std::to_string(skippedShort) + " contour" + (skippedShort == 1 ? " has" : "s have") +
+      " fewer than 3 points and " + (skippedShort == 1 ? "is" : "are") + " not read");
+
+  // The frame and the pixel lattice: the referenced CT's, when it is beside
+  // the structure set and its slices are parallel to the contours.
+  SliceFrame frame;
+  double dx = 0.0, dy = 0.0;
+  V3 lattice{ 0.0, 0.0, 0.0 }; // a pixel centre of the CT (or the patient origin)
+  bool fromImages = false;
+  const std::string imageFile = referencedImageFile(meta, imageSeries);
+  if (!imageFile.empty())
+  {
+    vtkNew<vtkDICOMMetaData> image;
+    std::string ignored;
+    double iop[6], ps[2], ipp[3];
+    const bool known = parse(imageFile, image, ignored) &&
+      image->Get(DC::ImageOrientationPatient).GetNumberOfValues() >= 6 &&
+      image->Get(DC::PixelSpacing).GetNumberOfValues() >= 2 &&
+      image->Get(DC::ImagePositionPatient).GetNumberOfValues() >= 3;
+    if (known)
+    {
+      image->Get(DC::ImageOrientationPatient).GetValues(iop, 6);
+      image->Get(DC::PixelSpacing).GetValues(ps, 2);
+      image->Get(DC::ImagePositionPatient).GetValues(ipp, 3);
+      if (sliceFrame(iop, frame) && ps[0] > 0.0 && ps[1] > 0.0 && planarIn(frame, rois))
+      {
+        fromImages = true;
+        dx = ps[1]; // PixelSpacing is (row spacing, column spacing)
+        dy = ps[0];
+        lattice = { ipp[0], ipp[1], ipp[2] };
+      }
+    }
+  }
+  if (!fromImages)
+  {
+    if (!contourFrame(rois, frame))
+    {
+      error = "the contours of the RT structure set enclose no area";
+      return false;
+    }
+    if (!planarIn(frame, rois))
+    {
+      error = "the contours of the RT structure set do not lie in parallel planes";
+      return false;
+    }
+  }
+
+  // The slices: the contours' planes, spaced by the smallest gap.
+  std::vector<double> planes;
+  for (const ROI& roi : rois)
+    for (const Contour& c : roi.contours)
+      planes.push_back(c.w);
+  std::sort(planes.begin(), planes.end());
+  std::vector<double> distinct{ planes.front() };
+  for (double w : planes)
+    if (w - distinct.back() > kPlaneTolerance)
+      distinct.push_back(w);
+  double h = 0.0;
+  for (std::size_t k = 1; k < distinct.size(); ++k)
+    h = h == 0.0 ? distinct[k] - distinct[k - 1] : std::min(h, distinct[k] - distinct[k - 1]);
+  if (!fromImages)
+  {
+    dx = dy = h > 0.0 ? std::min(1.0, h) : 1.0;
+    const std::string uid = referencedSeriesUID(meta);
+    notes.push_back(std::string("the image series the structure set was drawn on") +
+      (uid.empty() ? std::string("") : " (" + uid + ")") +
+      (imageFile.empty() ? " is not in its folder" : " lies across its contours") +
+      ": its ROIs are filled on a grid of their own, " + mm(dx) + " pixels" +
+      (h > 0.0 ? " and " + mm(h) + " slices" : std::string("")));
+  }
+  if (h == 0.0)
+    h = std::min(dx, dy); // one plane: a slab a pixel thick
+  const double z0 = distinct.front() - kPad * h;
+  double moved = 0.0;
+  int sliceCount = 0;
+  for (ROI& roi : rois)
+    for (Contour& c : roi.contours)
+    {
+      const double at = (c.w - z0) / h;
+      c.slice = static_cast<int>(std::lround(at));
+      moved = std::max(moved, std::abs(at - c.slice) * h);
+      sliceCount = std::max(sliceCount, c.slice + 1 + kPad);
+    }
+  if (moved > kPlaneTolerance)
+    notes.push_back("the contours' planes are not evenly spaced: some were moved up to " + mm(moved) +
+      " onto the slices of " + mm(h));
+
+  // The pixels: the contours' extent in the frame, on the CT's pixel lattice.
+  double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
+  double hi[2] = { std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest() };
+  for (const ROI& roi : rois)
+    for (const Contour& c : roi.contours)
+      for (const V3& p : c.points)
+      {
+        const V3 d = sub(p, lattice);
+        lo[0] = std::min(lo[0], dot(frame.r, d));
+        hi[0] = std::max(hi[0], dot(frame.r, d));
+        lo[1] = std::min(lo[1], dot(frame.c, d));
+        hi[1] = std::max(hi[1], dot(frame.c, d));
+      }
+  const double first[2] = { (std::floor(lo[0] / dx) - kPad) * dx, (std::floor(lo[1] / dy) - kPad) * dy };
+  const double nxd = std::ceil((hi[0] - first[0]) / dx) + kPad + 1, nyd = std::ceil((hi[1] - first[1]) / dy) + kPad + 1;
+  if (!(nxd * nyd * sliceCount <= 1.0e9))
+  {
+    error = "the contours of the RT structure set span " + mm(hi[0] - lo[0]) + " by " + mm(hi[1] - lo[1]) + " by " +
+      mm(distinct.back() - distinct.front()) + ": too large a volume at " + mm(dx) + " pixels and " + mm(h) + " slices";
+    return false;
+  }
+  const int dims[3] = { static_cast<int>(nxd), static_cast<int>(nyd), sliceCount };
+  const vtkIdType sliceSize = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const vtkIdType voxels = sliceSize * dims[2];
+
+  // Labels: the ROI numbers, unless one does not fit a label.
+  const bool numbered = std::all_of(
+    rois.begin(), rois.end(), [](const ROI& roi) { return roi.number >= 1 && roi.number <= 65535; });
+  if (!numbered)
+    notes.push_back("ROINumbers outside 1 to 65535: the ROIs are labelled 1 to " + std::to_string(rois.size()) +
+      " in their order instead");
+
+  // Each ROI filled by VTK, then put in the first layer it does not overlap.
+  std::vector<std::vector<unsigned short>> layers;
+  int largest = 0;
+  for (std::size_t i = 0; i < rois.size(); ++i)
+  {
+    if (progress)
+    {
+      progress->UpdateProgress(0.2 + 0.8 * static_cast<double>(i) / static_cast<double>(rois.size()));
+      if (progress->GetAbortExecute())
+        break;
+    }
+    ROI& roi = rois[i];
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    std::set<int> slices;
+    for (const Contour& c : roi.contours)
+    {
+      slices.insert(c.slice);
+      lines->InsertNextCell(static_cast<int>(c.points.size()) + 1);
+      const vtkIdType start = points->GetNumberOfPoints();
+      for (const V3& p : c.points)
+      {
+        const V3 d = sub(p, lattice);
+        lines->InsertCellPoint(
+          points->InsertNextPoint(dot(frame.r, d) - first[0], dot(frame.c, d) - first[1], c.slice * h));
+      }
+      lines->InsertCellPoint(start); // closed
+    }
+    const int skipped = (*slices.rbegin() - *slices.begin() + 1) - static_cast<int>(slices.size());
+    if (skipped > 0)
+      notes.push_back("ROI '" + roi.name + "' has no contour on " + std::to_string(skipped) + " of the slices between its first and last (" +
+        mm(h) + " apart): its surface has gaps there");
+    vtkNew<vtkPolyData> contours;
+    contours->SetPoints(points);
+    contours->SetLines(lines);
+    vtkNew<vtkPolyDataToImageStencil> fill;
+    fill->SetInputData(contours);
+    fill->SetOutputOrigin(0.0, 0.0, 0.0);
+    fill->SetOutputSpacing(dx, dy, h);
+    fill->SetOutputWholeExtent(0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1);
+    fill->Update();
+    vtkImageStencilData* stencil = fill->GetOutput();
+    const int label = numbered ? roi.number : static_cast<int>(i) + 1;
+    largest = std::max(largest, label);
+    auto runs = [&](auto&& visit) {
+      for (int z : slices)
+        for (int y = 0; y < dims[1]; ++y)
+        {
+          int iter = 0, r1 = 0, r2 = 0;
+          while (stencil->GetNextExtent(r1, r2, 0, dims[0] - 1, y, z, iter))
+            if (!visit((static_cast<vtkIdType>(z) * dims[1] + y) * dims[0], r1, r2))
+              return false;
+        }
+      return true;
+    };
+    std::size_t l = 0;
+    for (; l < layers.size(); ++l)
+    {
+      const std::vector<unsigned short>& layer = layers[l];
+      const bool fits = runs([&](vtkIdType row, int r1, int r2) {
+        return std::all_of(layer.begin() + row + r1, layer.begin() + row + r2 + 1, [](unsigned short v) { return v == 0; });
+      });
+      if (fits)
+        break;
+    }
+    if (l == layers.size())
+    {
+      if (static_cast<double>(voxels) * static_cast<double>(l + 1) > 2.0e9)
+      {
+        error = "the RT structure set's ROIs overlap in more layers than fit in memory";
+        return false;
+      }
+      layers.emplace_back(static_cast<std::size_t>(voxels), 0);
+    }
+    std::vector<unsigned short>& layer = layers[l];
+    runs([&](vtkIdType row, int r1, int r2) {
+      std::fill(layer.begin() + row + r1, layer.begin() + row + r2 + 1, static_cast<unsigned short>(label));
+      return true;
+    });
+    segments.push_back({ label, roi.name, static_cast<int>(l) });
+  }
+  if (layers.empty()) // stopped before the first ROI
+    layers.emplace_back(static_cast<std::size_t>(voxels), 0);
+  const double spacing[3] = { dx, dy, h };
+  setLayers(output, dims, spacing, layers, std::max(largest, 1));
+  V3 corner;
+  for (std::size_t a = 0; a < 3; ++a)
+    corner[a] = lattice[a] - dot(frame.n, lattice) * frame.n[a] + first[0] * frame.r[a] + first[1] * frame.c[a] +
+      z0 * frame.n[a];
+  setPatientMatrix(patientMatrix, frame, corner);
+  return true;
+}
+
+} // namespace lkvtk

@@ -1,0 +1,580 @@
+// DICOM RT structure sets (RTSTRUCT): the organs a radiotherapy planning
+// system contoured, read as segments of a label volume.
+#include "TestSupport.h"
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
+
+#include <vtkCellArray.h>
+#include <vtkDICOMCTGenerator.h>
+#include <vtkDICOMCompiler.h>
+#include <vtkDICOMItem.h>
+#include <vtkDICOMMetaData.h>
+#include <vtkDICOMParser.h>
+#include <vtkDICOMSequence.h>
+#include <vtkDICOMUtilities.h>
+#include <vtkDICOMValue.h>
+#include <vtkDICOMWriter.h>
+#include <vtkFieldData.h>
+#include <vtkFlyingEdges2D.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkMassProperties.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkStripper.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+namespace
+{
+using P3 = std::array<double, 3>;
+using Polygon = std::vector<P3>;
+
+struct RoiSpec
+{
+  int number;
+  std::string name;
+  std::vector<Polygon> contours;
+  std::string type = "CLOSED_PLANAR";
+};
+
+std::string tempFolder(const std::string& name)
+{
+  const std::string dir = std::string(LATTICEKIT_TEST_TMP) + "/" + name;
+  vtksys::SystemTools::RemoveADirectory(dir);
+  vtksys::SystemTools::MakeDirectory(dir);
+  return dir;
+}
+
+/// An RT structure set as planning systems write one: the ROIs listed, each
+/// one's contours, the image series they were drawn on referenced.
+/// `pointCount` (when not 0) is written as every contour's
+/// NumberOfContourPoints instead of the true one; `unlisted` adds contours
+/// of an ROI number the list lacks; `contourText` replaces every contour's
+/// ContourData.
+void writeStructureSet(const std::string& file, const std::vector<RoiSpec>& rois, const std::string& seriesUID,
+  int pointCount = 0, int unlisted = 0, const char* contourText = nullptr)
+{
+  vtkNew<vtkDICOMMetaData> meta;
+  meta->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.481.3"); // RT Structure Set Storage
+  meta->Set(DC::SOPInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SOPInstanceUID));
+  meta->Set(DC::StudyInstanceUID, vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID));
+  meta->Set(DC::SeriesInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID));
+  meta->Set(DC::Modality, "RTSTRUCT");
+  meta->Set(DC::PatientID, "rtstruct");
+  meta->Set(DC::StructureSetLabel, "test");
+  const std::string frameUID = vtkDICOMUtilities::GenerateUID(DC::FrameOfReferenceUID);
+  vtkDICOMItem series, study, frame;
+  series.Set(DC::SeriesInstanceUID, seriesUID);
+  study.Set(DC::ReferencedSOPClassUID, "1.2.840.10008.3.1.2.3.1");
+  study.Set(DC::ReferencedSOPInstanceUID, vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID));
+  study.Set(DC::RTReferencedSeriesSequence, vtkDICOMSequence(series));
+  frame.Set(DC::FrameOfReferenceUID, frameUID);
+  frame.Set(DC::RTReferencedStudySequence, vtkDICOMSequence(study));
+  meta->Set(DC::ReferencedFrameOfReferenceSequence, vtkDICOMSequence(frame));
+  vtkDICOMSequence listed, contoured;
+  for (const RoiSpec& roi : rois)
+  {
+    vtkDICOMItem item;
+    item.Set(DC::ROINumber, static_cast<double>(roi.number));
+    item.Set(DC::ReferencedFrameOfReferenceUID, frameUID);
+    item.Set(DC::ROIName, roi.name);
+    item.Set(DC::ROIGenerationAlgorithm, "MANUAL");
+    listed.AddItem(item);
+  }
+  for (std::size_t r = 0; r < rois.size() + (unlisted ? 1 : 0); ++r)
+  {
+    const RoiSpec& roi = rois[std::min(r, rois.size() - 1)];
+    vtkDICOMSequence contours;
+    for (const Polygon& polygon : roi.contours)
+    {
+      vtkDICOMItem contour;
+      std::vector<double> xyz;
+      for (const P3& p : polygon)
+        xyz.insert(xyz.end(), p.begin(), p.end());
+      contour.Set(DC::ContourGeometricType, roi.type);
+      contour.Set(DC::NumberOfContourPoints, static_cast<double>(pointCount ? pointCount : static_cast<int>(polygon.size())));
+      if (contourText)
+        contour.Set(DC::ContourData, vtkDICOMValue(vtkDICOMVR::DS, std::string(contourText)));
+      else
+        contour.Set(DC::ContourData, vtkDICOMValue(vtkDICOMVR::DS, xyz.data(), xyz.size()));
+      contours.AddItem(contour);
+    }
+    vtkDICOMItem item;
+    item.Set(DC::ReferencedROINumber, static_cast<double>(r < rois.size() ? roi.number : unlisted));
+    item.Set(DC::ROIDisplayColor, "255\\0\\0");
+    item.Set(DC::ContourSequence, contours);
+    contoured.AddItem(item);
+  }
+  meta->Set(DC::StructureSetROISequence, listed);
+  meta->Set(DC::ROIContourSequence, contoured);
+  vtkNew<vtkDICOMCompiler> compiler;
+  compiler->SetFileName(file.c_str());
+  compiler->SetMetaData(meta);
+  compiler->WriteHeader();
+  compiler->Close();
+  ASSERT_EQ(compiler->GetErrorCode(), 0u);
+}
+
+/// A rectangle [x0, x1] x [y0, y1] at height z (patient mm).
+Polygon rectangle(double x0, double x1, double y0, double y1, double z)
+{
+  return { { x0, y0, z }, { x1, y0, z }, { x1, y1, z }, { x0, y1, z } };
+}
+
+/// The SeriesInstanceUID of a DICOM file.
+std::string seriesUIDOf(const std::string& file)
+{
+  vtkNew<vtkDICOMMetaData> meta;
+  vtkNew<vtkDICOMParser> parser;
+  parser->SetFileName(file.c_str());
+  parser->SetMetaData(meta);
+  parser->Update();
+  return meta->Get(DC::SeriesInstanceUID).AsString();
+}
+
+/// Writes `image` (data coordinates to patient mm by `matrix`) as a DICOM
+/// CT series into `dir`; returns its SeriesInstanceUID.
+std::string writeCT(const std::string& dir, vtkImageData* image, vtkMatrix4x4* matrix)
+{
+  vtkNew<vtkDICOMCTGenerator> generator;
+  vtkNew<vtkDICOMWriter> writer;
+  writer->SetInputData(image);
+  writer->SetGenerator(generator);
+  writer->SetPatientMatrix(matrix);
+  writer->SetFilePrefix(dir.c_str());
+  writer->SetFilePattern("%s/ct_%03d.dcm");
+  writer->Write();
+  return seriesUIDOf(dir + "/ct_001.dcm");
+}
+
+/// How many voxels of layer `layer` hold `label`.
+vtkIdType count(vtkImageData* image, int layer, int label)
+{
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  vtkIdType n = 0;
+  for (vtkIdType v = 0; v < values->GetNumberOfTuples(); ++v)
+    n += values->GetComponent(v, layer) == label ? 1 : 0;
+  return n;
+}
+
+/// The segments in the reader's field data: name -> (label, layer).
+std::map<std::string, std::pair<int, int>> segmentsOf(vtkImageData* image)
+{
+  auto* names = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("SegmentNames"));
+  auto* labels = vtkIntArray::SafeDownCast(image->GetFieldData()->GetArray("SegmentLabelValues"));
+  auto* layers = vtkIntArray::SafeDownCast(image->GetFieldData()->GetArray("SegmentLayers"));
+  std::map<std::string, std::pair<int, int>> out;
+  for (vtkIdType i = 0; names && labels && layers && i < names->GetNumberOfValues(); ++i)
+    out[names->GetValue(i)] = { labels->GetValue(i), layers->GetValue(i) };
+  return out;
+}
+
+/// A body, a mandible inside it, a canal with a hole inside it too, and an
+/// isocentre point: on the slices z = -10 + 2k of the CT of writeSmallCT,
+/// their edges half-way between pixel centres (integer mm), so that how
+/// many voxels each fills is known exactly.
+std::vector<RoiSpec> plan()
+{
+  RoiSpec body{ 1, "Body", {} }, mandible{ 5, "Mandible", {} }, canal{ 3, "Canal", {} };
+  for (int k = 1; k <= 10; ++k)
+    body.contours.push_back(rectangle(-15.5, 15.5, -15.5, 15.5, -10 + 2 * k)); // 31 x 31 x 10 = 9610
+  for (int k = 2; k <= 8; ++k)
+    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k)); // 8 x 10 x 7 = 560
+  canal.contours.push_back(rectangle(0.5, 10.5, 0.5, 10.5, 0.0));              // 100
+  Polygon hole = rectangle(3.5, 6.5, 3.5, 6.5, 0.0);                            // minus 9
+  std::reverse(hole.begin(), hole.end());
+  canal.contours.push_back(hole);
+  RoiSpec isocentre{ 9, "Isocenter", { { { 0.0, 0.0, 0.0 } } }, "POINT" };
+  return { body, mandible, canal, isocentre };
+}
+
+/// 40 x 40 x 12 voxels of 1 x 1 x 2 mm from (-20, -20, -10), every one 0 HU.
+std::string writeSmallCT(const std::string& dir)
+{
+  vtkNew<vtkImageData> ct;
+  ct->SetDimensions(40, 40, 12);
+  ct->SetSpacing(1.0, 1.0, 2.0);
+  ct->AllocateScalars(VTK_SHORT, 1);
+  ct->GetPointData()->GetScalars()->Fill(1024.0);
+  vtkNew<vtkMatrix4x4> m;
+  m->SetElement(0, 3, -20.0);
+  m->SetElement(1, 3, -20.0);
+  m->SetElement(2, 3, -10.0);
+  return writeCT(dir, ct, m);
+}
+
+void expectThePlansVoxels(vtkLKMedicalImageReader* reader)
+{
+  vtkImageData* out = reader->GetOutput();
+  EXPECT_STREQ(reader->GetFileFormat(), "DICOM RTSTRUCT");
+  ASSERT_EQ(out->GetNumberOfScalarComponents(), 2); // the organs overlap the body
+  const auto segments = segmentsOf(out);
+  ASSERT_EQ(segments.size(), 3u); // the isocentre is a point, not an organ
+  EXPECT_EQ(segments.at("Body"), std::make_pair(1, 0));
+  EXPECT_EQ(segments.at("Mandible"), std::make_pair(5, 1));
+  EXPECT_EQ(segments.at("Canal"), std::make_pair(3, 1)); // beside the mandible: the same layer
+  EXPECT_EQ(count(out, 0, 1), 9610);
+  EXPECT_EQ(count(out, 1, 5), 560);
+  EXPECT_EQ(count(out, 1, 3), 91); // the inner contour is a hole
+  double spacing[3];
+  out->GetSpacing(spacing);
+  EXPECT_DOUBLE_EQ(spacing[0], 1.0);
+  EXPECT_DOUBLE_EQ(spacing[1], 1.0);
+  EXPECT_DOUBLE_EQ(spacing[2], 2.0);
+  // Voxel centres on the pixel centres (integer mm) and the slices (-10 + 2k).
+  vtkMatrix4x4* m = reader->GetPatientMatrix();
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      EXPECT_NEAR(std::abs(m->GetElement(a, b)), a == b ? 1.0 : 0.0, 1e-9);
+  EXPECT_NEAR(m->GetElement(0, 3), std::round(m->GetElement(0, 3)), 1e-6);
+  EXPECT_NEAR(m->GetElement(1, 3), std::round(m->GetElement(1, 3)), 1e-6);
+  EXPECT_NEAR(std::remainder(m->GetElement(2, 3) + 10.0, 2.0), 0.0, 1e-6);
+  // The mandible's voxels lie where its contours are: its centre (-6.5, -0.5, 0).
+  double centre[3] = { 0, 0, 0 };
+  int n = 0;
+  int dims[3];
+  out->GetDimensions(dims);
+  for (int k = 0; k < dims[2]; ++k)
+    for (int j = 0; j < dims[1]; ++j)
+      for (int i = 0; i < dims[0]; ++i)
+        if (out->GetScalarComponentAsDouble(i, j, k, 1) == 5)
+        {
+          const double p[4] = { i * spacing[0], j * spacing[1], k * spacing[2], 1.0 };
+          double q[4];
+          m->MultiplyPoint(p, q);
+          for (int a = 0; a < 3; ++a)
+            centre[a] += q[a];
+          ++n;
+        }
+  ASSERT_GT(n, 0);
+  EXPECT_NEAR(centre[0] / n, -6.5, 1e-6);
+  EXPECT_NEAR(centre[1] / n, -0.5, 1e-6);
+  EXPECT_NEAR(centre[2] / n, 0.0, 1e-6);
+}
+} // namespace
+
+TEST(DicomStructureSet, ROIsAreFilledOnTheGridOfTheCTBesideThem)
+{
+  const std::string dir = tempFolder("rtstruct_with_ct");
+  const std::string uid = writeSmallCT(dir);
+  ASSERT_FALSE(uid.empty());
+  const std::string file = dir + "/rtstruct.dcm";
+  writeStructureSet(file, plan(), uid);
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  expectThePlansVoxels(reader);
+  // Only the isocentre is worth a word: the grid is the CT's.
+  EXPECT_EQ(rec.warnings, 1) << rec.warningMessages;
+  EXPECT_NE(rec.warningMessages.find("ROIs without closed planar contours are not read: 'Isocenter' (POINT)"),
+    std::string::npos)
+    << rec.warningMessages;
+
+  // The folder itself is the CT (the largest series), as before.
+  vtkNew<vtkLKMedicalImageReader> folder;
+  folder->SetFileName(dir.c_str());
+  folder->Update();
+  EXPECT_STREQ(folder->GetFileFormat(), "DICOM");
+  EXPECT_EQ(folder->GetOutput()->GetNumberOfScalarComponents(), 1);
+}
+
+TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
+{
+  const std::string dir = tempFolder("rtstruct_alone");
+  const std::string file = dir + "/rtstruct.dcm";
+  writeStructureSet(file, plan(), "1.2.3.4.5.6.7.8.9");
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  expectThePlansVoxels(reader); // axial contours: an axial grid of 1 mm pixels and their 2 mm slices
+  EXPECT_NE(rec.warningMessages.find("the image series the structure set was drawn on (1.2.3.4.5.6.7.8.9) is not in "
+                                     "its folder: its ROIs are filled on a grid of their own, 1 mm pixels and 2 mm "
+                                     "slices"),
+    std::string::npos)
+    << rec.warningMessages;
+
+  // The bone surface filter takes an organ by name, in patient space.
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  lktest::ErrorRecorder boneRec(bone);
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->SetLabelName("Mandible");
+  bone->Update();
+  ASSERT_EQ(boneRec.errors, 0) << boneRec.messages;
+  EXPECT_EQ(bone->GetEffectiveLabel(), 5);
+  double b[6];
+  bone->GetOutput()->GetBounds(b);
+  EXPECT_NEAR(0.5 * (b[0] + b[1]), -6.5, 0.5);
+  EXPECT_NEAR(0.5 * (b[2] + b[3]), -0.5, 0.5);
+  EXPECT_NEAR(0.5 * (b[4] + b[5]), 0.0, 0.5);
+  EXPECT_GT(b[1] - b[0], 6.0);
+  EXPECT_LT(b[1] - b[0], 10.0);
+}
+
+TEST(DicomStructureSet, SkippedSlicesAndUnevenPlanesAreWarned)
+{
+  // The parotid contoured every 2 mm, a node 1 mm above it and once more
+  // 2.9 mm higher: the slices are 1 mm apart (the smallest gap), the parotid
+  // skips every other one, and the node's second plane is moved 0.1 mm.
+  const std::string dir = tempFolder("rtstruct_uneven");
+  RoiSpec parotid{ 1, "Parotid", {} };
+  for (int k : { 0, 2, 4, 6 })
+    parotid.contours.push_back(rectangle(0.5, 5.5, 0.5, 5.5, k));
+  RoiSpec node{ 2, "Node", { rectangle(20.5, 25.5, 0.5, 5.5, 7.0), rectangle(20.5, 25.5, 0.5, 5.5, 9.9) } };
+  writeStructureSet(dir + "/rs.dcm", { parotid, node }, "1.2.3");
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName((dir + "/rs.dcm").c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  const std::string& w = rec.warningMessages;
+  EXPECT_NE(w.find("the contours' planes are not evenly spaced: some were moved up to 0.1 mm onto the slices of 1 mm"),
+    std::string::npos)
+    << w;
+  EXPECT_NE(w.find("ROI 'Parotid' has no contour on 3 of the slices between its first and last (1 mm apart): its "
+                   "surface has gaps there"),
+    std::string::npos)
+    << w;
+  EXPECT_NE(w.find("ROI 'Node' has no contour on 2 of the slices"), std::string::npos) << w;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfScalarComponents(), 1); // apart: one layer
+  EXPECT_EQ(count(reader->GetOutput(), 0, 1), 4 * 25);
+  EXPECT_EQ(count(reader->GetOutput(), 0, 2), 2 * 25);
+  double spacing[3];
+  reader->GetOutput()->GetSpacing(spacing);
+  EXPECT_DOUBLE_EQ(spacing[2], 1.0);
+}
+
+TEST(DicomStructureSet, BrokenStructureSetsAreClearErrors)
+{
+  const std::string dir = tempFolder("rtstruct_broken");
+  auto read = [&](const std::string& file, std::string& messages) {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    messages = rec.messages;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+    return rec.errors;
+  };
+  std::string messages;
+
+  // Only a point: nothing to fill.
+  writeStructureSet(dir + "/point.dcm", { { 9, "Isocenter", { { { 0.0, 0.0, 0.0 } } }, "POINT" } }, "1.2.3");
+  EXPECT_EQ(read(dir + "/point.dcm", messages), 1);
+  EXPECT_NE(messages.find("no ROI of the RT structure set has closed planar contours: 'Isocenter' (POINT)"),
+    std::string::npos)
+    << messages;
+
+  // NumberOfContourPoints that does not match ContourData.
+  writeStructureSet(dir + "/count.dcm", { { 1, "Body", { rectangle(0, 5, 0, 5, 0) } } }, "1.2.3", 5);
+  EXPECT_EQ(read(dir + "/count.dcm", messages), 1);
+  EXPECT_NE(messages.find("a contour of ROI 'Body' has 12 ContourData values, which is not three per point of its "
+                          "NumberOfContourPoints (5)"),
+    std::string::npos)
+    << messages;
+
+  // Contours of an ROI the list lacks.
+  writeStructureSet(dir + "/unlisted.dcm", { { 1, "Body", { rectangle(0, 5, 0, 5, 0) } } }, "1.2.3", 0, 7);
+  EXPECT_EQ(read(dir + "/unlisted.dcm", messages), 1);
+  EXPECT_NE(messages.find("contours of ROI 7, which its StructureSetROISequence does not list"), std::string::npos)
+    << messages;
+
+  // An axial contour and a sagittal one.
+  writeStructureSet(dir + "/crossed.dcm",
+    { { 1, "Body", { rectangle(0, 5, 0, 5, 0) } }, { 2, "Cut", { { { 1, 0, 0 }, { 1, 5, 0 }, { 1, 5, 5 }, { 1, 0, 5 } } } } },
+    "1.2.3");
+  EXPECT_EQ(read(dir + "/crossed.dcm", messages), 1);
+  EXPECT_NE(messages.find("the contours of the RT structure set do not lie in parallel planes"), std::string::npos)
+    << messages;
+
+  // A contour whose points are all on a line encloses nothing.
+  writeStructureSet(dir + "/flat.dcm", { { 1, "Body", { { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } } } } }, "1.2.3");
+  EXPECT_EQ(read(dir + "/flat.dcm", messages), 1);
+  EXPECT_NE(messages.find("the contours of the RT structure set enclose no area"), std::string::npos) << messages;
+
+  // A coordinate that is not a number (vtkDICOMValue reads "nan" as 0).
+  writeStructureSet(dir + "/nan.dcm", { { 1, "Body", { rectangle(0, 5, 0, 5, 0) } } }, "1.2.3", 0, 0, "0\\0\\0\\5\\0\\0\\5\\nan\\0\\0\\5\\0");
+  EXPECT_EQ(read(dir + "/nan.dcm", messages), 1);
+  EXPECT_NE(messages.find("a contour of ROI 'Body' has a coordinate that is not a number"), std::string::npos)
+    << messages;
+
+  // Contours kilometres apart: a volume that does not fit.
+  writeStructureSet(dir + "/huge.dcm",
+    { { 1, "Body", { rectangle(0, 5, 0, 5, 0), rectangle(-1e6, 1e6, -1e6, 1e6, 2) } } }, "1.2.3");
+  EXPECT_EQ(read(dir + "/huge.dcm", messages), 1);
+  EXPECT_NE(messages.find("too large a volume"), std::string::npos) << messages;
+
+  // Cut short: the file ends inside its contours.
+  writeStructureSet(dir + "/whole.dcm", plan(), "1.2.3");
+  std::string bytes;
+  {
+    std::ifstream in(dir + "/whole.dcm", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::ofstream(dir + "/short.dcm", std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() * 2 / 3));
+  EXPECT_EQ(read(dir + "/short.dcm", messages), 1);
+  EXPECT_NE(messages.find("cannot read the DICOM file"), std::string::npos) << messages;
+}
+
+TEST(DicomStructureSet, AMandibleContouredSliceBySliceIsItsLabelMapAgain)
+{
+  // The TCIA mandible's label map, written as a CT (cropped), and its
+  // outline on every slice (VTK's flying edges at 0.5) written as the
+  // contours of an RT structure set drawn on that CT, as a planning system
+  // exports an organ it segmented: read back, the contours fill exactly the
+  // voxels of the label map.
+  vtkNew<vtkLKMedicalImageReader> nrrd;
+  nrrd->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  nrrd->Update();
+  vtkImageData* label = nrrd->GetOutput();
+  int dims[3];
+  double spacing[3];
+  label->GetDimensions(dims);
+  label->GetSpacing(spacing);
+  int lo[3] = { dims[0], dims[1], dims[2] }, hi[3] = { -1, -1, -1 };
+  for (int k = 0; k < dims[2]; ++k)
+    for (int j = 0; j < dims[1]; ++j)
+      for (int i = 0; i < dims[0]; ++i)
+        if (label->GetScalarComponentAsDouble(i, j, k, 0) > 0.0)
+        {
+          const int at[3] = { i, j, k };
+          for (int a = 0; a < 3; ++a)
+          {
+            lo[a] = std::min(lo[a], at[a]);
+            hi[a] = std::max(hi[a], at[a]);
+          }
+        }
+  ASSERT_GE(hi[0], lo[0]);
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = std::max(0, lo[a] - 3);
+    hi[a] = std::min(dims[a] - 1, hi[a] + 3);
+  }
+  vtkNew<vtkImageData> ct;
+  const int n[3] = { hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1 };
+  ct->SetDimensions(n[0], n[1], n[2]);
+  ct->SetSpacing(spacing);
+  ct->AllocateScalars(VTK_SHORT, 1);
+  vtkIdType inside = 0;
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
+      {
+        const bool in = label->GetScalarComponentAsDouble(lo[0] + i, lo[1] + j, lo[2] + k, 0) > 0.0;
+        ct->SetScalarComponentFromDouble(i, j, k, 0, in ? 1000.0 : 0.0);
+        inside += in ? 1 : 0;
+      }
+  vtkNew<vtkMatrix4x4> shift, matrix;
+  for (int a = 0; a < 3; ++a)
+    shift->SetElement(a, 3, lo[a] * spacing[a]);
+  vtkMatrix4x4::Multiply4x4(nrrd->GetPatientMatrix(), shift, matrix);
+  const std::string dir = tempFolder("rtstruct_mandible");
+  const std::string uid = writeCT(dir, ct, matrix);
+
+  RoiSpec mandible{ 1, "Mandible", {} };
+  for (int k = 0; k < n[2]; ++k)
+  {
+    vtkNew<vtkImageData> slice;
+    slice->SetDimensions(n[0], n[1], 1);
+    slice->SetSpacing(spacing);
+    slice->AllocateScalars(VTK_SHORT, 1);
+    std::copy_n(static_cast<short*>(ct->GetScalarPointer(0, 0, k)), n[0] * n[1],
+      static_cast<short*>(slice->GetScalarPointer()));
+    vtkNew<vtkFlyingEdges2D> outline;
+    outline->SetInputData(slice);
+    outline->SetValue(0, 500.0);
+    vtkNew<vtkStripper> loops;
+    loops->SetInputConnection(outline->GetOutputPort());
+    loops->Update();
+    vtkPolyData* lines = loops->GetOutput();
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    for (vtkIdType c = 0; c < lines->GetNumberOfCells(); ++c)
+    {
+      lines->GetLines()->GetCellAtId(c, count, ids);
+      ASSERT_EQ(ids[0], ids[count - 1]) << "an open outline on slice " << k;
+      Polygon polygon;
+      for (vtkIdType p = 0; p + 1 < count; ++p)
+      {
+        double x[4] = { 0, 0, k * spacing[2], 1.0 }, y[4];
+        lines->GetPoint(ids[p], x);
+        x[2] = k * spacing[2];
+        x[3] = 1.0;
+        matrix->MultiplyPoint(x, y);
+        polygon.push_back({ y[0], y[1], y[2] });
+      }
+      mandible.contours.push_back(polygon);
+    }
+  }
+  ASSERT_GT(mandible.contours.size(), 20u);
+  writeStructureSet(dir + "/rtstruct.dcm", { mandible }, uid);
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName((dir + "/rtstruct.dcm").c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+  vtkImageData* out = reader->GetOutput();
+  double outSpacing[3];
+  out->GetSpacing(outSpacing);
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(outSpacing[a], spacing[a], 1e-6);
+  // Every filled voxel is a voxel of the label map, and there are as many.
+  vtkNew<vtkMatrix4x4> toCT;
+  vtkMatrix4x4::Invert(matrix, toCT);
+  int outDims[3];
+  out->GetDimensions(outDims);
+  vtkIdType filled = 0, misplaced = 0;
+  for (int k = 0; k < outDims[2]; ++k)
+    for (int j = 0; j < outDims[1]; ++j)
+      for (int i = 0; i < outDims[0]; ++i)
+        if (out->GetScalarComponentAsDouble(i, j, k, 0) == 1.0)
+        {
+          ++filled;
+          const double p[4] = { i * outSpacing[0], j * outSpacing[1], k * outSpacing[2], 1.0 };
+          double q[4], r[4];
+          reader->GetPatientMatrix()->MultiplyPoint(p, q);
+          toCT->MultiplyPoint(q, r);
+          int at[3];
+          bool onGrid = true;
+          for (int a = 0; a < 3; ++a)
+          {
+            at[a] = static_cast<int>(std::lround(r[a] / spacing[a]));
+            onGrid = onGrid && std::abs(r[a] / spacing[a] - at[a]) < 1e-3 && at[a] >= 0 && at[a] < n[a];
+          }
+          misplaced += onGrid && ct->GetScalarComponentAsDouble(at[0], at[1], at[2], 0) > 0.0 ? 0 : 1;
+        }
+  EXPECT_EQ(filled, inside);
+  EXPECT_EQ(misplaced, 0);
+
+  // Its bone surface is the label map's.
+  auto volumeOf = [](vtkAlgorithm* source, const char* name) {
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputConnection(source->GetOutputPort());
+    if (name)
+      bone->SetLabelName(name);
+    else
+      bone->SetLabel(1);
+    vtkNew<vtkMassProperties> mass;
+    mass->SetInputConnection(bone->GetOutputPort());
+    mass->Update();
+    return mass->GetVolume();
+  };
+  const double fromContours = volumeOf(reader, "Mandible"), fromLabels = volumeOf(nrrd, nullptr);
+  EXPECT_GT(fromLabels, 10000.0); // mm^3: a mandible
+  EXPECT_NEAR(fromContours, fromLabels, 0.005 * fromLabels);
+}
