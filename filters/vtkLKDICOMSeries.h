@@ -154,6 +154,20 @@ void setLayers(vtkImageData* output, const int dims[3], const double spacing[3],
 /// contours in patient coordinates, without pixel data.
 constexpr const char* kRTStructureSetStorage = "1.2.840.10008.5.1.4.1.1.481.3";
 
+/// An RT structure set found in a folder: its file, its ROIs' names, and the
+/// image series it references.
+struct StructureSetInfo
+{
+  std::string file;
+  std::vector<std::string> roiNames;
+  std::string referencedSeries;
+};
+
+/// The RT structure sets in the folder (and its sub-folders down to
+/// `scanDepth` levels, as findDICOMSeries searches): a folder read as its CT
+/// says what else it holds.
+std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth);
+
 /// Whether `file` is a DICOM RT structure set (its header is read).
 bool isDICOMStructureSet(const std::string& file);
 

@@ -13,6 +13,7 @@
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkDICOMItem.h>
+#include <vtkDICOMDirectory.h>
 #include <vtkDICOMMetaData.h>
 #include <vtkDICOMParser.h>
 #include <vtkDICOMSequence.h>
@@ -23,6 +24,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataToImageStencil.h>
+#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <charconv>
@@ -298,6 +300,39 @@ std::string referencedSeriesUID(vtkDICOMMetaData* meta)
 }
 
 } // namespace
+
+std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth)
+{
+  std::vector<StructureSetInfo> found;
+  vtkNew<vtkDICOMDirectory> dir;
+  ErrorCatcher catcher(dir); // the image scan before it has said what is wrong with the folder
+  dir->SetDirectoryName(folder.c_str());
+  dir->SetScanDepth(std::max(1, scanDepth));
+  dir->RequirePixelDataOff();
+  vtkDICOMItem query;
+  query.Set(DC::Modality, "RTSTRUCT");
+  dir->SetFindQuery(query);
+  dir->Update();
+  for (int s = 0; s < dir->GetNumberOfSeries(); ++s)
+  {
+    vtkStringArray* files = dir->GetFileNamesForSeries(s);
+    for (vtkIdType f = 0; f < files->GetNumberOfValues(); ++f)
+    {
+      vtkNew<vtkDICOMMetaData> meta;
+      std::string error;
+      if (!parse(files->GetValue(f), meta, error) || meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
+        continue;
+      StructureSetInfo info;
+      info.file = files->GetValue(f);
+      info.referencedSeries = referencedSeriesUID(meta);
+      const vtkDICOMValue& list = meta->Get(DC::StructureSetROISequence);
+      for (unsigned int i = 0; i < list.GetNumberOfValues(); ++i)
+        info.roiNames.push_back(list.GetSequenceData()[i].Get(DC::ROIName).AsString());
+      found.push_back(info);
+    }
+  }
+  return found;
+}
 
 bool isDICOMStructureSet(const std::string& file)
 {

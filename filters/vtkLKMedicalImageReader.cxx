@@ -328,6 +328,26 @@ std::string messageText(const std::string& event)
   return trim(m);
 }
 
+/// The RT structure sets beside a CT that was read, and how to read one.
+std::string structureSetsNote(const std::vector<lkvtk::StructureSetInfo>& sets, const std::string& seriesUID)
+{
+  std::ostringstream os;
+  os << "The folder also holds "
+     << (sets.size() == 1 ? std::string("an RT structure set") : std::to_string(sets.size()) + " RT structure sets")
+     << " (organs contoured for radiotherapy); give its file to read its ROIs as segments:";
+  for (const auto& set : sets)
+  {
+    os << "\n  '" << set.file << "'" << (set.referencedSeries == seriesUID ? ", drawn on this series" : "") << ": ";
+    for (std::size_t i = 0; i < set.roiNames.size() && i < 8; ++i)
+      os << (i ? ", '" : "'") << set.roiNames[i] << "'";
+    if (set.roiNames.size() > 8)
+      os << " and " << set.roiNames.size() - 8 << " more";
+    if (set.roiNames.empty())
+      os << "no ROIs";
+  }
+  return os.str();
+}
+
 /// The warning for a DICOM series whose slices are not evenly spaced (3D
 /// Slicer warns of unequal spacing too): a slice lost on the way from the
 /// scanner leaves a gap the resampling fills by interpolation.
@@ -1033,6 +1053,12 @@ bool vtkLKMedicalImageReader::ReadVolume()
       }
       if (!report.wideGaps.empty())
         vtkWarningMacro(<< wideGapsWarning(report));
+      // A CT exported with the structure set drawn on it: its ROIs are a
+      // file away.
+      const auto sets =
+        lkvtk::findDICOMStructureSets(folder.empty() ? "." : folder, isFolder ? lkvtk::kDICOMScanDepth : 1);
+      if (!sets.empty())
+        vtkWarningMacro(<< structureSetsNote(sets, series[static_cast<std::size_t>(chosen)].uid));
       this->GantryTilt = report.gantryTiltDegrees;
       this->MinimumSliceGap = report.minGap;
       this->MaximumSliceGap = report.maxGap;

@@ -282,12 +282,24 @@ TEST(DicomStructureSet, ROIsAreFilledOnTheGridOfTheCTBesideThem)
     std::string::npos)
     << rec.warningMessages;
 
-  // The folder itself is the CT (the largest series), as before.
-  vtkNew<vtkLKMedicalImageReader> folder;
-  folder->SetFileName(dir.c_str());
-  folder->Update();
-  EXPECT_STREQ(folder->GetFileFormat(), "DICOM");
-  EXPECT_EQ(folder->GetOutput()->GetNumberOfScalarComponents(), 1);
+  // The folder, or a file of the CT, reads the CT, and says how to read the
+  // structure set beside it.
+  for (const std::string& input : { dir, dir + "/ct_001.dcm" })
+  {
+    vtkNew<vtkLKMedicalImageReader> ctReader;
+    lktest::ErrorRecorder ctRec(ctReader);
+    ctReader->SetFileName(input.c_str());
+    ctReader->Update();
+    EXPECT_EQ(ctRec.errors, 0) << ctRec.messages;
+    EXPECT_STREQ(ctReader->GetFileFormat(), "DICOM");
+    EXPECT_EQ(ctReader->GetOutput()->GetNumberOfScalarComponents(), 1);
+    EXPECT_EQ(ctRec.warnings, 1) << ctRec.warningMessages;
+    EXPECT_NE(ctRec.warningMessages.find("The folder also holds an RT structure set (organs contoured for "
+                                         "radiotherapy); give its file to read its ROIs as segments:\n  '" +
+                file + "', drawn on this series: 'Body', 'Mandible', 'Canal', 'Isocenter'"),
+      std::string::npos)
+      << ctRec.warningMessages;
+  }
 }
 
 TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
