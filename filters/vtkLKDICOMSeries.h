@@ -155,12 +155,12 @@ void setLayers(vtkImageData* output, const int dims[3], const double spacing[3],
 constexpr const char* kRTStructureSetStorage = "1.2.840.10008.5.1.4.1.1.481.3";
 
 /// An RT structure set found in a folder: its file, its ROIs' names, and the
-/// image series it references.
+/// image series it references (SeriesInstanceUIDs).
 struct StructureSetInfo
 {
   std::string file;
   std::vector<std::string> roiNames;
-  std::string referencedSeries;
+  std::vector<std::string> referencedSeries;
 };
 
 /// The RT structure sets in the folder (and its sub-folders down to

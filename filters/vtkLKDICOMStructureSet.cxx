@@ -43,6 +43,10 @@ namespace
 /// as decimal strings, rounded far below it, and no scan has slices this close.
 constexpr double kPlaneTolerance = 0.05;
 
+/// A contour point farther than this (mm) from the patient origin is damage,
+/// not anatomy (10 m).
+constexpr double kFarthest = 1.0e4;
+
 /// Empty slices and pixels around the contours, so that the surface closes.
 constexpr int kPad = 2;
 
@@ -60,6 +64,13 @@ struct ROI
   std::vector<Contour> contours; // closed planar ones
   std::set<std::string> otherTypes;
 };
+
+/// How many items a sequence holds: 0 for a value that is not a sequence
+/// (a damaged file's), whose items are not there to read.
+unsigned int itemCount(const vtkDICOMValue& sequence)
+{
+  return sequence.GetSequenceData() ? sequence.GetNumberOfValues() : 0;
+}
 
 bool parse(const std::string& file, vtkDICOMMetaData* meta, std::string& error)
 {
@@ -117,7 +128,7 @@ bool readROIs(vtkDICOMMetaData* meta, std::vector<ROI>& rois, int& skippedShort,
 {
   std::map<int, std::size_t> byNumber;
   const vtkDICOMValue& list = meta->Get(DC::StructureSetROISequence);
-  for (unsigned int i = 0; i < list.GetNumberOfValues(); ++i)
+  for (unsigned int i = 0; i < itemCount(list); ++i)
   {
     const vtkDICOMItem& item = list.GetSequenceData()[i];
     ROI roi;
@@ -139,7 +150,7 @@ bool readROIs(vtkDICOMMetaData* meta, std::vector<ROI>& rois, int& skippedShort,
     return false;
   }
   const vtkDICOMValue& contoured = meta->Get(DC::ROIContourSequence);
-  for (unsigned int i = 0; i < contoured.GetNumberOfValues(); ++i)
+  for (unsigned int i = 0; i < itemCount(contoured); ++i)
   {
     const vtkDICOMItem& item = contoured.GetSequenceData()[i];
     const int number = item.Get(DC::ReferencedROINumber).AsInt();
@@ -152,7 +163,7 @@ bool readROIs(vtkDICOMMetaData* meta, std::vector<ROI>& rois, int& skippedShort,
     }
     ROI& roi = rois[found->second];
     const vtkDICOMValue& contours = item.Get(DC::ContourSequence);
-    for (unsigned int c = 0; c < contours.GetNumberOfValues(); ++c)
+    for (unsigned int c = 0; c < itemCount(contours); ++c)
     {
       const vtkDICOMItem& contour = contours.GetSequenceData()[c];
       const std::string type = contour.Get(DC::ContourGeometricType).AsString();
@@ -180,6 +191,15 @@ bool readROIs(vtkDICOMMetaData* meta, std::vector<ROI>& rois, int& skippedShort,
       if (!decimals(data.AsString(), xyz) || xyz.size() != values)
       {
         error = "a contour of ROI '" + roi.name + "' has a coordinate that is not a number";
+        return false;
+      }
+      const auto far = std::find_if(xyz.begin(), xyz.end(), [](double v) { return std::abs(v) > kFarthest; });
+      if (far != xyz.end())
+      {
+        std::ostringstream os;
+        os << "a contour of ROI '" << roi.name << "' has a point at " << *far
+           << " mm: no patient reaches that far from the scanner's origin";
+        error = os.str();
         return false;
       }
       Contour one;
@@ -261,41 +281,35 @@ bool planarIn(const SliceFrame& frame, std::vector<ROI>& rois)
   return true;
 }
 
-/// The first file of the image series the structure set references, or "".
-std::string referencedImageFile(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& imageSeries)
+/// The SeriesInstanceUIDs of the image series the structure set references.
+std::vector<std::string> referencedSeriesUIDs(vtkDICOMMetaData* meta)
 {
+  std::vector<std::string> uids;
   const vtkDICOMValue& frames = meta->Get(DC::ReferencedFrameOfReferenceSequence);
-  for (unsigned int f = 0; f < frames.GetNumberOfValues(); ++f)
+  for (unsigned int f = 0; f < itemCount(frames); ++f)
   {
     const vtkDICOMValue& studies = frames.GetSequenceData()[f].Get(DC::RTReferencedStudySequence);
-    for (unsigned int s = 0; s < studies.GetNumberOfValues(); ++s)
+    for (unsigned int s = 0; s < itemCount(studies); ++s)
     {
       const vtkDICOMValue& series = studies.GetSequenceData()[s].Get(DC::RTReferencedSeriesSequence);
-      for (unsigned int i = 0; i < series.GetNumberOfValues(); ++i)
+      for (unsigned int i = 0; i < itemCount(series); ++i)
       {
         const std::string uid = series.GetSequenceData()[i].Get(DC::SeriesInstanceUID).AsString();
-        for (const DICOMSeriesInfo& one : imageSeries)
-          if (!uid.empty() && one.uid == uid && !one.files.empty())
-            return one.files.front();
+        if (!uid.empty())
+          uids.push_back(uid);
       }
     }
   }
-  return "";
+  return uids;
 }
 
-std::string referencedSeriesUID(vtkDICOMMetaData* meta)
+/// The first file of the image series the structure set references, or "".
+std::string referencedImageFile(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& imageSeries)
 {
-  const vtkDICOMValue& frames = meta->Get(DC::ReferencedFrameOfReferenceSequence);
-  for (unsigned int f = 0; f < frames.GetNumberOfValues(); ++f)
-  {
-    const vtkDICOMValue& studies = frames.GetSequenceData()[f].Get(DC::RTReferencedStudySequence);
-    for (unsigned int s = 0; s < studies.GetNumberOfValues(); ++s)
-    {
-      const vtkDICOMValue& series = studies.GetSequenceData()[s].Get(DC::RTReferencedSeriesSequence);
-      if (series.GetNumberOfValues() > 0)
-        return series.GetSequenceData()[0].Get(DC::SeriesInstanceUID).AsString();
-    }
-  }
+  for (const std::string& uid : referencedSeriesUIDs(meta))
+    for (const DICOMSeriesInfo& one : imageSeries)
+      if (one.uid == uid && !one.files.empty())
+        return one.files.front();
   return "";
 }
 
@@ -324,9 +338,9 @@ std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, 
         continue;
       StructureSetInfo info;
       info.file = files->GetValue(f);
-      info.referencedSeries = referencedSeriesUID(meta);
+      info.referencedSeries = referencedSeriesUIDs(meta);
       const vtkDICOMValue& list = meta->Get(DC::StructureSetROISequence);
-      for (unsigned int i = 0; i < list.GetNumberOfValues(); ++i)
+      for (unsigned int i = 0; i < itemCount(list); ++i)
         info.roiNames.push_back(list.GetSequenceData()[i].Get(DC::ROIName).AsString());
       found.push_back(info);
     }
@@ -454,7 +468,8 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
   if (!fromImages)
   {
     dx = dy = h > 0.0 ? std::min(1.0, h) : 1.0;
-    const std::string uid = referencedSeriesUID(meta);
+    const std::vector<std::string> uids = referencedSeriesUIDs(meta);
+    const std::string uid = uids.empty() ? std::string() : uids.front();
     notes.push_back(std::string("the image series the structure set was drawn on") +
       (uid.empty() ? std::string("") : " (" + uid + ")") +
       (imageFile.empty() ? " is not in its folder" : " lies across its contours") +
@@ -463,6 +478,12 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
   }
   if (h == 0.0)
     h = std::min(dx, dy); // one plane: a slab a pixel thick
+  if (!((distinct.back() - distinct.front()) / h < 1.0e5))
+  {
+    error = "the contours of the RT structure set span " + mm(distinct.back() - distinct.front()) +
+      " across their planes, too many slices of " + mm(h);
+    return false;
+  }
   const double z0 = distinct.front() - kPad * h;
   double moved = 0.0;
   int sliceCount = 0;

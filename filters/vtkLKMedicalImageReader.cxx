@@ -337,7 +337,7 @@ std::string structureSetsNote(const std::vector<lkvtk::StructureSetInfo>& sets, 
      << " (organs contoured for radiotherapy); give its file to read its ROIs as segments:";
   for (const auto& set : sets)
   {
-    os << "\n  '" << set.file << "'" << (set.referencedSeries == seriesUID ? ", drawn on this series" : "") << ": ";
+    os << "\n  '" << set.file << "'" << (std::count(set.referencedSeries.begin(), set.referencedSeries.end(), seriesUID) ? ", drawn on this series" : "") << ": ";
     for (std::size_t i = 0; i < set.roiNames.size() && i < 8; ++i)
       os << (i ? ", '" : "'") << set.roiNames[i] << "'";
     if (set.roiNames.size() > 8)

@@ -423,11 +423,45 @@ TEST(DicomStructureSet, BrokenStructureSetsAreClearErrors)
   EXPECT_NE(messages.find("a contour of ROI 'Body' has a coordinate that is not a number"), std::string::npos)
     << messages;
 
-  // Contours kilometres apart: a volume that does not fit.
+  // A contour 18 m across: a volume that does not fit.
   writeStructureSet(dir + "/huge.dcm",
-    { { 1, "Body", { rectangle(0, 5, 0, 5, 0), rectangle(-1e6, 1e6, -1e6, 1e6, 2) } } }, "1.2.3");
+    { { 1, "Body", { rectangle(0, 5, 0, 5, 0), rectangle(-9000, 9000, -9000, 9000, 2) } } }, "1.2.3");
   EXPECT_EQ(read(dir + "/huge.dcm", messages), 1);
-  EXPECT_NE(messages.find("too large a volume"), std::string::npos) << messages;
+  EXPECT_NE(messages.find("the contours of the RT structure set span 18000 mm by 18000 mm by 2 mm: too large a "
+                          "volume at 1 mm pixels and 2 mm slices"),
+    std::string::npos)
+    << messages;
+  // Planes 0.06 mm apart and 9 m away: too many slices.
+  writeStructureSet(dir + "/tall.dcm",
+    { { 1, "Body", { rectangle(0, 5, 0, 5, 0), rectangle(0, 5, 0, 5, 0.06), rectangle(0, 5, 0, 5, 9000) } } }, "1.2.3");
+  EXPECT_EQ(read(dir + "/tall.dcm", messages), 1);
+  EXPECT_NE(messages.find("the contours of the RT structure set span 9000 mm across their planes, too many slices of "
+                          "0.06 mm"),
+    std::string::npos)
+    << messages;
+  // A point a kilometre away: damage, not anatomy.
+  writeStructureSet(dir + "/far.dcm", { { 1, "Body", { rectangle(0, 5, 0, 1e6, 0) } } }, "1.2.3");
+  EXPECT_EQ(read(dir + "/far.dcm", messages), 1);
+  EXPECT_NE(messages.find("a contour of ROI 'Body' has a point at 1e+06 mm: no patient reaches that far from the "
+                          "scanner's origin"),
+    std::string::npos)
+    << messages;
+
+  // Not a sequence where the ROIs should be (a damaged file): no ROIs, not a crash.
+  {
+    vtkNew<vtkDICOMMetaData> meta;
+    meta->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.481.3");
+    meta->Set(DC::Modality, "RTSTRUCT");
+    meta->Set(DC::StructureSetROISequence, vtkDICOMValue(vtkDICOMVR::LO, "Body"));
+    vtkNew<vtkDICOMCompiler> compiler;
+    compiler->SetFileName((dir + "/notasequence.dcm").c_str());
+    compiler->SetMetaData(meta);
+    compiler->WriteHeader();
+    compiler->Close();
+  }
+  EXPECT_EQ(read(dir + "/notasequence.dcm", messages), 1);
+  EXPECT_NE(messages.find("the RT structure set lists no ROIs (StructureSetROISequence)"), std::string::npos)
+    << messages;
 
   // Cut short: the file ends inside its contours.
   writeStructureSet(dir + "/whole.dcm", plan(), "1.2.3");
