@@ -183,10 +183,13 @@ bool isDICOMStructureSet(const std::string& file);
 /// lattice; otherwise the contours' own frame and 1 mm pixels (or the slice
 /// spacing, when finer). Slices lie on the contours' planes, spaced by the
 /// smallest gap between them, with two empty slices and pixels beyond the
-/// contours on each side. Contours of other types (POINT, OPEN_PLANAR) are
-/// not read. `notes` says what the caller should warn about: ROIs without
-/// closed contours, the grid guessed, planes moved onto it, slices an ROI
-/// skips.
+/// contours on each side. Slices an ROI skips between two of its contours
+/// (a gap of up to twice its usual contour spacing) are filled by
+/// shape-based interpolation (the blend of the two contours' signed distance
+/// maps); wider gaps are left empty. Contours of other types (POINT,
+/// OPEN_PLANAR) are not read. `notes` says what the caller should warn
+/// about: ROIs without closed contours, the grid guessed, planes moved onto
+/// it, slices an ROI skips.
 bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
   vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,
   std::vector<std::string>& notes, std::string& error, vtkAlgorithm* progress = nullptr);

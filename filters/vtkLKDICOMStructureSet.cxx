@@ -19,6 +19,9 @@
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMValue.h>
 #include <vtkImageData.h>
+#include <vtkImageEuclideanDistance.h>
+#include <vtkPointData.h>
+#include <vtkDataArray.h>
 #include <vtkImageStencilData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPoints.h>
@@ -209,6 +212,40 @@ bool readROIs(vtkDICOMMetaData* meta, std::vector<ROI>& rois, int& skippedShort,
     }
   }
   return true;
+}
+
+/// The signed distance of each pixel of a slice's mask to its outline, in
+/// pixels (VTK's Euclidean distance transform, from either side): negative
+/// inside, the outline half-way between the pixels inside and outside. Its
+/// blend between two contoured slices is the shape-based interpolation of
+/// the slices between (Raya and Udupa): a shape that grows, shrinks or moves
+/// does so gradually, and shapes that do not overlap are not joined.
+std::vector<float> signedDistance(const unsigned char* mask, int nx, int ny)
+{
+  const vtkIdType n = static_cast<vtkIdType>(nx) * ny;
+  std::vector<float> distance(static_cast<std::size_t>(n), 0.0f);
+  for (const bool inside : { true, false })
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(nx, ny, 1);
+    image->AllocateScalars(VTK_FLOAT, 1);
+    float* v = static_cast<float*>(image->GetScalarPointer());
+    for (vtkIdType p = 0; p < n; ++p)
+      v[p] = (mask[p] != 0) == inside ? 1.0f : 0.0f; // the distance of each pixel of 1s to the nearest 0
+    vtkNew<vtkImageEuclideanDistance> transform;
+    transform->SetInputData(image);
+    transform->SetDimensionality(2);
+    transform->ConsiderAnisotropyOff();
+    transform->Update();
+    vtkDataArray* squared = transform->GetOutput()->GetPointData()->GetScalars();
+    for (vtkIdType p = 0; p < n; ++p)
+      if ((mask[p] != 0) == inside)
+      {
+        const float d = static_cast<float>(std::sqrt(squared->GetComponent(p, 0))) - 0.5f;
+        distance[static_cast<std::size_t>(p)] = inside ? -d : d;
+      }
+  }
+  return distance;
 }
 
 /// The normal of a polygon (Newell), as long as twice its area.
@@ -559,10 +596,6 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
       }
       lines->InsertCellPoint(start); // closed
     }
-    const int skipped = (*slices.rbegin() - *slices.begin() + 1) - static_cast<int>(slices.size());
-    if (skipped > 0)
-      notes.push_back("ROI '" + roi.name + "' has no contour on " + std::to_string(skipped) + " of the slices between its first and last (" +
-        mm(h) + " apart): its surface has gaps there");
     vtkNew<vtkPolyData> contours;
     contours->SetPoints(points);
     contours->SetLines(lines);
@@ -573,26 +606,76 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
     fill->SetOutputWholeExtent(0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1);
     fill->Update();
     vtkImageStencilData* stencil = fill->GetOutput();
+
+    // The ROI's voxels from its first slice to its last: the contours'
+    // slices filled, the slices between them interpolated (gaps of up to
+    // twice its usual contour spacing; wider ones are left as they are).
+    const int zFirst = *slices.begin(), zLast = *slices.rbegin();
+    std::vector<unsigned char> mask(static_cast<std::size_t>(sliceSize) * static_cast<std::size_t>(zLast - zFirst + 1), 0);
+    auto sliceOf = [&](int z) { return mask.data() + static_cast<vtkIdType>(z - zFirst) * sliceSize; };
+    for (int z : slices)
+      for (int y = 0; y < dims[1]; ++y)
+      {
+        int iter = 0, r1 = 0, r2 = 0;
+        unsigned char* row = sliceOf(z) + static_cast<vtkIdType>(y) * dims[0];
+        while (stencil->GetNextExtent(r1, r2, 0, dims[0] - 1, y, z, iter))
+          std::fill(row + r1, row + r2 + 1, static_cast<unsigned char>(1));
+      }
+    std::vector<int> steps;
+    for (auto z = std::next(slices.begin()); z != slices.end(); ++z)
+      steps.push_back(*z - *std::prev(z));
+    int interpolated = 0, unbridged = 0;
+    if (!steps.empty())
+    {
+      std::vector<int> sorted = steps;
+      std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+      const int usual = sorted[sorted.size() / 2];
+      for (auto z = std::next(slices.begin()); z != slices.end(); ++z)
+      {
+        const int a = *std::prev(z), b = *z;
+        if (b - a < 2)
+          continue;
+        if (b - a > 2 * usual)
+        {
+          unbridged += b - a - 1;
+          continue;
+        }
+        interpolated += b - a - 1;
+        const std::vector<float> below = signedDistance(sliceOf(a), dims[0], dims[1]);
+        const std::vector<float> above = signedDistance(sliceOf(b), dims[0], dims[1]);
+        for (int t = a + 1; t < b; ++t)
+        {
+          const float w = static_cast<float>(t - a) / static_cast<float>(b - a);
+          unsigned char* out = sliceOf(t);
+          for (vtkIdType p = 0; p < sliceSize; ++p)
+            out[p] = (1.0f - w) * below[static_cast<std::size_t>(p)] + w * above[static_cast<std::size_t>(p)] < 0.0f;
+        }
+      }
+    }
+    if (interpolated + unbridged > 0)
+    {
+      std::string note = "ROI '" + roi.name + "' has no contour on " + std::to_string(interpolated + unbridged) +
+        " of the slices between its first and last (" + mm(h) + " apart): ";
+      if (unbridged == 0)
+        note += "they are filled by interpolating the contours on either side";
+      else if (interpolated == 0)
+        note += "its surface has gaps there (each over twice its usual contour spacing, not bridged)";
+      else
+        note += std::to_string(interpolated) + " are filled by interpolating the contours on either side; at the other " +
+          std::to_string(unbridged) + ", in gaps over twice its usual contour spacing, its surface has gaps";
+      notes.push_back(note);
+    }
+
     const int label = numbered ? roi.number : static_cast<int>(i) + 1;
     largest = std::max(largest, label);
-    auto runs = [&](auto&& visit) {
-      for (int z : slices)
-        for (int y = 0; y < dims[1]; ++y)
-        {
-          int iter = 0, r1 = 0, r2 = 0;
-          while (stencil->GetNextExtent(r1, r2, 0, dims[0] - 1, y, z, iter))
-            if (!visit((static_cast<vtkIdType>(z) * dims[1] + y) * dims[0], r1, r2))
-              return false;
-        }
-      return true;
-    };
+    const vtkIdType offset = static_cast<vtkIdType>(zFirst) * sliceSize, span = static_cast<vtkIdType>(mask.size());
     std::size_t l = 0;
     for (; l < layers.size(); ++l)
     {
-      const std::vector<unsigned short>& layer = layers[l];
-      const bool fits = runs([&](vtkIdType row, int r1, int r2) {
-        return std::all_of(layer.begin() + row + r1, layer.begin() + row + r2 + 1, [](unsigned short v) { return v == 0; });
-      });
+      const unsigned short* layer = layers[l].data() + offset;
+      bool fits = true;
+      for (vtkIdType v = 0; v < span && fits; ++v)
+        fits = !(mask[static_cast<std::size_t>(v)] && layer[v] != 0);
       if (fits)
         break;
     }
@@ -605,11 +688,10 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
       }
       layers.emplace_back(static_cast<std::size_t>(voxels), 0);
     }
-    std::vector<unsigned short>& layer = layers[l];
-    runs([&](vtkIdType row, int r1, int r2) {
-      std::fill(layer.begin() + row + r1, layer.begin() + row + r2 + 1, static_cast<unsigned short>(label));
-      return true;
-    });
+    unsigned short* layer = layers[l].data() + offset;
+    for (vtkIdType v = 0; v < span; ++v)
+      if (mask[static_cast<std::size_t>(v)])
+        layer[v] = static_cast<unsigned short>(label);
     segments.push_back({ label, roi.name, static_cast<int>(l) });
   }
   if (layers.empty()) // stopped before the first ROI

@@ -50,8 +50,11 @@
  * gap between them; in plane it is the pixel lattice of the CT the structure
  * set references when that series lies in the same folder, otherwise 1 mm
  * pixels (or the slice gap, when finer) in the contours' own frame, with a
- * warning. ROIs without closed contours (points, open lines), planes moved
- * onto the grid and slices an ROI skips are warned of. A folder holding a
+ * warning. Slices an ROI skips between two of its contours (it was
+ * contoured every other slice) are interpolated from the shapes on either
+ * side, across gaps of up to twice its usual contour spacing. ROIs without
+ * closed contours (points, open lines), planes moved onto the grid and
+ * slices skipped are warned of. A folder holding a
  * CT and its structure set reads the CT: give the structure set's file.
  *
  * The output has one scalar component, except for a segmentation whose
