@@ -180,9 +180,10 @@ bool isDICOMStructureSet(const std::string& file);
 ///
 /// The grid: when `imageSeries` (the image series of the file's folder)
 /// holds the series the structure set references, its slice frame and pixel
-/// lattice; otherwise the contours' own frame and 1 mm pixels (or the slice
-/// spacing, when finer). Slices lie on the contours' planes, spaced by the
-/// smallest gap between them, with two empty slices and pixels beyond the
+/// lattice, and its slices when they are evenly spaced and the contours lie
+/// on them; otherwise the contours' own frame and 1 mm pixels (or the slice
+/// spacing, when finer), and slices on the contours' planes, spaced by the
+/// smallest gap between them. Two empty slices and pixels lie beyond the
 /// contours on each side. Slices an ROI skips between two of its contours
 /// (a gap of up to twice its usual contour spacing) are filled by
 /// shape-based interpolation (the blend of the two contours' signed distance

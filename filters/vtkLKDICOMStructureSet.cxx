@@ -340,14 +340,35 @@ std::vector<std::string> referencedSeriesUIDs(vtkDICOMMetaData* meta)
   return uids;
 }
 
-/// The first file of the image series the structure set references, or "".
-std::string referencedImageFile(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& imageSeries)
+/// The image series the structure set references, or none.
+const DICOMSeriesInfo* referencedImages(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& imageSeries)
 {
   for (const std::string& uid : referencedSeriesUIDs(meta))
     for (const DICOMSeriesInfo& one : imageSeries)
       if (one.uid == uid && !one.files.empty())
-        return one.files.front();
-  return "";
+        return &one;
+  return nullptr;
+}
+
+/// Where the slices of an image series lie along `normal` (sorted, one per
+/// position), from each file's ImagePositionPatient; empty when a file has none.
+std::vector<double> slicePlanes(const DICOMSeriesInfo& series, const V3& normal)
+{
+  std::vector<double> planes;
+  for (const std::string& file : series.files)
+  {
+    vtkNew<vtkDICOMMetaData> meta;
+    std::string ignored;
+    double ipp[3];
+    if (!parse(file, meta, ignored) || meta->Get(DC::ImagePositionPatient).GetNumberOfValues() < 3)
+      return {};
+    meta->Get(DC::ImagePositionPatient).GetValues(ipp, 3);
+    planes.push_back(dot(normal, V3{ ipp[0], ipp[1], ipp[2] }));
+  }
+  std::sort(planes.begin(), planes.end());
+  planes.erase(std::unique(planes.begin(), planes.end(), [](double a, double b) { return b - a < kPlaneTolerance; }),
+    planes.end());
+  return planes;
 }
 
 } // namespace
@@ -451,8 +472,9 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
   double dx = 0.0, dy = 0.0;
   V3 lattice{ 0.0, 0.0, 0.0 }; // a pixel centre of the CT (or the patient origin)
   bool fromImages = false;
-  const std::string imageFile = referencedImageFile(meta, imageSeries);
-  if (!imageFile.empty())
+  const DICOMSeriesInfo* images = referencedImages(meta, imageSeries);
+  const std::string imageFile = images ? images->files.front() : std::string();
+  if (images)
   {
     vtkNew<vtkDICOMMetaData> image;
     std::string ignored;
@@ -515,13 +537,34 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
   }
   if (h == 0.0)
     h = std::min(dx, dy); // one plane: a slab a pixel thick
+  // On the CT's slices, when the contours lie on them and they are evenly
+  // spaced: an ROI contoured on every other slice is then interpolated at
+  // the CT's resolution, not filled on a grid of twice its spacing.
+  double zBase = distinct.front();
+  if (fromImages)
+  {
+    const std::vector<double> ct = slicePlanes(*images, frame.n);
+    double gap = 0.0;
+    for (std::size_t k = 1; k < ct.size(); ++k)
+      gap = k == 1 ? ct[k] - ct[k - 1] : std::min(gap, ct[k] - ct[k - 1]);
+    auto onLattice = [&](double w) {
+      const double at = (w - ct.front()) / gap;
+      return std::abs(at - std::round(at)) * gap < kPlaneTolerance;
+    };
+    if (gap > 0.0 && gap < h + kPlaneTolerance && std::all_of(ct.begin(), ct.end(), onLattice) &&
+      std::all_of(distinct.begin(), distinct.end(), onLattice))
+    {
+      h = gap;
+      zBase = ct.front();
+    }
+  }
   if (!((distinct.back() - distinct.front()) / h < 1.0e5))
   {
     error = "the contours of the RT structure set span " + mm(distinct.back() - distinct.front()) +
       " across their planes, too many slices of " + mm(h);
     return false;
   }
-  const double z0 = distinct.front() - kPad * h;
+  const double z0 = zBase + (std::round((distinct.front() - zBase) / h) - kPad) * h;
   double moved = 0.0;
   int sliceCount = 0;
   for (ROI& roi : rois)

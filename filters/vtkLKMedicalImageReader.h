@@ -46,11 +46,11 @@
  * contours are filled slice by slice (a voxel is the ROI's when its centre
  * lies inside; a contour inside another is a hole), each ROI a segment named
  * by its ROIName with its ROINumber as label, in field data as a
- * .seg.nrrd's. The grid lies in the contours' planes, spaced by the smallest
- * gap between them; in plane it is the pixel lattice of the CT the structure
- * set references when that series lies in the same folder, otherwise 1 mm
- * pixels (or the slice gap, when finer) in the contours' own frame, with a
- * warning. Slices an ROI skips between two of its contours (it was
+ * .seg.nrrd's. The grid is that of the CT the structure set references
+ * when that series lies in the same folder (its pixel lattice, and its
+ * slices when the contours lie on them), otherwise the contours' own: 1 mm
+ * pixels (or the slice gap, when finer), slices on the contours' planes
+ * spaced by the smallest gap between them, with a warning. Slices an ROI skips between two of its contours (it was
  * contoured every other slice) are interpolated from the shapes on either
  * side, across gaps of up to twice its usual contour spacing. ROIs without
  * closed contours (points, open lines), planes moved onto the grid and

@@ -302,6 +302,40 @@ TEST(DicomStructureSet, ROIsAreFilledOnTheGridOfTheCTBesideThem)
   }
 }
 
+TEST(DicomStructureSet, AnROIOnEveryOtherSliceOfItsCTIsInterpolatedOnTheCTsSlices)
+{
+  // The mandible alone, on every other slice of the CT (4 mm apart): with
+  // the CT beside it, the grid has the CT's 2 mm slices and the 3 between
+  // are interpolated (560 voxels, as on every slice); without it, the grid
+  // is the contours' own, 4 mm slices (320 voxels).
+  RoiSpec mandible{ 5, "Mandible", {} };
+  for (int k = 2; k <= 8; k += 2)
+    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
+  const std::string withCT = tempFolder("rtstruct_sparse_with_ct"), alone = tempFolder("rtstruct_sparse_alone");
+  const std::string uid = writeSmallCT(withCT);
+  writeStructureSet(withCT + "/rs.dcm", { mandible }, uid);
+  writeStructureSet(alone + "/rs.dcm", { mandible }, uid);
+  for (const std::string& dir : { withCT, alone })
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName((dir + "/rs.dcm").c_str());
+    reader->Update();
+    ASSERT_EQ(rec.errors, 0) << rec.messages;
+    double spacing[3];
+    reader->GetOutput()->GetSpacing(spacing);
+    const bool ct = dir == withCT;
+    EXPECT_DOUBLE_EQ(spacing[2], ct ? 2.0 : 4.0);
+    EXPECT_EQ(count(reader->GetOutput(), 0, 5), ct ? 560 : 320);
+    EXPECT_EQ(rec.warnings, 1) << rec.warningMessages;
+    EXPECT_NE(rec.warningMessages.find(ct ? "ROI 'Mandible' has no contour on 3 of the slices between its first and "
+                                            "last (2 mm apart): they are filled by interpolating"
+                                          : "is not in its folder"),
+      std::string::npos)
+      << rec.warningMessages;
+  }
+}
+
 TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
 {
   const std::string dir = tempFolder("rtstruct_alone");
