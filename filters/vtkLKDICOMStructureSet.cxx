@@ -371,101 +371,23 @@ std::vector<double> slicePlanes(const DICOMSeriesInfo& series, const V3& normal)
   return planes;
 }
 
-} // namespace
-
-std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth)
+/// Where the voxels lie: the frame, the pixel lattice (through `lattice`,
+/// `dx` by `dy` mm), the slices (`h` mm apart from `z0` along the normal)
+/// and the grid's corner (`first`, in the frame from the lattice point).
+struct Grid
 {
-  std::vector<StructureSetInfo> found;
-  vtkNew<vtkDICOMDirectory> dir;
-  ErrorCatcher catcher(dir); // the image scan before it has said what is wrong with the folder
-  dir->SetDirectoryName(folder.c_str());
-  dir->SetScanDepth(std::max(1, scanDepth));
-  dir->RequirePixelDataOff();
-  vtkDICOMItem query;
-  query.Set(DC::Modality, "RTSTRUCT");
-  dir->SetFindQuery(query);
-  dir->Update();
-  for (int s = 0; s < dir->GetNumberOfSeries(); ++s)
-  {
-    vtkStringArray* files = dir->GetFileNamesForSeries(s);
-    for (vtkIdType f = 0; f < files->GetNumberOfValues(); ++f)
-    {
-      vtkNew<vtkDICOMMetaData> meta;
-      std::string error;
-      if (!parse(files->GetValue(f), meta, error) || meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
-        continue;
-      StructureSetInfo info;
-      info.file = files->GetValue(f);
-      info.referencedSeries = referencedSeriesUIDs(meta);
-      const vtkDICOMValue& list = meta->Get(DC::StructureSetROISequence);
-      for (unsigned int i = 0; i < itemCount(list); ++i)
-        info.roiNames.push_back(list.GetSequenceData()[i].Get(DC::ROIName).AsString());
-      found.push_back(info);
-    }
-  }
-  return found;
-}
+  SliceFrame frame;
+  V3 lattice{ 0.0, 0.0, 0.0 };
+  double dx = 1.0, dy = 1.0, h = 1.0, z0 = 0.0;
+  double first[2] = { 0.0, 0.0 };
+  int dims[3] = { 0, 0, 0 };
+};
 
-bool isDICOMStructureSet(const std::string& file)
+/// The grid of the structure set's voxels (see readDICOMStructureSet), and
+/// each contour's slice on it.
+bool placeGrid(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& imageSeries, std::vector<ROI>& rois,
+  Grid& grid, std::vector<std::string>& notes, std::string& error)
 {
-  // A file cut short still says what it is (its SOP class comes first):
-  // reading it then says what is wrong.
-  vtkNew<vtkDICOMMetaData> meta;
-  std::string error;
-  parse(file, meta, error);
-  return meta->Get(DC::SOPClassUID).AsString() == kRTStructureSetStorage;
-}
-
-bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
-  vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,
-  std::vector<std::string>& notes, std::string& error, vtkAlgorithm* progress)
-{
-  segments.clear();
-  notes.clear();
-  vtkNew<vtkDICOMMetaData> meta;
-  if (!parse(file, meta, error))
-    return false;
-  if (meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
-  {
-    error = "'" + file + "' is not an RT structure set";
-    return false;
-  }
-  std::vector<ROI> rois;
-  int skippedShort = 0;
-  if (!readROIs(meta, rois, skippedShort, error))
-    return false;
-  std::vector<std::string> without;
-  for (const ROI& roi : rois)
-    if (roi.contours.empty())
-    {
-      std::string types;
-      for (const std::string& t : roi.otherTypes)
-        types += (types.empty() ? "" : ", ") + t;
-      without.push_back("'" + roi.name + "'" + (types.empty() ? std::string(" (no contours)") : " (" + types + ")"));
-    }
-  rois.erase(std::remove_if(rois.begin(), rois.end(), [](const ROI& roi) { return roi.contours.empty(); }), rois.end());
-  if (rois.empty())
-  {
-    error = "no ROI of the RT structure set has closed planar contours";
-    if (!without.empty())
-    {
-      error += ":";
-      for (const std::string& w : without)
-        error += " " + w;
-    }
-    return false;
-  }
-  if (!without.empty())
-  {
-    std::string note = "ROIs without closed planar contours are not read:";
-    for (const std::string& w : without)
-      note += " " + w;
-    notes.push_back(note);
-  }
-  if (skippedShort > 0)
-    notes.push_back(std::to_string(skippedShort) + " contour" + (skippedShort == 1 ? " has" : "s have") +
-      " fewer than 3 points and " + (skippedShort == 1 ? "is" : "are") + " not read");
-
   // The frame and the pixel lattice: the referenced CT's, when it is beside
   // the structure set and its slices are parallel to the contours.
   SliceFrame frame;
@@ -488,7 +410,8 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
       image->Get(DC::ImageOrientationPatient).GetValues(iop, 6);
       image->Get(DC::PixelSpacing).GetValues(ps, 2);
       image->Get(DC::ImagePositionPatient).GetValues(ipp, 3);
-      if (sliceFrame(iop, frame) && ps[0] > 0.0 && ps[1] > 0.0 && planarIn(frame, rois))
+      if (sliceFrame(iop, frame) && ps[0] > 0.0 && ps[1] > 0.0 && std::isfinite(ipp[0] + ipp[1] + ipp[2]) &&
+        planarIn(frame, rois))
       {
         fromImages = true;
         dx = ps[1]; // PixelSpacing is (row spacing, column spacing)
@@ -600,9 +523,218 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
       mm(distinct.back() - distinct.front()) + ": too large a volume at " + mm(dx) + " pixels and " + mm(h) + " slices";
     return false;
   }
-  const int dims[3] = { static_cast<int>(nxd), static_cast<int>(nyd), sliceCount };
+  grid.dims[0] = static_cast<int>(nxd);
+  grid.dims[1] = static_cast<int>(nyd);
+  grid.dims[2] = sliceCount;
+  grid.frame = frame;
+  grid.lattice = lattice;
+  grid.dx = dx;
+  grid.dy = dy;
+  grid.h = h;
+  grid.z0 = z0;
+  grid.first[0] = first[0];
+  grid.first[1] = first[1];
+  return true;
+}
+
+/// The voxels of one ROI, from its first slice (`zFirst`) to its last: its
+/// contours filled by VTK (vtkPolyDataToImageStencil, even-odd), the slices
+/// it skips interpolated from the contours on either side (gaps of up to
+/// twice its usual contour spacing; wider ones are left empty, and noted).
+std::vector<unsigned char> fillROI(const ROI& roi, const Grid& grid, int& zFirst, std::vector<std::string>& notes)
+{
+  const int* dims = grid.dims;
   const vtkIdType sliceSize = static_cast<vtkIdType>(dims[0]) * dims[1];
-  const vtkIdType voxels = sliceSize * dims[2];
+  const SliceFrame& frame = grid.frame;
+  const double h = grid.h;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  std::set<int> slices;
+  for (const Contour& c : roi.contours)
+  {
+    slices.insert(c.slice);
+    lines->InsertNextCell(static_cast<int>(c.points.size()) + 1);
+    const vtkIdType start = points->GetNumberOfPoints();
+    for (const V3& p : c.points)
+    {
+      const V3 d = sub(p, grid.lattice);
+      lines->InsertCellPoint(
+        points->InsertNextPoint(dot(frame.r, d) - grid.first[0], dot(frame.c, d) - grid.first[1], c.slice * h));
+    }
+    lines->InsertCellPoint(start); // closed
+  }
+  vtkNew<vtkPolyData> contours;
+  contours->SetPoints(points);
+  contours->SetLines(lines);
+  vtkNew<vtkPolyDataToImageStencil> fill;
+  fill->SetInputData(contours);
+  fill->SetOutputOrigin(0.0, 0.0, 0.0);
+  fill->SetOutputSpacing(grid.dx, grid.dy, h);
+  fill->SetOutputWholeExtent(0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1);
+  fill->Update();
+  vtkImageStencilData* stencil = fill->GetOutput();
+
+  // The ROI's voxels from its first slice to its last: the contours'
+  // slices filled, the slices between them interpolated (gaps of up to
+  // twice its usual contour spacing; wider ones are left as they are).
+  zFirst = *slices.begin();
+  const int zLast = *slices.rbegin();
+  std::vector<unsigned char> mask(static_cast<std::size_t>(sliceSize) * static_cast<std::size_t>(zLast - zFirst + 1), 0);
+  auto sliceOf = [&](int z) { return mask.data() + static_cast<vtkIdType>(z - zFirst) * sliceSize; };
+  for (int z : slices)
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      int iter = 0, r1 = 0, r2 = 0;
+      unsigned char* row = sliceOf(z) + static_cast<vtkIdType>(y) * dims[0];
+      while (stencil->GetNextExtent(r1, r2, 0, dims[0] - 1, y, z, iter))
+        std::fill(row + r1, row + r2 + 1, static_cast<unsigned char>(1));
+    }
+  std::vector<int> steps;
+  for (auto z = std::next(slices.begin()); z != slices.end(); ++z)
+    steps.push_back(*z - *std::prev(z));
+  int interpolated = 0, unbridged = 0;
+  if (!steps.empty())
+  {
+    std::vector<int> sorted = steps;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const int usual = sorted[sorted.size() / 2];
+    for (auto z = std::next(slices.begin()); z != slices.end(); ++z)
+    {
+      const int a = *std::prev(z), b = *z;
+      if (b - a < 2)
+        continue;
+      if (b - a > 2 * usual)
+      {
+        unbridged += b - a - 1;
+        continue;
+      }
+      interpolated += b - a - 1;
+      const std::vector<float> below = signedDistance(sliceOf(a), dims[0], dims[1]);
+      const std::vector<float> above = signedDistance(sliceOf(b), dims[0], dims[1]);
+      for (int t = a + 1; t < b; ++t)
+      {
+        const float w = static_cast<float>(t - a) / static_cast<float>(b - a);
+        unsigned char* out = sliceOf(t);
+        for (vtkIdType p = 0; p < sliceSize; ++p)
+          out[p] = (1.0f - w) * below[static_cast<std::size_t>(p)] + w * above[static_cast<std::size_t>(p)] < 0.0f;
+      }
+    }
+  }
+  if (interpolated + unbridged > 0)
+  {
+    std::string note = "ROI '" + roi.name + "' has no contour on " + std::to_string(interpolated + unbridged) +
+      " of the slices between its first and last (" + mm(h) + " apart): ";
+    if (unbridged == 0)
+      note += "they are filled by interpolating the contours on either side";
+    else if (interpolated == 0)
+      note += "its surface has gaps there (each over twice its usual contour spacing, not bridged)";
+    else
+      note += std::to_string(interpolated) + " are filled by interpolating the contours on either side; at the other " +
+        std::to_string(unbridged) + ", in gaps over twice its usual contour spacing, its surface has gaps";
+    notes.push_back(note);
+  }
+  return mask;
+}
+
+} // namespace
+
+std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth)
+{
+  std::vector<StructureSetInfo> found;
+  vtkNew<vtkDICOMDirectory> dir;
+  ErrorCatcher catcher(dir); // the image scan before it has said what is wrong with the folder
+  dir->SetDirectoryName(folder.c_str());
+  dir->SetScanDepth(std::max(1, scanDepth));
+  dir->RequirePixelDataOff();
+  vtkDICOMItem query;
+  query.Set(DC::Modality, "RTSTRUCT");
+  dir->SetFindQuery(query);
+  dir->Update();
+  for (int s = 0; s < dir->GetNumberOfSeries(); ++s)
+  {
+    vtkStringArray* files = dir->GetFileNamesForSeries(s);
+    for (vtkIdType f = 0; f < files->GetNumberOfValues(); ++f)
+    {
+      vtkNew<vtkDICOMMetaData> meta;
+      std::string error;
+      if (!parse(files->GetValue(f), meta, error) || meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
+        continue;
+      StructureSetInfo info;
+      info.file = files->GetValue(f);
+      info.referencedSeries = referencedSeriesUIDs(meta);
+      const vtkDICOMValue& list = meta->Get(DC::StructureSetROISequence);
+      for (unsigned int i = 0; i < itemCount(list); ++i)
+        info.roiNames.push_back(list.GetSequenceData()[i].Get(DC::ROIName).AsString());
+      found.push_back(info);
+    }
+  }
+  return found;
+}
+
+bool isDICOMStructureSet(const std::string& file)
+{
+  // A file cut short still says what it is (its SOP class comes first):
+  // reading it then says what is wrong.
+  vtkNew<vtkDICOMMetaData> meta;
+  std::string error;
+  parse(file, meta, error);
+  return meta->Get(DC::SOPClassUID).AsString() == kRTStructureSetStorage;
+}
+
+bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
+  vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,
+  std::vector<std::string>& notes, std::string& error, vtkAlgorithm* progress)
+{
+  segments.clear();
+  notes.clear();
+  vtkNew<vtkDICOMMetaData> meta;
+  if (!parse(file, meta, error))
+    return false;
+  if (meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
+  {
+    error = "'" + file + "' is not an RT structure set";
+    return false;
+  }
+  std::vector<ROI> rois;
+  int skippedShort = 0;
+  if (!readROIs(meta, rois, skippedShort, error))
+    return false;
+  std::vector<std::string> without;
+  for (const ROI& roi : rois)
+    if (roi.contours.empty())
+    {
+      std::string types;
+      for (const std::string& t : roi.otherTypes)
+        types += (types.empty() ? "" : ", ") + t;
+      without.push_back("'" + roi.name + "'" + (types.empty() ? std::string(" (no contours)") : " (" + types + ")"));
+    }
+  rois.erase(std::remove_if(rois.begin(), rois.end(), [](const ROI& roi) { return roi.contours.empty(); }), rois.end());
+  if (rois.empty())
+  {
+    error = "no ROI of the RT structure set has closed planar contours";
+    if (!without.empty())
+    {
+      error += ":";
+      for (const std::string& w : without)
+        error += " " + w;
+    }
+    return false;
+  }
+  if (!without.empty())
+  {
+    std::string note = "ROIs without closed planar contours are not read:";
+    for (const std::string& w : without)
+      note += " " + w;
+    notes.push_back(note);
+  }
+  if (skippedShort > 0)
+    notes.push_back(std::to_string(skippedShort) + " contour" + (skippedShort == 1 ? " has" : "s have") +
+      " fewer than 3 points and " + (skippedShort == 1 ? "is" : "are") + " not read");
+
+  Grid grid;
+  if (!placeGrid(meta, imageSeries, rois, grid, notes, error))
+    return false;
+  const vtkIdType voxels = static_cast<vtkIdType>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
 
   // Labels: the ROI numbers, unless one does not fit a label.
   const bool numbered = std::all_of(
@@ -611,7 +743,7 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
     notes.push_back("ROINumbers outside 1 to 65535: the ROIs are labelled 1 to " + std::to_string(rois.size()) +
       " in their order instead");
 
-  // Each ROI filled by VTK, then put in the first layer it does not overlap.
+  // Each ROI filled, then put in the first layer it does not overlap.
   std::vector<std::vector<unsigned short>> layers;
   int largest = 0;
   for (std::size_t i = 0; i < rois.size(); ++i)
@@ -622,96 +754,12 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
       if (progress->GetAbortExecute())
         break;
     }
-    ROI& roi = rois[i];
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkCellArray> lines;
-    std::set<int> slices;
-    for (const Contour& c : roi.contours)
-    {
-      slices.insert(c.slice);
-      lines->InsertNextCell(static_cast<int>(c.points.size()) + 1);
-      const vtkIdType start = points->GetNumberOfPoints();
-      for (const V3& p : c.points)
-      {
-        const V3 d = sub(p, lattice);
-        lines->InsertCellPoint(
-          points->InsertNextPoint(dot(frame.r, d) - first[0], dot(frame.c, d) - first[1], c.slice * h));
-      }
-      lines->InsertCellPoint(start); // closed
-    }
-    vtkNew<vtkPolyData> contours;
-    contours->SetPoints(points);
-    contours->SetLines(lines);
-    vtkNew<vtkPolyDataToImageStencil> fill;
-    fill->SetInputData(contours);
-    fill->SetOutputOrigin(0.0, 0.0, 0.0);
-    fill->SetOutputSpacing(dx, dy, h);
-    fill->SetOutputWholeExtent(0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1);
-    fill->Update();
-    vtkImageStencilData* stencil = fill->GetOutput();
-
-    // The ROI's voxels from its first slice to its last: the contours'
-    // slices filled, the slices between them interpolated (gaps of up to
-    // twice its usual contour spacing; wider ones are left as they are).
-    const int zFirst = *slices.begin(), zLast = *slices.rbegin();
-    std::vector<unsigned char> mask(static_cast<std::size_t>(sliceSize) * static_cast<std::size_t>(zLast - zFirst + 1), 0);
-    auto sliceOf = [&](int z) { return mask.data() + static_cast<vtkIdType>(z - zFirst) * sliceSize; };
-    for (int z : slices)
-      for (int y = 0; y < dims[1]; ++y)
-      {
-        int iter = 0, r1 = 0, r2 = 0;
-        unsigned char* row = sliceOf(z) + static_cast<vtkIdType>(y) * dims[0];
-        while (stencil->GetNextExtent(r1, r2, 0, dims[0] - 1, y, z, iter))
-          std::fill(row + r1, row + r2 + 1, static_cast<unsigned char>(1));
-      }
-    std::vector<int> steps;
-    for (auto z = std::next(slices.begin()); z != slices.end(); ++z)
-      steps.push_back(*z - *std::prev(z));
-    int interpolated = 0, unbridged = 0;
-    if (!steps.empty())
-    {
-      std::vector<int> sorted = steps;
-      std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-      const int usual = sorted[sorted.size() / 2];
-      for (auto z = std::next(slices.begin()); z != slices.end(); ++z)
-      {
-        const int a = *std::prev(z), b = *z;
-        if (b - a < 2)
-          continue;
-        if (b - a > 2 * usual)
-        {
-          unbridged += b - a - 1;
-          continue;
-        }
-        interpolated += b - a - 1;
-        const std::vector<float> below = signedDistance(sliceOf(a), dims[0], dims[1]);
-        const std::vector<float> above = signedDistance(sliceOf(b), dims[0], dims[1]);
-        for (int t = a + 1; t < b; ++t)
-        {
-          const float w = static_cast<float>(t - a) / static_cast<float>(b - a);
-          unsigned char* out = sliceOf(t);
-          for (vtkIdType p = 0; p < sliceSize; ++p)
-            out[p] = (1.0f - w) * below[static_cast<std::size_t>(p)] + w * above[static_cast<std::size_t>(p)] < 0.0f;
-        }
-      }
-    }
-    if (interpolated + unbridged > 0)
-    {
-      std::string note = "ROI '" + roi.name + "' has no contour on " + std::to_string(interpolated + unbridged) +
-        " of the slices between its first and last (" + mm(h) + " apart): ";
-      if (unbridged == 0)
-        note += "they are filled by interpolating the contours on either side";
-      else if (interpolated == 0)
-        note += "its surface has gaps there (each over twice its usual contour spacing, not bridged)";
-      else
-        note += std::to_string(interpolated) + " are filled by interpolating the contours on either side; at the other " +
-          std::to_string(unbridged) + ", in gaps over twice its usual contour spacing, its surface has gaps";
-      notes.push_back(note);
-    }
-
-    const int label = numbered ? roi.number : static_cast<int>(i) + 1;
+    int zFirst = 0;
+    const std::vector<unsigned char> mask = fillROI(rois[i], grid, zFirst, notes);
+    const int label = numbered ? rois[i].number : static_cast<int>(i) + 1;
     largest = std::max(largest, label);
-    const vtkIdType offset = static_cast<vtkIdType>(zFirst) * sliceSize, span = static_cast<vtkIdType>(mask.size());
+    const vtkIdType offset = static_cast<vtkIdType>(zFirst) * grid.dims[0] * grid.dims[1];
+    const vtkIdType span = static_cast<vtkIdType>(mask.size());
     std::size_t l = 0;
     for (; l < layers.size(); ++l)
     {
@@ -735,17 +783,18 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
     for (vtkIdType v = 0; v < span; ++v)
       if (mask[static_cast<std::size_t>(v)])
         layer[v] = static_cast<unsigned short>(label);
-    segments.push_back({ label, roi.name, static_cast<int>(l) });
+    segments.push_back({ label, rois[i].name, static_cast<int>(l) });
   }
   if (layers.empty()) // stopped before the first ROI
     layers.emplace_back(static_cast<std::size_t>(voxels), 0);
-  const double spacing[3] = { dx, dy, h };
-  setLayers(output, dims, spacing, layers, std::max(largest, 1));
+  const double spacing[3] = { grid.dx, grid.dy, grid.h };
+  setLayers(output, grid.dims, spacing, layers, std::max(largest, 1));
+  const SliceFrame& f = grid.frame;
   V3 corner;
   for (std::size_t a = 0; a < 3; ++a)
-    corner[a] = lattice[a] - dot(frame.n, lattice) * frame.n[a] + first[0] * frame.r[a] + first[1] * frame.c[a] +
-      z0 * frame.n[a];
-  setPatientMatrix(patientMatrix, frame, corner);
+    corner[a] = grid.lattice[a] - dot(f.n, grid.lattice) * f.n[a] + grid.first[0] * f.r[a] + grid.first[1] * f.c[a] +
+      grid.z0 * f.n[a];
+  setPatientMatrix(patientMatrix, f, corner);
   return true;
 }
 
