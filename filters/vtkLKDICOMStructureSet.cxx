@@ -12,18 +12,18 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
-#include <vtkDICOMItem.h>
+#include <vtkDataArray.h>
 #include <vtkDICOMDirectory.h>
+#include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
 #include <vtkDICOMParser.h>
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMValue.h>
 #include <vtkImageData.h>
 #include <vtkImageEuclideanDistance.h>
-#include <vtkPointData.h>
-#include <vtkDataArray.h>
 #include <vtkImageStencilData.h>
 #include <vtkMatrix4x4.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataToImageStencil.h>
