@@ -357,6 +357,18 @@ int vtkLKBoneSurfaceFilter::RequestData(
       return 0;
     }
     chosen = &*found;
+    // Two segments of one name (an RT structure set holding an organ twice,
+    // as drawn and as edited): the first is taken, and the user told how to
+    // take the other.
+    std::string others;
+    for (const Segment& seg : segments)
+      if (&seg != chosen && lowered(seg.name) == lowered(chosen->name))
+        others += (others.empty() ? "" : ", ") + std::to_string(seg.label) + " (layer " + std::to_string(seg.layer) + ")";
+    if (!others.empty())
+      vtkWarningMacro("More than one segment is named '" << wanted << "': the first, label " << chosen->label
+                                                         << " (layer " << chosen->layer
+                                                         << "), is taken; the others have the labels " << others
+                                                         << " (Label, --label N takes one when no other has its value).");
   }
   else if (this->Label > 0 || layered)
   {

@@ -424,6 +424,36 @@ TEST(DicomStructureSet, SlicesBetweenContoursAreInterpolatedAndUnevenPlanesWarne
   EXPECT_DOUBLE_EQ(spacing[2], 1.0);
 }
 
+TEST(DicomStructureSet, TwoROIsOfOneNameAreWarnedOf)
+{
+  // An organ twice (as drawn and as edited): by name the first is taken,
+  // with a warning naming the other's label; by label the other.
+  const std::string dir = tempFolder("rtstruct_same_name");
+  writeStructureSet(dir + "/rs.dcm",
+    { { 3, "Mandible", { rectangle(0.5, 5.5, 0.5, 5.5, 0.0), rectangle(0.5, 5.5, 0.5, 5.5, 2.0) } },
+      { 8, "mandible", { rectangle(2.5, 9.5, 0.5, 5.5, 0.0), rectangle(2.5, 9.5, 0.5, 5.5, 2.0) } } },
+    "1.2.3");
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName((dir + "/rs.dcm").c_str());
+  lktest::ErrorRecorder quiet(reader); // its warnings: no CT beside it
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  lktest::ErrorRecorder rec(bone);
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->SetLabelName("Mandible");
+  bone->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(bone->GetEffectiveLabel(), 3);
+  EXPECT_NE(rec.warningMessages.find("More than one segment is named 'Mandible': the first, label 3 (layer 0), is "
+                                     "taken; the others have the labels 8 (layer 1)"),
+    std::string::npos)
+    << rec.warningMessages;
+  bone->SetLabelName(nullptr);
+  bone->SetLabel(8);
+  bone->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_STREQ(bone->GetEffectiveSegmentName(), "mandible");
+}
+
 TEST(DicomStructureSet, BrokenStructureSetsAreClearErrors)
 {
   const std::string dir = tempFolder("rtstruct_broken");
