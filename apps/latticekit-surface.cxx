@@ -10,7 +10,6 @@
 #include <vtkMassProperties.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkStringArray.h>
 
 #include <chrono>
 #include <cstring>
@@ -215,19 +214,14 @@ int main(int argc, char* argv[])
   if (cropping)
     std::cout << "crop box   x " << crop[0] << " to " << crop[1] << ", y " << crop[2] << " to " << crop[3] << ", z "
               << crop[4] << " to " << crop[5] << " mm (patient), padded with air\n";
+  if (reader->GetNumberOfSegments() > 0)
   {
     // A segmentation's segments, so that the next run can name another.
-    vtkFieldData* fields = reader->GetOutput()->GetFieldData();
-    auto* names = vtkStringArray::SafeDownCast(fields->GetAbstractArray("SegmentNames"));
-    vtkDataArray* values = fields->GetArray("SegmentLabelValues");
-    if (names && values && names->GetNumberOfValues() == values->GetNumberOfTuples())
-    {
-      std::cout << "segments   ";
-      for (vtkIdType i = 0; i < names->GetNumberOfValues(); ++i)
-        std::cout << (i ? ", " : "") << values->GetTuple1(i) << " '" << names->GetValue(i) << "'";
-      const int layers = reader->GetOutput()->GetNumberOfScalarComponents();
-      std::cout << (layers > 1 ? " (in " + std::to_string(layers) + " layers: they overlap)" : std::string()) << "\n";
-    }
+    std::cout << "segments   ";
+    for (int i = 0; i < reader->GetNumberOfSegments(); ++i)
+      std::cout << (i ? ", " : "") << reader->GetSegmentLabelValue(i) << " '" << reader->GetSegmentName(i) << "'";
+    const int layers = reader->GetOutput()->GetNumberOfScalarComponents();
+    std::cout << (layers > 1 ? " (in " + std::to_string(layers) + " layers: they overlap)" : std::string()) << "\n";
   }
   const std::string segment = surface->GetEffectiveSegmentName();
   std::cout << "iso value  " << surface->GetEffectiveIsoValue()

@@ -616,6 +616,7 @@ void vtkLKMedicalImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeriesIndex: " << this->SeriesIndex << "\n";
   os << indent << "SliceSpacing: " << this->SliceSpacing << "\n";
   os << indent << "FileFormat: " << this->FileFormat << "\n";
+  os << indent << "NumberOfSegments: " << this->GetNumberOfSegments() << "\n";
 }
 
 namespace
@@ -666,6 +667,9 @@ bool vtkLKMedicalImageReader::ReadVolume()
   this->GantryTilt = this->MinimumSliceGap = this->MaximumSliceGap = 0.0;
   this->NumberOfInputSlices = 0;
   this->OrientationKnown = false;
+  this->SegmentNames.clear();
+  this->SegmentLabelValues.clear();
+  this->SegmentLayers.clear();
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro("No FileName given.");
@@ -1108,6 +1112,9 @@ bool vtkLKMedicalImageReader::ReadVolume()
     layers->SetName("SegmentLayers");
     for (const Segment& seg : segments)
     {
+      this->SegmentNames.push_back(seg.name);
+      this->SegmentLabelValues.push_back(seg.label);
+      this->SegmentLayers.push_back(seg.layer);
       names->InsertNextValue(seg.name);
       values->InsertNextValue(seg.label);
       layers->InsertNextValue(seg.layer);
@@ -1127,6 +1134,21 @@ bool vtkLKMedicalImageReader::ReadVolume()
   }
   this->VolumeTime = this->GetMTime();
   return true;
+}
+
+const char* vtkLKMedicalImageReader::GetSegmentName(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfSegments() ? this->SegmentNames[static_cast<std::size_t>(i)].c_str() : nullptr;
+}
+
+int vtkLKMedicalImageReader::GetSegmentLabelValue(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfSegments() ? this->SegmentLabelValues[static_cast<std::size_t>(i)] : 0;
+}
+
+int vtkLKMedicalImageReader::GetSegmentLayer(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfSegments() ? this->SegmentLayers[static_cast<std::size_t>(i)] : -1;
 }
 
 int vtkLKMedicalImageReader::RequestInformation(

@@ -69,6 +69,7 @@
 #include "vtkImageAlgorithm.h"
 
 #include <string>
+#include <vector>
 
 class vtkImageData;
 class vtkMatrix4x4;
@@ -115,6 +116,20 @@ public:
   const char* GetFileFormat() { return this->FileFormat.c_str(); }
 
   ///@{
+  /// A segmentation's segments, after an update: a 3D Slicer .seg.nrrd's, a
+  /// DICOM SEG's, an RT structure set's ROIs (none for a CT or a plain label
+  /// map). Each has a name, a label value and a layer (the output's component
+  /// that holds it); out of range, a name of nullptr, a value of 0 and a
+  /// layer of -1. The output's field data holds the same ("SegmentNames",
+  /// "SegmentLabelValues", "SegmentLayers"), which vtkLKBoneSurfaceFilter's
+  /// LabelName looks up.
+  int GetNumberOfSegments() const { return static_cast<int>(this->SegmentNames.size()); }
+  const char* GetSegmentName(int i) const;
+  int GetSegmentLabelValue(int i) const;
+  int GetSegmentLayer(int i) const;
+  ///@}
+
+  ///@{
   /// DICOM only, after an update: the number of series in the folder, the
   /// gantry tilt in degrees, the smallest and largest slice gaps in mm, and
   /// the number of slices read.
@@ -149,6 +164,9 @@ protected:
   double MaximumSliceGap = 0.0;
   int NumberOfInputSlices = 0;
   bool OrientationKnown = false;
+  std::vector<std::string> SegmentNames;
+  std::vector<int> SegmentLabelValues;
+  std::vector<int> SegmentLayers;
 
 private:
   vtkLKMedicalImageReader(const vtkLKMedicalImageReader&) = delete;

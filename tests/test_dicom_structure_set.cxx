@@ -223,6 +223,14 @@ void expectThePlansVoxels(vtkLKMedicalImageReader* reader)
   EXPECT_EQ(segments.at("Body"), std::make_pair(1, 0));
   EXPECT_EQ(segments.at("Mandible"), std::make_pair(5, 1));
   EXPECT_EQ(segments.at("Canal"), std::make_pair(3, 1)); // beside the mandible: the same layer
+  // The reader says the same (for scripts that list a file's organs).
+  ASSERT_EQ(reader->GetNumberOfSegments(), 3);
+  EXPECT_STREQ(reader->GetSegmentName(1), "Mandible");
+  EXPECT_EQ(reader->GetSegmentLabelValue(1), 5);
+  EXPECT_EQ(reader->GetSegmentLayer(1), 1);
+  EXPECT_EQ(reader->GetSegmentName(3), nullptr);
+  EXPECT_EQ(reader->GetSegmentLabelValue(-1), 0);
+  EXPECT_EQ(reader->GetSegmentLayer(3), -1);
   EXPECT_EQ(count(out, 0, 1), 9610);
   EXPECT_EQ(count(out, 1, 5), 560);
   EXPECT_EQ(count(out, 1, 3), 91); // the inner contour is a hole

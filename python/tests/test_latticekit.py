@@ -232,8 +232,9 @@ class PipelineTest(unittest.TestCase):
             bone.Update()
         self.assertEqual(reader.GetFileFormat(), "DICOM RTSTRUCT")
         self.assertEqual(len(warnings), 2)  # no CT beside it; the isocentre is a point
-        names = reader.GetOutput().GetFieldData().GetAbstractArray("SegmentNames")
-        self.assertEqual([names.GetValue(i) for i in range(names.GetNumberOfValues())], ["Mandible"])
+        self.assertEqual([(reader.GetSegmentName(i), reader.GetSegmentLabelValue(i), reader.GetSegmentLayer(i))
+                          for i in range(reader.GetNumberOfSegments())], [("Mandible", 4, 0)])
+        self.assertIsNone(reader.GetSegmentName(1))
         self.assertEqual(bone.GetEffectiveLabel(), 4)
         b = bone.GetOutput().GetBounds()
         for centre, expected in zip((0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])),
