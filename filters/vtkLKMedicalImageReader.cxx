@@ -337,7 +337,9 @@ std::string structureSetsNote(const std::vector<lkvtk::StructureSetInfo>& sets, 
      << " (organs contoured for radiotherapy); give its file to read its ROIs as segments:";
   for (const auto& set : sets)
   {
-    os << "\n  '" << set.file << "'" << (std::count(set.referencedSeries.begin(), set.referencedSeries.end(), seriesUID) ? ", drawn on this series" : "") << ": ";
+    const bool drawnOnIt =
+      std::find(set.referencedSeries.begin(), set.referencedSeries.end(), seriesUID) != set.referencedSeries.end();
+    os << "\n  '" << set.file << "'" << (drawnOnIt ? ", drawn on this series" : "") << ": ";
     for (std::size_t i = 0; i < set.roiNames.size() && i < 8; ++i)
       os << (i ? ", '" : "'") << set.roiNames[i] << "'";
     if (set.roiNames.size() > 8)
@@ -1170,6 +1172,9 @@ int vtkLKMedicalImageReader::RequestInformation(
       // filter gives when stopped, not a volume half read. The executive
       // clears AbortExecute before RequestData, so the stop is kept here.
       this->Volume->Initialize();
+      this->SegmentNames.clear(); // no volume, no segments
+      this->SegmentLabelValues.clear();
+      this->SegmentLayers.clear();
       this->VolumeTime = 0;
       this->ReadStopped = true;
       vtkWarningMacro("Aborted.");

@@ -462,6 +462,37 @@ TEST(DicomStructureSet, TwoROIsOfOneNameAreWarnedOf)
   EXPECT_STREQ(bone->GetEffectiveSegmentName(), "mandible");
 }
 
+TEST(DicomStructureSet, ReadingReportsProgressAndStopsWithNoVolumeAndNoSegments)
+{
+  // tests/data/rtstruct/head_and_neck.dcm: a body, a mandible, a cord, a point.
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/rtstruct/head_and_neck.dcm").c_str());
+  lktest::ErrorRecorder rec(reader);
+  {
+    lktest::ProgressRecorder progress(reader);
+    reader->Update();
+    EXPECT_GE(std::count_if(progress.progress.begin(), progress.progress.end(), [](double p) { return p > 0.0 && p < 1.0; }),
+      3);
+  }
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetNumberOfSegments(), 3);
+  {
+    lktest::ProgressRecorder progress(reader);
+    progress.stopAt = 0.5; // after the first ROIs
+    reader->Modified();
+    reader->Update();
+  }
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_NE(rec.warningMessages.find("Aborted."), std::string::npos) << rec.warningMessages;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(reader->GetNumberOfSegments(), 0);
+  reader->Modified();
+  reader->Update();
+  EXPECT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetNumberOfSegments(), 3);
+  EXPECT_GT(reader->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 TEST(DicomStructureSet, BrokenStructureSetsAreClearErrors)
 {
   const std::string dir = tempFolder("rtstruct_broken");
