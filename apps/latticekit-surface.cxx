@@ -3,6 +3,7 @@
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
+#include "vtkLKStructureSetWriter.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -10,6 +11,7 @@
 #include <vtkMassProperties.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtksys/SystemTools.hxx>
 
 #include <chrono>
 #include <cstring>
@@ -25,7 +27,8 @@ void usage(std::ostream& os)
         "\n"
         "INPUT is a DICOM folder (or a file of the series, a DICOM SEG or an RT structure set),\n"
         ".nrrd/.nhdr, .mha/.mhd or .nii/.nii.gz.\n"
-        "OUTPUT is written by extension: .vtp, .vtk, .stl, .ply or .obj (patient LPS coordinates, mm).\n"
+        "OUTPUT is written by extension: .vtp, .vtk, .stl, .ply or .obj (patient LPS coordinates, mm),\n"
+        "or .dcm: an RT structure set (the surface as an ROI; on a DICOM CT's slices, in its study).\n"
         "\n"
         "  --iso V            iso value (default 300, bone in HU; label maps use 0.5)\n"
         "  --largest          keep the largest component (default)\n"
@@ -138,7 +141,7 @@ int main(int argc, char* argv[])
   }
   lkapp::installMessageHandler(quiet);
   std::string error;
-  if (!lkapp::checkWritable(output, error))
+  if (!lkapp::checkWritable(output, error, true))
   {
     std::cerr << "error: " << error << "\n";
     return 1;
@@ -190,7 +193,31 @@ int main(int argc, char* argv[])
               << "\n";
   }
   vtkPolyData* mesh = surface->GetOutput();
-  if (!lkapp::writeMesh(mesh, output, error))
+  std::string written;
+  if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(output)) == ".dcm")
+  {
+    // An RT structure set, for a PACS viewer or a planning system: the
+    // surface as an ROI, its contours on the CT's slices when the input is
+    // a DICOM CT (the set then belongs to its patient and study).
+    vtkNew<vtkLKStructureSetWriter> set;
+    set->SetInputData(mesh);
+    const std::string segment = surface->GetEffectiveSegmentName();
+    set->SetROIName(0, segment.empty() ? "Bone" : segment.c_str());
+    const bool onTheCT = std::strcmp(reader->GetFileFormat(), "DICOM") == 0;
+    if (onTheCT)
+    {
+      set->SetReferenceFileName(input.c_str());
+      set->SetReferenceSeriesIndex(static_cast<int>(series));
+    }
+    set->SetFileName(output.c_str());
+    set->Write();
+    if (lkapp::errorCount() > 0)
+      return 1;
+    written = " (RT structure set, ROI '" + std::string(set->GetROIName(0)) + "': " +
+      std::to_string(set->GetNumberOfContours()) + " contours on " +
+      (onTheCT ? "the CT's slices" : "axial planes 1 mm apart") + ")";
+  }
+  else if (!lkapp::writeMesh(mesh, output, error))
   {
     std::cerr << "error: " << error << "\n";
     return 1;
@@ -265,6 +292,6 @@ int main(int argc, char* argv[])
             << (space.empty() ? "the volume's data coordinates (the file gives no orientation; no SPACE tag written)"
                               : space + " patient coordinates (tagged SPACE=" + space + ", as 3D Slicer reads it)")
             << "\n";
-  std::cout << "written    " << output << " in " << seconds << " s\n";
+  std::cout << "written    " << output << written << " in " << seconds << " s\n";
   return 0;
 }

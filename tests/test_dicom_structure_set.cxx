@@ -3,8 +3,14 @@
 #include "TestSupport.h"
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
+#include "vtkLKStructureSetWriter.h"
 
+#include <vtkAppendPolyData.h>
+#include <vtkCell.h>
 #include <vtkCellArray.h>
+#include <vtkIdList.h>
+#include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
 #include <vtkDICOMCTGenerator.h>
 #include <vtkDICOMCompiler.h>
 #include <vtkDICOMItem.h>
@@ -25,6 +31,9 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkStripper.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkTriangleFilter.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <gtest/gtest.h>
@@ -792,4 +801,261 @@ TEST(DicomStructureSet, AMandibleContouredSliceBySliceIsItsLabelMapAgain)
   const double dice = 2.0 * sparseRight / static_cast<double>(sparseFilled + inside);
   EXPECT_GT(dice, 0.95); // 0.962: 19,806 of the 19,959 voxels filled are the label map's 21,222
   EXPECT_GT(sparseFilled, inside * 9 / 10);
+}
+
+namespace
+{
+/// A closed box [x0, x1] x [y0, y1] x [z0, z1] (patient mm), triangulated.
+vtkSmartPointer<vtkPolyData> box(double x0, double x1, double y0, double y1, double z0, double z1)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(x0, x1, y0, y1, z0, z1);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  triangles->Update();
+  return triangles->GetOutput();
+}
+} // namespace
+
+TEST(DicomStructureSet, SurfacesAreWrittenOnTheSlicesOfTheirCT)
+{
+  // Two boxes written as ROIs of a set that belongs to the CT they lie in:
+  // its study and frame of reference, each contour on a CT slice naming its
+  // image. Read back, they fill the CT's voxels they cover, exactly.
+  const std::string dir = tempFolder("rtstruct_written");
+  const std::string uid = writeSmallCT(dir);
+  vtkNew<vtkLKStructureSetWriter> writer;
+  lktest::ErrorRecorder rec(writer);
+  writer->AddInputData(box(-10.5, -2.5, -5.5, 4.5, -5.0, 5.0));  // 8 x 10 pixels on the slices -4 to 4: 400
+  writer->AddInputData(box(0.5, 10.5, 0.5, 10.5, -1.0, 3.0));    // 10 x 10 on 0 and 2: 200
+  writer->SetROIName(0, "Mandible");
+  writer->SetROIName(1, "Resection");
+  writer->SetReferenceFileName(dir.c_str());
+  writer->SetFileName((dir + "/plan.dcm").c_str());
+  ASSERT_EQ(writer->Write(), 1) << rec.messages;
+  EXPECT_EQ(rec.errors + rec.warnings, 0) << rec.messages << rec.warningMessages;
+  EXPECT_EQ(writer->GetNumberOfContours(), 7);
+  EXPECT_FALSE(vtksys::SystemTools::FileExists(dir + "/plan.dcm.part"));
+
+  vtkNew<vtkDICOMMetaData> written, ct;
+  for (auto [file, meta] : { std::make_pair(dir + "/plan.dcm", written.GetPointer()),
+         std::make_pair(dir + "/ct_001.dcm", ct.GetPointer()) })
+  {
+    vtkNew<vtkDICOMParser> parser;
+    parser->SetFileName(file.c_str());
+    parser->SetMetaData(meta);
+    parser->Update();
+  }
+  EXPECT_EQ(written->Get(DC::StudyInstanceUID).AsString(), ct->Get(DC::StudyInstanceUID).AsString());
+  const vtkDICOMItem& frame = written->Get(DC::ReferencedFrameOfReferenceSequence).GetSequenceData()[0];
+  EXPECT_EQ(frame.Get(DC::FrameOfReferenceUID).AsString(), ct->Get(DC::FrameOfReferenceUID).AsString());
+  const vtkDICOMItem& series = frame.Get(DC::RTReferencedStudySequence).GetSequenceData()[0]
+                                 .Get(DC::RTReferencedSeriesSequence).GetSequenceData()[0];
+  EXPECT_EQ(series.Get(DC::SeriesInstanceUID).AsString(), uid);
+  EXPECT_EQ(series.Get(DC::ContourImageSequence).GetNumberOfValues(), 12u); // every CT image
+  const vtkDICOMItem& firstContour = written->Get(DC::ROIContourSequence).GetSequenceData()[0]
+                                       .Get(DC::ContourSequence).GetSequenceData()[0];
+  EXPECT_EQ(firstContour.Get(DC::ContourImageSequence).GetNumberOfValues(), 1u);
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder readRec(reader);
+  reader->SetFileName((dir + "/plan.dcm").c_str());
+  reader->Update();
+  ASSERT_EQ(readRec.errors, 0) << readRec.messages;
+  EXPECT_EQ(readRec.warnings, 0) << readRec.warningMessages; // the CT's grid, no gaps
+  ASSERT_EQ(reader->GetNumberOfSegments(), 2);
+  EXPECT_STREQ(reader->GetSegmentName(1), "Resection");
+  EXPECT_EQ(count(reader->GetOutput(), 0, 1), 400);
+  EXPECT_EQ(count(reader->GetOutput(), 0, 2), 200);
+}
+
+TEST(DicomStructureSet, TheMandibleSurfaceWrittenAndReadBackKeepsItsShape)
+{
+  // The TCIA mandible's bone surface, without a CT to refer to: contours on
+  // axial planes 1 mm apart, read back on a grid of their own.
+  vtkNew<vtkLKMedicalImageReader> nrrd;
+  nrrd->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(nrrd->GetOutputPort());
+  vtkNew<vtkMassProperties> original;
+  original->SetInputConnection(bone->GetOutputPort());
+  original->Update();
+  const std::string dir = tempFolder("rtstruct_mandible_written");
+  vtkNew<vtkLKStructureSetWriter> writer;
+  lktest::ErrorRecorder rec(writer);
+  writer->SetInputConnection(bone->GetOutputPort());
+  writer->SetROIName(0, "Mandible");
+  writer->SetFileName((dir + "/mandible.dcm").c_str());
+  ASSERT_EQ(writer->Write(), 1) << rec.messages;
+  EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+  EXPECT_GT(writer->GetNumberOfContours(), 80);
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName((dir + "/mandible.dcm").c_str());
+  lktest::ErrorRecorder readRec(reader); // "not in its folder": no CT
+  vtkNew<vtkLKBoneSurfaceFilter> again;
+  again->SetInputConnection(reader->GetOutputPort());
+  again->SetLabelName("Mandible");
+  vtkNew<vtkMassProperties> back;
+  back->SetInputConnection(again->GetOutputPort());
+  back->Update();
+  ASSERT_EQ(readRec.errors, 0) << readRec.messages;
+  EXPECT_NEAR(back->GetVolume(), original->GetVolume(), 0.03 * original->GetVolume());
+  double b1[6], b2[6];
+  bone->GetOutput()->GetBounds(b1);
+  again->GetOutput()->GetBounds(b2);
+  for (int a = 0; a < 6; ++a)
+    EXPECT_NEAR(b1[a], b2[a], 1.5) << a;
+}
+
+TEST(DicomStructureSet, LongSectionsAreOneContourAndOpenOnesAreLeftOut)
+{
+  // A cylinder of 3,000 facets: each section one closed contour of 3,000
+  // points (vtkStripper's default cut them into open pieces of 1,000).
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetResolution(3000);
+  cylinder->SetRadius(20.0);
+  cylinder->SetHeight(10.5);
+  cylinder->SetCenter(0.0, 0.0, 0.0);
+  vtkNew<vtkTransform> upright; // the source's axis is y: turn it along z
+  upright->RotateX(90.0);
+  vtkNew<vtkTransformPolyDataFilter> turned;
+  turned->SetTransform(upright);
+  turned->SetInputConnection(cylinder->GetOutputPort());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(turned->GetOutputPort());
+  const std::string dir = tempFolder("rtstruct_long");
+  vtkNew<vtkLKStructureSetWriter> writer;
+  lktest::ErrorRecorder rec(writer);
+  writer->SetInputConnection(triangles->GetOutputPort());
+  writer->SetSliceSpacing(2.0);
+  writer->SetFileName((dir + "/cylinder.dcm").c_str());
+  ASSERT_EQ(writer->Write(), 1) << rec.messages;
+  EXPECT_EQ(writer->GetNumberOfContours(), 5); // z = -4, -2, 0, 2, 4
+  EXPECT_EQ(writer->GetNumberOfOpenContours(), 0);
+  EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+
+  // A box without its top: its sections are open, left out with a warning.
+  vtkSmartPointer<vtkPolyData> open = box(0, 5, 0, 5, -3, 3);
+  vtkNew<vtkPolyData> cut;
+  cut->SetPoints(open->GetPoints());
+  vtkNew<vtkCellArray> faces;
+  for (vtkIdType c = 0; c < open->GetNumberOfCells(); ++c)
+  {
+    double centre[3] = { 0, 0, 0 };
+    vtkIdList* ids = open->GetCell(c)->GetPointIds();
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      centre[0] += open->GetPoint(ids->GetId(k))[0] / ids->GetNumberOfIds();
+    if (centre[0] < 4.99) // drop the face at x = 5: every section is open
+      faces->InsertNextCell(ids);
+  }
+  cut->SetPolys(faces);
+  vtkNew<vtkAppendPolyData> both; // an open part and a closed one in one surface
+  both->AddInputData(cut);
+  both->AddInputData(box(10, 15, 0, 5, -3, 3));
+  vtkNew<vtkLKStructureSetWriter> openWriter;
+  lktest::ErrorRecorder openRec(openWriter);
+  openWriter->SetInputConnection(both->GetOutputPort());
+  openWriter->SetSliceSpacing(2.0);
+  openWriter->SetFileName((dir + "/open.dcm").c_str());
+  ASSERT_EQ(openWriter->Write(), 1) << openRec.messages;
+  EXPECT_GE(openWriter->GetNumberOfOpenContours(), 3); // at least one piece per plane
+  EXPECT_EQ(openWriter->GetNumberOfContours(), 3); // the closed box's
+  EXPECT_NE(openRec.warningMessages.find(" open piece(s) of contour left out: a surface is not closed where the planes "
+                                        "cut it."),
+    std::string::npos)
+    << openRec.warningMessages;
+
+  // Nothing but open sections: an error that says how to close it.
+  vtkNew<vtkLKStructureSetWriter> onlyOpen;
+  lktest::ErrorRecorder onlyOpenRec(onlyOpen);
+  onlyOpen->AddInputData(cut);
+  onlyOpen->SetROIName(0, "Skull");
+  onlyOpen->SetSliceSpacing(2.0);
+  onlyOpen->SetFileName((dir + "/only_open.dcm").c_str());
+  EXPECT_EQ(onlyOpen->Write(), 0);
+  EXPECT_NE(onlyOpenRec.messages.find("'Skull' (input 0) has only open sections on the contour planes ("),
+    std::string::npos)
+    << onlyOpenRec.messages;
+  EXPECT_NE(onlyOpenRec.messages.find(" open pieces): the surface is not closed where they cut it (close it first"),
+    std::string::npos)
+    << onlyOpenRec.messages;
+  EXPECT_FALSE(vtksys::SystemTools::FileExists(dir + "/only_open.dcm"));
+}
+
+TEST(DicomStructureSet, WritingBadInputIsAClearErrorAndKeepsAnEarlierFile)
+{
+  const std::string dir = tempFolder("rtstruct_write_errors");
+  auto write = [&](vtkLKStructureSetWriter* writer, std::string& messages) {
+    lktest::ErrorRecorder rec(writer);
+    writer->Write();
+    messages = rec.messages;
+    return rec.errors;
+  };
+  std::string messages;
+  {
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 0, 5));
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("No FileName given."), std::string::npos) << messages;
+  }
+  {
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(vtkNew<vtkPolyData>());
+    writer->SetFileName((dir + "/x.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("Input 0 has no faces"), std::string::npos) << messages;
+  }
+  for (double spacing : { 0.0, std::numeric_limits<double>::quiet_NaN(), 1000.0 })
+  {
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 0, 5));
+    writer->SetSliceSpacing(spacing);
+    writer->SetFileName((dir + "/x.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("SliceSpacing must be 0.01 to 100 mm"), std::string::npos) << messages;
+  }
+  {
+    // A box that lies between two planes 10 mm apart.
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 1, 4));
+    writer->SetSliceSpacing(10.0);
+    writer->SetROIName(0, "Chip");
+    writer->SetFileName((dir + "/x.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("'Chip' (input 0) crosses none of the contour planes"), std::string::npos) << messages;
+  }
+  {
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 0, 5));
+    writer->SetReferenceFileName((dir + "/no-such-ct").c_str());
+    writer->SetFileName((dir + "/x.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("Cannot use the reference CT"), std::string::npos) << messages;
+  }
+  EXPECT_FALSE(vtksys::SystemTools::FileExists(dir + "/x.dcm"));
+  {
+    // An earlier file survives a write that fails.
+    std::ofstream(dir + "/kept.dcm") << "earlier";
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 1, 4));
+    writer->SetSliceSpacing(10.0);
+    writer->SetFileName((dir + "/kept.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    std::string kept;
+    std::getline(std::ifstream(dir + "/kept.dcm"), kept);
+    EXPECT_EQ(kept, "earlier");
+  }
+  {
+    // The file cannot take its place (a folder of the same name is in the
+    // way): an error, and no part file left behind.
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 0, 5));
+    writer->SetFileName((dir + "/blocked").c_str());
+    vtksys::SystemTools::MakeDirectory(dir + "/blocked/inside");
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("Cannot write '" + dir + "/blocked'"), std::string::npos) << messages;
+    EXPECT_FALSE(vtksys::SystemTools::FileExists(dir + "/blocked.part"));
+    EXPECT_TRUE(vtksys::SystemTools::FileIsDirectory(dir + "/blocked/inside"));
+  }
 }

@@ -941,12 +941,14 @@ void Arguments::unknown(const std::string& arg)
   std::exit(2);
 }
 
-bool checkWritable(const std::string& path, std::string& error)
+bool checkWritable(const std::string& path, std::string& error, bool structureSet)
 {
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));
-  if (ext != ".vtp" && ext != ".vtk" && ext != ".stl" && ext != ".ply" && ext != ".obj" && ext != ".gltf")
+  if (ext != ".vtp" && ext != ".vtk" && ext != ".stl" && ext != ".ply" && ext != ".obj" && ext != ".gltf" &&
+    !(structureSet && ext == ".dcm"))
   {
-    error = "cannot write '" + path + "': unknown extension (use " + meshExtensions() + ")";
+    error = "cannot write '" + path + "': unknown extension (use " + meshExtensions() +
+      (structureSet ? std::string(", or .dcm for an RT structure set") : std::string()) + ")";
     return false;
   }
   const std::string dir = vtksys::SystemTools::GetFilenamePath(path);

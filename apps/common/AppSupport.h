@@ -189,8 +189,9 @@ std::string unusedIsoNote(double iso, int label, const std::string& input, bool 
 
 /// False (with error set) if the mesh file cannot be created or has an
 /// unknown extension: checked before a long run, so that the run does not
-/// end in a lost result.
-bool checkWritable(const std::string& path, std::string& error);
+/// end in a lost result. `structureSet`: .dcm (an RT structure set) is a
+/// known extension too.
+bool checkWritable(const std::string& path, std::string& error, bool structureSet = false);
 
 /// checkWritable for every non-empty path; prints "error: ..." for the first
 /// that fails and returns false. An output that is one of the `inputs` (the

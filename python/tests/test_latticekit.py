@@ -22,7 +22,7 @@ class ImportTest(unittest.TestCase):
                      "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter",
                      "vtkLKClosedLineCutFilter", "vtkLKStrokeFeatureLineFilter",
                      "vtkLKWrinklySurfaceFilter", "vtkLKWrinklyNetSource",
-                     "vtkLKPatchDeformationFilter"):
+                     "vtkLKPatchDeformationFilter", "vtkLKStructureSetWriter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -230,6 +230,20 @@ class PipelineTest(unittest.TestCase):
             bone.SetInputConnection(reader.GetOutputPort())
             bone.SetLabelName("Mandible")
             bone.Update()
+
+            # And back: the surface written as a structure set of its own,
+            # read again.
+            writer = latticekit.vtkLKStructureSetWriter()
+            writer.SetInputConnection(bone.GetOutputPort())
+            writer.SetROIName(0, "Ball")
+            writer.SetFileName(os.path.join(tmp, "written.dcm"))
+            self.assertEqual(writer.Write(), 1)
+            again = latticekit.vtkLKMedicalImageReader()
+            again.SetFileName(os.path.join(tmp, "written.dcm"))
+            again.AddObserver("WarningEvent", lambda caller, event: None)  # no CT beside it
+            again.Update()
+            self.assertEqual([again.GetSegmentName(i) for i in range(again.GetNumberOfSegments())], ["Ball"])
+        self.assertGreater(writer.GetNumberOfContours(), 15)
         self.assertEqual(reader.GetFileFormat(), "DICOM RTSTRUCT")
         self.assertEqual(len(warnings), 2)  # no CT beside it; the isocentre is a point
         self.assertEqual([(reader.GetSegmentName(i), reader.GetSegmentLabelValue(i), reader.GetSegmentLayer(i))

@@ -1,0 +1,446 @@
+#include "vtkLKStructureSetWriter.h"
+#include "vtkLKAbort.h"
+#include "vtkLKDICOMSeries.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCutter.h>
+#include <vtkDICOMCompiler.h>
+#include <vtkDICOMItem.h>
+#include <vtkDICOMMetaData.h>
+#include <vtkDICOMParser.h>
+#include <vtkDICOMSequence.h>
+#include <vtkDICOMUtilities.h>
+#include <vtkDICOMValue.h>
+#include <vtkErrorCode.h>
+#include <vtkInformation.h>
+#include <vtkObjectFactory.h>
+#include <vtkPlane.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStripper.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <sstream>
+
+vtkStandardNewMacro(vtkLKStructureSetWriter);
+
+namespace
+{
+using lkvtk::V3;
+
+/// One contour plane: where it lies along the normal, and the image there
+/// (none without a reference CT).
+struct Plane
+{
+  double w = 0.0;
+  std::string imageClass, imageInstance;
+};
+
+/// What the set takes from the CT it belongs to.
+struct Reference
+{
+  vtkNew<vtkDICOMMetaData> first; // its first image's attributes (patient, study)
+  std::string seriesUID, frameUID;
+  lkvtk::SliceFrame frame;
+  std::vector<Plane> planes; // sorted along frame.n
+};
+
+bool readReference(const std::string& path, int seriesIndex, Reference& ref, std::string& error)
+{
+  const bool isFolder = vtksys::SystemTools::FileIsDirectory(path);
+  std::vector<lkvtk::DICOMSeriesInfo> series;
+  if (!lkvtk::findDICOMSeries(isFolder ? path : vtksys::SystemTools::GetFilenamePath(path), series, error, nullptr,
+        isFolder ? lkvtk::kDICOMScanDepth : 1))
+    return false;
+  if (isFolder && seriesIndex >= static_cast<int>(series.size()))
+  {
+    error = "ReferenceSeriesIndex " + std::to_string(seriesIndex) + " is out of range: the folder has " +
+      std::to_string(series.size()) + " series";
+    return false;
+  }
+  // The largest, as the reader takes it, or the one chosen.
+  const lkvtk::DICOMSeriesInfo* chosen = &series[static_cast<std::size_t>(std::max(0, seriesIndex))];
+  if (!isFolder)
+  {
+    const std::string wanted = vtksys::SystemTools::CollapseFullPath(path);
+    chosen = nullptr;
+    for (const auto& one : series)
+      for (const std::string& f : one.files)
+        if (!chosen && vtksys::SystemTools::CollapseFullPath(f) == wanted)
+          chosen = &one;
+    if (!chosen)
+    {
+      error = "'" + path + "' is not a DICOM image file";
+      return false;
+    }
+  }
+  ref.seriesUID = chosen->uid;
+  for (std::size_t i = 0; i < chosen->files.size(); ++i)
+  {
+    vtkNew<vtkDICOMMetaData> meta;
+    vtkNew<vtkDICOMParser> parser;
+    lkvtk::ErrorCatcher catcher(parser);
+    parser->SetFileName(chosen->files[i].c_str());
+    parser->SetMetaData(i == 0 ? ref.first.GetPointer() : meta.GetPointer());
+    parser->Update();
+    vtkDICOMMetaData* m = i == 0 ? ref.first.GetPointer() : meta.GetPointer();
+    double ipp[3], iop[6];
+    if (parser->GetErrorCode() != 0 || m->Get(DC::ImagePositionPatient).GetNumberOfValues() < 3 ||
+      m->Get(DC::ImageOrientationPatient).GetNumberOfValues() < 6)
+    {
+      error = "the reference CT's image '" + chosen->files[i] + "' has no position or orientation";
+      return false;
+    }
+    m->Get(DC::ImagePositionPatient).GetValues(ipp, 3);
+    m->Get(DC::ImageOrientationPatient).GetValues(iop, 6);
+    if (i == 0 && !lkvtk::sliceFrame(iop, ref.frame))
+    {
+      error = "the reference CT's ImageOrientationPatient is degenerate";
+      return false;
+    }
+    Plane plane;
+    plane.w = lkvtk::dot(ref.frame.n, V3{ ipp[0], ipp[1], ipp[2] });
+    plane.imageClass = m->Get(DC::SOPClassUID).AsString();
+    plane.imageInstance = m->Get(DC::SOPInstanceUID).AsString();
+    if (!std::isfinite(plane.w))
+    {
+      error = "the reference CT's image '" + chosen->files[i] + "' has a position that is not a number";
+      return false;
+    }
+    ref.planes.push_back(plane);
+  }
+  std::sort(ref.planes.begin(), ref.planes.end(), [](const Plane& a, const Plane& b) { return a.w < b.w; });
+  ref.frameUID = ref.first->Get(DC::FrameOfReferenceUID).AsString();
+  return true;
+}
+
+/// The closed contours of `surface` on the planes (normal n): for each
+/// plane, its loops in patient mm, lying on it. Each plane is cut a micron
+/// above itself (a surface from a label map has vertices, even faces, on the
+/// slice planes, where a cut makes degenerate pieces), and the points are put
+/// back onto it.
+std::vector<std::vector<std::vector<V3>>> contoursOf(
+  vtkPolyData* surface, const V3& n, const std::vector<Plane>& planes, int& open)
+{
+  constexpr double kAbove = 1e-3;
+  std::vector<std::vector<std::vector<V3>>> out(planes.size());
+  double bounds[6];
+  surface->GetBounds(bounds);
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetNormal(n[0], n[1], n[2]);
+  vtkNew<vtkCutter> cutter;
+  cutter->SetInputData(surface);
+  cutter->SetCutFunction(plane);
+  cutter->GenerateTrianglesOff();
+  int values = 0;
+  for (const Plane& p : planes)
+    cutter->SetValue(values++, p.w + kAbove);
+  vtkNew<vtkStripper> loops;
+  loops->SetInputConnection(cutter->GetOutputPort());
+  loops->JoinContiguousSegmentsOn();
+  loops->SetMaximumLength(100000); // its default, 1000 segments, cuts a skull's section into open pieces
+  loops->Update();
+  vtkPolyData* lines = loops->GetOutput();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  auto cells = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    cells->GetCurrentCell(count, ids);
+    if (count < 4 || ids[0] != ids[count - 1])
+    {
+      open += count >= 2 ? 1 : 0;
+      continue;
+    }
+    double x[3];
+    lines->GetPoint(ids[0], x);
+    const double w = lkvtk::dot(n, V3{ x[0], x[1], x[2] }) - kAbove;
+    const auto at = std::min_element(planes.begin(), planes.end(),
+      [&](const Plane& a, const Plane& b) { return std::abs(a.w - w) < std::abs(b.w - w); });
+    std::vector<V3> loop;
+    for (vtkIdType i = 0; i + 1 < count; ++i)
+    {
+      lines->GetPoint(ids[i], x);
+      const double off = lkvtk::dot(n, V3{ x[0], x[1], x[2] }) - at->w;
+      loop.push_back({ x[0] - off * n[0], x[1] - off * n[1], x[2] - off * n[2] });
+    }
+    out[static_cast<std::size_t>(at - planes.begin())].push_back(loop);
+  }
+  return out;
+}
+
+std::string today(const char* format)
+{
+  char text[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(text, sizeof(text), format, std::localtime(&now));
+  return text;
+}
+} // namespace
+
+vtkLKStructureSetWriter::vtkLKStructureSetWriter()
+{
+  this->SetStructureSetLabel("latticekit");
+}
+
+vtkLKStructureSetWriter::~vtkLKStructureSetWriter()
+{
+  this->SetFileName(nullptr);
+  this->SetReferenceFileName(nullptr);
+  this->SetStructureSetLabel(nullptr);
+}
+
+void vtkLKStructureSetWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "ReferenceFileName: " << (this->ReferenceFileName ? this->ReferenceFileName : "(none)") << "\n";
+  os << indent << "ReferenceSeriesIndex: " << this->ReferenceSeriesIndex << "\n";
+  os << indent << "SliceSpacing: " << this->SliceSpacing << "\n";
+  os << indent << "StructureSetLabel: " << (this->StructureSetLabel ? this->StructureSetLabel : "(none)") << "\n";
+}
+
+int vtkLKStructureSetWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  return 1;
+}
+
+void vtkLKStructureSetWriter::AddInputData(vtkPolyData* surface)
+{
+  this->AddInputDataInternal(0, surface);
+}
+
+void vtkLKStructureSetWriter::SetROIName(int i, const char* name)
+{
+  if (i < 0 || i > 10000)
+  {
+    vtkErrorMacro("SetROIName: input " << i << " is out of range (0 to 10000).");
+    return;
+  }
+  if (static_cast<std::size_t>(i) >= this->ROINames.size())
+    this->ROINames.resize(static_cast<std::size_t>(i) + 1);
+  this->ROINames[static_cast<std::size_t>(i)] = name ? name : "";
+  this->Modified();
+}
+
+const char* vtkLKStructureSetWriter::GetROIName(int i)
+{
+  return i >= 0 && static_cast<std::size_t>(i) < this->ROINames.size() ? this->ROINames[static_cast<std::size_t>(i)].c_str()
+                                                                          : nullptr;
+}
+
+void vtkLKStructureSetWriter::WriteData()
+{
+  this->NumberOfContours = this->NumberOfOpenContours = 0;
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName given.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return;
+  }
+  const int inputs = this->GetNumberOfInputConnections(0);
+  std::vector<vtkPolyData*> surfaces;
+  for (int i = 0; i < inputs; ++i)
+  {
+    vtkPolyData* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, i));
+    if (!surface || surface->GetNumberOfPolys() == 0)
+    {
+      vtkErrorMacro("Input " << i << " has no faces: each input is a closed surface, an ROI.");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+    double b[6];
+    surface->GetBounds(b);
+    if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+    {
+      vtkErrorMacro("Input " << i << " has a point whose coordinates are not numbers.");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+    surfaces.push_back(surface);
+  }
+
+  // The planes: the reference CT's slices, or axial planes SliceSpacing apart.
+  Reference ref;
+  std::string error;
+  const bool referenced = this->ReferenceFileName && *this->ReferenceFileName;
+  if (referenced && !readReference(this->ReferenceFileName, this->ReferenceSeriesIndex, ref, error))
+  {
+    vtkErrorMacro("Cannot use the reference CT '" << this->ReferenceFileName << "': " << error << ".");
+    this->SetErrorCode(vtkErrorCode::FileFormatError);
+    return;
+  }
+  if (!referenced)
+  {
+    if (!(this->SliceSpacing >= 0.01 && this->SliceSpacing <= 100.0))
+    {
+      vtkErrorMacro("SliceSpacing must be 0.01 to 100 mm, not " << this->SliceSpacing << ".");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+    ref.frame = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
+    double lo = VTK_DOUBLE_MAX, hi = VTK_DOUBLE_MIN;
+    for (vtkPolyData* s : surfaces)
+    {
+      double b[6];
+      s->GetBounds(b);
+      lo = std::min(lo, b[4]);
+      hi = std::max(hi, b[5]);
+    }
+    const double first = std::ceil(lo / this->SliceSpacing), last = std::floor(hi / this->SliceSpacing);
+    if (last - first > 1.0e5)
+    {
+      vtkErrorMacro("The surfaces span " << hi - lo << " mm: too many planes of " << this->SliceSpacing << " mm.");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+    for (double k = first; k <= last; ++k)
+      ref.planes.push_back({ k * this->SliceSpacing, "", "" });
+  }
+  if (ref.frameUID.empty())
+    ref.frameUID = vtkDICOMUtilities::GenerateUID(DC::FrameOfReferenceUID);
+
+  // The set: patient and study of the reference CT (or new ones).
+  vtkNew<vtkDICOMMetaData> meta;
+  for (vtkDICOMTag tag : { DC::PatientName, DC::PatientID, DC::PatientBirthDate, DC::PatientSex,
+         DC::StudyInstanceUID, DC::StudyDate, DC::StudyTime, DC::StudyID, DC::AccessionNumber,
+         DC::ReferringPhysicianName, DC::StudyDescription })
+  {
+    if (referenced && ref.first->Get(tag).IsValid())
+      meta->Set(tag, ref.first->Get(tag));
+  }
+  if (!meta->Get(DC::StudyInstanceUID).IsValid())
+    meta->Set(DC::StudyInstanceUID, vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID));
+  meta->Set(DC::SOPClassUID, lkvtk::kRTStructureSetStorage);
+  meta->Set(DC::Modality, "RTSTRUCT");
+  meta->Set(DC::SeriesNumber, 900.0);
+  meta->Set(DC::InstanceNumber, 1.0);
+  meta->Set(DC::SeriesDescription, "latticekit surfaces");
+  meta->Set(DC::Manufacturer, "latticekit");
+  meta->Set(DC::StructureSetLabel, this->StructureSetLabel ? this->StructureSetLabel : "latticekit");
+  meta->Set(DC::StructureSetDate, today("%Y%m%d"));
+  meta->Set(DC::StructureSetTime, today("%H%M%S"));
+  {
+    vtkDICOMSequence images;
+    for (const Plane& p : ref.planes)
+      if (!p.imageInstance.empty())
+      {
+        vtkDICOMItem image;
+        image.Set(DC::ReferencedSOPClassUID, p.imageClass);
+        image.Set(DC::ReferencedSOPInstanceUID, p.imageInstance);
+        images.AddItem(image);
+      }
+    vtkDICOMItem series, study, frame;
+    frame.Set(DC::FrameOfReferenceUID, ref.frameUID);
+    if (referenced) // the images the contours lie on
+    {
+      series.Set(DC::SeriesInstanceUID, ref.seriesUID);
+      series.Set(DC::ContourImageSequence, images);
+      study.Set(DC::ReferencedSOPClassUID, "1.2.840.10008.3.1.2.3.1"); // Detached Study Management, as the standard asks
+      study.Set(DC::ReferencedSOPInstanceUID, meta->Get(DC::StudyInstanceUID).AsString());
+      study.Set(DC::RTReferencedSeriesSequence, vtkDICOMSequence(series));
+      frame.Set(DC::RTReferencedStudySequence, vtkDICOMSequence(study));
+    }
+    meta->Set(DC::ReferencedFrameOfReferenceSequence, vtkDICOMSequence(frame));
+  }
+  static const char* const colours[] = { "241\\214\\145", "216\\101\\79", "128\\174\\128", "111\\184\\210",
+    "221\\130\\101", "144\\238\\144", "220\\245\\20", "78\\63\\0" };
+  vtkDICOMSequence listed, contoured, observed;
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    this->UpdateProgress(static_cast<double>(i) / static_cast<double>(surfaces.size()));
+    if (lkvtk::stopRequested(this, {})) // nothing written: an earlier file stays
+      return;
+    const int number = static_cast<int>(i) + 1;
+    const std::string name = i < this->ROINames.size() && !this->ROINames[i].empty() ? this->ROINames[i]
+                                                                                    : "ROI " + std::to_string(number);
+    int open = 0;
+    const auto perPlane = contoursOf(surfaces[i], ref.frame.n, ref.planes, open);
+    this->NumberOfOpenContours += open;
+    vtkDICOMSequence contours;
+    for (std::size_t k = 0; k < perPlane.size(); ++k)
+      for (const std::vector<V3>& loop : perPlane[k])
+      {
+        std::vector<double> xyz;
+        for (const V3& p : loop)
+          xyz.insert(xyz.end(), p.begin(), p.end());
+        vtkDICOMItem contour;
+        if (!ref.planes[k].imageInstance.empty())
+        {
+          vtkDICOMItem image;
+          image.Set(DC::ReferencedSOPClassUID, ref.planes[k].imageClass);
+          image.Set(DC::ReferencedSOPInstanceUID, ref.planes[k].imageInstance);
+          contour.Set(DC::ContourImageSequence, vtkDICOMSequence(image));
+        }
+        contour.Set(DC::ContourGeometricType, "CLOSED_PLANAR");
+        contour.Set(DC::NumberOfContourPoints, static_cast<double>(loop.size()));
+        contour.Set(DC::ContourData, vtkDICOMValue(vtkDICOMVR::DS, xyz.data(), xyz.size()));
+        contours.AddItem(contour);
+        ++this->NumberOfContours;
+      }
+    if (contours.GetNumberOfItems() == 0)
+    {
+      if (open > 0)
+        vtkErrorMacro("'" << name << "' (input " << i << ") has only open sections on the "
+                          << (referenced ? "reference CT's slices" : "contour planes") << " (" << open
+                          << " open pieces): the surface is not closed where they cut it (close it first: "
+                             "latticekit-surface --close, or vtkLKMeshRepairFilter with hole filling).");
+      else
+        vtkErrorMacro("'" << name << "' (input " << i << ") crosses none of the "
+                          << (referenced ? "reference CT's slices" : "contour planes")
+                          << ": nothing to write for it.");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+    vtkDICOMItem roi, item, observation;
+    roi.Set(DC::ROINumber, static_cast<double>(number));
+    roi.Set(DC::ReferencedFrameOfReferenceUID, ref.frameUID);
+    roi.Set(DC::ROIName, name);
+    roi.Set(DC::ROIGenerationAlgorithm, "SEMIAUTOMATIC");
+    listed.AddItem(roi);
+    item.Set(DC::ReferencedROINumber, static_cast<double>(number));
+    item.Set(DC::ROIDisplayColor, colours[i % 8]);
+    item.Set(DC::ContourSequence, contours);
+    contoured.AddItem(item);
+    observation.Set(DC::ObservationNumber, static_cast<double>(number));
+    observation.Set(DC::ReferencedROINumber, static_cast<double>(number));
+    observation.Set(DC::RTROIInterpretedType, "ORGAN");
+    observation.Set(DC::ROIInterpreter, "");
+    observed.AddItem(observation);
+  }
+  meta->Set(DC::StructureSetROISequence, listed);
+  meta->Set(DC::ROIContourSequence, contoured);
+  meta->Set(DC::RTROIObservationsSequence, observed);
+  if (this->NumberOfOpenContours > 0)
+    vtkWarningMacro(<< this->NumberOfOpenContours
+                    << " open piece(s) of contour left out: a surface is not closed where the planes cut it.");
+
+  // Beside the destination first: a failed write leaves an earlier file whole.
+  const std::string target = this->FileName, part = target + ".part";
+  vtkNew<vtkDICOMCompiler> compiler;
+  lkvtk::ErrorCatcher catcher(compiler);
+  compiler->SetFileName(part.c_str());
+  compiler->SetMetaData(meta);
+  compiler->SetSeriesInstanceUID(vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID).c_str());
+  compiler->WriteHeader();
+  compiler->Close();
+  if (compiler->GetErrorCode() != 0 || !catcher.messages.empty() ||
+    std::rename(part.c_str(), target.c_str()) != 0)
+  {
+    vtksys::SystemTools::RemoveFile(part);
+    vtkErrorMacro("Cannot write '" << target << "'" << (catcher.messages.empty() ? "" : ": " + catcher.messages)
+                                   << ".");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    return;
+  }
+  this->UpdateProgress(1.0);
+}
