@@ -205,6 +205,10 @@ void vtkLKStructureSetWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReferenceSeriesIndex: " << this->ReferenceSeriesIndex << "\n";
   os << indent << "SliceSpacing: " << this->SliceSpacing << "\n";
   os << indent << "StructureSetLabel: " << (this->StructureSetLabel ? this->StructureSetLabel : "(none)") << "\n";
+  os << indent << "ROIName:";
+  for (std::size_t i = 0; i < this->ROINames.size(); ++i)
+    os << (i ? ", " : " ") << "'" << this->ROINames[i] << "'";
+  os << (this->ROINames.empty() ? " (defaults: ROI 1, ROI 2, ...)\n" : "\n");
 }
 
 int vtkLKStructureSetWriter::FillInputPortInformation(int, vtkInformation* info)
@@ -258,9 +262,14 @@ void vtkLKStructureSetWriter::WriteData()
       this->SetErrorCode(vtkErrorCode::UserError);
       return;
     }
-    double b[6];
-    surface->GetBounds(b);
-    if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+    // Each point (bounds skip NaN, and a cut through one writes a point at 0).
+    bool finite = true;
+    for (vtkIdType p = 0; p < surface->GetNumberOfPoints() && finite; ++p)
+    {
+      const double* x = surface->GetPoint(p);
+      finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+    }
+    if (!finite)
     {
       vtkErrorMacro("Input " << i << " has a point whose coordinates are not numbers.");
       this->SetErrorCode(vtkErrorCode::UserError);

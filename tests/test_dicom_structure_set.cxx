@@ -34,6 +34,7 @@
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <gtest/gtest.h>
@@ -998,6 +999,18 @@ TEST(DicomStructureSet, WritingBadInputIsAClearErrorAndKeepsAnEarlierFile)
     writer->AddInputData(box(0, 5, 0, 5, 0, 5));
     EXPECT_EQ(write(writer, messages), 1);
     EXPECT_NE(messages.find("No FileName given."), std::string::npos) << messages;
+  }
+  {
+    // tests/data/nan_sphere.vtp: a sphere with a point of NaN.
+    vtkNew<vtkXMLPolyDataReader> sphere;
+    sphere->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/nan_sphere.vtp").c_str());
+    sphere->Update();
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->SetInputConnection(sphere->GetOutputPort());
+    writer->SetSliceSpacing(0.1);
+    writer->SetFileName((dir + "/x.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("Input 0 has a point whose coordinates are not numbers."), std::string::npos) << messages;
   }
   {
     vtkNew<vtkLKStructureSetWriter> writer;
