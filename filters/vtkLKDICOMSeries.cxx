@@ -7,6 +7,7 @@
 #include <vtkDICOMDirectory.h>
 #include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
+#include <vtkDICOMParser.h>
 #include <vtkDICOMReader.h>
 #include <vtkDICOMUtilities.h>
 #include <vtkDICOMValue.h>
@@ -21,6 +22,7 @@
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
 #include <vtkStringArray.h>
+#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <array>
@@ -161,6 +163,57 @@ bool readFiles(CheckedDICOMReader* reader, const std::vector<std::string>& files
 }
 
 } // namespace
+
+bool readDICOMHeader(const std::string& file, vtkDICOMMetaData* meta, std::string& error)
+{
+  vtkNew<vtkDICOMParser> parser;
+  ErrorCatcher catcher(parser);
+  parser->SetFileName(file.c_str());
+  parser->SetMetaData(meta);
+  parser->Update();
+  if (parser->GetErrorCode() != 0 || !catcher.messages.empty())
+  {
+    error = "cannot read the DICOM file '" + file + "'" + (catcher.messages.empty() ? "" : ": " + catcher.messages);
+    return false;
+  }
+  return true;
+}
+
+int seriesHoldingFile(const std::vector<DICOMSeriesInfo>& series, const std::string& file)
+{
+  const std::string wanted = vtksys::SystemTools::CollapseFullPath(file);
+  for (std::size_t s = 0; s < series.size(); ++s)
+    for (const std::string& f : series[s].files)
+      if (vtksys::SystemTools::CollapseFullPath(f) == wanted)
+        return static_cast<int>(s);
+  return -1;
+}
+
+bool readImagePositions(const DICOMSeriesInfo& series, std::vector<ImagePosition>& images, std::string& error)
+{
+  images.clear();
+  for (const std::string& file : series.files)
+  {
+    vtkNew<vtkDICOMMetaData> meta;
+    double ipp[3];
+    if (!readDICOMHeader(file, meta, error))
+      return false;
+    if (meta->Get(DC::ImagePositionPatient).GetNumberOfValues() < 3)
+    {
+      error = "the image '" + file + "' has no ImagePositionPatient";
+      return false;
+    }
+    meta->Get(DC::ImagePositionPatient).GetValues(ipp, 3);
+    if (!std::isfinite(ipp[0] + ipp[1] + ipp[2]))
+    {
+      error = "the image '" + file + "' has a position that is not a number";
+      return false;
+    }
+    images.push_back({ { ipp[0], ipp[1], ipp[2] }, meta->Get(DC::SOPClassUID).AsString(),
+      meta->Get(DC::SOPInstanceUID).AsString() });
+  }
+  return true;
+}
 
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
   vtkAlgorithm* progress, int scanDepth)
@@ -683,22 +736,16 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
       }
       return true;
     };
-    std::size_t l = 0;
-    while (l < layers.size() && !labelMap && !fits(layers[l]))
-      ++l;
-    if (l == layers.size())
+    const int l = layerFor(layers, voxels, [&](const std::vector<unsigned short>& layer) { return labelMap || fits(layer); });
+    if (l < 0)
     {
-      if (static_cast<double>(voxels) * static_cast<double>(l + 1) > 2.0e9)
-      {
-        error = "the DICOM segmentation's segments overlap in more layers than fit in memory";
-        return false;
-      }
-      layers.emplace_back(static_cast<std::size_t>(voxels), 0);
+      error = "the DICOM segmentation's segments overlap in more layers than fit in memory";
+      return false;
     }
-    seg.layer = static_cast<int>(l);
+    seg.layer = l;
     for (int f : own)
     {
-      unsigned short* slice = layers[l].data() + frameSlice[static_cast<std::size_t>(f)] * sliceSize;
+      unsigned short* slice = layers[static_cast<std::size_t>(l)].data() + frameSlice[static_cast<std::size_t>(f)] * sliceSize;
       for (vtkIdType p = 0; p < sliceSize; ++p)
         if (segmentAt(f, p) == seg.label)
           slice[p] = static_cast<unsigned short>(seg.label);
@@ -714,6 +761,18 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
     corner[a] = positions[0][a] + (z0 - zs[0]) * n[a];
   setPatientMatrix(patientMatrix, frame, corner);
   return true;
+}
+
+int layerFor(std::vector<std::vector<unsigned short>>& layers, long long voxels,
+  const std::function<bool(const std::vector<unsigned short>&)>& fits)
+{
+  for (std::size_t l = 0; l < layers.size(); ++l)
+    if (fits(layers[l]))
+      return static_cast<int>(l);
+  if (static_cast<double>(voxels) * static_cast<double>(layers.size() + 1) > 2.0e9)
+    return -1;
+  layers.emplace_back(static_cast<std::size_t>(voxels), 0);
+  return static_cast<int>(layers.size()) - 1;
 }
 
 void setLayers(vtkImageData* output, const int dims[3], const double spacing[3],

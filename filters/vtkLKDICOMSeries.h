@@ -10,10 +10,12 @@
 #include <vtkNew.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
 class vtkAlgorithm;
+class vtkDICOMMetaData;
 class vtkImageData;
 class vtkMatrix4x4;
 
@@ -107,6 +109,24 @@ struct DICOMGeometryReport
   std::vector<WideGap> wideGaps; ///< in slice order
 };
 
+/// Reads a DICOM file's header (up to its pixel data) into `meta`; false
+/// with error set when the file cannot be parsed (what could be read is kept).
+bool readDICOMHeader(const std::string& file, vtkDICOMMetaData* meta, std::string& error);
+
+/// The index of the series that holds `file` (by its full path), or -1.
+int seriesHoldingFile(const std::vector<DICOMSeriesInfo>& series, const std::string& file);
+
+/// An image of a series: its ImagePositionPatient and SOP identity.
+struct ImagePosition
+{
+  V3 position;
+  std::string sopClass, sopInstance;
+};
+
+/// Each image's position and SOP identity, in the series' file order, from
+/// their headers alone; false with error set when one has no finite position.
+bool readImagePositions(const DICOMSeriesInfo& series, std::vector<ImagePosition>& images, std::string& error);
+
 /// How many folder levels a DICOM folder is searched: a hospital's CD copied
 /// to disk keeps its images a few folders down (DICOM/ST000000/SE000000/),
 /// unless its DICOMDIR, which vtkDICOMDirectory reads instead, indexes them.
@@ -142,6 +162,13 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
 /// patientMatrix maps the output's data coordinates to patient (LPS) mm.
 bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, vtkMatrix4x4* patientMatrix,
   std::vector<Segment>& segments, std::string& error, vtkAlgorithm* progress = nullptr);
+
+/// Where a segment goes among the layers of a segmentation (each `voxels`
+/// labels): the first layer it `fits` in (overlaps no other segment), as
+/// 3D Slicer packs them, or a new empty one, appended. -1 when a new layer
+/// would take the layers past 2e9 labels.
+int layerFor(std::vector<std::vector<unsigned short>>& layers, long long voxels,
+  const std::function<bool(const std::vector<unsigned short>&)>& fits);
 
 /// Makes `output` a label volume of `dims` voxels of `spacing` mm, one
 /// component per layer (each `dims` voxels, x fastest): unsigned char when no

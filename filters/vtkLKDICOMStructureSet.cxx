@@ -16,7 +16,6 @@
 #include <vtkDICOMDirectory.h>
 #include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
-#include <vtkDICOMParser.h>
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMValue.h>
 #include <vtkImageData.h>
@@ -73,21 +72,6 @@ struct ROI
 unsigned int itemCount(const vtkDICOMValue& sequence)
 {
   return sequence.GetSequenceData() ? sequence.GetNumberOfValues() : 0;
-}
-
-bool parse(const std::string& file, vtkDICOMMetaData* meta, std::string& error)
-{
-  vtkNew<vtkDICOMParser> parser;
-  ErrorCatcher catcher(parser);
-  parser->SetFileName(file.c_str());
-  parser->SetMetaData(meta);
-  parser->Update();
-  if (parser->GetErrorCode() != 0 || !catcher.messages.empty())
-  {
-    error = "cannot read the DICOM file '" + file + "'" + (catcher.messages.empty() ? "" : ": " + catcher.messages);
-    return false;
-  }
-  return true;
 }
 
 std::string mm(double v)
@@ -351,20 +335,16 @@ const DICOMSeriesInfo* referencedImages(vtkDICOMMetaData* meta, const std::vecto
 }
 
 /// Where the slices of an image series lie along `normal` (sorted, one per
-/// position), from each file's ImagePositionPatient; empty when a file has none.
+/// position); empty when an image has no position.
 std::vector<double> slicePlanes(const DICOMSeriesInfo& series, const V3& normal)
 {
+  std::vector<ImagePosition> images;
+  std::string ignored;
+  if (!readImagePositions(series, images, ignored))
+    return {};
   std::vector<double> planes;
-  for (const std::string& file : series.files)
-  {
-    vtkNew<vtkDICOMMetaData> meta;
-    std::string ignored;
-    double ipp[3];
-    if (!parse(file, meta, ignored) || meta->Get(DC::ImagePositionPatient).GetNumberOfValues() < 3)
-      return {};
-    meta->Get(DC::ImagePositionPatient).GetValues(ipp, 3);
-    planes.push_back(dot(normal, V3{ ipp[0], ipp[1], ipp[2] }));
-  }
+  for (const ImagePosition& image : images)
+    planes.push_back(dot(normal, image.position));
   std::sort(planes.begin(), planes.end());
   planes.erase(std::unique(planes.begin(), planes.end(), [](double a, double b) { return b - a < kPlaneTolerance; }),
     planes.end());
@@ -401,7 +381,7 @@ bool placeGrid(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& image
     vtkNew<vtkDICOMMetaData> image;
     std::string ignored;
     double iop[6], ps[2], ipp[3];
-    const bool known = parse(imageFile, image, ignored) &&
+    const bool known = readDICOMHeader(imageFile, image, ignored) &&
       image->Get(DC::ImageOrientationPatient).GetNumberOfValues() >= 6 &&
       image->Get(DC::PixelSpacing).GetNumberOfValues() >= 2 &&
       image->Get(DC::ImagePositionPatient).GetNumberOfValues() >= 3;
@@ -598,6 +578,10 @@ std::vector<unsigned char> fillROI(const ROI& roi, const Grid& grid, int& zFirst
     std::vector<int> sorted = steps;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
     const int usual = sorted[sorted.size() / 2];
+    // A contour between two gaps is the top of one and the bottom of the
+    // next: its distance map is kept for the second.
+    int mapped = -1;
+    std::vector<float> above;
     for (auto z = std::next(slices.begin()); z != slices.end(); ++z)
     {
       const int a = *std::prev(z), b = *z;
@@ -609,8 +593,9 @@ std::vector<unsigned char> fillROI(const ROI& roi, const Grid& grid, int& zFirst
         continue;
       }
       interpolated += b - a - 1;
-      const std::vector<float> below = signedDistance(sliceOf(a), dims[0], dims[1]);
-      const std::vector<float> above = signedDistance(sliceOf(b), dims[0], dims[1]);
+      const std::vector<float> below = mapped == a ? std::move(above) : signedDistance(sliceOf(a), dims[0], dims[1]);
+      above = signedDistance(sliceOf(b), dims[0], dims[1]);
+      mapped = b;
       for (int t = a + 1; t < b; ++t)
       {
         const float w = static_cast<float>(t - a) / static_cast<float>(b - a);
@@ -657,7 +642,7 @@ std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, 
     {
       vtkNew<vtkDICOMMetaData> meta;
       std::string error;
-      if (!parse(files->GetValue(f), meta, error) || meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
+      if (!readDICOMHeader(files->GetValue(f), meta, error) || meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
         continue;
       StructureSetInfo info;
       info.file = files->GetValue(f);
@@ -677,7 +662,7 @@ bool isDICOMStructureSet(const std::string& file)
   // reading it then says what is wrong.
   vtkNew<vtkDICOMMetaData> meta;
   std::string error;
-  parse(file, meta, error);
+  readDICOMHeader(file, meta, error);
   return meta->Get(DC::SOPClassUID).AsString() == kRTStructureSetStorage;
 }
 
@@ -688,7 +673,7 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
   segments.clear();
   notes.clear();
   vtkNew<vtkDICOMMetaData> meta;
-  if (!parse(file, meta, error))
+  if (!readDICOMHeader(file, meta, error))
     return false;
   if (meta->Get(DC::SOPClassUID).AsString() != kRTStructureSetStorage)
   {
@@ -760,30 +745,22 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
     largest = std::max(largest, label);
     const vtkIdType offset = static_cast<vtkIdType>(zFirst) * grid.dims[0] * grid.dims[1];
     const vtkIdType span = static_cast<vtkIdType>(mask.size());
-    std::size_t l = 0;
-    for (; l < layers.size(); ++l)
+    const int l = layerFor(layers, voxels, [&](const std::vector<unsigned short>& layer) {
+      for (vtkIdType v = 0; v < span; ++v)
+        if (mask[static_cast<std::size_t>(v)] && layer[static_cast<std::size_t>(offset + v)] != 0)
+          return false;
+      return true;
+    });
+    if (l < 0)
     {
-      const unsigned short* layer = layers[l].data() + offset;
-      bool fits = true;
-      for (vtkIdType v = 0; v < span && fits; ++v)
-        fits = !(mask[static_cast<std::size_t>(v)] && layer[v] != 0);
-      if (fits)
-        break;
+      error = "the RT structure set's ROIs overlap in more layers than fit in memory";
+      return false;
     }
-    if (l == layers.size())
-    {
-      if (static_cast<double>(voxels) * static_cast<double>(l + 1) > 2.0e9)
-      {
-        error = "the RT structure set's ROIs overlap in more layers than fit in memory";
-        return false;
-      }
-      layers.emplace_back(static_cast<std::size_t>(voxels), 0);
-    }
-    unsigned short* layer = layers[l].data() + offset;
+    unsigned short* layer = layers[static_cast<std::size_t>(l)].data() + offset;
     for (vtkIdType v = 0; v < span; ++v)
       if (mask[static_cast<std::size_t>(v)])
         layer[v] = static_cast<unsigned short>(label);
-    segments.push_back({ label, rois[i].name, static_cast<int>(l) });
+    segments.push_back({ label, rois[i].name, l });
   }
   if (layers.empty()) // stopped before the first ROI
     layers.emplace_back(static_cast<std::size_t>(voxels), 0);

@@ -669,9 +669,6 @@ bool vtkLKMedicalImageReader::ReadVolume()
   this->GantryTilt = this->MinimumSliceGap = this->MaximumSliceGap = 0.0;
   this->NumberOfInputSlices = 0;
   this->OrientationKnown = false;
-  this->SegmentNames.clear();
-  this->SegmentLabelValues.clear();
-  this->SegmentLayers.clear();
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro("No FileName given.");
@@ -979,19 +976,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     int chosen = 0;
     if (!isFolder)
     {
-      const std::string wanted = vtksys::SystemTools::CollapseFullPath(path);
-      chosen = -1;
-      for (std::size_t s = 0; s < series.size() && chosen < 0; ++s)
-      {
-        for (const std::string& f : series[s].files)
-        {
-          if (vtksys::SystemTools::CollapseFullPath(f) == wanted)
-          {
-            chosen = static_cast<int>(s);
-            break;
-          }
-        }
-      }
+      chosen = lkvtk::seriesHoldingFile(series, path);
       if (chosen < 0)
       {
         vtkErrorMacro("Cannot read '" << path << "': it is not a DICOM image file.");
@@ -1114,9 +1099,6 @@ bool vtkLKMedicalImageReader::ReadVolume()
     layers->SetName("SegmentLayers");
     for (const Segment& seg : segments)
     {
-      this->SegmentNames.push_back(seg.name);
-      this->SegmentLabelValues.push_back(seg.label);
-      this->SegmentLayers.push_back(seg.layer);
       names->InsertNextValue(seg.name);
       values->InsertNextValue(seg.label);
       layers->InsertNextValue(seg.layer);
@@ -1138,19 +1120,33 @@ bool vtkLKMedicalImageReader::ReadVolume()
   return true;
 }
 
+// The segments are read from the volume's field data, which the reader
+// writes once per read (and a stopped or failed read clears).
+int vtkLKMedicalImageReader::GetNumberOfSegments() const
+{
+  auto* names = vtkStringArray::SafeDownCast(this->Volume->GetFieldData()->GetAbstractArray("SegmentNames"));
+  return names ? static_cast<int>(names->GetNumberOfValues()) : 0;
+}
+
 const char* vtkLKMedicalImageReader::GetSegmentName(int i) const
 {
-  return i >= 0 && i < this->GetNumberOfSegments() ? this->SegmentNames[static_cast<std::size_t>(i)].c_str() : nullptr;
+  if (i < 0 || i >= this->GetNumberOfSegments())
+    return nullptr;
+  return vtkStringArray::SafeDownCast(this->Volume->GetFieldData()->GetAbstractArray("SegmentNames"))
+    ->GetValue(i)
+    .c_str();
 }
 
 int vtkLKMedicalImageReader::GetSegmentLabelValue(int i) const
 {
-  return i >= 0 && i < this->GetNumberOfSegments() ? this->SegmentLabelValues[static_cast<std::size_t>(i)] : 0;
+  vtkDataArray* values = this->Volume->GetFieldData()->GetArray("SegmentLabelValues");
+  return i >= 0 && i < this->GetNumberOfSegments() && values ? static_cast<int>(values->GetTuple1(i)) : 0;
 }
 
 int vtkLKMedicalImageReader::GetSegmentLayer(int i) const
 {
-  return i >= 0 && i < this->GetNumberOfSegments() ? this->SegmentLayers[static_cast<std::size_t>(i)] : -1;
+  vtkDataArray* layers = this->Volume->GetFieldData()->GetArray("SegmentLayers");
+  return i >= 0 && i < this->GetNumberOfSegments() && layers ? static_cast<int>(layers->GetTuple1(i)) : -1;
 }
 
 int vtkLKMedicalImageReader::RequestInformation(
@@ -1171,10 +1167,7 @@ int vtkLKMedicalImageReader::RequestInformation(
       // volume holds part of the voxels. An empty output, as every latticekit
       // filter gives when stopped, not a volume half read. The executive
       // clears AbortExecute before RequestData, so the stop is kept here.
-      this->Volume->Initialize();
-      this->SegmentNames.clear(); // no volume, no segments
-      this->SegmentLabelValues.clear();
-      this->SegmentLayers.clear();
+      this->Volume->Initialize(); // its segments' field data too
       this->VolumeTime = 0;
       this->ReadStopped = true;
       vtkWarningMacro("Aborted.");

@@ -69,7 +69,6 @@
 #include "vtkImageAlgorithm.h"
 
 #include <string>
-#include <vector>
 
 class vtkImageData;
 class vtkMatrix4x4;
@@ -123,7 +122,7 @@ public:
   /// layer of -1. The output's field data holds the same ("SegmentNames",
   /// "SegmentLabelValues", "SegmentLayers"), which vtkLKBoneSurfaceFilter's
   /// LabelName looks up.
-  int GetNumberOfSegments() const { return static_cast<int>(this->SegmentNames.size()); }
+  int GetNumberOfSegments() const;
   const char* GetSegmentName(int i) const;
   int GetSegmentLabelValue(int i) const;
   int GetSegmentLayer(int i) const;
@@ -164,9 +163,6 @@ protected:
   double MaximumSliceGap = 0.0;
   int NumberOfInputSlices = 0;
   bool OrientationKnown = false;
-  std::vector<std::string> SegmentNames;
-  std::vector<int> SegmentLabelValues;
-  std::vector<int> SegmentLayers;
 
 private:
   vtkLKMedicalImageReader(const vtkLKMedicalImageReader&) = delete;

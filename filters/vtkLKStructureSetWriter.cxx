@@ -8,7 +8,6 @@
 #include <vtkDICOMCompiler.h>
 #include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
-#include <vtkDICOMParser.h>
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMUtilities.h>
 #include <vtkDICOMValue.h>
@@ -64,57 +63,33 @@ bool readReference(const std::string& path, int seriesIndex, Reference& ref, std
       std::to_string(series.size()) + " series";
     return false;
   }
-  // The largest, as the reader takes it, or the one chosen.
-  const lkvtk::DICOMSeriesInfo* chosen = &series[static_cast<std::size_t>(std::max(0, seriesIndex))];
-  if (!isFolder)
+  // The largest, as the reader takes it, the one chosen, or the file's.
+  const int index = isFolder ? std::max(0, seriesIndex) : lkvtk::seriesHoldingFile(series, path);
+  if (index < 0)
   {
-    const std::string wanted = vtksys::SystemTools::CollapseFullPath(path);
-    chosen = nullptr;
-    for (const auto& one : series)
-      for (const std::string& f : one.files)
-        if (!chosen && vtksys::SystemTools::CollapseFullPath(f) == wanted)
-          chosen = &one;
-    if (!chosen)
-    {
-      error = "'" + path + "' is not a DICOM image file";
-      return false;
-    }
+    error = "'" + path + "' is not a DICOM image file";
+    return false;
   }
-  ref.seriesUID = chosen->uid;
-  for (std::size_t i = 0; i < chosen->files.size(); ++i)
+  const lkvtk::DICOMSeriesInfo& chosen = series[static_cast<std::size_t>(index)];
+  ref.seriesUID = chosen.uid;
+  std::vector<lkvtk::ImagePosition> images;
+  double iop[6];
+  if (!lkvtk::readDICOMHeader(chosen.files.front(), ref.first, error) ||
+    !lkvtk::readImagePositions(chosen, images, error))
+    return false;
+  if (ref.first->Get(DC::ImageOrientationPatient).GetNumberOfValues() < 6)
   {
-    vtkNew<vtkDICOMMetaData> meta;
-    vtkNew<vtkDICOMParser> parser;
-    lkvtk::ErrorCatcher catcher(parser);
-    parser->SetFileName(chosen->files[i].c_str());
-    parser->SetMetaData(i == 0 ? ref.first.GetPointer() : meta.GetPointer());
-    parser->Update();
-    vtkDICOMMetaData* m = i == 0 ? ref.first.GetPointer() : meta.GetPointer();
-    double ipp[3], iop[6];
-    if (parser->GetErrorCode() != 0 || m->Get(DC::ImagePositionPatient).GetNumberOfValues() < 3 ||
-      m->Get(DC::ImageOrientationPatient).GetNumberOfValues() < 6)
-    {
-      error = "the reference CT's image '" + chosen->files[i] + "' has no position or orientation";
-      return false;
-    }
-    m->Get(DC::ImagePositionPatient).GetValues(ipp, 3);
-    m->Get(DC::ImageOrientationPatient).GetValues(iop, 6);
-    if (i == 0 && !lkvtk::sliceFrame(iop, ref.frame))
-    {
-      error = "the reference CT's ImageOrientationPatient is degenerate";
-      return false;
-    }
-    Plane plane;
-    plane.w = lkvtk::dot(ref.frame.n, V3{ ipp[0], ipp[1], ipp[2] });
-    plane.imageClass = m->Get(DC::SOPClassUID).AsString();
-    plane.imageInstance = m->Get(DC::SOPInstanceUID).AsString();
-    if (!std::isfinite(plane.w))
-    {
-      error = "the reference CT's image '" + chosen->files[i] + "' has a position that is not a number";
-      return false;
-    }
-    ref.planes.push_back(plane);
+    error = "the reference CT has no ImageOrientationPatient";
+    return false;
   }
+  ref.first->Get(DC::ImageOrientationPatient).GetValues(iop, 6);
+  if (!lkvtk::sliceFrame(iop, ref.frame))
+  {
+    error = "the reference CT's ImageOrientationPatient is degenerate";
+    return false;
+  }
+  for (const lkvtk::ImagePosition& image : images)
+    ref.planes.push_back({ lkvtk::dot(ref.frame.n, image.position), image.sopClass, image.sopInstance });
   std::sort(ref.planes.begin(), ref.planes.end(), [](const Plane& a, const Plane& b) { return a.w < b.w; });
   ref.frameUID = ref.first->Get(DC::FrameOfReferenceUID).AsString();
   return true;
