@@ -68,8 +68,9 @@ void usage(std::ostream& os)
         "                       on (surface.vtp), the lines it took (cut_lines.vtp, for\n"
         "                       latticekit-cut --lines), the plan (plan.txt: the input, the\n"
         "                       coordinates, pieces, volumes, cut lines and planes), a picture\n"
-        "                       of it (plan.png) and the session that replays it\n"
-        "                       (session.json), and exit\n"
+        "                       of it (plan.png), the session that replays it (session.json)\n"
+        "                       and, from a DICOM CT, the closed pieces as an RT structure set\n"
+        "                       on the CT's slices (pieces.dcm), and exit\n"
         "  --session OUT        where 'w' saves the session (default planner_session.json);\n"
         "                       changes not saved are kept after every step in OUT's name with\n"
         "                       -unsaved (planner_session-unsaved.json)\n"
@@ -264,6 +265,8 @@ int main(int argc, char* argv[])
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
   planner.bone->ShallowCopy(surface->GetOutput());
   planner.input = vtksys::SystemTools::CollapseFullPath(input);
+  if (!mesh)
+    planner.referenceImage = reader->GetReferenceImageFileName();
   planner.checkReplayedInput(!replay.empty());
   if (!ignoredFields.empty())
     planner.inputWarnings += (planner.inputWarnings.empty() ? "" : "\n") + ignoredFields;
@@ -418,6 +421,8 @@ int main(int argc, char* argv[])
       std::cerr << "error: " << error << "\n";
       return 1;
     }
+    if (!exportFolder.empty() && !planner.exportNote.empty())
+      std::cout << "structure set: " << planner.exportNote << "\n";
     if (!shot.empty())
     {
       planner.window->SetOffScreenRendering(1);

@@ -28,7 +28,8 @@ void usage(std::ostream& os)
         "INPUT is a DICOM folder (or a file of the series, a DICOM SEG or an RT structure set),\n"
         ".nrrd/.nhdr, .mha/.mhd or .nii/.nii.gz.\n"
         "OUTPUT is written by extension: .vtp, .vtk, .stl, .ply or .obj (patient LPS coordinates, mm),\n"
-        "or .dcm: an RT structure set (the surface as an ROI; on a DICOM CT's slices, in its study).\n"
+        "or .dcm: an RT structure set (the surface as an ROI; on the slices of the DICOM CT it came\n"
+        "from, or that a structure set or SEG given lies beside, in the CT's study).\n"
         "\n"
         "  --iso V            iso value (default 300, bone in HU; label maps use 0.5)\n"
         "  --largest          keep the largest component (default)\n"
@@ -198,17 +199,15 @@ int main(int argc, char* argv[])
   {
     // An RT structure set, for a PACS viewer or a planning system: the
     // surface as an ROI, its contours on the CT's slices when the input is
-    // a DICOM CT (the set then belongs to its patient and study).
+    // a DICOM CT, or a structure set or DICOM SEG drawn on one that lies
+    // beside it (the set then belongs to the CT's patient and study).
     vtkNew<vtkLKStructureSetWriter> set;
     set->SetInputData(mesh);
     const std::string segment = surface->GetEffectiveSegmentName();
     set->SetROIName(0, segment.empty() ? "Bone" : segment.c_str());
-    const bool onTheCT = std::strcmp(reader->GetFileFormat(), "DICOM") == 0;
+    const bool onTheCT = *reader->GetReferenceImageFileName() != '\0';
     if (onTheCT)
-    {
-      set->SetReferenceFileName(input.c_str());
-      set->SetReferenceSeriesIndex(static_cast<int>(series));
-    }
+      set->SetReferenceFileName(reader->GetReferenceImageFileName());
     set->SetFileName(output.c_str());
     set->Write();
     if (lkapp::errorCount() > 0)

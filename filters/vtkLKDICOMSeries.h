@@ -195,6 +195,12 @@ struct StructureSetInfo
 /// says what else it holds.
 std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth);
 
+/// The first file of the image series among `series` (a DICOM SEG is none)
+/// that the DICOM object in `file` was drawn on: the series an RT structure
+/// set or a DICOM SEG references by its SeriesInstanceUID. Empty when none
+/// of them is among `series` (or the file cannot be read).
+std::string referencedImageFile(const std::string& file, const std::vector<DICOMSeriesInfo>& series);
+
 /// Whether `file` is a DICOM RT structure set (its header is read).
 bool isDICOMStructureSet(const std::string& file);
 

@@ -302,10 +302,19 @@ bool planarIn(const SliceFrame& frame, std::vector<ROI>& rois)
   return true;
 }
 
-/// The SeriesInstanceUIDs of the image series the structure set references.
+/// The SeriesInstanceUIDs of the image series the structure set references
+/// (its RT referenced series), or a DICOM SEG references (its
+/// ReferencedSeriesSequence).
 std::vector<std::string> referencedSeriesUIDs(vtkDICOMMetaData* meta)
 {
   std::vector<std::string> uids;
+  const vtkDICOMValue& segSeries = meta->Get(DC::ReferencedSeriesSequence);
+  for (unsigned int i = 0; i < itemCount(segSeries); ++i)
+  {
+    const std::string uid = segSeries.GetSequenceData()[i].Get(DC::SeriesInstanceUID).AsString();
+    if (!uid.empty())
+      uids.push_back(uid);
+  }
   const vtkDICOMValue& frames = meta->Get(DC::ReferencedFrameOfReferenceSequence);
   for (unsigned int f = 0; f < itemCount(frames); ++f)
   {
@@ -329,7 +338,7 @@ const DICOMSeriesInfo* referencedImages(vtkDICOMMetaData* meta, const std::vecto
 {
   for (const std::string& uid : referencedSeriesUIDs(meta))
     for (const DICOMSeriesInfo& one : imageSeries)
-      if (one.uid == uid && !one.files.empty())
+      if (one.uid == uid && !one.files.empty() && one.sopClass != kSegmentationStorage)
         return &one;
   return nullptr;
 }
@@ -622,6 +631,16 @@ std::vector<unsigned char> fillROI(const ROI& roi, const Grid& grid, int& zFirst
 }
 
 } // namespace
+
+std::string referencedImageFile(const std::string& file, const std::vector<DICOMSeriesInfo>& series)
+{
+  vtkNew<vtkDICOMMetaData> meta;
+  std::string ignored;
+  if (!readDICOMHeader(file, meta, ignored))
+    return std::string();
+  const DICOMSeriesInfo* images = referencedImages(meta, series);
+  return images ? images->files.front() : std::string();
+}
 
 std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth)
 {

@@ -618,6 +618,7 @@ void vtkLKMedicalImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeriesIndex: " << this->SeriesIndex << "\n";
   os << indent << "SliceSpacing: " << this->SliceSpacing << "\n";
   os << indent << "FileFormat: " << this->FileFormat << "\n";
+  os << indent << "ReferenceImageFileName: " << this->ReferenceImageFileName << "\n";
   os << indent << "NumberOfSegments: " << this->GetNumberOfSegments() << "\n";
 }
 
@@ -665,6 +666,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
   this->Volume->Initialize();
   this->PatientMatrix->Identity();
   this->FileFormat.clear();
+  this->ReferenceImageFileName.clear();
   this->NumberOfSeries = 0;
   this->GantryTilt = this->MinimumSliceGap = this->MaximumSliceGap = 0.0;
   this->NumberOfInputSlices = 0;
@@ -685,6 +687,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
   double spacing[3] = { 1, 1, 1 };
   vtkSmartPointer<vtkImageData> image;
   std::vector<Segment> segments; // a segmentation's: a .seg.nrrd's header, a DICOM SEG's
+  std::string reference; // a file of the DICOM image series the volume belongs to
 
   if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr"))
   {
@@ -916,6 +919,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     }
     for (const std::string& note : notes)
       vtkWarningMacro("'" << path << "': " << note << ".");
+    reference = lkvtk::referencedImageFile(path, series);
     this->OrientationKnown = true;
     image = volume;
     image->GetSpacing(spacing);
@@ -1029,6 +1033,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
         vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
         return false;
       }
+      reference = lkvtk::referencedImageFile(series[static_cast<std::size_t>(chosen)].files.front(), series);
       this->OrientationKnown = true;
       image = volume;
       image->GetSpacing(spacing);
@@ -1054,6 +1059,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
       this->MinimumSliceGap = report.minGap;
       this->MaximumSliceGap = report.maxGap;
       this->NumberOfInputSlices = report.inputSlices;
+      reference = series[static_cast<std::size_t>(chosen)].files.front();
       this->OrientationKnown = true; // every slice's ImagePositionPatient and ImageOrientationPatient
       image = volume;
       image->GetSpacing(spacing);
@@ -1116,6 +1122,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
     space->InsertNextValue("LPS");
     this->Volume->GetFieldData()->AddArray(space);
   }
+  this->ReferenceImageFileName = reference;
   this->VolumeTime = this->GetMTime();
   return true;
 }

@@ -114,6 +114,14 @@ public:
   /// after an update.
   const char* GetFileFormat() { return this->FileFormat.c_str(); }
 
+  /// After an update, a file of the DICOM image series the volume belongs
+  /// to: the series read (FileFormat "DICOM"), or the CT an RT structure set
+  /// or a DICOM SEG was drawn on when that CT lies in the same folder; empty
+  /// otherwise. vtkLKStructureSetWriter's ReferenceFileName takes it, so
+  /// that what is made from the volume goes back to the same patient, study
+  /// and slices.
+  const char* GetReferenceImageFileName() { return this->ReferenceImageFileName.c_str(); }
+
   ///@{
   /// A segmentation's segments, after an update: a 3D Slicer .seg.nrrd's, a
   /// DICOM SEG's, an RT structure set's ROIs (none for a CT or a plain label
@@ -157,6 +165,7 @@ protected:
   vtkMTimeType VolumeTime = 0;
   bool ReadStopped = false; ///< the last read was stopped (AbortExecute): the output is empty
   std::string FileFormat;
+  std::string ReferenceImageFileName;
   int NumberOfSeries = 0;
   double GantryTilt = 0.0;
   double MinimumSliceGap = 0.0;

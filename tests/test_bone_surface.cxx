@@ -5,11 +5,14 @@
 #include "vtkLKMeshRepairFilter.h"
 
 #include <vtkCellData.h>
+#include <vtkDICOMCTGenerator.h>
 #include <vtkDICOMCompiler.h>
 #include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
+#include <vtkDICOMParser.h>
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMValue.h>
+#include <vtkDICOMWriter.h>
 #include <vtkDataArray.h>
 #include <vtkExtractVOI.h>
 #include <vtkFieldData.h>
@@ -512,7 +515,7 @@ enum class SegType
 };
 
 std::string writeSeg(const std::string& name, const std::vector<SegSegment>& segments, SegType type,
-  int claimedSegment = 0, double spacingBetweenSlices = 2.0)
+  int claimedSegment = 0, double spacingBetweenSlices = 2.0, const std::string& referencedSeries = std::string())
 {
   const bool fractional = type == SegType::Fractional, labelMap = type == SegType::LabelMap;
   const int NX = 40, NY = 30, NZ = 30;
@@ -550,6 +553,12 @@ std::string writeSeg(const std::string& name, const std::vector<SegSegment>& seg
     list.AddItem(item);
   }
   meta->Set(DC::SegmentSequence, list);
+  if (!referencedSeries.empty()) // the CT it was drawn on
+  {
+    vtkDICOMItem series;
+    series.Set(DC::SeriesInstanceUID, referencedSeries);
+    meta->Set(DC::ReferencedSeriesSequence, vtkDICOMSequence(series));
+  }
   vtkDICOMItem measures, plane, shared;
   measures.Set(DC::PixelSpacing, "1\\1");
   measures.Set(DC::SliceThickness, 2.0);
@@ -925,6 +934,63 @@ TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
   EXPECT_NE(badRec.messages.find("the frames of the DICOM segmentation do not lie on a grid of 3 mm slices."),
     std::string::npos)
     << badRec.messages;
+}
+
+// A SEG beside the CT it was drawn on names that CT, so that what is made
+// from its segments (vtkLKStructureSetWriter) goes back to the CT's patient
+// and slices; a SEG alone, or one whose CT is elsewhere, names none.
+TEST(BoneSurface, ADicomSegNamesTheCTItWasDrawnOnWhenItLiesBesideIt)
+{
+  const std::string ctDir = std::string(LATTICEKIT_TEST_TMP) + "/dicom_seg_its_ct";
+  vtksys::SystemTools::RemoveADirectory(ctDir);
+  vtksys::SystemTools::MakeDirectory(ctDir);
+  vtkNew<vtkImageData> ct;
+  ct->SetDimensions(40, 30, 30);
+  ct->SetSpacing(1.0, 1.0, 2.0);
+  ct->SetOrigin(-20.0, -15.0, -30.0);
+  ct->AllocateScalars(VTK_SHORT, 1);
+  ct->GetPointData()->GetScalars()->Fill(1024.0);
+  vtkNew<vtkDICOMCTGenerator> generator;
+  vtkNew<vtkDICOMWriter> writer;
+  writer->SetInputData(ct);
+  writer->SetGenerator(generator);
+  writer->SetFilePrefix(ctDir.c_str());
+  writer->SetFilePattern("%s/ct_%03d.dcm");
+  writer->Write();
+  vtkNew<vtkDICOMMetaData> ctMeta;
+  vtkNew<vtkDICOMParser> parser;
+  parser->SetFileName((ctDir + "/ct_001.dcm").c_str());
+  parser->SetMetaData(ctMeta);
+  parser->Update();
+  const std::string uid = ctMeta->Get(DC::SeriesInstanceUID).AsString();
+  ASSERT_FALSE(uid.empty());
+
+  const std::string seg =
+    writeSeg("dicom_seg_beside_its_ct", { { 1, "Mandible", mandibleBall } }, SegType::Binary, 0, 2.0, uid);
+  const auto referenceOf = [](const std::string& file) {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    EXPECT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_STREQ(reader->GetFileFormat(), "DICOM SEG");
+    return std::string(reader->GetReferenceImageFileName());
+  };
+  EXPECT_EQ(referenceOf(seg), ""); // its CT is elsewhere
+  ASSERT_TRUE(vtksys::SystemTools::CopyADirectory(ctDir, vtksys::SystemTools::GetFilenamePath(seg)));
+  const std::string reference = referenceOf(seg);
+  EXPECT_EQ(vtksys::SystemTools::GetFilenamePath(reference), vtksys::SystemTools::GetFilenamePath(seg));
+  EXPECT_EQ(vtksys::SystemTools::GetFilenameName(reference).rfind("ct_", 0), 0u) << reference;
+  // The CT read itself names a file of its own series.
+  vtkNew<vtkLKMedicalImageReader> ctReader;
+  ctReader->SetFileName(ctDir.c_str());
+  ctReader->Update();
+  EXPECT_EQ(vtksys::SystemTools::GetFilenamePath(ctReader->GetReferenceImageFileName()), ctDir);
+  // A NRRD belongs to no DICOM series.
+  vtkNew<vtkLKMedicalImageReader> nrrd;
+  nrrd->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/two_segments.seg.nrrd").c_str());
+  nrrd->Update();
+  EXPECT_STREQ(nrrd->GetReferenceImageFileName(), "");
 }
 
 // FRACTIONAL frames (occupancy 0 to 255) count from half the maximum; a

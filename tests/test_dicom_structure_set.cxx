@@ -294,6 +294,9 @@ TEST(DicomStructureSet, ROIsAreFilledOnTheGridOfTheCTBesideThem)
   reader->Update();
   ASSERT_EQ(rec.errors, 0) << rec.messages;
   expectThePlansVoxels(reader);
+  // What is made from its ROIs goes back to this CT (the structure set
+  // writer's ReferenceFileName).
+  EXPECT_EQ(seriesUIDOf(reader->GetReferenceImageFileName()), uid);
   // Only the isocentre is worth a word: the grid is the CT's.
   EXPECT_EQ(rec.warnings, 1) << rec.warningMessages;
   EXPECT_NE(rec.warningMessages.find("ROIs without closed planar contours are not read: 'Isocenter' (POINT)"),
@@ -310,6 +313,7 @@ TEST(DicomStructureSet, ROIsAreFilledOnTheGridOfTheCTBesideThem)
     ctReader->Update();
     EXPECT_EQ(ctRec.errors, 0) << ctRec.messages;
     EXPECT_STREQ(ctReader->GetFileFormat(), "DICOM");
+    EXPECT_EQ(seriesUIDOf(ctReader->GetReferenceImageFileName()), uid);
     EXPECT_EQ(ctReader->GetOutput()->GetNumberOfScalarComponents(), 1);
     EXPECT_EQ(ctRec.warnings, 1) << ctRec.warningMessages;
     EXPECT_NE(ctRec.warningMessages.find("The folder also holds an RT structure set (organs contoured for "
@@ -365,6 +369,7 @@ TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
   reader->Update();
   ASSERT_EQ(rec.errors, 0) << rec.messages;
   expectThePlansVoxels(reader); // axial contours: an axial grid of 1 mm pixels and their 2 mm slices
+  EXPECT_STREQ(reader->GetReferenceImageFileName(), ""); // no CT to go back to
   EXPECT_NE(rec.warningMessages.find("the image series the structure set was drawn on (1.2.3.4.5.6.7.8.9) is not in "
                                      "its folder: its ROIs are filled on a grid of their own, 1 mm pixels and 2 mm "
                                      "slices"),

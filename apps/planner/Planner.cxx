@@ -12,6 +12,7 @@
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMetroFilter.h"
 #include "vtkLKPatchDeformationFilter.h"
+#include "vtkLKStructureSetWriter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
 
 #include <vtkActor.h>
@@ -1196,20 +1197,39 @@ void Planner::report()
     std::printf("lattice fits: %zu (%zu kept from an earlier fit of the same piece)\n", latticeFits, latticesReused);
 }
 
+namespace
+{
+/// 'a', 'b', 'c'
+std::string quotedList(const std::vector<std::string>& names)
+{
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    text += (i ? ", '" : "'") + names[i] + "'";
+  return text;
+}
+} // namespace
+
 bool Planner::exportPieces(const std::string& folder, std::string& error)
 {
   // The bone's own file among what the export writes or removes (a plan
   // made on an exported surface.vtp, exported into the same folder) would
   // be lost. A replayed session.json there is the plan's own, rewritten.
-  if (lkapp::isExportedFile(
-        input, folder, { "surface.vtp", "cut_lines.vtp", "plan.txt", "plan.png", "segment_transform.txt" }))
+  if (lkapp::isExportedFile(input, folder,
+        { "surface.vtp", "cut_lines.vtp", "plan.txt", "plan.png", "segment_transform.txt", "pieces.dcm" }))
   {
     error = "the input '" + input + "' is one of the files the export writes or removes in '" + folder +
       "': export to another folder";
     return false;
   }
+  exportNote.clear();
+  exportedStructureSet = false;
   vtksys::SystemTools::MakeDirectory(folder);
   const std::string space = lkapp::coordinateSpace(bone); // "LPS" from an oriented CT; a mesh file's own tag
+  // The closed pieces as the ROIs of an RT structure set on the CT, for the
+  // hospital's PACS or planning system; an open piece (cut from a bone that
+  // is open where the scan ends) has no contours to give.
+  vtkNew<vtkLKStructureSetWriter> structureSet;
+  std::vector<std::string> roiNames, leftOut;
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     // The segment goes where the plan moves it.
@@ -1230,7 +1250,39 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       if (!lkapp::writeMesh(piece, path, error, space))
         return false;
     }
+    if (referenceImage.empty())
+      continue;
+    const std::string name = "piece " + std::to_string(p) + (static_cast<int>(p) == movedPiece() ? " (moved)" : "");
+    if (factsOf(p).openEdges > 0 || piece->GetNumberOfPolys() == 0)
+    {
+      leftOut.push_back(name);
+      continue;
+    }
+    structureSet->SetROIName(static_cast<int>(roiNames.size()), name.c_str());
+    structureSet->AddInputData(piece);
+    roiNames.push_back(name);
   }
+  if (!roiNames.empty())
+  {
+    structureSet->SetReferenceFileName(referenceImage.c_str());
+    structureSet->SetStructureSetLabel("latticekit plan");
+    structureSet->SetFileName((folder + "/pieces.dcm").c_str());
+    const int before = lkapp::errorCount();
+    structureSet->Write();
+    if (lkapp::errorCount() > before)
+    {
+      error = "cannot write the RT structure set '" + folder + "/pieces.dcm': " + lkapp::errorsSince(before);
+      return false;
+    }
+    exportedStructureSet = true;
+    exportNote = "pieces.dcm (RT structure set on the CT's slices): " + quotedList(roiNames) + ", " +
+      std::to_string(structureSet->GetNumberOfContours()) + " contours";
+    if (!leftOut.empty())
+      exportNote += "; left out, open: " + quotedList(leftOut);
+  }
+  else if (!leftOut.empty())
+    exportNote = "none, every piece is open (" + quotedList(leftOut) +
+      "); a bone that the scan's border cuts is closed with --close";
   // The surface the cut was made on (before deformations and the segment's
   // move) and the lines it was cut along.
   for (const auto& [mesh, name] : { std::make_pair(cut.surface, "surface.vtp"), std::make_pair(cut.loops, "cut_lines.vtp") })
@@ -1243,6 +1295,8 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   std::string header;
   if (!input.empty())
     header += "input: " + input + "\n";
+  if (!exportNote.empty())
+    header += "structure set: " + exportNote + "\n";
   header += "coordinates: " +
     (space.empty() ? std::string("the input's own (its patient orientation is unknown)") : space + ", mm") + "\n";
   std::vector<std::pair<std::string, std::string>> texts{ { "plan.txt", header + planText() } };
@@ -1267,6 +1321,8 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     others.push_back("cut_lines.vtp");
   if (!hasSegment())
     others.push_back("segment_transform.txt");
+  if (roiNames.empty())
+    others.push_back("pieces.dcm");
   return lkapp::removeStaleExports(folder, pieces.size(), others, error);
 }
 

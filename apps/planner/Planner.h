@@ -66,6 +66,14 @@ public:
   vtkSmartPointer<vtkPolyData> bone;
   /// The CT or mesh file the bone came from (its full path): the exported plan names it.
   std::string input;
+  /// A file of the DICOM CT series the bone came from (the reader's
+  /// ReferenceImageFileName), or empty: the export then writes the pieces as
+  /// an RT structure set on that CT.
+  std::string referenceImage;
+  /// What the last export wrote beside the meshes (the structure set), for
+  /// the batch report and the window's notice; empty when nothing.
+  std::string exportNote;
+  bool exportedStructureSet = false; ///< the last export wrote pieces.dcm
   Session session;
   int mode = vtkLKStrokeFeatureLineFilter::NEAREST_EDGES;
   bool drawing = false;
@@ -323,7 +331,10 @@ public:
   /// (cut_lines.vtp), the plan (plan.txt, planText()), the window's picture
   /// of it (plan.png), the session that replays it (session.json) and, with
   /// a moved segment, its transform
-  /// (segment_transform.txt). Files of these names that an earlier export
+  /// (segment_transform.txt), and, when the bone came from a DICOM CT
+  /// (referenceImage), the closed pieces as the ROIs of an RT structure set
+  /// on the CT's slices (pieces.dcm, "piece 0", ...), for the hospital's
+  /// PACS or planning system. Files of these names that an earlier export
   /// left and this plan does not make (more pieces, say) are removed.
   bool exportPieces(const std::string& folder, std::string& error);
 

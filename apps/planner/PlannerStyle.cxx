@@ -550,7 +550,8 @@ void PlannerStyle::OnChar()
   {
     if (planner->exportPieces(exportFolder, error))
     {
-      planner->notice = "exported to " + exportFolder;
+      planner->notice = "exported to " + exportFolder +
+        (planner->exportedStructureSet ? " (with pieces.dcm, an RT structure set on the CT)" : "");
       planner->markSaved(); // the export holds session.json
     }
     else

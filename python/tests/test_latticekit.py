@@ -245,6 +245,7 @@ class PipelineTest(unittest.TestCase):
             self.assertEqual([again.GetSegmentName(i) for i in range(again.GetNumberOfSegments())], ["Ball"])
         self.assertGreater(writer.GetNumberOfContours(), 15)
         self.assertEqual(reader.GetFileFormat(), "DICOM RTSTRUCT")
+        self.assertEqual(reader.GetReferenceImageFileName(), "")  # no CT to write back onto
         self.assertEqual(len(warnings), 2)  # no CT beside it; the isocentre is a point
         self.assertEqual([(reader.GetSegmentName(i), reader.GetSegmentLabelValue(i), reader.GetSegmentLayer(i))
                           for i in range(reader.GetNumberOfSegments())], [("Mandible", 4, 0)])
