@@ -241,6 +241,7 @@ int main(int argc, char* argv[])
     bone->SetLabelName(used.labelName.empty() ? nullptr : used.labelName.c_str());
   }
   const int warningsBeforeLoad = lkapp::warningCount();
+  std::string organNote; // the organ read from an RT structure set beside the CT
   {
     // Before the window opens, a large CT takes a while: bars in a terminal
     // (not in a log, where the headless runs' reports are read line by line).
@@ -249,6 +250,19 @@ int main(int argc, char* argv[])
     {
       lkapp::ProgressBar bar(reader, "read", bars);
       reader->Update();
+    }
+    // --label NAME on a CT exported with the organs contoured on it (a
+    // radiotherapy export): the organ is read from the RT structure set,
+    // and the window says so.
+    if (!mesh && lkapp::errorCount() == 0)
+    {
+      if (lkapp::readOrganFromStructureSet(reader, planner.session.surface.labelName, organNote, error))
+        std::cerr << "note: " << organNote << "\n";
+      else if (!error.empty())
+      {
+        std::cerr << "error: " << error << "\n";
+        return 1;
+      }
     }
     if (lkapp::errorCount() == 0) // a scan that cannot be read is said once
     {
@@ -280,6 +294,8 @@ int main(int argc, char* argv[])
     std::cerr << "warning: " << note << "\n";
     loadWarnings += (loadWarnings.empty() ? "" : "\n") + note;
   }
+  if (!organNote.empty())
+    loadWarnings += (loadWarnings.empty() ? "" : "\n") + organNote;
   if (!loadWarnings.empty())
     planner.inputWarnings += (planner.inputWarnings.empty() ? "" : "\n") + loadWarnings;
   if (mesh) // the file's coordinate system (3D Slicer's tag), which the export names again

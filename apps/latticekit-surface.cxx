@@ -161,6 +161,15 @@ int main(int argc, char* argv[])
   {
     return 1;
   }
+  // --label NAME on a CT exported with the organs contoured on it (a
+  // radiotherapy export): the organ is read from the RT structure set.
+  if (std::string note; lkapp::readOrganFromStructureSet(reader, labelName, note, error))
+    std::cerr << "note: " << note << "\n";
+  else if (!error.empty())
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
   vtkNew<vtkLKBoneSurfaceFilter> surface;
   surface->SetInputConnection(reader->GetOutputPort());
   surface->SetIsoValue(iso);

@@ -351,7 +351,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     if (found == segments.end())
     {
       vtkErrorMacro("No segment is named '" << wanted << "'; "
-                    << (segments.empty() ? std::string("the volume names no segments (a 3D Slicer .seg.nrrd or a DICOM SEG does)")
+                    << (segments.empty() ? std::string("the volume names no segments (a 3D Slicer .seg.nrrd, a DICOM SEG or an RT structure set does)")
                                          : "its segments are " + segmentNames(segments))
                     << ".");
       return 0;

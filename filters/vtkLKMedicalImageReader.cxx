@@ -334,7 +334,8 @@ std::string structureSetsNote(const std::vector<lkvtk::StructureSetInfo>& sets, 
   std::ostringstream os;
   os << "The folder also holds "
      << (sets.size() == 1 ? std::string("an RT structure set") : std::to_string(sets.size()) + " RT structure sets")
-     << " (organs contoured for radiotherapy); give its file to read its ROIs as segments:";
+     << " (organs contoured for radiotherapy); give its file to read its ROIs as segments (latticekit-surface "
+        "and the planner do when --label names one of them):";
   for (const auto& set : sets)
   {
     const bool drawnOnIt =
@@ -620,6 +621,7 @@ void vtkLKMedicalImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileFormat: " << this->FileFormat << "\n";
   os << indent << "ReferenceImageFileName: " << this->ReferenceImageFileName << "\n";
   os << indent << "NumberOfSegments: " << this->GetNumberOfSegments() << "\n";
+  os << indent << "NumberOfStructureSets: " << this->GetNumberOfStructureSets() << "\n";
 }
 
 namespace
@@ -667,6 +669,8 @@ bool vtkLKMedicalImageReader::ReadVolume()
   this->PatientMatrix->Identity();
   this->FileFormat.clear();
   this->ReferenceImageFileName.clear();
+  this->StructureSetFiles.clear();
+  this->StructureSetROINames.clear();
   this->NumberOfSeries = 0;
   this->GantryTilt = this->MinimumSliceGap = this->MaximumSliceGap = 0.0;
   this->NumberOfInputSlices = 0;
@@ -688,6 +692,8 @@ bool vtkLKMedicalImageReader::ReadVolume()
   vtkSmartPointer<vtkImageData> image;
   std::vector<Segment> segments; // a segmentation's: a .seg.nrrd's header, a DICOM SEG's
   std::string reference; // a file of the DICOM image series the volume belongs to
+  std::vector<std::string> structureSets; // the RT structure sets drawn on it, and their ROIs
+  std::vector<std::vector<std::string>> structureSetROIs;
 
   if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr"))
   {
@@ -1055,6 +1061,13 @@ bool vtkLKMedicalImageReader::ReadVolume()
         lkvtk::findDICOMStructureSets(folder.empty() ? "." : folder, isFolder ? lkvtk::kDICOMScanDepth : 1);
       if (!sets.empty())
         vtkWarningMacro(<< structureSetsNote(sets, series[static_cast<std::size_t>(chosen)].uid));
+      for (const auto& set : sets)
+        if (std::find(set.referencedSeries.begin(), set.referencedSeries.end(),
+              series[static_cast<std::size_t>(chosen)].uid) != set.referencedSeries.end())
+        {
+          structureSets.push_back(set.file);
+          structureSetROIs.push_back(set.roiNames);
+        }
       this->GantryTilt = report.gantryTiltDegrees;
       this->MinimumSliceGap = report.minGap;
       this->MaximumSliceGap = report.maxGap;
@@ -1123,12 +1136,34 @@ bool vtkLKMedicalImageReader::ReadVolume()
     this->Volume->GetFieldData()->AddArray(space);
   }
   this->ReferenceImageFileName = reference;
+  this->StructureSetFiles = structureSets;
+  this->StructureSetROINames = structureSetROIs;
   this->VolumeTime = this->GetMTime();
   return true;
 }
 
 // The segments are read from the volume's field data, which the reader
 // writes once per read (and a stopped or failed read clears).
+const char* vtkLKMedicalImageReader::GetStructureSetFileName(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfStructureSets() ? this->StructureSetFiles[static_cast<std::size_t>(i)].c_str()
+                                                        : nullptr;
+}
+
+int vtkLKMedicalImageReader::GetNumberOfStructureSetROIs(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfStructureSets()
+    ? static_cast<int>(this->StructureSetROINames[static_cast<std::size_t>(i)].size())
+    : 0;
+}
+
+const char* vtkLKMedicalImageReader::GetStructureSetROIName(int i, int roi) const
+{
+  if (roi < 0 || roi >= this->GetNumberOfStructureSetROIs(i))
+    return nullptr;
+  return this->StructureSetROINames[static_cast<std::size_t>(i)][static_cast<std::size_t>(roi)].c_str();
+}
+
 int vtkLKMedicalImageReader::GetNumberOfSegments() const
 {
   auto* names = vtkStringArray::SafeDownCast(this->Volume->GetFieldData()->GetAbstractArray("SegmentNames"));

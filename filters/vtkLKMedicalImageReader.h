@@ -69,6 +69,7 @@
 #include "vtkImageAlgorithm.h"
 
 #include <string>
+#include <vector>
 
 class vtkImageData;
 class vtkMatrix4x4;
@@ -147,6 +148,19 @@ public:
   int GetNumberOfInputSlices() const { return this->NumberOfInputSlices; }
   ///@}
 
+  ///@{
+  /// DICOM only, after an update: the RT structure sets in the folder that
+  /// were drawn on the series read (a radiotherapy export: the CT and the
+  /// organs contoured on it), each its file and its ROIs' names; out of
+  /// range, nullptr and 0. Reading the file (FileName) gives its ROIs as
+  /// segments; latticekit-surface and the planner do that when --label names
+  /// an organ that only a structure set of the CT holds.
+  int GetNumberOfStructureSets() const { return static_cast<int>(this->StructureSetFiles.size()); }
+  const char* GetStructureSetFileName(int i) const;
+  int GetNumberOfStructureSetROIs(int i) const;
+  const char* GetStructureSetROIName(int i, int roi) const;
+  ///@}
+
 protected:
   vtkLKMedicalImageReader();
   ~vtkLKMedicalImageReader() override;
@@ -172,6 +186,8 @@ protected:
   double MaximumSliceGap = 0.0;
   int NumberOfInputSlices = 0;
   bool OrientationKnown = false;
+  std::vector<std::string> StructureSetFiles;
+  std::vector<std::vector<std::string>> StructureSetROINames;
 
 private:
   vtkLKMedicalImageReader(const vtkLKMedicalImageReader&) = delete;

@@ -734,8 +734,8 @@ TEST(BoneSurface, LabelNameTakesASegmentOfASlicerSegmentation)
   plain->SetInputConnection(mha->GetOutputPort());
   plain->SetLabelName("mandible");
   plain->Update();
-  EXPECT_NE(rec.messages.find("No segment is named 'mandible'; the volume names no segments (a 3D Slicer .seg.nrrd "
-                              "or a DICOM SEG does)."),
+  EXPECT_NE(rec.messages.find("No segment is named 'mandible'; the volume names no segments (a 3D Slicer .seg.nrrd, "
+                              "a DICOM SEG or an RT structure set does)."),
     std::string::npos)
     << rec.messages;
 }

@@ -317,10 +317,19 @@ TEST(DicomStructureSet, ROIsAreFilledOnTheGridOfTheCTBesideThem)
     EXPECT_EQ(ctReader->GetOutput()->GetNumberOfScalarComponents(), 1);
     EXPECT_EQ(ctRec.warnings, 1) << ctRec.warningMessages;
     EXPECT_NE(ctRec.warningMessages.find("The folder also holds an RT structure set (organs contoured for "
-                                         "radiotherapy); give its file to read its ROIs as segments:\n  '" +
+                                         "radiotherapy); give its file to read its ROIs as segments (latticekit-surface and the "
+                                         "planner do when --label names one of them):\n  '" +
                 file + "', drawn on this series: 'Body', 'Mandible', 'Canal', 'Isocenter'"),
       std::string::npos)
       << ctRec.warningMessages;
+    // The same, for scripts: the sets drawn on this CT, and their ROIs.
+    ASSERT_EQ(ctReader->GetNumberOfStructureSets(), 1);
+    EXPECT_EQ(std::string(ctReader->GetStructureSetFileName(0)), file);
+    ASSERT_EQ(ctReader->GetNumberOfStructureSetROIs(0), 4);
+    EXPECT_STREQ(ctReader->GetStructureSetROIName(0, 1), "Mandible");
+    EXPECT_EQ(ctReader->GetStructureSetROIName(0, 4), nullptr);
+    EXPECT_EQ(ctReader->GetStructureSetFileName(1), nullptr);
+    EXPECT_EQ(ctReader->GetNumberOfStructureSetROIs(-1), 0);
   }
 }
 

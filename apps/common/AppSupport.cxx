@@ -1,6 +1,7 @@
 #include "AppSupport.h"
 #include "AtomicFile.h"
 #include "MeshFileCheck.h"
+#include "vtkLKMedicalImageReader.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -895,6 +896,50 @@ std::string unusedIsoNote(double iso, int label, const std::string& input, bool 
     note << name << " is a 0/1 label map, taken at 0.5"
          << (noLabelMapOption ? " (--no-label-map takes it at the --iso value)" : "");
   return note.str();
+}
+
+bool readOrganFromStructureSet(
+  vtkLKMedicalImageReader* reader, const std::string& name, std::string& note, std::string& error)
+{
+  note.clear();
+  error.clear();
+  if (name.empty() || std::strcmp(reader->GetFileFormat(), "DICOM") != 0 || reader->GetNumberOfSegments() > 0)
+    return false;
+  // The bone surface filter's rule: the exact name, else the name in any case.
+  std::vector<int> holding;
+  for (bool anyCase : { false, true })
+  {
+    for (int s = 0; s < reader->GetNumberOfStructureSets(); ++s)
+      for (int r = 0; r < reader->GetNumberOfStructureSetROIs(s); ++r)
+        if (anyCase ? lower(reader->GetStructureSetROIName(s, r)) == lower(name) : reader->GetStructureSetROIName(s, r) == name)
+        {
+          holding.push_back(s);
+          break;
+        }
+    if (!holding.empty())
+      break;
+  }
+  if (holding.empty())
+    return false;
+  if (holding.size() > 1)
+  {
+    error = "the CT names no segments, and " + std::to_string(holding.size()) +
+      " RT structure sets drawn on it have an ROI named '" + name + "': give the file of the one to read:";
+    for (int s : holding)
+      error += std::string("\n  '") + reader->GetStructureSetFileName(s) + "'";
+    return false;
+  }
+  const std::string file = reader->GetStructureSetFileName(holding.front());
+  note = "'" + name + "' is an ROI of the RT structure set '" + file + "', drawn on this CT: read from there";
+  reader->SetFileName(file.c_str());
+  const int before = errorCount();
+  reader->Update();
+  if (errorCount() > before)
+  {
+    error = "cannot read the RT structure set '" + file + "'";
+    return false;
+  }
+  return true;
 }
 
 double Arguments::number(const std::string& arg, double lo, double hi, const char* what)

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+class vtkLKMedicalImageReader;
+
 class vtkAlgorithm;
 class vtkPolyData;
 class vtkRenderWindow;
@@ -186,6 +188,16 @@ private:
 /// "... 'mask.nrrd' is a 0/1 label map, taken at 0.5", and where the tool has
 /// --no-label-map (`noLabelMapOption`), how to take it at --iso instead.
 std::string unusedIsoNote(double iso, int label, const std::string& input, bool noLabelMapOption);
+
+/// --label NAME on a DICOM CT, whose volume names no segments, where an RT
+/// structure set drawn on that CT lies in its folder (the reader lists them)
+/// with an ROI of that name (matched as vtkLKBoneSurfaceFilter matches names:
+/// exactly, else in any case): `reader` reads that set's file instead, and
+/// `note` says so; true. False with `error` when several sets have the ROI
+/// (it names their files) or the set cannot be read; false with `error`
+/// empty when there is nothing to take (the reader is left as it was).
+bool readOrganFromStructureSet(
+  vtkLKMedicalImageReader* reader, const std::string& name, std::string& note, std::string& error);
 
 /// False (with error set) if the mesh file cannot be created or has an
 /// unknown extension: checked before a long run, so that the run does not
