@@ -22,8 +22,10 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <sstream>
 
@@ -417,12 +419,14 @@ void vtkLKStructureSetWriter::WriteData()
   compiler->SetSeriesInstanceUID(vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID).c_str());
   compiler->WriteHeader();
   compiler->Close();
-  if (compiler->GetErrorCode() != 0 || !catcher.messages.empty() ||
-    std::rename(part.c_str(), target.c_str()) != 0)
+  std::string why = catcher.messages;
+  const bool written = compiler->GetErrorCode() == 0 && why.empty();
+  if (written && std::rename(part.c_str(), target.c_str()) != 0)
+    why = std::strerror(errno); // a folder of that name, say
+  if (!written || !why.empty())
   {
     vtksys::SystemTools::RemoveFile(part);
-    vtkErrorMacro("Cannot write '" << target << "'" << (catcher.messages.empty() ? "" : ": " + catcher.messages)
-                                   << ".");
+    vtkErrorMacro("Cannot write '" << target << "'" << (why.empty() ? "" : ": " + why) << ".");
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     return;
   }

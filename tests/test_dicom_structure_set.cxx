@@ -1074,6 +1074,16 @@ TEST(DicomStructureSet, WritingBadInputIsAClearErrorAndKeepsAnEarlierFile)
     EXPECT_EQ(kept, "earlier");
   }
   {
+    // A folder of the file's name: the reason, and no part file left.
+    vtksys::SystemTools::MakeDirectory(dir + "/folder.dcm");
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 0, 5));
+    writer->SetFileName((dir + "/folder.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("Cannot write '" + dir + "/folder.dcm': Is a directory."), std::string::npos) << messages;
+    EXPECT_FALSE(vtksys::SystemTools::FileExists(dir + "/folder.dcm.part"));
+  }
+  {
     // The file cannot take its place (a folder of the same name is in the
     // way): an error, and no part file left behind.
     vtkNew<vtkLKStructureSetWriter> writer;

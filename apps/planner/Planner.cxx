@@ -1230,6 +1230,7 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   // is open where the scan ends) has no contours to give.
   vtkNew<vtkLKStructureSetWriter> structureSet;
   std::vector<std::string> roiNames, leftOut;
+  std::string structureSetError;
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     // The segment goes where the plan moves it.
@@ -1271,14 +1272,19 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     structureSet->Write();
     if (lkapp::errorCount() > before)
     {
-      error = "cannot write the RT structure set '" + folder + "/pieces.dcm': " + lkapp::errorsSince(before);
-      return false;
+      // The CT moved away since it was read, say: the plan, its session and
+      // the pieces are still written, and the failure is said at the end.
+      structureSetError = lkapp::errorsSince(before);
+      exportNote = "not written: " + structureSetError;
     }
-    exportedStructureSet = true;
-    exportNote = "pieces.dcm (RT structure set on the CT's slices): " + quotedList(roiNames) + ", " +
-      std::to_string(structureSet->GetNumberOfContours()) + " contours";
-    if (!leftOut.empty())
-      exportNote += "; left out, open: " + quotedList(leftOut);
+    else
+    {
+      exportedStructureSet = true;
+      exportNote = "pieces.dcm (RT structure set on the CT's slices): " + quotedList(roiNames) + ", " +
+        std::to_string(structureSet->GetNumberOfContours()) + " contours";
+      if (!leftOut.empty())
+        exportNote += "; left out, open: " + quotedList(leftOut);
+    }
   }
   else if (!leftOut.empty())
     exportNote = "none, every piece is open (" + quotedList(leftOut) +
@@ -1321,9 +1327,17 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     others.push_back("cut_lines.vtp");
   if (!hasSegment())
     others.push_back("segment_transform.txt");
-  if (roiNames.empty())
+  if (!exportedStructureSet) // an earlier plan's set is not this plan's
     others.push_back("pieces.dcm");
-  return lkapp::removeStaleExports(folder, pieces.size(), others, error);
+  if (!lkapp::removeStaleExports(folder, pieces.size(), others, error))
+    return false;
+  if (!structureSetError.empty())
+  {
+    error = "the RT structure set '" + folder + "/pieces.dcm' was not written (the rest of the export was): " +
+      structureSetError;
+    return false;
+  }
+  return true;
 }
 
 bool Planner::screenshot(const std::string& path, std::string& error)
