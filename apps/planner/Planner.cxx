@@ -1209,6 +1209,54 @@ std::string quotedList(const std::vector<std::string>& names)
 }
 } // namespace
 
+std::string Planner::exportStructureSet(
+  const std::string& folder, const std::vector<vtkSmartPointer<vtkPolyData>>& exported)
+{
+  exportNote.clear();
+  exportedStructureSet = false;
+  if (referenceImage.empty())
+    return std::string();
+  // An open piece (cut from a bone that is open where the scan ends) has no
+  // closed contours to give.
+  vtkNew<vtkLKStructureSetWriter> structureSet;
+  std::vector<std::string> roiNames, leftOut;
+  for (std::size_t p = 0; p < exported.size(); ++p)
+  {
+    const std::string name = "piece " + std::to_string(p) + (static_cast<int>(p) == movedPiece() ? " (moved)" : "");
+    if (factsOf(p).openEdges > 0 || exported[p]->GetNumberOfPolys() == 0)
+    {
+      leftOut.push_back(name);
+      continue;
+    }
+    structureSet->SetROIName(static_cast<int>(roiNames.size()), name.c_str());
+    structureSet->AddInputData(exported[p]);
+    roiNames.push_back(name);
+  }
+  if (roiNames.empty())
+  {
+    if (!leftOut.empty())
+      exportNote = "none, every piece is open (" + quotedList(leftOut) +
+        "); a bone that the scan's border cuts is closed with --close";
+    return std::string();
+  }
+  structureSet->SetReferenceFileName(referenceImage.c_str());
+  structureSet->SetStructureSetLabel("latticekit plan");
+  structureSet->SetFileName((folder + "/pieces.dcm").c_str());
+  const int before = lkapp::errorCount();
+  structureSet->Write();
+  if (lkapp::errorCount() > before) // the CT moved away since it was read, say
+  {
+    exportNote = "not written: " + lkapp::errorsSince(before);
+    return lkapp::errorsSince(before);
+  }
+  exportedStructureSet = true;
+  exportNote = "pieces.dcm (RT structure set on the CT's slices): " + quotedList(roiNames) + ", " +
+    std::to_string(structureSet->GetNumberOfContours()) + " contours";
+  if (!leftOut.empty())
+    exportNote += "; left out, open: " + quotedList(leftOut);
+  return std::string();
+}
+
 bool Planner::exportPieces(const std::string& folder, std::string& error)
 {
   // The bone's own file among what the export writes or removes (a plan
@@ -1221,16 +1269,9 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       "': export to another folder";
     return false;
   }
-  exportNote.clear();
-  exportedStructureSet = false;
   vtksys::SystemTools::MakeDirectory(folder);
   const std::string space = lkapp::coordinateSpace(bone); // "LPS" from an oriented CT; a mesh file's own tag
-  // The closed pieces as the ROIs of an RT structure set on the CT, for the
-  // hospital's PACS or planning system; an open piece (cut from a bone that
-  // is open where the scan ends) has no contours to give.
-  vtkNew<vtkLKStructureSetWriter> structureSet;
-  std::vector<std::string> roiNames, leftOut;
-  std::string structureSetError;
+  std::vector<vtkSmartPointer<vtkPolyData>> exported; // as written: the segment where the plan moves it
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     // The segment goes where the plan moves it.
@@ -1251,44 +1292,10 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       if (!lkapp::writeMesh(piece, path, error, space))
         return false;
     }
-    if (referenceImage.empty())
-      continue;
-    const std::string name = "piece " + std::to_string(p) + (static_cast<int>(p) == movedPiece() ? " (moved)" : "");
-    if (factsOf(p).openEdges > 0 || piece->GetNumberOfPolys() == 0)
-    {
-      leftOut.push_back(name);
-      continue;
-    }
-    structureSet->SetROIName(static_cast<int>(roiNames.size()), name.c_str());
-    structureSet->AddInputData(piece);
-    roiNames.push_back(name);
+    exported.push_back(piece);
   }
-  if (!roiNames.empty())
-  {
-    structureSet->SetReferenceFileName(referenceImage.c_str());
-    structureSet->SetStructureSetLabel("latticekit plan");
-    structureSet->SetFileName((folder + "/pieces.dcm").c_str());
-    const int before = lkapp::errorCount();
-    structureSet->Write();
-    if (lkapp::errorCount() > before)
-    {
-      // The CT moved away since it was read, say: the plan, its session and
-      // the pieces are still written, and the failure is said at the end.
-      structureSetError = lkapp::errorsSince(before);
-      exportNote = "not written: " + structureSetError;
-    }
-    else
-    {
-      exportedStructureSet = true;
-      exportNote = "pieces.dcm (RT structure set on the CT's slices): " + quotedList(roiNames) + ", " +
-        std::to_string(structureSet->GetNumberOfContours()) + " contours";
-      if (!leftOut.empty())
-        exportNote += "; left out, open: " + quotedList(leftOut);
-    }
-  }
-  else if (!leftOut.empty())
-    exportNote = "none, every piece is open (" + quotedList(leftOut) +
-      "); a bone that the scan's border cuts is closed with --close";
+  // A failure here is said at the end, after the plan and its session.
+  const std::string structureSetError = exportStructureSet(folder, exported);
   // The surface the cut was made on (before deformations and the segment's
   // move) and the lines it was cut along.
   for (const auto& [mesh, name] : { std::make_pair(cut.surface, "surface.vtp"), std::make_pair(cut.loops, "cut_lines.vtp") })

@@ -337,6 +337,11 @@ public:
   /// PACS or planning system. Files of these names that an earlier export
   /// left and this plan does not make (more pieces, say) are removed.
   bool exportPieces(const std::string& folder, std::string& error);
+  /// The export's RT structure set (pieces.dcm) of the `exported` pieces (as
+  /// written: the segment where the plan moves it), when the bone came from
+  /// a DICOM CT; sets exportNote and exportedStructureSet. The writer's
+  /// errors when it could not be written, else empty.
+  std::string exportStructureSet(const std::string& folder, const std::vector<vtkSmartPointer<vtkPolyData>>& exported);
 
   /// The window's picture as a PNG file (whole or not at all). False with `error`.
   bool screenshot(const std::string& path, std::string& error);
