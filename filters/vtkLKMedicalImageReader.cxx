@@ -1142,8 +1142,6 @@ bool vtkLKMedicalImageReader::ReadVolume()
   return true;
 }
 
-// The segments are read from the volume's field data, which the reader
-// writes once per read (and a stopped or failed read clears).
 const char* vtkLKMedicalImageReader::GetStructureSetFileName(int i) const
 {
   return i >= 0 && i < this->GetNumberOfStructureSets() ? this->StructureSetFiles[static_cast<std::size_t>(i)].c_str()
@@ -1164,6 +1162,8 @@ const char* vtkLKMedicalImageReader::GetStructureSetROIName(int i, int roi) cons
   return this->StructureSetROINames[static_cast<std::size_t>(i)][static_cast<std::size_t>(roi)].c_str();
 }
 
+// The segments are read from the volume's field data, which the reader
+// writes once per read (and a stopped or failed read clears).
 int vtkLKMedicalImageReader::GetNumberOfSegments() const
 {
   auto* names = vtkStringArray::SafeDownCast(this->Volume->GetFieldData()->GetAbstractArray("SegmentNames"));
