@@ -1,3 +1,4 @@
+#include "DicomTestFiles.h"
 #include "TestSupport.h"
 #include "latticekit/ManifoldRepair.h"
 #include "vtkLKBoneSurfaceFilter.h"
@@ -5,14 +6,11 @@
 #include "vtkLKMeshRepairFilter.h"
 
 #include <vtkCellData.h>
-#include <vtkDICOMCTGenerator.h>
 #include <vtkDICOMCompiler.h>
 #include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
-#include <vtkDICOMParser.h>
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMValue.h>
-#include <vtkDICOMWriter.h>
 #include <vtkDataArray.h>
 #include <vtkExtractVOI.h>
 #include <vtkFieldData.h>
@@ -950,19 +948,7 @@ TEST(BoneSurface, ADicomSegNamesTheCTItWasDrawnOnWhenItLiesBesideIt)
   ct->SetOrigin(-20.0, -15.0, -30.0);
   ct->AllocateScalars(VTK_SHORT, 1);
   ct->GetPointData()->GetScalars()->Fill(1024.0);
-  vtkNew<vtkDICOMCTGenerator> generator;
-  vtkNew<vtkDICOMWriter> writer;
-  writer->SetInputData(ct);
-  writer->SetGenerator(generator);
-  writer->SetFilePrefix(ctDir.c_str());
-  writer->SetFilePattern("%s/ct_%03d.dcm");
-  writer->Write();
-  vtkNew<vtkDICOMMetaData> ctMeta;
-  vtkNew<vtkDICOMParser> parser;
-  parser->SetFileName((ctDir + "/ct_001.dcm").c_str());
-  parser->SetMetaData(ctMeta);
-  parser->Update();
-  const std::string uid = ctMeta->Get(DC::SeriesInstanceUID).AsString();
+  const std::string uid = lktest::writeCT(ctDir, ct);
   ASSERT_FALSE(uid.empty());
 
   const std::string seg =

@@ -1,5 +1,6 @@
 // DICOM RT structure sets (RTSTRUCT): the organs a radiotherapy planning
 // system contoured, read as segments of a label volume.
+#include "DicomTestFiles.h"
 #include "TestSupport.h"
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
@@ -11,7 +12,6 @@
 #include <vtkIdList.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
-#include <vtkDICOMCTGenerator.h>
 #include <vtkDICOMCompiler.h>
 #include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
@@ -19,7 +19,6 @@
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMUtilities.h>
 #include <vtkDICOMValue.h>
-#include <vtkDICOMWriter.h>
 #include <vtkFieldData.h>
 #include <vtkFlyingEdges2D.h>
 #include <vtkImageData.h>
@@ -46,6 +45,8 @@
 
 namespace
 {
+using lktest::seriesUIDOf;
+using lktest::writeCT;
 using P3 = std::array<double, 3>;
 using Polygon = std::vector<P3>;
 
@@ -139,32 +140,6 @@ void writeStructureSet(const std::string& file, const std::vector<RoiSpec>& rois
 Polygon rectangle(double x0, double x1, double y0, double y1, double z)
 {
   return { { x0, y0, z }, { x1, y0, z }, { x1, y1, z }, { x0, y1, z } };
-}
-
-/// The SeriesInstanceUID of a DICOM file.
-std::string seriesUIDOf(const std::string& file)
-{
-  vtkNew<vtkDICOMMetaData> meta;
-  vtkNew<vtkDICOMParser> parser;
-  parser->SetFileName(file.c_str());
-  parser->SetMetaData(meta);
-  parser->Update();
-  return meta->Get(DC::SeriesInstanceUID).AsString();
-}
-
-/// Writes `image` (data coordinates to patient mm by `matrix`) as a DICOM
-/// CT series into `dir`; returns its SeriesInstanceUID.
-std::string writeCT(const std::string& dir, vtkImageData* image, vtkMatrix4x4* matrix)
-{
-  vtkNew<vtkDICOMCTGenerator> generator;
-  vtkNew<vtkDICOMWriter> writer;
-  writer->SetInputData(image);
-  writer->SetGenerator(generator);
-  writer->SetPatientMatrix(matrix);
-  writer->SetFilePrefix(dir.c_str());
-  writer->SetFilePattern("%s/ct_%03d.dcm");
-  writer->Write();
-  return seriesUIDOf(dir + "/ct_001.dcm");
 }
 
 /// How many voxels of layer `layer` hold `label`.

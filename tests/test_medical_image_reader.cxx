@@ -1,7 +1,7 @@
+#include "DicomTestFiles.h"
 #include "TestSupport.h"
 #include "vtkLKMedicalImageReader.h"
 
-#include <vtkDICOMCTGenerator.h>
 #include <vtkDICOMCompiler.h>
 #include <vtkDICOMImageReader.h>
 #include <vtkDICOMItem.h>
@@ -9,7 +9,6 @@
 #include <vtkDICOMReader.h>
 #include <vtkDICOMSequence.h>
 #include <vtkDICOMValue.h>
-#include <vtkDICOMWriter.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
@@ -67,17 +66,7 @@ void writeSyntheticSeries(const std::string& dir, const char* pattern, int size,
   img->SetSpacing(1.0, 1.0, gap);
   img->AllocateScalars(VTK_SHORT, 1);
   std::fill_n(static_cast<short*>(img->GetScalarPointer()), size * size * slices, value);
-  vtkNew<vtkDICOMCTGenerator> generator;
-  vtkNew<vtkDICOMMetaData> meta;
-  if (description)
-    meta->Set(DC::SeriesDescription, description);
-  vtkNew<vtkDICOMWriter> writer;
-  writer->SetInputData(img);
-  writer->SetGenerator(generator);
-  writer->SetMetaData(meta);
-  writer->SetFilePrefix(dir.c_str());
-  writer->SetFilePattern(pattern);
-  writer->Write();
+  lktest::writeCT(dir, img, nullptr, pattern, description);
 }
 
 /// The output's "SPACE" field data (3D Slicer's tag), or "".
