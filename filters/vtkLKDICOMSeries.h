@@ -9,6 +9,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkNew.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <string>
@@ -188,6 +189,12 @@ struct StructureSetInfo
   std::string file;
   std::vector<std::string> roiNames;
   std::vector<std::string> referencedSeries;
+
+  /// Whether it was drawn on the image series of that SeriesInstanceUID.
+  bool drawnOn(const std::string& seriesUID) const
+  {
+    return std::find(referencedSeries.begin(), referencedSeries.end(), seriesUID) != referencedSeries.end();
+  }
 };
 
 /// The RT structure sets in the folder (and its sub-folders down to
@@ -223,9 +230,12 @@ bool isDICOMStructureSet(const std::string& file);
 /// maps); wider gaps are left empty. Contours of other types (POINT,
 /// OPEN_PLANAR) are not read. `notes` says what the caller should warn
 /// about: ROIs without closed contours, the grid guessed, planes moved onto
-/// it, slices an ROI skips.
+/// it, slices an ROI skips. `referencedImage`: a file of the image series
+/// among `imageSeries` that the set references, or empty (as
+/// referencedImageFile gives it, without parsing the set's contours again).
 bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
   vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,
-  std::vector<std::string>& notes, std::string& error, vtkAlgorithm* progress = nullptr);
+  std::vector<std::string>& notes, std::string& referencedImage, std::string& error,
+  vtkAlgorithm* progress = nullptr);
 
 } // namespace lkvtk

@@ -687,10 +687,11 @@ bool isDICOMStructureSet(const std::string& file)
 
 bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
   vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,
-  std::vector<std::string>& notes, std::string& error, vtkAlgorithm* progress)
+  std::vector<std::string>& notes, std::string& referencedImage, std::string& error, vtkAlgorithm* progress)
 {
   segments.clear();
   notes.clear();
+  referencedImage.clear();
   vtkNew<vtkDICOMMetaData> meta;
   if (!readDICOMHeader(file, meta, error))
     return false;
@@ -699,6 +700,8 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
     error = "'" + file + "' is not an RT structure set";
     return false;
   }
+  if (const DICOMSeriesInfo* images = referencedImages(meta, imageSeries))
+    referencedImage = images->files.front();
   std::vector<ROI> rois;
   int skippedShort = 0;
   if (!readROIs(meta, rois, skippedShort, error))

@@ -338,9 +338,7 @@ std::string structureSetsNote(const std::vector<lkvtk::StructureSetInfo>& sets, 
         "and the planner do when --label names one of them):";
   for (const auto& set : sets)
   {
-    const bool drawnOnIt =
-      std::find(set.referencedSeries.begin(), set.referencedSeries.end(), seriesUID) != set.referencedSeries.end();
-    os << "\n  '" << set.file << "'" << (drawnOnIt ? ", drawn on this series" : "") << ": ";
+    os << "\n  '" << set.file << "'" << (set.drawnOn(seriesUID) ? ", drawn on this series" : "") << ": ";
     for (std::size_t i = 0; i < set.roiNames.size() && i < 8; ++i)
       os << (i ? ", '" : "'") << set.roiNames[i] << "'";
     if (set.roiNames.size() > 8)
@@ -918,14 +916,14 @@ bool vtkLKMedicalImageReader::ReadVolume()
     lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error, this, 1);
     vtkNew<vtkImageData> volume;
     std::vector<std::string> notes;
-    if (!lkvtk::readDICOMStructureSet(path, series, volume, this->PatientMatrix, segments, notes, error, this))
+    if (!lkvtk::readDICOMStructureSet(
+          path, series, volume, this->PatientMatrix, segments, notes, reference, error, this))
     {
       vtkErrorMacro("Cannot read '" << path << "': " << error << ".");
       return false;
     }
     for (const std::string& note : notes)
       vtkWarningMacro("'" << path << "': " << note << ".");
-    reference = lkvtk::referencedImageFile(path, series);
     this->OrientationKnown = true;
     image = volume;
     image->GetSpacing(spacing);
@@ -1062,8 +1060,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
       if (!sets.empty())
         vtkWarningMacro(<< structureSetsNote(sets, series[static_cast<std::size_t>(chosen)].uid));
       for (const auto& set : sets)
-        if (std::find(set.referencedSeries.begin(), set.referencedSeries.end(),
-              series[static_cast<std::size_t>(chosen)].uid) != set.referencedSeries.end())
+        if (set.drawnOn(series[static_cast<std::size_t>(chosen)].uid))
         {
           structureSets.push_back(set.file);
           structureSetROIs.push_back(set.roiNames);
