@@ -296,9 +296,10 @@ void vtkLKStructureSetWriter::WriteData()
     ref.frameUID = vtkDICOMUtilities::GenerateUID(DC::FrameOfReferenceUID);
 
   // The set: patient and study of the reference CT (or new ones).
+  // The character set goes with the names it spells.
   vtkNew<vtkDICOMMetaData> meta;
-  for (vtkDICOMTag tag : { DC::PatientName, DC::PatientID, DC::PatientBirthDate, DC::PatientSex,
-         DC::StudyInstanceUID, DC::StudyDate, DC::StudyTime, DC::StudyID, DC::AccessionNumber,
+  for (vtkDICOMTag tag : { DC::SpecificCharacterSet, DC::PatientName, DC::PatientID, DC::PatientBirthDate,
+         DC::PatientSex, DC::StudyInstanceUID, DC::StudyDate, DC::StudyTime, DC::StudyID, DC::AccessionNumber,
          DC::ReferringPhysicianName, DC::StudyDescription })
   {
     if (referenced && ref.first->Get(tag).IsValid())
@@ -306,6 +307,22 @@ void vtkLKStructureSetWriter::WriteData()
   }
   if (!meta->Get(DC::StudyInstanceUID).IsValid())
     meta->Set(DC::StudyInstanceUID, vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID));
+  // Type 2 attributes of the RT Structure Set IOD are present, empty when
+  // unknown (a set not drawn on a CT, or a CT that lacks them), as the
+  // standard asks and a PACS may check.
+  for (vtkDICOMTag tag : { DC::PatientName, DC::PatientID, DC::PatientBirthDate, DC::PatientSex, DC::StudyDate,
+         DC::StudyTime, DC::StudyID, DC::AccessionNumber, DC::ReferringPhysicianName, DC::OperatorsName })
+  {
+    if (!meta->Get(tag).IsValid())
+      meta->Set(tag, "");
+  }
+  // A new series of one instance, each with its own UID (Type 1: a PACS
+  // refuses an object without them; vtkDICOMCompiler writes the UIDs only
+  // of elements the meta data holds).
+  const std::string seriesUID = vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID);
+  const std::string instanceUID = vtkDICOMUtilities::GenerateUID(DC::SOPInstanceUID);
+  meta->Set(DC::SeriesInstanceUID, seriesUID);
+  meta->Set(DC::SOPInstanceUID, instanceUID);
   meta->Set(DC::SOPClassUID, lkvtk::kRTStructureSetStorage);
   meta->Set(DC::Modality, "RTSTRUCT");
   meta->Set(DC::SeriesNumber, 900.0);
@@ -416,7 +433,8 @@ void vtkLKStructureSetWriter::WriteData()
   lkvtk::ErrorCatcher catcher(compiler);
   compiler->SetFileName(part.c_str());
   compiler->SetMetaData(meta);
-  compiler->SetSeriesInstanceUID(vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID).c_str());
+  compiler->SetSeriesInstanceUID(seriesUID.c_str());
+  compiler->SetSOPInstanceUID(instanceUID.c_str());
   compiler->WriteHeader();
   compiler->Close();
   std::string why = catcher.messages;

@@ -837,6 +837,21 @@ TEST(DicomStructureSet, SurfacesAreWrittenOnTheSlicesOfTheirCT)
     parser->Update();
   }
   EXPECT_EQ(written->Get(DC::StudyInstanceUID).AsString(), ct->Get(DC::StudyInstanceUID).AsString());
+  EXPECT_EQ(written->Get(DC::PatientID).AsString(), ct->Get(DC::PatientID).AsString());
+  // A PACS stores an object by its UIDs (Type 1): a series and an instance
+  // of its own, the instance named alike in the file's meta information.
+  const std::string instance = written->Get(DC::SOPInstanceUID).AsString();
+  const std::string setSeries = written->Get(DC::SeriesInstanceUID).AsString();
+  EXPECT_FALSE(instance.empty());
+  EXPECT_EQ(written->Get(DC::MediaStorageSOPInstanceUID).AsString(), instance);
+  EXPECT_FALSE(setSeries.empty());
+  EXPECT_NE(setSeries, uid);
+  EXPECT_EQ(written->Get(DC::Modality).AsString(), "RTSTRUCT");
+  // Type 2 attributes are there, if empty.
+  for (vtkDICOMTag tag : { DC::PatientName, DC::PatientBirthDate, DC::PatientSex, DC::StudyDate, DC::StudyTime,
+         DC::StudyID, DC::AccessionNumber, DC::ReferringPhysicianName, DC::OperatorsName, DC::SeriesNumber,
+         DC::StructureSetDate, DC::StructureSetTime })
+    EXPECT_TRUE(written->Get(tag).IsValid()) << tag;
   const vtkDICOMItem& frame = written->Get(DC::ReferencedFrameOfReferenceSequence).GetSequenceData()[0];
   EXPECT_EQ(frame.Get(DC::FrameOfReferenceUID).AsString(), ct->Get(DC::FrameOfReferenceUID).AsString());
   const vtkDICOMItem& series = frame.Get(DC::RTReferencedStudySequence).GetSequenceData()[0]
@@ -879,6 +894,21 @@ TEST(DicomStructureSet, TheMandibleSurfaceWrittenAndReadBackKeepsItsShape)
   ASSERT_EQ(writer->Write(), 1) << rec.messages;
   EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
   EXPECT_GT(writer->GetNumberOfContours(), 80);
+  {
+    // Without a CT: a new study, and the patient's Type 2 attributes empty.
+    vtkNew<vtkDICOMMetaData> written;
+    vtkNew<vtkDICOMParser> parser;
+    parser->SetFileName((dir + "/mandible.dcm").c_str());
+    parser->SetMetaData(written);
+    parser->Update();
+    for (vtkDICOMTag tag : { DC::SOPInstanceUID, DC::SeriesInstanceUID, DC::StudyInstanceUID })
+      EXPECT_FALSE(written->Get(tag).AsString().empty()) << tag;
+    for (vtkDICOMTag tag : { DC::PatientName, DC::PatientID, DC::StudyDate, DC::ReferringPhysicianName })
+    {
+      EXPECT_TRUE(written->Get(tag).IsValid()) << tag;
+      EXPECT_EQ(written->Get(tag).AsString(), "") << tag;
+    }
+  }
 
   vtkNew<vtkLKMedicalImageReader> reader;
   reader->SetFileName((dir + "/mandible.dcm").c_str());
