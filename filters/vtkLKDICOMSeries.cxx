@@ -22,6 +22,7 @@
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
 #include <vtkStringArray.h>
+#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -261,6 +262,59 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
     return false;
   }
   return true;
+}
+
+std::vector<FolderBeside> foldersBeside(const std::string& folder)
+{
+  std::vector<FolderBeside> found;
+  const std::string own = vtksys::SystemTools::CollapseFullPath(folder.empty() ? "." : folder);
+  const std::string parent = vtksys::SystemTools::GetParentDirectory(own);
+  if (parent.empty() || parent == own)
+    return found;
+  vtksys::Directory listing;
+  if (!listing.Load(parent))
+    return found;
+  std::vector<std::string> siblings;
+  for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+  {
+    const std::string name = listing.GetFile(i);
+    const std::string path = parent + (parent.back() == '/' ? "" : "/") + name;
+    if (name == "." || name == ".." || !vtksys::SystemTools::FileIsDirectory(path) ||
+      vtksys::SystemTools::CollapseFullPath(path) == own)
+      continue;
+    siblings.push_back(path);
+    if (static_cast<int>(siblings.size()) > kFoldersBesideLimit)
+      return {};
+  }
+  std::sort(siblings.begin(), siblings.end());
+  for (const std::string& sibling : siblings)
+  {
+    vtksys::Directory files;
+    if (!files.Load(sibling))
+      continue;
+    std::vector<std::string> names;
+    for (unsigned long i = 0; i < files.GetNumberOfFiles(); ++i)
+    {
+      const std::string name = files.GetFile(i);
+      if (name != "." && name != ".." && !vtksys::SystemTools::FileIsDirectory(sibling + "/" + name))
+        names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    // A licence or a README may come first; a DICOMDIR names no series.
+    for (std::size_t i = 0; i < names.size() && i < 4; ++i)
+    {
+      vtkNew<vtkDICOMMetaData> meta;
+      std::string ignored;
+      if (!readDICOMHeader(sibling + "/" + names[i], meta, ignored))
+        continue;
+      const std::string uid = meta->Get(DC::SeriesInstanceUID).AsString();
+      if (uid.empty())
+        continue;
+      found.push_back({ sibling, uid, meta->Get(DC::Modality).AsString() });
+      break;
+    }
+  }
+  return found;
 }
 
 bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImageData* output,

@@ -142,6 +142,28 @@ constexpr int kDICOMScanDepth = 8;
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
   vtkAlgorithm* progress = nullptr, int scanDepth = 1);
 
+/// A folder beside another (a sibling: a sub-folder of the same parent) and
+/// what its first DICOM file is: a PACS, TCIA or 3D Slicer export keeps each
+/// series of a study in a folder of its own, side by side, so an RT structure
+/// set's or a DICOM SEG's CT is a folder away from it.
+struct FolderBeside
+{
+  std::string folder;
+  std::string seriesUID; ///< SeriesInstanceUID of its first DICOM file (in name order)
+  std::string modality;  ///< Modality of that file (CT, RTSTRUCT, SEG, ...)
+};
+
+/// The most sub-folders a parent may have for its folders to be searched as
+/// a study's series: more are a disk's or a home's folders, not a study's.
+constexpr int kFoldersBesideLimit = 256;
+
+/// The folders beside `folder` (its parent's other sub-folders, in name
+/// order) that hold a DICOM file among their first few, each with what its
+/// first DICOM file is. Only headers are read, one or a few per folder.
+/// None when `folder` has no parent or the parent has more than
+/// kFoldersBesideLimit sub-folders.
+std::vector<FolderBeside> foldersBeside(const std::string& folder);
+
 /// Reads the series and resamples it onto a regular grid in the slice frame:
 /// x along the rows (ImageOrientationPatient[0..2]), y along the columns
 /// ([3..5]), z along their cross product; the grid covers every slice's
@@ -202,10 +224,16 @@ struct StructureSetInfo
 /// says what else it holds.
 std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth);
 
-/// The first file of the image series among `series` (a DICOM SEG is none)
-/// that the DICOM object in `file` was drawn on: the series an RT structure
-/// set or a DICOM SEG references by its SeriesInstanceUID. Empty when none
-/// of them is among `series` (or the file cannot be read).
+/// The RT structure sets in the folders beside `folder` whose first DICOM
+/// file is one (see foldersBeside): a study exported one series to a folder
+/// keeps its sets beside its CT, not in it.
+std::vector<StructureSetInfo> findDICOMStructureSetsBeside(const std::string& folder);
+
+/// The first file of the image series (a DICOM SEG is none) that the DICOM
+/// object in `file` was drawn on: the series an RT structure set or a DICOM
+/// SEG references by its SeriesInstanceUID, among `series` (those of its own
+/// folder) or else in a folder beside its folder (see foldersBeside). Empty
+/// when it is in neither (or the file cannot be read).
 std::string referencedImageFile(const std::string& file, const std::vector<DICOMSeriesInfo>& series);
 
 /// Whether `file` is a DICOM RT structure set (its header is read).
@@ -218,8 +246,9 @@ bool isDICOMStructureSet(const std::string& file);
 /// are the ROI's (even-odd, so a contour inside another is a hole). ROIs
 /// that overlap go to layers of their own, as a DICOM SEG's.
 ///
-/// The grid: when `imageSeries` (the image series of the file's folder)
-/// holds the series the structure set references, its slice frame and pixel
+/// The grid: when `imageSeries` (the image series of the file's folder), or
+/// a folder beside the file's (see foldersBeside), holds the series the
+/// structure set references, its slice frame and pixel
 /// lattice, and its slices when they are evenly spaced and the contours lie
 /// on them; otherwise the contours' own frame and 1 mm pixels (or the slice
 /// spacing, when finer), and slices on the contours' planes, spaced by the
@@ -231,7 +260,7 @@ bool isDICOMStructureSet(const std::string& file);
 /// OPEN_PLANAR) are not read. `notes` says what the caller should warn
 /// about: ROIs without closed contours, the grid guessed, planes moved onto
 /// it, slices an ROI skips. `referencedImage`: a file of the image series
-/// among `imageSeries` that the set references, or empty (as
+/// the set references, found there, or empty (as
 /// referencedImageFile gives it, without parsing the set's contours again).
 bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSeriesInfo>& imageSeries,
   vtkImageData* output, vtkMatrix4x4* patientMatrix, std::vector<Segment>& segments,

@@ -27,6 +27,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataToImageStencil.h>
 #include <vtkStringArray.h>
+#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <charconv>
@@ -343,6 +344,35 @@ const DICOMSeriesInfo* referencedImages(vtkDICOMMetaData* meta, const std::vecto
   return nullptr;
 }
 
+/// The image series `meta` (read from `file`) references: among
+/// `imageSeries` (the series of its own folder), else in a folder beside
+/// its folder (a study exported one series to a folder), copied into
+/// `beside`. Null when it is in neither.
+const DICOMSeriesInfo* referencedImagesNear(vtkDICOMMetaData* meta, const std::string& file,
+  const std::vector<DICOMSeriesInfo>& imageSeries, DICOMSeriesInfo& beside)
+{
+  if (const DICOMSeriesInfo* images = referencedImages(meta, imageSeries))
+    return images;
+  const std::vector<std::string> uids = referencedSeriesUIDs(meta);
+  if (uids.empty())
+    return nullptr;
+  for (const FolderBeside& folder : foldersBeside(vtksys::SystemTools::GetFilenamePath(file)))
+  {
+    if (std::find(uids.begin(), uids.end(), folder.seriesUID) == uids.end())
+      continue;
+    std::vector<DICOMSeriesInfo> series;
+    std::string ignored;
+    if (!findDICOMSeries(folder.folder, series, ignored, nullptr, 1))
+      continue;
+    if (const DICOMSeriesInfo* images = referencedImages(meta, series))
+    {
+      beside = *images;
+      return &beside;
+    }
+  }
+  return nullptr;
+}
+
 /// Where the slices of an image series lie along `normal` (sorted, one per
 /// position); empty when an image has no position.
 std::vector<double> slicePlanes(const DICOMSeriesInfo& series, const V3& normal)
@@ -374,16 +404,16 @@ struct Grid
 
 /// The grid of the structure set's voxels (see readDICOMStructureSet), and
 /// each contour's slice on it.
-bool placeGrid(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& imageSeries, std::vector<ROI>& rois,
-  Grid& grid, std::vector<std::string>& notes, std::string& error)
+bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, std::vector<ROI>& rois, Grid& grid,
+  std::vector<std::string>& notes, std::string& error)
 {
-  // The frame and the pixel lattice: the referenced CT's, when it is beside
-  // the structure set and its slices are parallel to the contours.
+  // The frame and the pixel lattice: the referenced CT's (`images`, when it
+  // was found near the structure set) when its slices are parallel to the
+  // contours.
   SliceFrame frame;
   double dx = 0.0, dy = 0.0;
   V3 lattice{ 0.0, 0.0, 0.0 }; // a pixel centre of the CT (or the patient origin)
   bool fromImages = false;
-  const DICOMSeriesInfo* images = referencedImages(meta, imageSeries);
   const std::string imageFile = images ? images->files.front() : std::string();
   if (images)
   {
@@ -443,7 +473,7 @@ bool placeGrid(vtkDICOMMetaData* meta, const std::vector<DICOMSeriesInfo>& image
     const std::string uid = uids.empty() ? std::string() : uids.front();
     notes.push_back(std::string("the image series the structure set was drawn on") +
       (uid.empty() ? std::string("") : " (" + uid + ")") +
-      (imageFile.empty() ? " is not in its folder" : " lies across its contours") +
+      (imageFile.empty() ? " is neither in its folder nor in a folder beside it" : " lies across its contours") +
       ": its ROIs are filled on a grid of their own, " + mm(dx) + " pixels" +
       (h > 0.0 ? " and " + mm(h) + " slices" : std::string("")));
   }
@@ -638,7 +668,8 @@ std::string referencedImageFile(const std::string& file, const std::vector<DICOM
   std::string ignored;
   if (!readDICOMHeader(file, meta, ignored))
     return std::string();
-  const DICOMSeriesInfo* images = referencedImages(meta, series);
+  DICOMSeriesInfo beside;
+  const DICOMSeriesInfo* images = referencedImagesNear(meta, file, series, beside);
   return images ? images->files.front() : std::string();
 }
 
@@ -675,6 +706,18 @@ std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, 
   return found;
 }
 
+std::vector<StructureSetInfo> findDICOMStructureSetsBeside(const std::string& folder)
+{
+  std::vector<StructureSetInfo> found;
+  for (const FolderBeside& beside : foldersBeside(folder))
+    if (beside.modality == "RTSTRUCT")
+    {
+      const std::vector<StructureSetInfo> sets = findDICOMStructureSets(beside.folder, 1);
+      found.insert(found.end(), sets.begin(), sets.end());
+    }
+  return found;
+}
+
 bool isDICOMStructureSet(const std::string& file)
 {
   // A file cut short still says what it is (its SOP class comes first):
@@ -700,7 +743,9 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
     error = "'" + file + "' is not an RT structure set";
     return false;
   }
-  if (const DICOMSeriesInfo* images = referencedImages(meta, imageSeries))
+  DICOMSeriesInfo beside;
+  const DICOMSeriesInfo* images = referencedImagesNear(meta, file, imageSeries, beside);
+  if (images)
     referencedImage = images->files.front();
   std::vector<ROI> rois;
   int skippedShort = 0;
@@ -739,7 +784,7 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
       " fewer than 3 points and " + (skippedShort == 1 ? "is" : "are") + " not read");
 
   Grid grid;
-  if (!placeGrid(meta, imageSeries, rois, grid, notes, error))
+  if (!placeGrid(meta, images, rois, grid, notes, error))
     return false;
   const vtkIdType voxels = static_cast<vtkIdType>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
 

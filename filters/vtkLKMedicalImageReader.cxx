@@ -328,13 +328,21 @@ std::string messageText(const std::string& event)
   return trim(m);
 }
 
-/// The RT structure sets beside a CT that was read, and how to read one.
-std::string structureSetsNote(const std::vector<lkvtk::StructureSetInfo>& sets, const std::string& seriesUID)
+/// The RT structure sets beside a CT that was read, and how to read one:
+/// the last `beside` of them lie in folders beside the CT's.
+std::string structureSetsNote(
+  const std::vector<lkvtk::StructureSetInfo>& sets, const std::string& seriesUID, std::size_t beside)
 {
   std::ostringstream os;
-  os << "The folder also holds "
-     << (sets.size() == 1 ? std::string("an RT structure set") : std::to_string(sets.size()) + " RT structure sets")
-     << " (organs contoured for radiotherapy); give its file to read its ROIs as segments (latticekit-surface "
+  const std::string what =
+    sets.size() == 1 ? std::string("an RT structure set") : std::to_string(sets.size()) + " RT structure sets";
+  if (beside == 0)
+    os << "The folder also holds " << what;
+  else if (beside == sets.size())
+    os << (beside == 1 ? "A folder beside the CT's holds " : "The folders beside the CT's hold ") << what;
+  else
+    os << "The folder and the folders beside the CT's hold " << what;
+  os << " (organs contoured for radiotherapy); give its file to read its ROIs as segments (latticekit-surface "
         "and the planner do when --label names one of them):";
   for (const auto& set : sets)
   {
@@ -1054,13 +1062,31 @@ bool vtkLKMedicalImageReader::ReadVolume()
       if (!report.wideGaps.empty())
         vtkWarningMacro(<< wideGapsWarning(report));
       // A CT exported with the structure set drawn on it: its ROIs are a
-      // file away.
-      const auto sets =
+      // file away, in its folder or, when a study is exported one series to
+      // a folder, in a folder beside the CT's.
+      const std::string& uid = series[static_cast<std::size_t>(chosen)].uid;
+      auto sets =
         lkvtk::findDICOMStructureSets(folder.empty() ? "." : folder, isFolder ? lkvtk::kDICOMScanDepth : 1);
+      std::size_t beside = 0;
+      if (std::none_of(sets.begin(), sets.end(), [&](const auto& set) { return set.drawnOn(uid); }))
+      {
+        // Beside the CT's own folder (a sub-folder of the one read, on a
+        // CD); only those drawn on this series: the study's other sets are
+        // not this CT's.
+        const std::string ctFolder =
+          vtksys::SystemTools::GetFilenamePath(series[static_cast<std::size_t>(chosen)].files.front());
+        for (const auto& set : lkvtk::findDICOMStructureSetsBeside(ctFolder.empty() ? "." : ctFolder))
+          if (set.drawnOn(uid) &&
+            std::none_of(sets.begin(), sets.end(), [&](const auto& known) { return known.file == set.file; }))
+          {
+            sets.push_back(set);
+            ++beside;
+          }
+      }
       if (!sets.empty())
-        vtkWarningMacro(<< structureSetsNote(sets, series[static_cast<std::size_t>(chosen)].uid));
+        vtkWarningMacro(<< structureSetsNote(sets, uid, beside));
       for (const auto& set : sets)
-        if (set.drawnOn(series[static_cast<std::size_t>(chosen)].uid))
+        if (set.drawnOn(uid))
         {
           structureSets.push_back(set.file);
           structureSetROIs.push_back(set.roiNames);

@@ -29,6 +29,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <functional>
 #include <set>
 #include <string>
@@ -934,13 +935,15 @@ TEST(BoneSurface, DicomSegSegmentsAreReadByNumberAndName)
     << badRec.messages;
 }
 
-// A SEG beside the CT it was drawn on names that CT, so that what is made
-// from its segments (vtkLKStructureSetWriter) goes back to the CT's patient
-// and slices; a SEG alone, or one whose CT is elsewhere, names none.
+// A SEG beside the CT it was drawn on (in its folder, or in a folder beside
+// its own, as a study exported one series to a folder lies) names that CT,
+// so that what is made from its segments (vtkLKStructureSetWriter) goes back
+// to the CT's patient and slices; a SEG whose CT is elsewhere names none.
 TEST(BoneSurface, ADicomSegNamesTheCTItWasDrawnOnWhenItLiesBesideIt)
 {
-  const std::string ctDir = std::string(LATTICEKIT_TEST_TMP) + "/dicom_seg_its_ct";
-  vtksys::SystemTools::RemoveADirectory(ctDir);
+  // Elsewhere: not in a folder beside the SEG's, but one further down.
+  const std::string ctDir = std::string(LATTICEKIT_TEST_TMP) + "/dicom_seg_its_ct/elsewhere";
+  vtksys::SystemTools::RemoveADirectory(vtksys::SystemTools::GetFilenamePath(ctDir));
   vtksys::SystemTools::MakeDirectory(ctDir);
   vtkNew<vtkImageData> ct;
   ct->SetDimensions(40, 30, 30);
@@ -967,6 +970,20 @@ TEST(BoneSurface, ADicomSegNamesTheCTItWasDrawnOnWhenItLiesBesideIt)
   const std::string reference = referenceOf(seg);
   EXPECT_EQ(vtksys::SystemTools::GetFilenamePath(reference), vtksys::SystemTools::GetFilenamePath(seg));
   EXPECT_EQ(vtksys::SystemTools::GetFilenameName(reference).rfind("ct_", 0), 0u) << reference;
+  // A study exported one series to a folder: the SEG's CT in a folder
+  // beside the SEG's (with another series' folder and a licence's).
+  const std::string study = std::string(LATTICEKIT_TEST_TMP) + "/dicom_seg_study";
+  vtksys::SystemTools::RemoveADirectory(study);
+  ASSERT_TRUE(vtksys::SystemTools::CopyADirectory(ctDir, study + "/2-CT"));
+  ASSERT_TRUE(vtksys::SystemTools::MakeDirectory(study + "/0-docs"));
+  std::ofstream(study + "/0-docs/LICENSE") << "not DICOM\n";
+  ASSERT_TRUE(vtksys::SystemTools::MakeDirectory(study + "/1-CT-other"));
+  lktest::writeCT(study + "/1-CT-other", ct);
+  ASSERT_TRUE(vtksys::SystemTools::MakeDirectory(study + "/3-SEG"));
+  ASSERT_TRUE(vtksys::SystemTools::CopyAFile(seg, study + "/3-SEG/seg.dcm"));
+  const std::string inStudy = referenceOf(study + "/3-SEG/seg.dcm");
+  EXPECT_EQ(vtksys::SystemTools::GetFilenamePath(inStudy), study + "/2-CT") << inStudy;
+  EXPECT_EQ(lktest::seriesUIDOf(inStudy), uid);
   // The CT read itself names a file of its own series.
   vtkNew<vtkLKMedicalImageReader> ctReader;
   ctReader->SetFileName(ctDir.c_str());

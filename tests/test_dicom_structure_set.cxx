@@ -3,6 +3,7 @@
 #include "DicomTestFiles.h"
 #include "TestSupport.h"
 #include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKDICOMSeries.h" // kFoldersBesideLimit
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKStructureSetWriter.h"
 
@@ -317,7 +318,9 @@ TEST(DicomStructureSet, AnROIOnEveryOtherSliceOfItsCTIsInterpolatedOnTheCTsSlice
   RoiSpec mandible{ 5, "Mandible", {} };
   for (int k = 2; k <= 8; k += 2)
     mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
-  const std::string withCT = tempFolder("rtstruct_sparse_with_ct"), alone = tempFolder("rtstruct_sparse_alone");
+  // Alone: one folder further down than a folder beside the CT's would be.
+  const std::string withCT = tempFolder("rtstruct_sparse_with_ct"), alone = tempFolder("rtstruct_sparse_alone") + "/rs";
+  vtksys::SystemTools::MakeDirectory(alone);
   const std::string uid = writeSmallCT(withCT);
   writeStructureSet(withCT + "/rs.dcm", { mandible }, uid);
   writeStructureSet(alone + "/rs.dcm", { mandible }, uid);
@@ -336,10 +339,78 @@ TEST(DicomStructureSet, AnROIOnEveryOtherSliceOfItsCTIsInterpolatedOnTheCTsSlice
     EXPECT_EQ(rec.warnings, 1) << rec.warningMessages;
     EXPECT_NE(rec.warningMessages.find(ct ? "ROI 'Mandible' has no contour on 3 of the slices between its first and "
                                             "last (2 mm apart): they are filled by interpolating"
-                                          : "is not in its folder"),
+                                          : "is neither in its folder nor in a folder beside it"),
       std::string::npos)
       << rec.warningMessages;
   }
+}
+
+// A study exported one series to a folder (as TCIA, PACS and 3D Slicer
+// exports lie): the structure set finds its CT in the folder beside its
+// own, and the CT its structure set; not a set drawn on another series.
+TEST(DicomStructureSet, ASetAndItsCTInFoldersSideBySideFindEachOther)
+{
+  RoiSpec mandible{ 5, "Mandible", {} }; // on every other slice, as above
+  for (int k = 2; k <= 8; k += 2)
+    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
+  const std::string study = tempFolder("rtstruct_study");
+  for (const char* folder : { "/1-CT", "/2-CT-other", "/3-RTSTRUCT", "/4-docs" })
+    vtksys::SystemTools::MakeDirectory(study + folder);
+  std::ofstream(study + "/4-docs/LICENSE") << "not DICOM\n";
+  const std::string uid = writeSmallCT(study + "/1-CT");
+  const std::string otherUid = writeSmallCT(study + "/2-CT-other");
+  ASSERT_NE(uid, otherUid);
+  const std::string set = study + "/3-RTSTRUCT/rs.dcm";
+  writeStructureSet(set, { mandible }, uid);
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(set.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  // The CT's 2 mm slices, with the slices between contours interpolated.
+  EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[2], 2.0);
+  EXPECT_EQ(count(reader->GetOutput(), 0, 5), 560);
+  EXPECT_EQ(vtksys::SystemTools::GetFilenamePath(reader->GetReferenceImageFileName()), study + "/1-CT");
+  EXPECT_EQ(rec.warningMessages.find("grid of their own"), std::string::npos) << rec.warningMessages;
+
+  vtkNew<vtkLKMedicalImageReader> ctReader;
+  lktest::ErrorRecorder ctRec(ctReader);
+  ctReader->SetFileName((study + "/1-CT").c_str());
+  ctReader->Update();
+  ASSERT_EQ(ctRec.errors, 0) << ctRec.messages;
+  ASSERT_EQ(ctReader->GetNumberOfStructureSets(), 1);
+  EXPECT_EQ(std::string(ctReader->GetStructureSetFileName(0)), set);
+  EXPECT_STREQ(ctReader->GetStructureSetROIName(0, 0), "Mandible");
+  EXPECT_NE(ctRec.warningMessages.find("A folder beside the CT's holds an RT structure set (organs contoured for "
+                                       "radiotherapy); give its file"),
+    std::string::npos)
+    << ctRec.warningMessages;
+
+  // The other CT of the study: the set is not drawn on it.
+  vtkNew<vtkLKMedicalImageReader> otherReader;
+  lktest::ErrorRecorder otherRec(otherReader);
+  otherReader->SetFileName((study + "/2-CT-other").c_str());
+  otherReader->Update();
+  ASSERT_EQ(otherRec.errors, 0) << otherRec.messages;
+  EXPECT_EQ(otherReader->GetNumberOfStructureSets(), 0);
+  EXPECT_EQ(otherRec.warningMessages.find("structure set"), std::string::npos) << otherRec.warningMessages;
+
+  // A folder of more folders than a study has series (a disk's, a home's)
+  // is not searched: the set alone there makes its own grid.
+  const std::string crowded = tempFolder("rtstruct_crowded");
+  for (int f = 0; f <= lkvtk::kFoldersBesideLimit; ++f)
+    vtksys::SystemTools::MakeDirectory(crowded + "/empty" + std::to_string(f));
+  vtksys::SystemTools::MakeDirectory(crowded + "/CT");
+  vtksys::SystemTools::MakeDirectory(crowded + "/RTSTRUCT");
+  writeStructureSet(crowded + "/RTSTRUCT/rs.dcm", { mandible }, writeSmallCT(crowded + "/CT"));
+  vtkNew<vtkLKMedicalImageReader> crowdedReader;
+  lktest::ErrorRecorder crowdedRec(crowdedReader);
+  crowdedReader->SetFileName((crowded + "/RTSTRUCT/rs.dcm").c_str());
+  crowdedReader->Update();
+  ASSERT_EQ(crowdedRec.errors, 0) << crowdedRec.messages;
+  EXPECT_DOUBLE_EQ(crowdedReader->GetOutput()->GetSpacing()[2], 4.0);
+  EXPECT_STREQ(crowdedReader->GetReferenceImageFileName(), "");
 }
 
 TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
@@ -354,9 +425,9 @@ TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
   ASSERT_EQ(rec.errors, 0) << rec.messages;
   expectThePlansVoxels(reader); // axial contours: an axial grid of 1 mm pixels and their 2 mm slices
   EXPECT_STREQ(reader->GetReferenceImageFileName(), ""); // no CT to go back to
-  EXPECT_NE(rec.warningMessages.find("the image series the structure set was drawn on (1.2.3.4.5.6.7.8.9) is not in "
-                                     "its folder: its ROIs are filled on a grid of their own, 1 mm pixels and 2 mm "
-                                     "slices"),
+  EXPECT_NE(rec.warningMessages.find("the image series the structure set was drawn on (1.2.3.4.5.6.7.8.9) is neither "
+                                     "in its folder nor in a folder beside it: its ROIs are filled on a grid of their "
+                                     "own, 1 mm pixels and 2 mm slices"),
     std::string::npos)
     << rec.warningMessages;
 
