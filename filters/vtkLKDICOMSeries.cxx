@@ -25,6 +25,8 @@
 #include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -295,8 +297,10 @@ std::vector<FolderBeside> foldersBeside(const std::string& folder)
     std::vector<std::string> names;
     for (unsigned long i = 0; i < files.GetNumberOfFiles(); ++i)
     {
+      // Regular files only: opening a pipe or a device would wait for ever.
       const std::string name = files.GetFile(i);
-      if (name != "." && name != ".." && !vtksys::SystemTools::FileIsDirectory(sibling + "/" + name))
+      struct stat info;
+      if (stat((sibling + "/" + name).c_str(), &info) == 0 && S_ISREG(info.st_mode))
         names.push_back(name);
     }
     std::sort(names.begin(), names.end());

@@ -39,6 +39,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -354,9 +356,11 @@ TEST(DicomStructureSet, ASetAndItsCTInFoldersSideBySideFindEachOther)
   for (int k = 2; k <= 8; k += 2)
     mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
   const std::string study = tempFolder("rtstruct_study");
-  for (const char* folder : { "/1-CT", "/2-CT-other", "/3-RTSTRUCT", "/4-docs" })
+  for (const char* folder : { "/0-pipe", "/1-CT", "/2-CT-other", "/3-RTSTRUCT", "/4-docs" })
     vtksys::SystemTools::MakeDirectory(study + folder);
   std::ofstream(study + "/4-docs/LICENSE") << "not DICOM\n";
+  // A named pipe is not opened (it would wait for a writer for ever).
+  ASSERT_EQ(mkfifo((study + "/0-pipe/fifo").c_str(), 0600), 0);
   const std::string uid = writeSmallCT(study + "/1-CT");
   const std::string otherUid = writeSmallCT(study + "/2-CT-other");
   ASSERT_NE(uid, otherUid);
