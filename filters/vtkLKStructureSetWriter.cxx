@@ -29,6 +29,8 @@
 #include <ctime>
 #include <sstream>
 
+#include <sys/stat.h>
+
 vtkStandardNewMacro(vtkLKStructureSetWriter);
 
 namespace
@@ -226,6 +228,18 @@ void vtkLKStructureSetWriter::WriteData()
   {
     vtkErrorMacro("No FileName given.");
     this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return;
+  }
+  // The file replaced is the one a link points to (the link stays); a pipe
+  // or a device (/dev/null) is never replaced by a file.
+  std::string target = this->FileName;
+  if (vtksys::SystemTools::FileIsSymlink(target))
+    target = vtksys::SystemTools::GetRealPath(target);
+  struct stat info;
+  if (stat(target.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode))
+  {
+    vtkErrorMacro("Cannot write '" << this->FileName << "': it is not a regular file.");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     return;
   }
   const int inputs = this->GetNumberOfInputConnections(0);
@@ -428,7 +442,7 @@ void vtkLKStructureSetWriter::WriteData()
                     << " open piece(s) of contour left out: a surface is not closed where the planes cut it.");
 
   // Beside the destination first: a failed write leaves an earlier file whole.
-  const std::string target = this->FileName, part = target + ".part";
+  const std::string part = target + ".part";
   vtkNew<vtkDICOMCompiler> compiler;
   lkvtk::ErrorCatcher catcher(compiler);
   compiler->SetFileName(part.c_str());
@@ -444,7 +458,7 @@ void vtkLKStructureSetWriter::WriteData()
   if (!written || !why.empty())
   {
     vtksys::SystemTools::RemoveFile(part);
-    vtkErrorMacro("Cannot write '" << target << "'" << (why.empty() ? "" : ": " + why) << ".");
+    vtkErrorMacro("Cannot write '" << this->FileName << "'" << (why.empty() ? "" : ": " + why) << ".");
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     return;
   }

@@ -1154,6 +1154,30 @@ TEST(DicomStructureSet, WritingBadInputIsAClearErrorAndKeepsAnEarlierFile)
     EXPECT_EQ(kept, "earlier");
   }
   {
+    // A pipe is not replaced by a file (nor would /dev/null be).
+    ASSERT_EQ(mkfifo((dir + "/pipe.dcm").c_str(), 0600), 0);
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 0, 5));
+    writer->SetFileName((dir + "/pipe.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 1);
+    EXPECT_NE(messages.find("Cannot write '" + dir + "/pipe.dcm': it is not a regular file."), std::string::npos)
+      << messages;
+    struct stat info;
+    ASSERT_EQ(stat((dir + "/pipe.dcm").c_str(), &info), 0);
+    EXPECT_TRUE(S_ISFIFO(info.st_mode));
+  }
+  {
+    // A link: the file it points to is written, and the link stays.
+    std::ofstream(dir + "/real.dcm") << "earlier";
+    ASSERT_TRUE(vtksys::SystemTools::CreateSymlink("real.dcm", dir + "/link.dcm"));
+    vtkNew<vtkLKStructureSetWriter> writer;
+    writer->AddInputData(box(0, 5, 0, 5, 0, 5));
+    writer->SetFileName((dir + "/link.dcm").c_str());
+    EXPECT_EQ(write(writer, messages), 0) << messages;
+    EXPECT_TRUE(vtksys::SystemTools::FileIsSymlink(dir + "/link.dcm"));
+    EXPECT_TRUE(lkvtk::isDICOMStructureSet(dir + "/real.dcm"));
+  }
+  {
     // A folder of the file's name: the reason, and no part file left.
     vtksys::SystemTools::MakeDirectory(dir + "/folder.dcm");
     vtkNew<vtkLKStructureSetWriter> writer;
