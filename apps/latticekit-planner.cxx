@@ -27,6 +27,7 @@
 #include <sstream>
 #include <string>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace
@@ -370,9 +371,15 @@ int main(int argc, char* argv[])
   if (!events.empty())
   {
     // Headless interaction: the recorded events go through the real style.
-    if (!vtksys::SystemTools::FileExists(events))
+    if (!vtksys::SystemTools::FileExists(events) || vtksys::SystemTools::FileIsDirectory(events))
     {
       std::cerr << "error: cannot open '" << events << "'\n";
+      return 1;
+    }
+    // A device (/dev/zero) never ends; a pipe (bash's <(...)) is read as it comes.
+    if (struct stat info; stat(events.c_str(), &info) == 0 && (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode)))
+    {
+      std::cerr << "error: cannot read the events '" << events << "': it is a device, not a file\n";
       return 1;
     }
     planner.window->SetOffScreenRendering(1);

@@ -44,6 +44,8 @@
 #include <sstream>
 #include <vector>
 
+#include <sys/stat.h>
+
 vtkStandardNewMacro(vtkLKMedicalImageReader);
 
 namespace
@@ -690,6 +692,16 @@ bool vtkLKMedicalImageReader::ReadVolume()
   if (!vtksys::SystemTools::FileExists(path))
   {
     vtkErrorMacro("Cannot open '" << path << "': no such file or folder.");
+    return false;
+  }
+  // A pipe or a device: reading one waits for a writer, or for ever
+  // (/dev/zero), and the readers seek in their files.
+  struct stat info;
+  if (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode))
+  {
+    vtkErrorMacro("Cannot read '" << path << "': it is not a file or a folder but a "
+                                  << (S_ISFIFO(info.st_mode) ? "pipe" : "device")
+                                  << "; the volume must be a file (or a DICOM folder) to be read.");
     return false;
   }
   const std::string name = lower(path);

@@ -25,6 +25,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -1152,8 +1154,24 @@ TEST(MedicalImageReader, MissingAndCorruptFilesAreClearErrors)
   EXPECT_EQ(rec.errors, 1);
   EXPECT_NE(rec.messages.find("no such file"), std::string::npos);
 
-  // An NRRD whose data is cut short.
+  // A pipe nobody writes to (opening it waited for ever) and a device that
+  // never ends are refused before they are opened.
   const std::string dir = tempFolder("corrupt");
+  ASSERT_EQ(mkfifo((dir + "/pipe.nrrd").c_str(), 0600), 0);
+  for (const std::string& special : { dir + "/pipe.nrrd", std::string("/dev/zero") })
+  {
+    vtkNew<vtkLKMedicalImageReader> refused;
+    lktest::ErrorRecorder refusedRec(refused);
+    refused->SetFileName(special.c_str());
+    refused->Update();
+    EXPECT_EQ(refusedRec.errors, 1);
+    EXPECT_NE(refusedRec.messages.find("it is not a file or a folder but a " +
+                std::string(special == "/dev/zero" ? "device" : "pipe")),
+      std::string::npos)
+      << refusedRec.messages;
+  }
+
+  // An NRRD whose data is cut short.
   {
     std::ifstream in(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd"), std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

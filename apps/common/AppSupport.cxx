@@ -54,6 +54,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace lkapp
@@ -394,6 +395,15 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   if (!vtksys::SystemTools::FileExists(path, true))
   {
     error = "cannot open '" + path + "': no such file";
+    return nullptr;
+  }
+  // A pipe or a device: reading one waits for a writer, or for ever
+  // (/dev/zero), and VTK's readers seek in their files.
+  struct stat info;
+  if (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
+  {
+    error = "cannot read '" + path + "': it is not a file but a " + (S_ISFIFO(info.st_mode) ? "pipe" : "device") +
+      "; the mesh must be a file to be read";
     return nullptr;
   }
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));

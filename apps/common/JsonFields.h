@@ -16,6 +16,8 @@
 #include <limits>
 #include <string>
 
+#include <sys/stat.h>
+
 namespace lkapp
 {
 /// The members of `object` not named in `known` (a misspelt field, or one a
@@ -102,6 +104,14 @@ bool jsonMember(const Json::Value& object, const char* key, T& out, Read read, c
 template <typename Read>
 bool loadJsonObject(const std::string& path, const std::string& what, Read read, std::string& error)
 {
+  // A device (/dev/zero) never ends: jsoncpp would read it until memory
+  // runs out. A pipe (bash's <(...)) is read as it comes.
+  struct stat info;
+  if (stat(path.c_str(), &info) == 0 && (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode)))
+  {
+    error = "cannot read the " + what + " '" + path + "': it is a device, not a file";
+    return false;
+  }
   std::ifstream in(path);
   if (!in)
   {
