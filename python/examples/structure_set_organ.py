@@ -5,12 +5,13 @@ usage: PYTHONPATH=build/python /usr/bin/python3 python/examples/structure_set_or
            INPUT ORGAN [OUT_FOLDER]
 
 INPUT is a DICOM RT structure set (RTSTRUCT) file, or a CT folder exported with the structure
-sets drawn on it (a radiotherapy export). The script lists the organs (ROIs), takes ORGAN by
+sets drawn on it (a radiotherapy export; or with them in folders beside its own, as a study
+exported one series to a folder lies, TCIA's layout). The script lists the organs (ROIs), takes ORGAN by
 name, makes its surface, fits a lattice of 1,000 control vertices to it, measures the lattice
 surface against the organ's surface (Metro), and writes into OUT_FOLDER (default: the current
 folder) the organ's surface (organ.stl, patient LPS mm) and the lattice surface as an RT
 structure set (lattice.dcm): on the CT's slices and in its study when the CT lies beside the
-structure set, else on axial planes 1 mm apart.
+structure set (in its folder or in one beside it), else on axial planes 1 mm apart.
 """
 import os
 import sys
