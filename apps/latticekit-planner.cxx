@@ -27,7 +27,6 @@
 #include <sstream>
 #include <string>
 
-#include <sys/stat.h>
 #include <unistd.h>
 
 namespace
@@ -377,7 +376,7 @@ int main(int argc, char* argv[])
       return 1;
     }
     // A device (/dev/zero) never ends; a pipe (bash's <(...)) is read as it comes.
-    if (struct stat info; stat(events.c_str(), &info) == 0 && (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode)))
+    if (lkapp::specialFileKind(events) == "device")
     {
       std::cerr << "error: cannot read the events '" << events << "': it is a device, not a file\n";
       return 1;

@@ -385,6 +385,14 @@ void setCoordinateSpace(vtkPolyData* mesh, const std::string& space)
   mesh->SetFieldData(fields);
 }
 
+std::string specialFileKind(const std::string& path)
+{
+  struct stat info;
+  if (stat(path.c_str(), &info) != 0 || S_ISREG(info.st_mode) || S_ISDIR(info.st_mode))
+    return {};
+  return S_ISFIFO(info.st_mode) ? "pipe" : "device"; // a socket is a device here
+}
+
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& error)
 {
   if (vtksys::SystemTools::FileIsDirectory(path))
@@ -397,13 +405,10 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
     error = "cannot open '" + path + "': no such file";
     return nullptr;
   }
-  // A pipe or a device: reading one waits for a writer, or for ever
-  // (/dev/zero), and VTK's readers seek in their files.
-  struct stat info;
-  if (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
+  // VTK's readers seek in their files.
+  if (const std::string kind = specialFileKind(path); !kind.empty())
   {
-    error = "cannot read '" + path + "': it is not a file but a " + (S_ISFIFO(info.st_mode) ? "pipe" : "device") +
-      "; the mesh must be a file to be read";
+    error = "cannot read '" + path + "': it is not a file but a " + kind + "; the mesh must be a file to be read";
     return nullptr;
   }
   const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(path));

@@ -74,6 +74,11 @@ private:
   unsigned long tag_ = 0;
 };
 
+/// "pipe" or "device" when `path` is one (neither a file nor a folder),
+/// else empty. A pipe nobody writes to blocks whoever opens it, a device may
+/// never end (/dev/zero): inputs that are read whole or sought in refuse
+/// both; text read as it comes (a session, bash's <(...)) refuses devices.
+std::string specialFileKind(const std::string& path);
 /// Reads .vtp, .vtk, .stl, .ply or .obj. Returns nullptr and sets error on failure.
 /// A coordinate system the file names as 3D Slicer tags it ("SPACE=LPS" or
 /// "SPACE=RAS" in a .vtk or .stl header, a .ply or leading .obj comment; the

@@ -5,6 +5,8 @@
 #ifndef latticekit_apps_JsonFields_h
 #define latticekit_apps_JsonFields_h
 
+#include "AppSupport.h" // specialFileKind
+
 #include <vtk_jsoncpp.h>
 
 #include <algorithm>
@@ -15,8 +17,6 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
-
-#include <sys/stat.h>
 
 namespace lkapp
 {
@@ -106,8 +106,7 @@ bool loadJsonObject(const std::string& path, const std::string& what, Read read,
 {
   // A device (/dev/zero) never ends: jsoncpp would read it until memory
   // runs out. A pipe (bash's <(...)) is read as it comes.
-  struct stat info;
-  if (stat(path.c_str(), &info) == 0 && (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode)))
+  if (specialFileKind(path) == "device")
   {
     error = "cannot read the " + what + " '" + path + "': it is a device, not a file";
     return false;
