@@ -258,6 +258,17 @@ int main(int argc, char* argv[])
     const int layers = reader->GetOutput()->GetNumberOfScalarComponents();
     std::cout << (layers > 1 ? " (in " + std::to_string(layers) + " layers: they overlap)" : std::string()) << "\n";
   }
+  if (std::strcmp(reader->GetFileFormat(), "DICOM RTSTRUCT") == 0 || std::strcmp(reader->GetFileFormat(), "DICOM SEG") == 0)
+  {
+    // Where the CT it was drawn on lies (its folder, or one beside it), or
+    // that it was not found: a structure set is then filled on a grid of its
+    // own, and -o X.dcm writes on axial planes in a new study.
+    const std::string ct = reader->GetReferenceImageFileName();
+    std::cout << "drawn on   "
+              << (ct.empty() ? std::string("a CT not found in its folder or in one beside it")
+                             : "the CT in '" + vtksys::SystemTools::GetFilenamePath(ct) + "'")
+              << "\n";
+  }
   const std::string segment = surface->GetEffectiveSegmentName();
   std::cout << "iso value  " << surface->GetEffectiveIsoValue()
             << (surface->GetEffectiveLabel() > 0
