@@ -117,8 +117,9 @@ public:
 
   /// After an update, a file of the DICOM image series the volume belongs
   /// to: the series read (FileFormat "DICOM"), or the CT an RT structure set
-  /// or a DICOM SEG was drawn on when that CT lies in the same folder; empty
-  /// otherwise. vtkLKStructureSetWriter's ReferenceFileName takes it, so
+  /// or a DICOM SEG was drawn on when that CT lies in the same folder or in a
+  /// folder beside it (a study exported one series to a folder, as TCIA and
+  /// PACS exports lie); empty otherwise. vtkLKStructureSetWriter's ReferenceFileName takes it, so
   /// that what is made from the volume goes back to the same patient, study
   /// and slices.
   const char* GetReferenceImageFileName() { return this->ReferenceImageFileName.c_str(); }
@@ -151,7 +152,8 @@ public:
   ///@{
   /// DICOM only, after an update: the RT structure sets in the folder that
   /// were drawn on the series read (a radiotherapy export: the CT and the
-  /// organs contoured on it), each its file and its ROIs' names; out of
+  /// organs contoured on it), or, when it holds none, those in folders beside
+  /// the CT's that were, each its file and its ROIs' names; out of
   /// range, nullptr and 0. Reading the file (FileName) gives its ROIs as
   /// segments; latticekit-surface and the planner do that when --label names
   /// an organ that only a structure set of the CT holds.
