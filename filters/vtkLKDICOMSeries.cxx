@@ -266,8 +266,10 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
   return true;
 }
 
-std::vector<FolderBeside> foldersBeside(const std::string& folder)
+std::vector<FolderBeside> foldersBeside(const std::string& folder, bool* crowded)
 {
+  if (crowded)
+    *crowded = false;
   std::vector<FolderBeside> found;
   const std::string own = vtksys::SystemTools::CollapseFullPath(folder.empty() ? "." : folder);
   const std::string parent = vtksys::SystemTools::GetParentDirectory(own);
@@ -286,7 +288,11 @@ std::vector<FolderBeside> foldersBeside(const std::string& folder)
       continue;
     siblings.push_back(path);
     if (static_cast<int>(siblings.size()) > kFoldersBesideLimit)
+    {
+      if (crowded)
+        *crowded = true;
       return {};
+    }
   }
   std::sort(siblings.begin(), siblings.end());
   for (const std::string& sibling : siblings)

@@ -161,8 +161,8 @@ constexpr int kFoldersBesideLimit = 256;
 /// order) that hold a DICOM file among their first few, each with what its
 /// first DICOM file is. Only headers are read, one or a few per folder.
 /// None when `folder` has no parent or the parent has more than
-/// kFoldersBesideLimit sub-folders.
-std::vector<FolderBeside> foldersBeside(const std::string& folder);
+/// kFoldersBesideLimit sub-folders (then `crowded`, when given, is set).
+std::vector<FolderBeside> foldersBeside(const std::string& folder, bool* crowded = nullptr);
 
 /// Reads the series and resamples it onto a regular grid in the slice frame:
 /// x along the rows (ImageOrientationPatient[0..2]), y along the columns

@@ -347,16 +347,19 @@ const DICOMSeriesInfo* referencedImages(vtkDICOMMetaData* meta, const std::vecto
 /// The image series `meta` (read from `file`) references: among
 /// `imageSeries` (the series of its own folder), else in a folder beside
 /// its folder (a study exported one series to a folder), copied into
-/// `beside`. Null when it is in neither.
+/// `beside`. Null when it is in neither; `crowded` (when given) then says
+/// whether the folders beside were too many to search.
 const DICOMSeriesInfo* referencedImagesNear(vtkDICOMMetaData* meta, const std::string& file,
-  const std::vector<DICOMSeriesInfo>& imageSeries, DICOMSeriesInfo& beside)
+  const std::vector<DICOMSeriesInfo>& imageSeries, DICOMSeriesInfo& beside, bool* crowded = nullptr)
 {
+  if (crowded)
+    *crowded = false;
   if (const DICOMSeriesInfo* images = referencedImages(meta, imageSeries))
     return images;
   const std::vector<std::string> uids = referencedSeriesUIDs(meta);
   if (uids.empty())
     return nullptr;
-  for (const FolderBeside& folder : foldersBeside(vtksys::SystemTools::GetFilenamePath(file)))
+  for (const FolderBeside& folder : foldersBeside(vtksys::SystemTools::GetFilenamePath(file), crowded))
   {
     if (std::find(uids.begin(), uids.end(), folder.seriesUID) == uids.end())
       continue;
@@ -404,8 +407,8 @@ struct Grid
 
 /// The grid of the structure set's voxels (see readDICOMStructureSet), and
 /// each contour's slice on it.
-bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, std::vector<ROI>& rois, Grid& grid,
-  std::vector<std::string>& notes, std::string& error)
+bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, bool crowded, std::vector<ROI>& rois,
+  Grid& grid, std::vector<std::string>& notes, std::string& error)
 {
   // The frame and the pixel lattice: the referenced CT's (`images`, when it
   // was found near the structure set) when its slices are parallel to the
@@ -473,7 +476,10 @@ bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, std::vecto
     const std::string uid = uids.empty() ? std::string() : uids.front();
     notes.push_back(std::string("the image series the structure set was drawn on") +
       (uid.empty() ? std::string("") : " (" + uid + ")") +
-      (imageFile.empty() ? " is neither in its folder nor in a folder beside it" : " lies across its contours") +
+      (!imageFile.empty() ? " lies across its contours"
+          : crowded ? " is not in its folder, and the folders beside it were not searched (over " +
+              std::to_string(kFoldersBesideLimit) + " of them: not a study's)"
+                    : " is neither in its folder nor in a folder beside it") +
       ": its ROIs are filled on a grid of their own, " + mm(dx) + " pixels" +
       (h > 0.0 ? " and " + mm(h) + " slices" : std::string("")));
   }
@@ -744,7 +750,8 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
     return false;
   }
   DICOMSeriesInfo beside;
-  const DICOMSeriesInfo* images = referencedImagesNear(meta, file, imageSeries, beside);
+  bool crowded = false;
+  const DICOMSeriesInfo* images = referencedImagesNear(meta, file, imageSeries, beside, &crowded);
   if (images)
     referencedImage = images->files.front();
   std::vector<ROI> rois;
@@ -784,7 +791,7 @@ bool readDICOMStructureSet(const std::string& file, const std::vector<DICOMSerie
       " fewer than 3 points and " + (skippedShort == 1 ? "is" : "are") + " not read");
 
   Grid grid;
-  if (!placeGrid(meta, images, rois, grid, notes, error))
+  if (!placeGrid(meta, images, crowded, rois, grid, notes, error))
     return false;
   const vtkIdType voxels = static_cast<vtkIdType>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
 

@@ -415,6 +415,11 @@ TEST(DicomStructureSet, ASetAndItsCTInFoldersSideBySideFindEachOther)
   ASSERT_EQ(crowdedRec.errors, 0) << crowdedRec.messages;
   EXPECT_DOUBLE_EQ(crowdedReader->GetOutput()->GetSpacing()[2], 4.0);
   EXPECT_STREQ(crowdedReader->GetReferenceImageFileName(), "");
+  EXPECT_NE(crowdedRec.warningMessages.find("is not in its folder, and the folders beside it were not searched "
+                                            "(over 256 of them: not a study's): its ROIs are filled on a grid of "
+                                            "their own"),
+    std::string::npos)
+    << crowdedRec.warningMessages;
 }
 
 TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
