@@ -219,9 +219,11 @@ bool readImagePositions(const DICOMSeriesInfo& series, std::vector<ImagePosition
 }
 
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
-  vtkAlgorithm* progress, int scanDepth)
+  vtkAlgorithm* progress, int scanDepth, std::string* note)
 {
   series.clear();
+  if (note)
+    note->clear();
   vtkNew<vtkDICOMDirectory> dir;
   ErrorCatcher catcher(dir);
   dir->SetDirectoryName(folder.c_str());
@@ -232,6 +234,32 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
     if (progress)
       relay.emplace(progress, dir, 0.0, 0.2);
     dir->Update();
+  }
+  // A DICOMDIR that names files no longer there (a CD copied in part, its
+  // files renamed or moved): the folder's files are read instead.
+  if (dir->GetFileSetID())
+  {
+    int missing = 0, listed = 0;
+    for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
+    {
+      vtkStringArray* files = dir->GetFileNamesForSeries(i);
+      for (vtkIdType f = 0; f < files->GetNumberOfValues(); ++f, ++listed)
+        missing += !vtksys::SystemTools::FileExists(files->GetValue(f), true);
+    }
+    if (missing > 0)
+    {
+      if (note)
+        *note = "its DICOMDIR lists " + std::to_string(listed) + " image files, " + std::to_string(missing) +
+          " of which " + (missing == 1 ? "is" : "are") +
+          " not there (a CD copied in part, or its files moved): the folder's files were read instead";
+      catcher.messages.clear();
+      dir->IgnoreDicomdirOn();
+      dir->Modified();
+      std::optional<ProgressRelay> relay;
+      if (progress)
+        relay.emplace(progress, dir, 0.0, 0.2);
+      dir->Update();
+    }
   }
   for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
   {

@@ -138,9 +138,11 @@ constexpr int kDICOMScanDepth = 8;
 /// a DICOMDIR in the folder is used instead when there is one). Returns false
 /// with error set when the folder cannot be read or has no image series.
 /// The scan of the files' headers is the first fifth of `progress`'s progress
-/// (when given), the reading of the series (readDICOMSeries) the rest.
+/// (when given), the reading of the series (readDICOMSeries) the rest. A
+/// DICOMDIR that names files which are not there is set aside and the
+/// files scanned instead; `note` (when given) then says so, else is empty.
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
-  vtkAlgorithm* progress = nullptr, int scanDepth = 1);
+  vtkAlgorithm* progress = nullptr, int scanDepth = 1, std::string* note = nullptr);
 
 /// A folder beside another (a sibling: a sub-folder of the same parent) and
 /// what its first DICOM file is: a PACS, TCIA or 3D Slicer export keeps each

@@ -704,8 +704,11 @@ bool vtkLKMedicalImageReader::ReadVolume()
                                   << "; the volume must be a file (or a DICOM folder) to be read.");
     return false;
   }
+  // A CD's DICOMDIR, as viewers open one: its folder, which the DICOMDIR
+  // indexes, is read.
+  const bool dicomdir = lower(vtksys::SystemTools::GetFilenameName(path)) == "dicomdir";
   const std::string name = lower(path);
-  const bool isFolder = vtksys::SystemTools::FileIsDirectory(path);
+  const bool isFolder = dicomdir || vtksys::SystemTools::FileIsDirectory(path);
   double spacing[3] = { 1, 1, 1 };
   vtkSmartPointer<vtkImageData> image;
   std::vector<Segment> segments; // a segmentation's: a .seg.nrrd's header, a DICOM SEG's
@@ -956,13 +959,16 @@ bool vtkLKMedicalImageReader::ReadVolume()
       vtkErrorMacro("Cannot read '" << path << "': SliceSpacing must be a number of mm (0: automatic), not NaN.");
       return false;
     }
-    const std::string folder = isFolder ? path : vtksys::SystemTools::GetFilenamePath(path);
+    const std::string folder = isFolder && !dicomdir ? path : vtksys::SystemTools::GetFilenamePath(path);
     std::vector<lkvtk::DICOMSeriesInfo> series;
-    std::string error;
+    std::string error, note;
     // A folder is searched with its sub-folders (a CD's layout); a file's
     // series lies in the file's own folder.
-    if (!lkvtk::findDICOMSeries(folder.empty() ? "." : folder, series, error, this,
-          isFolder ? lkvtk::kDICOMScanDepth : 1))
+    const bool found = lkvtk::findDICOMSeries(
+      folder.empty() ? "." : folder, series, error, this, isFolder ? lkvtk::kDICOMScanDepth : 1, &note);
+    if (!note.empty())
+      vtkWarningMacro("'" << (folder.empty() ? std::string(".") : folder) << "': " << note << ".");
+    if (!found)
     {
       // A folder that holds a volume file (a NIfTI beside its licence) is a
       // likely slip: name the files the user may have meant.
@@ -1029,7 +1035,7 @@ bool vtkLKMedicalImageReader::ReadVolume()
       for (const auto& one : series)
       {
         const std::string dirOf = vtksys::SystemTools::GetFilenamePath(one.files.front());
-        where.push_back(vtksys::SystemTools::RelativePath(vtksys::SystemTools::CollapseFullPath(path),
+        where.push_back(vtksys::SystemTools::RelativePath(vtksys::SystemTools::CollapseFullPath(folder),
           vtksys::SystemTools::CollapseFullPath(dirOf)));
       }
       const bool apart = std::any_of(where.begin(), where.end(), [&](const std::string& w) { return w != where[0]; });

@@ -1038,6 +1038,49 @@ TEST(MedicalImageReader, ACDsFoldersAreSearchedAndEachSeriesNamesItsFolder)
   EXPECT_EQ(far->GetNumberOfInputSlices(), 3);
 }
 
+// A CD with its DICOMDIR (tests/data/dicomdir/DICOMDIR, made by gdcmgendir
+// for the phantom's three slices as DICOM/ST0/SE0/IM0 to IM2): the DICOMDIR
+// itself, as viewers open a CD, reads as its folder does. A DICOMDIR that
+// lists a file no longer there (a CD copied in part) is set aside, with a
+// warning, and the folder's files are read.
+TEST(MedicalImageReader, ACDsDICOMDIRReadsAsItsFolderAndAStaleOneIsSetAside)
+{
+  const std::string cd = tempFolder("cd-dicomdir");
+  const std::string series = cd + "/DICOM/ST0/SE0";
+  ASSERT_TRUE(vtksys::SystemTools::MakeDirectory(series));
+  const char* slices[3] = { "I90", "I100", "I110" };
+  for (int k = 0; k < 3; ++k)
+    ASSERT_TRUE(vtksys::SystemTools::CopyAFile(
+      lktest::sampleData(std::string("dicom-ct-philips-phantom/") + slices[k]), series + "/IM" + std::to_string(k)));
+  ASSERT_TRUE(
+    vtksys::SystemTools::CopyAFile(std::string(LATTICEKIT_TEST_DATA) + "/dicomdir/DICOMDIR", cd + "/DICOMDIR"));
+  for (const std::string& input : { cd + "/DICOMDIR", cd })
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(input.c_str());
+    reader->Update();
+    ASSERT_EQ(rec.errors, 0) << input << ": " << rec.messages;
+    EXPECT_EQ(rec.warnings, 0) << rec.warningMessages;
+    EXPECT_STREQ(reader->GetFileFormat(), "DICOM");
+    EXPECT_EQ(reader->GetNumberOfInputSlices(), 3);
+    EXPECT_EQ(reader->GetOutput()->GetDimensions()[0], 512);
+  }
+
+  // IM1 renamed: the DICOMDIR lists a file that is not there.
+  ASSERT_EQ(std::rename((series + "/IM1").c_str(), (series + "/im1.dcm").c_str()), 0);
+  vtkNew<vtkLKMedicalImageReader> stale;
+  lktest::ErrorRecorder staleRec(stale);
+  stale->SetFileName((cd + "/DICOMDIR").c_str());
+  stale->Update();
+  ASSERT_EQ(staleRec.errors, 0) << staleRec.messages;
+  EXPECT_EQ(stale->GetNumberOfInputSlices(), 3);
+  EXPECT_NE(staleRec.warningMessages.find("its DICOMDIR lists 3 image files, 1 of which is not there (a CD copied "
+                                          "in part, or its files moved): the folder's files were read instead"),
+    std::string::npos)
+    << staleRec.warningMessages;
+}
+
 TEST(MedicalImageReader, ASeriesWithAMissingSliceIsWarned)
 {
   // Eight slices 3 mm apart written by vtkDICOM; then the fifth is lost.
