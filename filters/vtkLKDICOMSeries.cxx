@@ -218,6 +218,30 @@ bool readImagePositions(const DICOMSeriesInfo& series, std::vector<ImagePosition
   return true;
 }
 
+std::string updateDirectory(vtkDICOMDirectory* dir, vtkAlgorithm* progress)
+{
+  {
+    std::optional<ProgressRelay> relay;
+    if (progress)
+      relay.emplace(progress, dir, 0.0, 0.2);
+    dir->Modified();
+    dir->Update();
+  }
+  if (!dir->GetFileSetID() || dir->GetIgnoreDicomdir())
+    return {};
+  int missing = 0, listed = 0;
+  for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
+  {
+    vtkStringArray* files = dir->GetFileNamesForSeries(i);
+    for (vtkIdType f = 0; f < files->GetNumberOfValues(); ++f, ++listed)
+      missing += !vtksys::SystemTools::FileExists(files->GetValue(f), true);
+  }
+  if (missing == 0)
+    return {};
+  return "its DICOMDIR lists " + std::to_string(listed) + " files, " + std::to_string(missing) + " of which " +
+    (missing == 1 ? "is" : "are") + " not there (a CD copied in part, or its files moved): the folder's files were read instead";
+}
+
 bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& series, std::string& error,
   vtkAlgorithm* progress, int scanDepth, std::string* note)
 {
@@ -229,37 +253,14 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
   dir->SetDirectoryName(folder.c_str());
   dir->SetScanDepth(std::max(1, scanDepth));
   dir->RequirePixelDataOn();
+  const std::string stale = updateDirectory(dir, progress);
+  if (!stale.empty())
   {
-    std::optional<ProgressRelay> relay;
-    if (progress)
-      relay.emplace(progress, dir, 0.0, 0.2);
-    dir->Update();
-  }
-  // A DICOMDIR that names files no longer there (a CD copied in part, its
-  // files renamed or moved): the folder's files are read instead.
-  if (dir->GetFileSetID())
-  {
-    int missing = 0, listed = 0;
-    for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
-    {
-      vtkStringArray* files = dir->GetFileNamesForSeries(i);
-      for (vtkIdType f = 0; f < files->GetNumberOfValues(); ++f, ++listed)
-        missing += !vtksys::SystemTools::FileExists(files->GetValue(f), true);
-    }
-    if (missing > 0)
-    {
-      if (note)
-        *note = "its DICOMDIR lists " + std::to_string(listed) + " image files, " + std::to_string(missing) +
-          " of which " + (missing == 1 ? "is" : "are") +
-          " not there (a CD copied in part, or its files moved): the folder's files were read instead";
-      catcher.messages.clear();
-      dir->IgnoreDicomdirOn();
-      dir->Modified();
-      std::optional<ProgressRelay> relay;
-      if (progress)
-        relay.emplace(progress, dir, 0.0, 0.2);
-      dir->Update();
-    }
+    catcher.messages.clear(); // the DICOMDIR's scan's
+    dir->IgnoreDicomdirOn();
+    updateDirectory(dir, progress);
+    if (note)
+      *note = stale;
   }
   for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
   {

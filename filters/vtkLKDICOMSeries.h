@@ -16,6 +16,7 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkDICOMDirectory;
 class vtkDICOMMetaData;
 class vtkImageData;
 class vtkMatrix4x4;
@@ -132,6 +133,13 @@ bool readImagePositions(const DICOMSeriesInfo& series, std::vector<ImagePosition
 /// to disk keeps its images a few folders down (DICOM/ST000000/SE000000/),
 /// unless its DICOMDIR, which vtkDICOMDirectory reads instead, indexes them.
 constexpr int kDICOMScanDepth = 8;
+
+/// Updates `dir` (its scan the first fifth of `progress`'s progress, when
+/// given). When it read a DICOMDIR that lists files which are not there (a
+/// CD copied in part, its files renamed), returns what to warn of: the
+/// caller then sets the DICOMDIR aside (IgnoreDicomdirOn) and updates again,
+/// to scan the files themselves. Empty otherwise.
+std::string updateDirectory(vtkDICOMDirectory* dir, vtkAlgorithm* progress = nullptr);
 
 /// Lists the series found in the folder, largest first: its files and those
 /// of its sub-folders down to `scanDepth` levels (1: the folder's own files;

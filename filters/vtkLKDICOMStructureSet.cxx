@@ -690,7 +690,11 @@ std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, 
   vtkDICOMItem query;
   query.Set(DC::Modality, "RTSTRUCT");
   dir->SetFindQuery(query);
-  dir->Update();
+  if (!updateDirectory(dir).empty())
+  {
+    dir->IgnoreDicomdirOn(); // the image scan before it has warned of the stale DICOMDIR
+    updateDirectory(dir);
+  }
   for (int s = 0; s < dir->GetNumberOfSeries(); ++s)
   {
     vtkStringArray* files = dir->GetFileNamesForSeries(s);

@@ -1075,7 +1075,7 @@ TEST(MedicalImageReader, ACDsDICOMDIRReadsAsItsFolderAndAStaleOneIsSetAside)
   stale->Update();
   ASSERT_EQ(staleRec.errors, 0) << staleRec.messages;
   EXPECT_EQ(stale->GetNumberOfInputSlices(), 3);
-  EXPECT_NE(staleRec.warningMessages.find("its DICOMDIR lists 3 image files, 1 of which is not there (a CD copied "
+  EXPECT_NE(staleRec.warningMessages.find("its DICOMDIR lists 3 files, 1 of which is not there (a CD copied "
                                           "in part, or its files moved): the folder's files were read instead"),
     std::string::npos)
     << staleRec.warningMessages;
