@@ -31,6 +31,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -165,6 +166,77 @@ bool readFiles(CheckedDICOMReader* reader, const std::vector<std::string>& files
   return true;
 }
 
+
+/// The transfer syntaxes vtkDICOM (as Debian builds it, with GDCM) cannot
+/// parse or decode, by UID, with their names.
+const char* unreadableTransferSyntax(const std::string& uid)
+{
+  static const std::map<std::string, const char*> names = {
+    { "1.2.840.10008.1.2.1.99", "Deflated Explicit VR Little Endian" },
+    { "1.2.840.10008.1.2.4.110", "JPEG XL Lossless" },
+    { "1.2.840.10008.1.2.4.111", "JPEG XL JPEG Recompression" },
+    { "1.2.840.10008.1.2.4.112", "JPEG XL" },
+    { "1.2.840.10008.1.2.4.201", "High-Throughput JPEG 2000 Lossless" },
+    { "1.2.840.10008.1.2.4.202", "High-Throughput JPEG 2000 with RPCL Options Lossless" },
+    { "1.2.840.10008.1.2.4.203", "High-Throughput JPEG 2000" },
+  };
+  const auto it = names.find(uid);
+  return it == names.end() ? nullptr : it->second;
+}
+
+/// Why a folder in which no image series was found may hold one all the
+/// same: DICOM files in a transfer syntax that cannot be read here (the
+/// folder's files and its sub-folders' down to `depth` levels, at most 64
+/// files looked at). Empty when none is.
+std::string unreadableFilesNote(const std::string& folder, int depth)
+{
+  std::map<std::string, int> found;
+  int looked = 0;
+  std::vector<std::pair<std::string, int>> folders{ { folder, 1 } };
+  for (std::size_t k = 0; k < folders.size() && looked < 64; ++k)
+  {
+    vtksys::Directory listing;
+    if (!listing.Load(folders[k].first))
+      continue;
+    std::vector<std::string> names;
+    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+      names.push_back(listing.GetFile(i));
+    std::sort(names.begin(), names.end());
+    for (const std::string& name : names)
+    {
+      if (name == "." || name == ".." || looked >= 64)
+        continue;
+      const std::string path = folders[k].first + "/" + name;
+      struct stat info;
+      if (stat(path.c_str(), &info) != 0)
+        continue;
+      if (S_ISDIR(info.st_mode))
+      {
+        if (folders[k].second < depth)
+          folders.push_back({ path, folders[k].second + 1 });
+        continue;
+      }
+      if (!S_ISREG(info.st_mode))
+        continue;
+      ++looked;
+      vtkNew<vtkDICOMMetaData> meta;
+      std::string ignored;
+      readDICOMHeader(path, meta, ignored); // the file meta information comes first
+      const std::string syntax = meta->Get(DC::TransferSyntaxUID).AsString();
+      if (unreadableTransferSyntax(syntax))
+        ++found[syntax];
+    }
+  }
+  std::string note;
+  for (const auto& [syntax, count] : found)
+    note += std::string(note.empty() ? "" : "; ") + std::to_string(count) + " of the files looked at " +
+      (count == 1 ? "is" : "are") + " DICOM in the transfer syntax " + unreadableTransferSyntax(syntax) + " (" +
+      syntax + "), which cannot be read here";
+  if (!note.empty())
+    note += ": convert them to an uncompressed one first (for example gdcmconv --explicit IN OUT, or dcmconv +te "
+            "IN OUT)";
+  return note;
+}
 } // namespace
 
 bool readDICOMHeader(const std::string& file, vtkDICOMMetaData* meta, std::string& error)
@@ -290,6 +362,9 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
     {
       error += " (" + catcher.messages + ")";
     }
+    const std::string unreadable = unreadableFilesNote(folder, std::max(1, scanDepth));
+    if (!unreadable.empty())
+      error += ": " + unreadable;
     return false;
   }
   return true;

@@ -1188,6 +1188,27 @@ TEST(MedicalImageReader, AFolderHoldingAVolumeFileNamesIt)
     << rec.messages;
 }
 
+// DICOM files in a transfer syntax vtkDICOM cannot parse (deflated, as
+// gdcmconv --deflated writes them): no series is found, and the message
+// says why and how to convert them, instead of "no DICOM image series".
+TEST(MedicalImageReader, FilesInAnUnreadableTransferSyntaxAreNamed)
+{
+  const std::string folder = std::string(LATTICEKIT_TEST_DATA) + "/deflated";
+  for (const std::string& input : { folder, folder + "/ct_deflated.dcm" })
+  {
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder rec(reader);
+    reader->SetFileName(input.c_str());
+    reader->Update();
+    EXPECT_EQ(rec.errors, 1);
+    EXPECT_NE(rec.messages.find("1 of the files looked at is DICOM in the transfer syntax Deflated Explicit VR "
+                                "Little Endian (1.2.840.10008.1.2.1.99), which cannot be read here: convert them "
+                                "to an uncompressed one first"),
+      std::string::npos)
+      << rec.messages;
+  }
+}
+
 TEST(MedicalImageReader, MissingAndCorruptFilesAreClearErrors)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
