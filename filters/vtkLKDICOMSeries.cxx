@@ -7,6 +7,7 @@
 #include <vtkDICOMDirectory.h>
 #include <vtkDICOMItem.h>
 #include <vtkDICOMMetaData.h>
+#include <vtkDICOMMetaDataAdapter.h>
 #include <vtkDICOMParser.h>
 #include <vtkDICOMReader.h>
 #include <vtkDICOMUtilities.h>
@@ -457,6 +458,13 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
       : "the DICOM series' images cannot be stacked into one volume: several lie at one position (time points), "
         "or the frames of a multi-frame file lack their orientation or positions";
     return false;
+  }
+  {
+    // The enhanced multi-frame form keeps it in its functional groups.
+    vtkDICOMMetaDataAdapter attributes(meta);
+    report.ctWithoutRescale =
+      attributes->Get(DC::Modality).AsString() == "CT" && !attributes->Has(DC::RescaleIntercept);
+    report.lowestValue = raw->GetScalarRange()[0];
   }
   vtkIntArray* fileIndex = reader->GetFileIndexArray();
   const int nslices = dims[2];

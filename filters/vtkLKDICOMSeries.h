@@ -109,6 +109,12 @@ struct DICOMGeometryReport
     int afterIndex = 0; ///< the slice after the gap, in position order
   };
   std::vector<WideGap> wideGaps; ///< in slice order
+  /// A CT whose images carry no RescaleIntercept (Type 1 for CT; a cone-beam
+  /// scanner's export may leave it out): its stored values are taken as they
+  /// are, which need not be Hounsfield units. The lowest value read, to say
+  /// whether air looks like -1000 HU.
+  bool ctWithoutRescale = false;
+  double lowestValue = 0.0;
 };
 
 /// Reads a DICOM file's header (up to its pixel data) into `meta`; false

@@ -1079,6 +1079,12 @@ bool vtkLKMedicalImageReader::ReadVolume()
       }
       if (!report.wideGaps.empty())
         vtkWarningMacro(<< wideGapsWarning(report));
+      if (report.ctWithoutRescale && report.lowestValue > -500.0)
+        vtkWarningMacro("The CT's images carry no RescaleIntercept, so their stored values are taken as "
+                        "Hounsfield units; but the lowest is "
+          << static_cast<long long>(report.lowestValue)
+          << ", where air would be near -1000: the values look shifted (a cone-beam scanner's export often is), "
+             "and an iso value in HU misses the bone. Choose it from the values themselves (--iso).");
       // A CT exported with the structure set drawn on it: its ROIs are a
       // file away, in its folder or, when a study is exported one series to
       // a folder, in a folder beside the CT's.

@@ -1209,6 +1209,30 @@ TEST(MedicalImageReader, FilesInAnUnreadableTransferSyntaxAreNamed)
   }
 }
 
+// A CT without RescaleIntercept whose values cannot be Hounsfield units
+// (air at 0): a warning says an iso value in HU misses the bone. The
+// phantom (intercept -1024) gets none.
+TEST(MedicalImageReader, ACTWhoseValuesAreNotHounsfieldUnitsIsWarnedOf)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/ct-no-rescale").c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_EQ(reader->GetOutput()->GetScalarRange()[1], 2000.0);
+  EXPECT_NE(rec.warningMessages.find("The CT's images carry no RescaleIntercept, so their stored values are taken "
+                                     "as Hounsfield units; but the lowest is 0, where air would be near -1000"),
+    std::string::npos)
+    << rec.warningMessages;
+
+  vtkNew<vtkLKMedicalImageReader> phantom;
+  lktest::ErrorRecorder phantomRec(phantom);
+  phantom->SetFileName(lktest::sampleData("dicom-ct-philips-phantom").c_str());
+  phantom->Update();
+  ASSERT_EQ(phantomRec.errors, 0) << phantomRec.messages;
+  EXPECT_EQ(phantomRec.warningMessages.find("RescaleIntercept"), std::string::npos) << phantomRec.warningMessages;
+}
+
 TEST(MedicalImageReader, MissingAndCorruptFilesAreClearErrors)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
