@@ -167,7 +167,6 @@ bool readFiles(CheckedDICOMReader* reader, const std::vector<std::string>& files
   return true;
 }
 
-
 /// The transfer syntaxes vtkDICOM (as Debian builds it, with GDCM) cannot
 /// parse or decode, by UID, with their names.
 const char* unreadableTransferSyntax(const std::string& uid)
