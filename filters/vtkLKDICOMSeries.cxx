@@ -459,10 +459,26 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
     return false;
   }
   {
-    // The enhanced multi-frame form keeps it in its functional groups.
+    // The enhanced multi-frame form keeps them in its functional groups.
     vtkDICOMMetaDataAdapter attributes(meta);
-    report.ctWithoutRescale =
-      attributes->Get(DC::Modality).AsString() == "CT" && !attributes->Has(DC::RescaleIntercept);
+    const bool ct = attributes->Get(DC::Modality).AsString() == "CT";
+    report.ctWithoutRescale = ct && !attributes->Has(DC::RescaleIntercept);
+    if (ct && attributes->Has(DC::RescaleIntercept) && !attributes->Has(DC::RescaleSlope))
+    {
+      // vtkDICOMReader rescales only with both; DICOM's slope is 1 when
+      // none is needed, so the intercept alone is applied.
+      report.interceptWithoutSlope = true;
+      const double intercept = attributes->Get(DC::RescaleIntercept).AsDouble();
+      vtkDataArray* stored = raw->GetPointData()->GetScalars();
+      vtkNew<vtkFloatArray> rescaled;
+      rescaled->SetName(stored->GetName());
+      rescaled->SetNumberOfTuples(stored->GetNumberOfTuples());
+      vtkSMPTools::For(0, stored->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType v = begin; v < end; ++v)
+          rescaled->SetValue(v, static_cast<float>(stored->GetTuple1(v) + intercept));
+      });
+      raw->GetPointData()->SetScalars(rescaled);
+    }
     report.lowestValue = raw->GetScalarRange()[0];
   }
   vtkIntArray* fileIndex = reader->GetFileIndexArray();

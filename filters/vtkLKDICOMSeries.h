@@ -115,6 +115,9 @@ struct DICOMGeometryReport
   /// whether air looks like -1000 HU.
   bool ctWithoutRescale = false;
   double lowestValue = 0.0;
+  /// A CT with a RescaleIntercept but no RescaleSlope (both are Type 1):
+  /// the intercept was applied with a slope of 1.
+  bool interceptWithoutSlope = false;
 };
 
 /// Reads a DICOM file's header (up to its pixel data) into `meta`; false

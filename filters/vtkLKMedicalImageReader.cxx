@@ -1079,6 +1079,9 @@ bool vtkLKMedicalImageReader::ReadVolume()
       }
       if (!report.wideGaps.empty())
         vtkWarningMacro(<< wideGapsWarning(report));
+      if (report.interceptWithoutSlope)
+        vtkWarningMacro("The CT's images carry a RescaleIntercept but no RescaleSlope (DICOM requires both): "
+                        "the intercept was applied with a slope of 1.");
       if (report.ctWithoutRescale && report.lowestValue > -500.0)
         vtkWarningMacro("The CT's images carry no RescaleIntercept, so their stored values are taken as "
                         "Hounsfield units; but the lowest is "

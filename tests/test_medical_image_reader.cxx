@@ -1210,8 +1210,9 @@ TEST(MedicalImageReader, FilesInAnUnreadableTransferSyntaxAreNamed)
 }
 
 // A CT without RescaleIntercept whose values cannot be Hounsfield units
-// (air at 0): a warning says an iso value in HU misses the bone. The
-// phantom (intercept -1024) gets none.
+// (air at 0): a warning says an iso value in HU misses the bone. One with
+// the intercept but not the slope is rescaled. The phantom (intercept -1024,
+// slope 1) gets no warning.
 TEST(MedicalImageReader, ACTWhoseValuesAreNotHounsfieldUnitsIsWarnedOf)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
@@ -1224,6 +1225,22 @@ TEST(MedicalImageReader, ACTWhoseValuesAreNotHounsfieldUnitsIsWarnedOf)
                                      "as Hounsfield units; but the lowest is 0, where air would be near -1000"),
     std::string::npos)
     << rec.warningMessages;
+
+  // An intercept without its slope: vtkDICOMReader rescales only with both,
+  // so the values stayed as stored (air at 0); the intercept is applied with
+  // DICOM's slope of 1, with a warning.
+  vtkNew<vtkLKMedicalImageReader> noSlope;
+  lktest::ErrorRecorder noSlopeRec(noSlope);
+  noSlope->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/ct-no-slope").c_str());
+  noSlope->Update();
+  ASSERT_EQ(noSlopeRec.errors, 0) << noSlopeRec.messages;
+  EXPECT_EQ(noSlope->GetOutput()->GetScalarRange()[0], -1024.0);
+  EXPECT_EQ(noSlope->GetOutput()->GetScalarRange()[1], 976.0);
+  EXPECT_EQ(noSlopeRec.warnings, 1) << noSlopeRec.warningMessages;
+  EXPECT_NE(noSlopeRec.warningMessages.find("The CT's images carry a RescaleIntercept but no RescaleSlope (DICOM "
+                                            "requires both): the intercept was applied with a slope of 1."),
+    std::string::npos)
+    << noSlopeRec.warningMessages;
 
   vtkNew<vtkLKMedicalImageReader> phantom;
   lktest::ErrorRecorder phantomRec(phantom);
