@@ -22,6 +22,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
+#include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 #include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
@@ -468,15 +469,22 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
       // vtkDICOMReader rescales only with both; DICOM's slope is 1 when
       // none is needed, so the intercept alone is applied.
       report.interceptWithoutSlope = true;
+      // Of the type vtkDICOMReader gives a rescaled CT: short when the
+      // values stay whole numbers in its range, else float.
       const double intercept = attributes->Get(DC::RescaleIntercept).AsDouble();
       vtkDataArray* stored = raw->GetPointData()->GetScalars();
-      vtkNew<vtkFloatArray> rescaled;
+      const double* range = stored->GetRange();
+      const bool whole = stored->GetDataType() != VTK_FLOAT && stored->GetDataType() != VTK_DOUBLE &&
+        intercept == std::floor(intercept) && range[0] + intercept >= VTK_SHORT_MIN &&
+        range[1] + intercept <= VTK_SHORT_MAX;
+      vtkSmartPointer<vtkDataArray> rescaled =
+        vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(whole ? VTK_SHORT : VTK_FLOAT));
       rescaled->SetName(stored->GetName());
       rescaled->SetNumberOfTuples(stored->GetNumberOfTuples());
-      vtkSMPTools::For(0, stored->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType v = begin; v < end; ++v)
-          rescaled->SetValue(v, static_cast<float>(stored->GetTuple1(v) + intercept));
-      });
+      // Serial: GetTuple1 writes into the array's own buffer, so threads
+      // reading one array garble each other's values.
+      for (vtkIdType v = 0; v < stored->GetNumberOfTuples(); ++v)
+        rescaled->SetComponent(v, 0, stored->GetComponent(v, 0) + intercept);
       raw->GetPointData()->SetScalars(rescaled);
     }
     report.lowestValue = raw->GetScalarRange()[0];
