@@ -22,7 +22,6 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkSMPTools.h>
-#include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 #include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
@@ -291,15 +290,15 @@ bool readImagePositions(const DICOMSeriesInfo& series, std::vector<ImagePosition
   return true;
 }
 
-std::string updateDirectory(vtkDICOMDirectory* dir, vtkAlgorithm* progress)
+std::string updateDirectory(vtkDICOMDirectory* dir, vtkAlgorithm* progress, ErrorCatcher* catcher)
 {
-  {
+  auto update = [&] {
     std::optional<ProgressRelay> relay;
     if (progress)
       relay.emplace(progress, dir, 0.0, 0.2);
-    dir->Modified();
     dir->Update();
-  }
+  };
+  update();
   if (!dir->GetFileSetID() || dir->GetIgnoreDicomdir())
     return {};
   int missing = 0, listed = 0;
@@ -311,6 +310,10 @@ std::string updateDirectory(vtkDICOMDirectory* dir, vtkAlgorithm* progress)
   }
   if (missing == 0)
     return {};
+  if (catcher)
+    catcher->messages.clear(); // the DICOMDIR's read's
+  dir->IgnoreDicomdirOn();
+  update();
   return "its DICOMDIR lists " + std::to_string(listed) + " files, " + std::to_string(missing) + " of which " +
     (missing == 1 ? "is" : "are") + " not there (a CD copied in part, or its files moved): the folder's files were read instead";
 }
@@ -326,15 +329,9 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
   dir->SetDirectoryName(folder.c_str());
   dir->SetScanDepth(std::max(1, scanDepth));
   dir->RequirePixelDataOn();
-  const std::string stale = updateDirectory(dir, progress);
-  if (!stale.empty())
-  {
-    catcher.messages.clear(); // the DICOMDIR's scan's
-    dir->IgnoreDicomdirOn();
-    updateDirectory(dir, progress);
-    if (note)
-      *note = stale;
-  }
+  const std::string stale = updateDirectory(dir, progress, &catcher);
+  if (note)
+    *note = stale;
   for (int i = 0; i < dir->GetNumberOfSeries(); ++i)
   {
     DICOMSeriesInfo info;
@@ -459,35 +456,18 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
         "or the frames of a multi-frame file lack their orientation or positions";
     return false;
   }
+  // The enhanced multi-frame form keeps the rescale in its functional
+  // groups. vtkDICOMReader rescales only with both the intercept and the
+  // slope; DICOM's slope is 1 when none is needed, so an intercept alone is
+  // applied below, to the float copy the resampling reads.
+  double interceptAlone = 0.0;
   {
-    // The enhanced multi-frame form keeps them in its functional groups.
     vtkDICOMMetaDataAdapter attributes(meta);
     const bool ct = attributes->Get(DC::Modality).AsString() == "CT";
     report.ctWithoutRescale = ct && !attributes->Has(DC::RescaleIntercept);
-    if (ct && attributes->Has(DC::RescaleIntercept) && !attributes->Has(DC::RescaleSlope))
-    {
-      // vtkDICOMReader rescales only with both; DICOM's slope is 1 when
-      // none is needed, so the intercept alone is applied.
-      report.interceptWithoutSlope = true;
-      // Of the type vtkDICOMReader gives a rescaled CT: short when the
-      // values stay whole numbers in its range, else float.
-      const double intercept = attributes->Get(DC::RescaleIntercept).AsDouble();
-      vtkDataArray* stored = raw->GetPointData()->GetScalars();
-      const double* range = stored->GetRange();
-      const bool whole = stored->GetDataType() != VTK_FLOAT && stored->GetDataType() != VTK_DOUBLE &&
-        intercept == std::floor(intercept) && range[0] + intercept >= VTK_SHORT_MIN &&
-        range[1] + intercept <= VTK_SHORT_MAX;
-      vtkSmartPointer<vtkDataArray> rescaled =
-        vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(whole ? VTK_SHORT : VTK_FLOAT));
-      rescaled->SetName(stored->GetName());
-      rescaled->SetNumberOfTuples(stored->GetNumberOfTuples());
-      // Serial: GetTuple1 writes into the array's own buffer, so threads
-      // reading one array garble each other's values.
-      for (vtkIdType v = 0; v < stored->GetNumberOfTuples(); ++v)
-        rescaled->SetComponent(v, 0, stored->GetComponent(v, 0) + intercept);
-      raw->GetPointData()->SetScalars(rescaled);
-    }
-    report.lowestValue = raw->GetScalarRange()[0];
+    report.interceptWithoutSlope = ct && attributes->Has(DC::RescaleIntercept) && !attributes->Has(DC::RescaleSlope);
+    if (report.interceptWithoutSlope)
+      interceptAlone = attributes->Get(DC::RescaleIntercept).AsDouble();
   }
   vtkIntArray* fileIndex = reader->GetFileIndexArray();
   const int nslices = dims[2];
@@ -646,13 +626,16 @@ bool readDICOMSeries(const DICOMSeriesInfo& series, double sliceSpacing, vtkImag
   cast->SetInputData(raw);
   cast->SetOutputScalarTypeToFloat();
   cast->Update();
-  const float* in = static_cast<const float*>(cast->GetOutput()->GetScalarPointer());
+  float* values = static_cast<float*>(cast->GetOutput()->GetScalarPointer());
   const vtkIdType sliceSize = static_cast<vtkIdType>(dims[0]) * dims[1];
   float background = std::numeric_limits<float>::max();
   for (vtkIdType i = 0; i < sliceSize * nslices; ++i)
   {
-    background = std::min(background, in[i]);
+    values[i] += static_cast<float>(interceptAlone);
+    background = std::min(background, values[i]);
   }
+  report.lowestValue = background;
+  const float* in = values;
 
   // In-plane offset of every slice, in pixels, relative to the first one.
   std::vector<double> shiftX(slices.size()), shiftY(slices.size()), zs(slices.size());

@@ -145,10 +145,11 @@ constexpr int kDICOMScanDepth = 8;
 
 /// Updates `dir` (its scan the first fifth of `progress`'s progress, when
 /// given). When it read a DICOMDIR that lists files which are not there (a
-/// CD copied in part, its files renamed), returns what to warn of: the
-/// caller then sets the DICOMDIR aside (IgnoreDicomdirOn) and updates again,
-/// to scan the files themselves. Empty otherwise.
-std::string updateDirectory(vtkDICOMDirectory* dir, vtkAlgorithm* progress = nullptr);
+/// CD copied in part, its files renamed), it sets the DICOMDIR aside
+/// (IgnoreDicomdirOn, clearing what `catcher` caught of the first read) and
+/// updates again, to scan the files themselves, and returns what to warn
+/// of. Empty otherwise.
+std::string updateDirectory(vtkDICOMDirectory* dir, vtkAlgorithm* progress = nullptr, ErrorCatcher* catcher = nullptr);
 
 /// Lists the series found in the folder, largest first: its files and those
 /// of its sub-folders down to `scanDepth` levels (1: the folder's own files;

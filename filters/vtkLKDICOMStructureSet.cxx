@@ -690,11 +690,7 @@ std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, 
   vtkDICOMItem query;
   query.Set(DC::Modality, "RTSTRUCT");
   dir->SetFindQuery(query);
-  if (!updateDirectory(dir).empty())
-  {
-    dir->IgnoreDicomdirOn(); // the image scan before it has warned of the stale DICOMDIR
-    updateDirectory(dir);
-  }
+  updateDirectory(dir, nullptr, &catcher); // the image scan before it has warned of a stale DICOMDIR
   for (int s = 0; s < dir->GetNumberOfSeries(); ++s)
   {
     vtkStringArray* files = dir->GetFileNamesForSeries(s);
