@@ -422,7 +422,8 @@ std::vector<FolderBeside> foldersBeside(const std::string& folder, bool* crowded
       const std::string uid = meta->Get(DC::SeriesInstanceUID).AsString();
       if (uid.empty())
         continue;
-      found.push_back({ sibling, uid, meta->Get(DC::Modality).AsString() });
+      found.push_back({ sibling, uid, meta->Get(DC::Modality).AsString(), meta->Get(DC::StudyInstanceUID).AsString(),
+        meta->Get(DC::FrameOfReferenceUID).AsString() });
       break;
     }
   }

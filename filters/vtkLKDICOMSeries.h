@@ -171,6 +171,8 @@ struct FolderBeside
   std::string folder;
   std::string seriesUID; ///< SeriesInstanceUID of its first DICOM file (in name order)
   std::string modality;  ///< Modality of that file (CT, RTSTRUCT, SEG, ...)
+  std::string studyUID;  ///< its StudyInstanceUID
+  std::string frameUID;  ///< its FrameOfReferenceUID (empty for most RT objects)
 };
 
 /// The most sub-folders a parent may have for its folders to be searched as
@@ -244,15 +246,21 @@ struct StructureSetInfo
 /// says what else it holds.
 std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, int scanDepth);
 
-/// The RT structure sets in the folders beside `folder` whose first DICOM
-/// file is one (see foldersBeside): a study exported one series to a folder
-/// keeps its sets beside its CT, not in it.
-std::vector<StructureSetInfo> findDICOMStructureSetsBeside(const std::string& folder);
+/// The RT structure sets in the folders beside `folder` (see foldersBeside):
+/// a study exported one series to a folder keeps its sets beside its CT,
+/// not in it. Searched: the folders whose first DICOM file is a set, and,
+/// when `imageFile` (a file of the CT) is given, every file of those whose
+/// first file is of the CT's study or frame of reference (a folder of the
+/// study's RT objects, a dose or a plan first; or of images and a set).
+std::vector<StructureSetInfo> findDICOMStructureSetsBeside(
+  const std::string& folder, const std::string& imageFile = std::string());
 
 /// The first file of the image series (a DICOM SEG is none) that the DICOM
 /// object in `file` was drawn on: the series an RT structure set or a DICOM
 /// SEG references by its SeriesInstanceUID, among `series` (those of its own
-/// folder) or else in a folder beside its folder (see foldersBeside). Empty
+/// folder) or else in a folder beside its folder (see foldersBeside): one
+/// whose first file is of that series, else one of the object's study or
+/// frame of reference that holds it among other series. Empty
 /// when it is in neither (or the file cannot be read).
 std::string referencedImageFile(const std::string& file, const std::vector<DICOMSeriesInfo>& series);
 

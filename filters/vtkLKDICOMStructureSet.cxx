@@ -344,10 +344,53 @@ const DICOMSeriesInfo* referencedImages(vtkDICOMMetaData* meta, const std::vecto
   return nullptr;
 }
 
+/// The studies and frames of reference a DICOM object belongs to: its own
+/// StudyInstanceUID and FrameOfReferenceUID, and those an RT structure set
+/// names in its ReferencedFrameOfReferenceSequence.
+struct StudyKeys
+{
+  std::vector<std::string> studies, frames;
+
+  explicit StudyKeys(vtkDICOMMetaData* meta)
+  {
+    add(studies, meta->Get(DC::StudyInstanceUID).AsString());
+    add(frames, meta->Get(DC::FrameOfReferenceUID).AsString());
+    const vtkDICOMValue& referenced = meta->Get(DC::ReferencedFrameOfReferenceSequence);
+    for (unsigned int f = 0; f < itemCount(referenced); ++f)
+    {
+      const vtkDICOMItem& frame = referenced.GetSequenceData()[f];
+      add(frames, frame.Get(DC::FrameOfReferenceUID).AsString());
+      const vtkDICOMValue& study = frame.Get(DC::RTReferencedStudySequence);
+      for (unsigned int s = 0; s < itemCount(study); ++s)
+        add(studies, study.GetSequenceData()[s].Get(DC::ReferencedSOPInstanceUID).AsString());
+    }
+  }
+
+  /// Whether the folder's first DICOM file is of one of these studies or
+  /// frames of reference.
+  bool share(const FolderBeside& folder) const
+  {
+    return has(studies, folder.studyUID) || has(frames, folder.frameUID);
+  }
+
+private:
+  static bool has(const std::vector<std::string>& uids, const std::string& uid)
+  {
+    return !uid.empty() && std::find(uids.begin(), uids.end(), uid) != uids.end();
+  }
+  static void add(std::vector<std::string>& uids, const std::string& uid)
+  {
+    if (!uid.empty() && !has(uids, uid))
+      uids.push_back(uid);
+  }
+};
+
 /// The image series `meta` (read from `file`) references: among
 /// `imageSeries` (the series of its own folder), else in a folder beside
 /// its folder (a study exported one series to a folder), copied into
-/// `beside`. Null when it is in neither; `crowded` (when given) then says
+/// `beside`: first those whose first file is of that series, then those of
+/// the object's study or frame of reference (a folder that holds several
+/// series). Null when it is in neither; `crowded` (when given) then says
 /// whether the folders beside were too many to search.
 const DICOMSeriesInfo* referencedImagesNear(vtkDICOMMetaData* meta, const std::string& file,
   const std::vector<DICOMSeriesInfo>& imageSeries, DICOMSeriesInfo& beside, bool* crowded = nullptr)
@@ -359,20 +402,24 @@ const DICOMSeriesInfo* referencedImagesNear(vtkDICOMMetaData* meta, const std::s
   const std::vector<std::string> uids = referencedSeriesUIDs(meta);
   if (uids.empty())
     return nullptr;
-  for (const FolderBeside& folder : foldersBeside(vtksys::SystemTools::GetFilenamePath(file), crowded))
-  {
-    if (std::find(uids.begin(), uids.end(), folder.seriesUID) == uids.end())
-      continue;
-    std::vector<DICOMSeriesInfo> series;
-    std::string ignored;
-    if (!findDICOMSeries(folder.folder, series, ignored, nullptr, 1))
-      continue;
-    if (const DICOMSeriesInfo* images = referencedImages(meta, series))
+  const std::vector<FolderBeside> folders = foldersBeside(vtksys::SystemTools::GetFilenamePath(file), crowded);
+  const StudyKeys keys(meta);
+  for (const bool firstFileOfTheSeries : { true, false })
+    for (const FolderBeside& folder : folders)
     {
-      beside = *images;
-      return &beside;
+      const bool ofTheSeries = std::find(uids.begin(), uids.end(), folder.seriesUID) != uids.end();
+      if (firstFileOfTheSeries ? !ofTheSeries : (ofTheSeries || !keys.share(folder)))
+        continue;
+      std::vector<DICOMSeriesInfo> series;
+      std::string ignored;
+      if (!findDICOMSeries(folder.folder, series, ignored, nullptr, 1))
+        continue;
+      if (const DICOMSeriesInfo* images = referencedImages(meta, series))
+      {
+        beside = *images;
+        return &beside;
+      }
     }
-  }
   return nullptr;
 }
 
@@ -712,11 +759,16 @@ std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, 
   return found;
 }
 
-std::vector<StructureSetInfo> findDICOMStructureSetsBeside(const std::string& folder)
+std::vector<StructureSetInfo> findDICOMStructureSetsBeside(const std::string& folder, const std::string& imageFile)
 {
   std::vector<StructureSetInfo> found;
+  vtkNew<vtkDICOMMetaData> image;
+  std::string ignored;
+  if (!imageFile.empty())
+    readDICOMHeader(imageFile, image, ignored);
+  const StudyKeys keys(image);
   for (const FolderBeside& beside : foldersBeside(folder))
-    if (beside.modality == "RTSTRUCT")
+    if (beside.modality == "RTSTRUCT" || keys.share(beside))
     {
       const std::vector<StructureSetInfo> sets = findDICOMStructureSets(beside.folder, 1);
       found.insert(found.end(), sets.begin(), sets.end());

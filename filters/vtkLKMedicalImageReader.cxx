@@ -1100,9 +1100,9 @@ bool vtkLKMedicalImageReader::ReadVolume()
         // Beside the CT's own folder (a sub-folder of the one read, on a
         // CD); only those drawn on this series: the study's other sets are
         // not this CT's.
-        const std::string ctFolder =
-          vtksys::SystemTools::GetFilenamePath(series[static_cast<std::size_t>(chosen)].files.front());
-        for (const auto& set : lkvtk::findDICOMStructureSetsBeside(ctFolder.empty() ? "." : ctFolder))
+        const std::string& ctFile = series[static_cast<std::size_t>(chosen)].files.front();
+        const std::string ctFolder = vtksys::SystemTools::GetFilenamePath(ctFile);
+        for (const auto& set : lkvtk::findDICOMStructureSetsBeside(ctFolder.empty() ? "." : ctFolder, ctFile))
           if (set.drawnOn(uid) &&
             std::none_of(sets.begin(), sets.end(), [&](const auto& known) { return known.file == set.file; }))
           {

@@ -31,15 +31,17 @@ inline std::string seriesUIDOf(const std::string& file)
 /// Writes `image` as a DICOM CT series into `dir`, its files named by
 /// `pattern` (of the folder and the slice number, from 1), its data
 /// coordinates mapped to patient mm by `matrix` when one is given, and
-/// `description` as its SeriesDescription when one is given. Returns its
-/// SeriesInstanceUID.
+/// `description` as its SeriesDescription and `studyUID` as its
+/// StudyInstanceUID when given. Returns its SeriesInstanceUID.
 inline std::string writeCT(const std::string& dir, vtkImageData* image, vtkMatrix4x4* matrix = nullptr,
-  const char* pattern = "%s/ct_%03d.dcm", const char* description = nullptr)
+  const char* pattern = "%s/ct_%03d.dcm", const char* description = nullptr, const char* studyUID = nullptr)
 {
   vtkNew<vtkDICOMCTGenerator> generator;
   vtkNew<vtkDICOMMetaData> meta;
   if (description)
     meta->Set(DC::SeriesDescription, description);
+  if (studyUID)
+    meta->Set(DC::StudyInstanceUID, studyUID);
   vtkNew<vtkDICOMWriter> writer;
   writer->SetInputData(image);
   writer->SetGenerator(generator);

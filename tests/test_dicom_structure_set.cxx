@@ -74,14 +74,16 @@ std::string tempFolder(const std::string& name)
 /// `pointCount` (when not 0) is written as every contour's
 /// NumberOfContourPoints instead of the true one; `unlisted` adds contours
 /// of an ROI number the list lacks; `contourText` replaces every contour's
-/// ContourData.
+/// ContourData; `studyUID` (when given) is the set's study and the one it
+/// references, as a planning system writes a set into its CT's study.
 void writeStructureSet(const std::string& file, const std::vector<RoiSpec>& rois, const std::string& seriesUID,
-  int pointCount = 0, int unlisted = 0, const char* contourText = nullptr)
+  int pointCount = 0, int unlisted = 0, const char* contourText = nullptr, const std::string& studyUID = std::string())
 {
+  const std::string setStudy = studyUID.empty() ? vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID) : studyUID;
   vtkNew<vtkDICOMMetaData> meta;
   meta->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.481.3"); // RT Structure Set Storage
   meta->Set(DC::SOPInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SOPInstanceUID));
-  meta->Set(DC::StudyInstanceUID, vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID));
+  meta->Set(DC::StudyInstanceUID, setStudy);
   meta->Set(DC::SeriesInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID));
   meta->Set(DC::Modality, "RTSTRUCT");
   meta->Set(DC::PatientID, "rtstruct");
@@ -90,7 +92,7 @@ void writeStructureSet(const std::string& file, const std::vector<RoiSpec>& rois
   vtkDICOMItem series, study, frame;
   series.Set(DC::SeriesInstanceUID, seriesUID);
   study.Set(DC::ReferencedSOPClassUID, "1.2.840.10008.3.1.2.3.1");
-  study.Set(DC::ReferencedSOPInstanceUID, vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID));
+  study.Set(DC::ReferencedSOPInstanceUID, studyUID.empty() ? vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID) : setStudy);
   study.Set(DC::RTReferencedSeriesSequence, vtkDICOMSequence(series));
   frame.Set(DC::FrameOfReferenceUID, frameUID);
   frame.Set(DC::RTReferencedStudySequence, vtkDICOMSequence(study));
@@ -186,8 +188,10 @@ std::vector<RoiSpec> plan()
   return { body, mandible, canal, isocentre };
 }
 
-/// 40 x 40 x 12 voxels of 1 x 1 x 2 mm from (-20, -20, -10), every one 0 HU.
-std::string writeSmallCT(const std::string& dir)
+/// 40 x 40 x 12 voxels of 1 x 1 x 2 mm from (-20, -20, -10), every one 0 HU,
+/// its files named by `pattern` (see writeCT), in the study `studyUID` when
+/// one is given.
+std::string writeSmallCT(const std::string& dir, const char* pattern = "%s/ct_%03d.dcm", const char* studyUID = nullptr)
 {
   vtkNew<vtkImageData> ct;
   ct->SetDimensions(40, 40, 12);
@@ -198,7 +202,7 @@ std::string writeSmallCT(const std::string& dir)
   m->SetElement(0, 3, -20.0);
   m->SetElement(1, 3, -20.0);
   m->SetElement(2, 3, -10.0);
-  return writeCT(dir, ct, m);
+  return writeCT(dir, ct, m, pattern, nullptr, studyUID);
 }
 
 void expectThePlansVoxels(vtkLKMedicalImageReader* reader)
@@ -420,6 +424,64 @@ TEST(DicomStructureSet, ASetAndItsCTInFoldersSideBySideFindEachOther)
                                             "their own"),
     std::string::npos)
     << crowdedRec.warningMessages;
+}
+
+TEST(DicomStructureSet, ASetAndItsCTInFoldersThatHoldOtherSeriesFirstFindEachOther)
+{
+  // A study exported with its images in one folder and its RT objects in
+  // another: a scout series' files come first in the one, a dose's in the
+  // other, so neither folder's first file is what is looked for.
+  RoiSpec mandible{ 5, "Mandible", {} }; // on every other slice, as above
+  for (int k = 2; k <= 8; k += 2)
+    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
+  const std::string study = tempFolder("rtstruct_mixed");
+  vtksys::SystemTools::MakeDirectory(study + "/IMAGES");
+  vtksys::SystemTools::MakeDirectory(study + "/RT");
+  vtksys::SystemTools::MakeDirectory(study + "/OTHER");
+  const std::string studyUID = vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID);
+  const std::string scoutUID = writeSmallCT(study + "/IMAGES", "%s/a_scout_%03d.dcm", studyUID.c_str());
+  const std::string uid = writeSmallCT(study + "/IMAGES", "%s/ct_%03d.dcm", studyUID.c_str());
+  ASSERT_NE(scoutUID, uid);
+  // Another study's folder: not searched beyond its first file.
+  writeSmallCT(study + "/OTHER", "%s/a_%03d.dcm");
+  writeStructureSet(study + "/OTHER/rs.dcm", { mandible }, uid);
+  {
+    vtkNew<vtkDICOMMetaData> dose;
+    dose->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.481.2"); // RT Dose Storage
+    dose->Set(DC::SOPInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SOPInstanceUID));
+    dose->Set(DC::StudyInstanceUID, studyUID);
+    dose->Set(DC::SeriesInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID));
+    dose->Set(DC::Modality, "RTDOSE");
+    vtkNew<vtkDICOMCompiler> compiler;
+    compiler->SetFileName((study + "/RT/RD.dcm").c_str());
+    compiler->SetMetaData(dose);
+    compiler->WriteHeader();
+    compiler->Close();
+    ASSERT_EQ(compiler->GetErrorCode(), 0u);
+  }
+  const std::string set = study + "/RT/RS.dcm";
+  writeStructureSet(set, { mandible }, uid, 0, 0, nullptr, studyUID);
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName(set.c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[2], 2.0); // the CT's slices
+  EXPECT_EQ(count(reader->GetOutput(), 0, 5), 560);
+  EXPECT_EQ(seriesUIDOf(reader->GetReferenceImageFileName()), uid);
+  EXPECT_EQ(rec.warningMessages.find("grid of their own"), std::string::npos) << rec.warningMessages;
+
+  // The CT, by one of its files, finds the set among the study's RT
+  // objects, and not the other study's.
+  vtkNew<vtkLKMedicalImageReader> ctReader;
+  lktest::ErrorRecorder ctRec(ctReader);
+  ctReader->SetFileName((study + "/IMAGES/ct_001.dcm").c_str());
+  ctReader->Update();
+  ASSERT_EQ(ctRec.errors, 0) << ctRec.messages;
+  ASSERT_EQ(ctReader->GetNumberOfStructureSets(), 1) << ctRec.warningMessages;
+  EXPECT_EQ(std::string(ctReader->GetStructureSetFileName(0)), set);
+  EXPECT_STREQ(ctReader->GetStructureSetROIName(0, 0), "Mandible");
 }
 
 TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
