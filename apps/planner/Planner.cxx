@@ -131,7 +131,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | r: reset\n"
                     "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius\n"
-                    "z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
+                    "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
 {
@@ -651,6 +651,7 @@ void Planner::rebuild()
     marker->PickableOff(); // a drag that starts in it picks the bone under it
   }
   applyDeformations();
+  resolveNames();
   cutSummary = summaryOfCut();
   if (lattices.size() > pieces.size())
     lattices.resize(pieces.size()); // pieces the cut no longer makes
@@ -800,6 +801,78 @@ std::vector<std::vector<double>> Planner::pieceDistances(const std::vector<std::
   return distances;
 }
 
+void Planner::resolveNames()
+{
+  if (session.names.empty())
+  {
+    nameTargets.clear();
+    namesKey.clear();
+    return;
+  }
+  std::string key = cut.key + "|" + std::to_string(cut.pieces.size());
+  for (const PieceName& n : session.names)
+    key += "|" + std::to_string(n.at[0]) + "," + std::to_string(n.at[1]) + "," + std::to_string(n.at[2]);
+  if (key != namesKey || nameTargets.size() != session.names.size())
+  {
+    std::vector<std::array<double, 3>> points;
+    for (const PieceName& n : session.names)
+      points.push_back(n.at);
+    const std::vector<std::vector<double>> distances = pieceDistances(points);
+    nameTargets.assign(session.names.size(), -1);
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      const auto best = std::min_element(distances[i].begin(), distances[i].end());
+      if (best != distances[i].end() && *best < VTK_DOUBLE_MAX)
+        nameTargets[i] = static_cast<int>(best - distances[i].begin());
+    }
+    namesKey = key;
+  }
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p)
+  {
+    const std::string name = pieceName(p);
+    for (std::size_t q = p + 1; q < cut.pieces.size() && !name.empty(); ++q)
+      if (pieceName(q) == name)
+        addLine(message, "piece " + std::to_string(p) + " and piece " + std::to_string(q) + " are both named '" + name +
+            "' (the cut numbered them anew): name one again (t)");
+  }
+}
+
+std::string Planner::pieceName(std::size_t p) const
+{
+  for (std::size_t i = nameTargets.size(); i-- > 0;)
+    if (nameTargets[i] == static_cast<int>(p))
+      return session.names[i].name;
+  return std::string();
+}
+
+std::string Planner::pieceLabel(std::size_t p) const
+{
+  const std::string name = pieceName(p);
+  return "piece " + std::to_string(p) + (name.empty() ? "" : " '" + name + "'");
+}
+
+bool Planner::namePiece(std::size_t p, const std::array<double, 3>& at, const std::string& name, std::string& why)
+{
+  why.clear();
+  if (!name.empty() && !validPieceName(name, why))
+    return false;
+  for (std::size_t q = 0; q < cut.pieces.size() && !name.empty(); ++q)
+    if (q != p && pieceName(q) == name)
+    {
+      why = "piece " + std::to_string(q) + " is named '" + name + "' already";
+      return false;
+    }
+  remember();
+  std::vector<PieceName> kept;
+  for (std::size_t i = 0; i < session.names.size(); ++i)
+    if (i >= nameTargets.size() || nameTargets[i] != static_cast<int>(p))
+      kept.push_back(session.names[i]);
+  if (!name.empty())
+    kept.push_back({ name, at });
+  session.names = kept;
+  return true;
+}
+
 void Planner::followPieces()
 {
   const bool segmentFollows = session.segment >= 0 && session.segmentAnchored && cut.pieces.size() >= 2;
@@ -887,7 +960,8 @@ std::string Planner::summaryOfCut()
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     const lkapp::PieceFacts& f = factsOf(p);
-    s << (p ? "," : "") << " " << p << ": ";
+    const std::string name = pieceName(p);
+    s << (p ? "," : "") << " " << p << (name.empty() ? "" : " '" + name + "'") << ": ";
     if (f.openEdges == 0)
       s << f.volume / 1000.0 << " ml";
     else
@@ -1041,6 +1115,11 @@ void Planner::updateStatus()
   }
   if (!session.deformations.empty())
     s << " | deformations: " << session.deformations.size();
+  if (naming == 1)
+    s << " | NAME: click a piece (Escape: stop)";
+  else if (naming == 2)
+    s << " | NAME " << pieceLabel(static_cast<std::size_t>(namingPiece)) << ": " << namingText
+      << "_ (Return keeps it, an empty name takes it away; Escape: stop)";
   if (moving)
     s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
   else if (hasSegment())
@@ -1116,7 +1195,7 @@ std::string Planner::planText()
   }
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
-    std::snprintf(line, sizeof line, "piece %zu: %lld points, %lld faces%s", p,
+    std::snprintf(line, sizeof line, "%s: %lld points, %lld faces%s", pieceLabel(p).c_str(),
       static_cast<long long>(pieces[p]->GetNumberOfPoints()), static_cast<long long>(pieces[p]->GetNumberOfPolys()),
       lkapp::pieceFactsText(factsOf(p)).c_str());
     text += line;
@@ -1222,7 +1301,9 @@ std::string Planner::exportStructureSet(
   std::vector<std::string> roiNames, leftOut;
   for (std::size_t p = 0; p < exported.size(); ++p)
   {
-    const std::string name = "piece " + std::to_string(p) + (static_cast<int>(p) == movedPiece() ? " (moved)" : "");
+    const std::string given = pieceName(p);
+    const std::string name =
+      (given.empty() ? "piece " + std::to_string(p) : given) + (static_cast<int>(p) == movedPiece() ? " (moved)" : "");
     if (factsOf(p).openEdges > 0 || exported[p]->GetNumberOfPolys() == 0)
     {
       leftOut.push_back(name);

@@ -269,6 +269,27 @@ public:
   /// The session's deformations applied to the cut pieces, in order.
   void applyDeformations();
 
+  /// The piece each of the session's names names (-1: none, without
+  /// pieces), found again when the cut or the names change (the nearest
+  /// piece to its point); a name on two pieces gets a message.
+  std::vector<int> nameTargets;
+  std::string namesKey; ///< the cut and names nameTargets was found for
+  void resolveNames();
+  /// Piece p's name (the last one on it), or empty.
+  std::string pieceName(std::size_t p) const;
+  /// "piece 1 'distal segment'", or "piece 1" without a name.
+  std::string pieceLabel(std::size_t p) const;
+  /// Names piece p (at: the point picked on it) or, with an empty name,
+  /// takes its name away; the earlier names on it go. False, with `why`,
+  /// for a name validPieceName refuses or another piece has.
+  bool namePiece(std::size_t p, const std::array<double, 3>& at, const std::string& name, std::string& why);
+  /// Naming in the window (t): 1 while a click picks the piece, 2 while its
+  /// name is typed (Return keeps it, Escape drops it).
+  int naming = 0;
+  int namingPiece = -1;
+  std::array<double, 3> namingAt{ 0, 0, 0 };
+  std::string namingText;
+
   /// Re-runs the plan from the bone: strokes, cut (kept while unchanged),
   /// deformations, lattices, colours.
   void rebuild();

@@ -120,6 +120,13 @@ std::string sessionText(const Session& s)
       jd["falloff"] = d.falloff;
     root["deformations"].append(jd);
   }
+  for (const PieceName& n : s.names)
+  {
+    Json::Value jn;
+    jn["name"] = n.name;
+    jn["at"] = triple(n.at);
+    root["names"].append(jn);
+  }
   if (s.surface.given)
   {
     root["surface"]["iso"] = s.surface.iso;
@@ -162,6 +169,26 @@ std::string unsavedSessionPath(const std::string& sessionPath)
   return p.folder + p.stem + "-unsaved" + (p.extension.empty() ? ".json" : p.extension);
 }
 
+bool validPieceName(const std::string& name, std::string& why)
+{
+  if (name.empty())
+    why = "a piece's name is empty";
+  else if (name.size() > kPieceNameLength)
+    why = "the piece name '" + name.substr(0, kPieceNameLength) + "...' is longer than " +
+      std::to_string(kPieceNameLength) + " characters";
+  else if (name.front() == ' ' || name.back() == ' ')
+    why = "the piece name '" + name + "' starts or ends with a space";
+  else
+    for (const char c : name)
+      if (c < ' ' || c > '~' || c == '\\')
+      {
+        why = "the piece name '" + name + "' holds a character other than the letters, digits, spaces and " +
+          "punctuation of ASCII (or a backslash, which DICOM reads as a separator)";
+        break;
+      }
+  return why.empty();
+}
+
 namespace
 {
 /// Notes the members of `object` that are not in `known` (a misspelt field,
@@ -184,8 +211,8 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "segment", "deformations", "surface",
-      "input" },
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "segment", "deformations", "names",
+      "surface", "input" },
     session, notes);
   const Json::Value& strokes = root["strokes"];
   if (!strokes.isNull() && !strokes.isArray())
@@ -334,6 +361,31 @@ bool readSession(
       }
     }
     s.deformations.push_back(d);
+  }
+  const Json::Value& names = root["names"];
+  if (!names.isNull() && !names.isArray())
+  {
+    error = session + ": \"names\" must be a list";
+    return false;
+  }
+  for (Json::ArrayIndex i = 0; names.isArray() && i < names.size(); ++i)
+  {
+    const Json::Value& jn = names[i];
+    PieceName n;
+    const std::string where = "name " + std::to_string(i) + " in '" + path + "'";
+    noteUnknownMembers(jn, { "name", "at" }, where, notes);
+    if (!jn.isObject() || !jsonString(jn["name"], n.name) || !jsonNumbers(jn["at"], n.at))
+    {
+      error = where + " needs a name and a point \"at\" [x, y, z] on its piece";
+      return false;
+    }
+    std::string why;
+    if (!validPieceName(n.name, why))
+    {
+      error = where + ": " + why;
+      return false;
+    }
+    s.names.push_back(n);
   }
   if (root.isMember("surface"))
   {

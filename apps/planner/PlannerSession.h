@@ -20,6 +20,8 @@
 //                     "normal": [x, y, z], "amount": k,   (bump, box)
 //                     "falloff": a >= 0,                  (bump; ln(100) / r^2)
 //                     "iterations": 1 to 100}, ...]       (smooth; 3)
+//   "names": [{"name": text, "at": [x, y, z]}, ...]   names given to pieces (see
+//                                                     PieceName)
 //   "surface": {"iso": HU, "seed": [x, y, z],
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
@@ -80,6 +82,27 @@ struct Deformation
   int iterations = 3;
 };
 
+/// A name a surgeon gave a piece (`t` in the window), for the export: the
+/// structure set's ROI and the plan. It names the piece whose surface is
+/// nearest `at` (a point picked on it, before deformations and the
+/// segment's move), so it stays with that piece when the cut numbers the
+/// pieces anew; of two names on one piece the later holds.
+struct PieceName
+{
+  std::string name;
+  std::array<double, 3> at{ 0, 0, 0 };
+};
+
+/// The longest name: a DICOM ROIName (LO) holds 64 characters, and the moved
+/// segment's gets " (moved)".
+constexpr std::size_t kPieceNameLength = 56;
+
+/// Whether `name` can name a piece: 1 to kPieceNameLength printable ASCII
+/// characters (what every DICOM character set spells alike), no backslash
+/// (DICOM's value separator), not starting or ending with a space; else
+/// `why` says what is wrong.
+bool validPieceName(const std::string& name, std::string& why);
+
 struct Session
 {
   std::vector<Stroke> strokes;
@@ -99,6 +122,7 @@ struct Session
   std::array<double, 3> segmentAnchor{ 0, 0, 0 };
   /// Applied in order to the pieces after the cut, before the lattice.
   std::vector<Deformation> deformations;
+  std::vector<PieceName> names;
   /// How a CT's bone surface was made (saved with the session, so that its
   /// strokes find the same surface on replay): the threshold, the component
   /// at a seed or the largest, the DICOM series.

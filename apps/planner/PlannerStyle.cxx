@@ -355,6 +355,8 @@ void PlannerStyle::endSaw()
 
 void PlannerStyle::OnLeftButtonDown()
 {
+  if (planner->naming == 1)
+    return pickPieceToName();
   if (planner->tool != NO_TOOL)
     return startDeform();
   if (planner->moving && planner->hasSegment())
@@ -436,14 +438,89 @@ void PlannerStyle::OnRightButtonUp()
     this->ReleaseFocus();
 }
 
+void PlannerStyle::pickPieceToName()
+{
+  const int* pos = this->Interactor->GetEventPosition();
+  std::array<double, 3> point{}, normal{};
+  const int piece = pickPiece(pos[0], pos[1], point, normal);
+  if (piece < 0)
+    planner->message = "no piece there: click a piece to name it (Escape: stop naming)";
+  else
+  {
+    planner->naming = 2;
+    planner->namingPiece = piece;
+    planner->namingAt = point;
+    planner->namingText = planner->pieceName(static_cast<std::size_t>(piece));
+    planner->message.clear();
+  }
+  planner->updateStatus();
+  this->Interactor->Render();
+}
+
+void PlannerStyle::typeName(const std::string& key)
+{
+  Planner& p = *planner;
+  if (key == "Escape" || (p.naming == 1 && key == "t"))
+    p.naming = 0;
+  else if (p.naming == 1)
+    // A click that missed leaves the keys of the name to come: none of them
+    // is a command (e exports, q quits).
+    p.message = "click the piece to name first (Escape: stop naming)";
+  else if (key == "Return" || key == "KP_Enter")
+  {
+    std::string why;
+    if (p.namePiece(static_cast<std::size_t>(p.namingPiece), p.namingAt, p.namingText, why))
+    {
+      p.notice = p.namingText.empty() ? "piece " + std::to_string(p.namingPiece) + " has no name"
+                                      : "named piece " + std::to_string(p.namingPiece) + " '" + p.namingText + "'";
+      p.naming = 0;
+      p.rebuild();
+    }
+    else
+      p.message = why;
+  }
+  else if (key == "BackSpace")
+  {
+    if (!p.namingText.empty())
+      p.namingText.pop_back();
+  }
+  else
+  {
+    // Printable ASCII only: the name goes into a DICOM ROI name. An event
+    // log cannot give a space as a key code, so its key symbol counts.
+    const char c = key == "space" ? ' ' : this->Interactor->GetKeyCode();
+    if (c >= ' ' && c <= '~' && c != '\\' && p.namingText.size() < kPieceNameLength)
+      p.namingText += c;
+  }
+  p.updateStatus();
+  this->Interactor->Render();
+}
+
 void PlannerStyle::OnChar()
 {
   const std::string key = this->Interactor->GetKeySym() ? this->Interactor->GetKeySym() : "";
+  // While a name is typed every key is a letter of it (q does not quit).
+  if (planner->naming != 0)
+    return typeName(key);
   Session& s = planner->session;
   std::string error;
   bool rebuild = true;
   planner->notice.clear();
-  if (key == "d" || key == "p")
+  if (key == "t")
+  {
+    rebuild = false;
+    if (planner->pieces.empty())
+      planner->message = "no piece to name";
+    else
+    {
+      planner->naming = 1;
+      planner->drawing = false;
+      planner->sawing = false;
+      planner->moving = false;
+      planner->tool = NO_TOOL;
+    }
+  }
+  else if (key == "d" || key == "p")
   {
     bool& on = key == "d" ? planner->drawing : planner->sawing;
     on = !on;

@@ -77,6 +77,11 @@ public:
   /// when no piece is there.
   int pickPiece(int x, int y, std::array<double, 3>& point, std::array<double, 3>& normal);
 
+  /// Naming (t): a click picks the piece, then the keys type its name.
+  void pickPieceToName();
+  /// A key while naming: every key is the naming's (Escape stops it).
+  void typeName(const std::string& key);
+
   void startDeform();
 
   void dragDeform();
