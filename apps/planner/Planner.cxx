@@ -40,6 +40,7 @@
 #include <vtkStaticPointLocator.h>
 #include <vtkMath.h>
 #include <vtkProperty.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
@@ -159,6 +160,17 @@ vtkSmartPointer<vtkMatrix4x4> Planner::segmentMatrix() const
 
 void Planner::placeSegment(const std::array<double, 16>& matrix)
 {
+  for (const NameCaption& c : nameCaptions)
+  {
+    double at[4] = { c.at[0], c.at[1], c.at[2], 1.0 };
+    if (c.piece == movedPiece())
+    {
+      vtkNew<vtkMatrix4x4> m;
+      m->DeepCopy(matrix.data());
+      m->MultiplyPoint(at, at);
+    }
+    c.actor->SetAttachmentPoint(at);
+  }
   for (std::size_t p = 0; p < pieceActors.size(); ++p)
     for (auto& a : pieceActors[p])
     {
@@ -704,6 +716,7 @@ void Planner::rebuild()
   else if (session.segment >= static_cast<int>(pieces.size()))
     addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
       std::to_string(pieces.size()) + " piece(s)");
+  showNames();
   placeSegment(session.segmentMatrix);
   if (std::string error; !keepUnsaved(error))
     addLine(message, "the changes not saved could not be kept (--session sets where): " + error);
@@ -837,12 +850,54 @@ void Planner::resolveNames()
   }
 }
 
-std::string Planner::pieceName(std::size_t p) const
+int Planner::nameIndex(std::size_t p) const
 {
   for (std::size_t i = nameTargets.size(); i-- > 0;)
     if (nameTargets[i] == static_cast<int>(p))
-      return session.names[i].name;
-  return std::string();
+      return static_cast<int>(i);
+  return -1;
+}
+
+std::string Planner::pieceName(std::size_t p) const
+{
+  const int i = nameIndex(p);
+  return i < 0 ? std::string() : session.names[static_cast<std::size_t>(i)].name;
+}
+
+void Planner::showNames()
+{
+  for (const NameCaption& c : nameCaptions)
+    renderer->RemoveViewProp(c.actor);
+  nameCaptions.clear();
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    const int i = nameIndex(p);
+    if (i < 0)
+      continue;
+    const std::string& name = session.names[static_cast<std::size_t>(i)].name;
+    auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
+    caption->SetCaption(name.c_str());
+    caption->BorderOff();
+    caption->LeaderOn();
+    caption->ThreeDimensionalLeaderOff();
+    caption->GetTextActor()->SetTextScaleModeToNone();
+    vtkTextProperty* text = caption->GetCaptionTextProperty();
+    text->SetFontSize(15);
+    text->SetColor(0.1, 0.1, 0.4);
+    text->BoldOn();
+    text->ItalicOff();
+    text->ShadowOff();
+    text->SetJustificationToLeft();
+    text->SetBackgroundColor(1.0, 1.0, 1.0); // readable over the Metro colours
+    text->SetBackgroundOpacity(0.75);
+    caption->GetProperty()->SetColor(0.1, 0.1, 0.4); // the leader
+    caption->SetPosition(20, 20); // pixels from the point
+    caption->SetWidth(0.01 * static_cast<double>(name.size() + 2));
+    caption->SetHeight(0.04);
+    caption->PickableOff();
+    renderer->AddViewProp(caption);
+    nameCaptions.push_back({ static_cast<int>(p), session.names[static_cast<std::size_t>(i)].at, caption });
+  }
 }
 
 std::string Planner::pieceLabel(std::size_t p) const

@@ -22,6 +22,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkAnnotatedCubeActor.h>
 #include <vtkAxesActor.h>
+#include <vtkCaptionActor2D.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkSmartPointer.h>
@@ -275,8 +276,20 @@ public:
   std::vector<int> nameTargets;
   std::string namesKey; ///< the cut and names nameTargets was found for
   void resolveNames();
-  /// Piece p's name (the last one on it), or empty.
+  /// The session's name of piece p (the last one on it), or -1.
+  int nameIndex(std::size_t p) const;
+  /// Piece p's name, or empty.
   std::string pieceName(std::size_t p) const;
+  /// Each named piece's name in the view, at the point it was named at
+  /// (moved with the segment).
+  struct NameCaption
+  {
+    int piece = -1;
+    std::array<double, 3> at{ 0, 0, 0 };
+    vtkSmartPointer<vtkCaptionActor2D> actor;
+  };
+  std::vector<NameCaption> nameCaptions;
+  void showNames();
   /// "piece 1 'distal segment'", or "piece 1" without a name.
   std::string pieceLabel(std::size_t p) const;
   /// Names piece p (at: the point picked on it) or, with an empty name,
