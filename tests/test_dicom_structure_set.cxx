@@ -519,6 +519,45 @@ TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
   EXPECT_LT(b[1] - b[0], 10.0);
 }
 
+TEST(DicomStructureSet, WithoutItsCTFineContoursGetFinerPixels)
+{
+  // A wall 0.8 mm thin, contoured with a point every 0.4 mm (as a contour
+  // drawn on a 0.5 mm CT is): on 1 mm pixels no pixel centre lies inside
+  // it, and it would vanish. Its grid gets 0.5 mm pixels.
+  auto densely = [](double x0, double x1, double y0, double y1, double z) {
+    Polygon polygon;
+    const double step = 0.4;
+    const P3 corners[4] = { { x0, y0, z }, { x1, y0, z }, { x1, y1, z }, { x0, y1, z } };
+    for (int k = 0; k < 4; ++k)
+    {
+      const P3& a = corners[k];
+      const P3& b = corners[(k + 1) % 4];
+      const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      const int n = static_cast<int>(std::ceil(length / step - 1e-9));
+      for (int i = 0; i < n; ++i)
+        polygon.push_back({ a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n, z });
+    }
+    return polygon;
+  };
+  RoiSpec wall{ 1, "Orbital wall", {} };
+  for (double z : { 0.0, 2.0, 4.0 })
+    wall.contours.push_back(densely(0.1, 0.9, 0.1, 19.9, z));
+  const std::string dir = tempFolder("rtstruct_fine");
+  writeStructureSet(dir + "/rs.dcm", { wall }, "1.2.3.4.5.6.7.8.10");
+  vtkNew<vtkLKMedicalImageReader> reader;
+  lktest::ErrorRecorder rec(reader);
+  reader->SetFileName((dir + "/rs.dcm").c_str());
+  reader->Update();
+  ASSERT_EQ(rec.errors, 0) << rec.messages;
+  EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[0], 0.5);
+  EXPECT_DOUBLE_EQ(reader->GetOutput()->GetSpacing()[2], 2.0);
+  // One column of pixel centres (x = 0.5), 39 rows (y = 0.5 to 19.5), 3 slices.
+  EXPECT_EQ(count(reader->GetOutput(), 0, 1), 117);
+  EXPECT_NE(rec.warningMessages.find("its ROIs are filled on a grid of their own, 0.5 mm pixels and 2 mm slices"),
+    std::string::npos)
+    << rec.warningMessages;
+}
+
 TEST(DicomStructureSet, SlicesBetweenContoursAreInterpolatedAndUnevenPlanesWarned)
 {
   // The parotid contoured every 2 mm, a node 1 mm above it and once more
