@@ -193,8 +193,8 @@ std::string Planner::segmentText() const
   const double trace = m[0] + m[5] + m[10];
   const double angle = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979;
   char line[200];
-  std::snprintf(line, sizeof line, "segment: piece %d moved, translation %.2f %.2f %.2f mm, rotation %.2f deg\n",
-    session.segment, m[3], m[7], m[11], angle);
+  std::snprintf(line, sizeof line, "segment: %s moved, translation %.2f %.2f %.2f mm, rotation %.2f deg\n",
+    pieceLabel(static_cast<std::size_t>(session.segment)).c_str(), m[3], m[7], m[11], angle);
   return line + matrixText(m);
 }
 
@@ -1178,7 +1178,8 @@ void Planner::updateStatus()
   if (moving)
     s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
   else if (hasSegment())
-    s << " | segment: piece " << session.segment << (isIdentity(session.segmentMatrix) ? "" : " (moved)");
+    s << " | segment: " << pieceLabel(static_cast<std::size_t>(session.segment))
+      << (isIdentity(session.segmentMatrix) ? "" : " (moved)");
   if (!notice.empty())
     s << " | " << notice;
   if (!cutSummary.empty())
