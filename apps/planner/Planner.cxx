@@ -917,6 +917,11 @@ bool Planner::namePiece(std::size_t p, const std::array<double, 3>& at, const st
       why = "piece " + std::to_string(q) + " is named '" + name + "' already";
       return false;
     }
+    else if (q != p && pieceName(q).empty() && name == "piece " + std::to_string(q))
+    {
+      why = "'" + name + "' is what piece " + std::to_string(q) + " goes by in the structure set";
+      return false;
+    }
   remember();
   std::vector<PieceName> kept;
   for (std::size_t i = 0; i < session.names.size(); ++i)
