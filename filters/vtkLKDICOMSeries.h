@@ -280,7 +280,7 @@ bool isDICOMStructureSet(const std::string& file);
 /// lattice, and its slices when they are evenly spaced and the contours lie
 /// on them; otherwise the contours' own frame and 1 mm pixels (or the slice
 /// spacing or the contours' median point spacing, when finer, down to 0.5 mm
-/// within 1e8 voxels), and slices on the contours' planes, spaced by the
+/// within 1e8 voxels, 1e9 over its ROIs), and slices on the contours' planes, spaced by the
 /// smallest gap between them. Two empty slices and pixels lie beyond the
 /// contours on each side. Slices an ROI skips between two of its contours
 /// (a gap of up to twice its usual contour spacing) are filled by

@@ -521,7 +521,7 @@ bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, bool crowd
     // 1 mm pixels, or finer where the contours are: the slice spacing, or
     // the contours' own point spacing (their median segment, about the
     // pixel of the CT they were drawn on), down to 0.5 mm, while the
-    // volume stays within 1e8 voxels. A 0.5 mm CT's thin bone (the orbits'
+    // volume stays within 1e8 voxels (1e9 over its ROIs). A 0.5 mm CT's thin bone (the orbits'
     // walls) is lost to 1 mm pixels; 0.25 mm would cost four times the
     // time and memory for little (NOTES, session 46).
     dx = h > 0.0 ? std::min(1.0, h) : 1.0;
@@ -546,8 +546,17 @@ bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, bool crowd
       const double spacing = std::max(0.5, segments[segments.size() / 2]);
       const double slices = h > 0.0 ? (distinct.back() - distinct.front()) / h + 1.0 : 1.0;
       const double area = (hi[0] - lo[0] + 2.0) * (hi[1] - lo[1] + 2.0);
-      while (spacing < dx && area / (0.25 * dx * dx) * slices <= 1.0e8)
-        dx = std::max(spacing, 0.5 * dx);
+      // Overlapping ROIs take a layer each: a radiotherapy set of 30 ROIs
+      // (a body, targets over organs) stays on 1 mm pixels.
+      const double layers = static_cast<double>(std::max<std::size_t>(1, rois.size()));
+      while (spacing < dx)
+      {
+        const double finer = std::max(spacing, 0.5 * dx);
+        const double voxels = area / (finer * finer) * slices;
+        if (voxels > 1.0e8 || voxels * layers > 1.0e9)
+          break;
+        dx = finer;
+      }
     }
     dy = dx;
     const std::vector<std::string> uids = referencedSeriesUIDs(meta);

@@ -519,26 +519,30 @@ TEST(DicomStructureSet, WithoutItsCTTheContoursMakeTheirOwnGrid)
   EXPECT_LT(b[1] - b[0], 10.0);
 }
 
+/// The rectangle [x0, x1] x [y0, y1] at height z with a point every 0.4 mm
+/// along its sides, as a contour traced on a 0.5 mm CT.
+Polygon densely(double x0, double x1, double y0, double y1, double z)
+{
+  Polygon polygon;
+  const double step = 0.4;
+  const P3 corners[4] = { { x0, y0, z }, { x1, y0, z }, { x1, y1, z }, { x0, y1, z } };
+  for (int k = 0; k < 4; ++k)
+  {
+    const P3& a = corners[k];
+    const P3& b = corners[(k + 1) % 4];
+    const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const int n = static_cast<int>(std::ceil(length / step - 1e-9));
+    for (int i = 0; i < n; ++i)
+      polygon.push_back({ a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n, z });
+  }
+  return polygon;
+}
+
 TEST(DicomStructureSet, WithoutItsCTFineContoursGetFinerPixels)
 {
   // A wall 0.8 mm thin, contoured with a point every 0.4 mm (as a contour
   // drawn on a 0.5 mm CT is): on 1 mm pixels no pixel centre lies inside
   // it, and it would vanish. Its grid gets 0.5 mm pixels.
-  auto densely = [](double x0, double x1, double y0, double y1, double z) {
-    Polygon polygon;
-    const double step = 0.4;
-    const P3 corners[4] = { { x0, y0, z }, { x1, y0, z }, { x1, y1, z }, { x0, y1, z } };
-    for (int k = 0; k < 4; ++k)
-    {
-      const P3& a = corners[k];
-      const P3& b = corners[(k + 1) % 4];
-      const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
-      const int n = static_cast<int>(std::ceil(length / step - 1e-9));
-      for (int i = 0; i < n; ++i)
-        polygon.push_back({ a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n, z });
-    }
-    return polygon;
-  };
   RoiSpec wall{ 1, "Orbital wall", {} };
   for (double z : { 0.0, 2.0, 4.0 })
     wall.contours.push_back(densely(0.1, 0.9, 0.1, 19.9, z));
@@ -556,6 +560,22 @@ TEST(DicomStructureSet, WithoutItsCTFineContoursGetFinerPixels)
   EXPECT_NE(rec.warningMessages.find("its ROIs are filled on a grid of their own, 0.5 mm pixels and 2 mm slices"),
     std::string::npos)
     << rec.warningMessages;
+
+  // The same wall among 14 ROIs over 2.5 m: 0.5 mm pixels would be 7.5e7
+  // voxels, over 1e9 for 14 layers, so the pixels stay 1 mm.
+  RoiSpec body{ 2, "Body", {} };
+  std::vector<RoiSpec> many{ wall, body };
+  for (double z : { 0.0, 2.0, 4.0 })
+    many[1].contours.push_back(rectangle(-1250.0, 1250.0, -1250.0, 1250.0, z));
+  for (int r = 0; r < 12; ++r)
+    many.push_back({ 3 + r, "Marker " + std::to_string(r), { rectangle(-1000.0 + 20 * r, -995.0 + 20 * r, 0, 5, 0) } });
+  writeStructureSet(dir + "/many.dcm", many, "1.2.3.4.5.6.7.8.10");
+  vtkNew<vtkLKMedicalImageReader> manyReader;
+  lktest::ErrorRecorder manyRec(manyReader);
+  manyReader->SetFileName((dir + "/many.dcm").c_str());
+  manyReader->Update();
+  ASSERT_EQ(manyRec.errors, 0) << manyRec.messages;
+  EXPECT_DOUBLE_EQ(manyReader->GetOutput()->GetSpacing()[0], 1.0);
 }
 
 TEST(DicomStructureSet, SlicesBetweenContoursAreInterpolatedAndUnevenPlanesWarned)
