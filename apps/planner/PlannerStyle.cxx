@@ -468,6 +468,10 @@ void PlannerStyle::typeName(const std::string& key)
     p.message = "click the piece to name first (Escape: stop naming)";
   else if (key == "Return" || key == "KP_Enter")
   {
+    // Spaces around the name are a slip of the thumb, not part of it.
+    const auto first = p.namingText.find_first_not_of(' ');
+    p.namingText = first == std::string::npos ? std::string()
+                                              : p.namingText.substr(first, p.namingText.find_last_not_of(' ') - first + 1);
     std::string why;
     if (p.namePiece(static_cast<std::size_t>(p.namingPiece), p.namingAt, p.namingText, why))
     {

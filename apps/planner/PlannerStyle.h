@@ -4,7 +4,8 @@
 /// bone), moving the cut segment (drag; shift+drag rotates), the deformation
 /// tools (bump, box, smoothing brush: press and drag up or down), and the
 /// key commands (kHelp); a saw line (p: a straight drag across the bone,
-/// which cuts it in the plane that holds the line and the eye). While the left button draws, moves or deforms, the
+/// which cuts it in the plane that holds the line and the eye), naming a
+/// piece (t: a click on it, then its name typed, Return). While the left button draws, moves or deforms, the
 /// right button turns the view (a line around a bone is drawn in parts, the
 /// view turned between them; Planner::addStroke). Each change goes to the Planner's session, with an
 /// undo snapshot, and the Planner rebuilds what it changes.
