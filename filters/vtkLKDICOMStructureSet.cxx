@@ -503,6 +503,20 @@ bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, bool crowd
     }
   }
 
+  // The contours' extent in the frame, from the pixel lattice's point.
+  double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
+  double hi[2] = { std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest() };
+  for (const ROI& roi : rois)
+    for (const Contour& c : roi.contours)
+      for (const V3& p : c.points)
+      {
+        const V3 d = sub(p, lattice);
+        lo[0] = std::min(lo[0], dot(frame.r, d));
+        hi[0] = std::max(hi[0], dot(frame.r, d));
+        lo[1] = std::min(lo[1], dot(frame.c, d));
+        hi[1] = std::max(hi[1], dot(frame.c, d));
+      }
+
   // The slices: the contours' planes, spaced by the smallest gap.
   std::vector<double> planes;
   for (const ROI& roi : rois)
@@ -520,25 +534,18 @@ bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, bool crowd
   {
     // 1 mm pixels, or finer where the contours are: the slice spacing, or
     // the contours' own point spacing (their median segment, about the
-    // pixel of the CT they were drawn on), down to 0.5 mm, while the
-    // volume stays within 1e8 voxels (1e9 over its ROIs). A 0.5 mm CT's thin bone (the orbits'
-    // walls) is lost to 1 mm pixels; 0.25 mm would cost four times the
-    // time and memory for little (NOTES, session 46).
+    // pixel of the CT they were drawn on), down to 0.5 mm, while the volume
+    // stays within 1e8 voxels (1e9 over its ROIs). A 0.5 mm CT's thin bone
+    // (the orbits' walls) is lost to 1 mm pixels; 0.25 mm would cost four
+    // times the time and memory for little (NOTES, session 46).
     dx = h > 0.0 ? std::min(1.0, h) : 1.0;
     std::vector<double> segments;
-    double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
-    double hi[2] = { std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest() };
     for (const ROI& roi : rois)
       for (const Contour& c : roi.contours)
         for (std::size_t i = 0; i < c.points.size(); ++i)
         {
-          const V3& p = c.points[i];
-          segments.push_back(std::sqrt(dot(sub(c.points[(i + 1) % c.points.size()], p),
-            sub(c.points[(i + 1) % c.points.size()], p))));
-          lo[0] = std::min(lo[0], dot(frame.r, p));
-          hi[0] = std::max(hi[0], dot(frame.r, p));
-          lo[1] = std::min(lo[1], dot(frame.c, p));
-          hi[1] = std::max(hi[1], dot(frame.c, p));
+          const V3 d = sub(c.points[(i + 1) % c.points.size()], c.points[i]);
+          segments.push_back(std::sqrt(dot(d, d)));
         }
     if (!segments.empty())
     {
@@ -614,19 +621,7 @@ bool placeGrid(vtkDICOMMetaData* meta, const DICOMSeriesInfo* images, bool crowd
     notes.push_back("the contours' planes are not evenly spaced: some were moved up to " + mm(moved) +
       " onto the slices of " + mm(h));
 
-  // The pixels: the contours' extent in the frame, on the CT's pixel lattice.
-  double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
-  double hi[2] = { std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest() };
-  for (const ROI& roi : rois)
-    for (const Contour& c : roi.contours)
-      for (const V3& p : c.points)
-      {
-        const V3 d = sub(p, lattice);
-        lo[0] = std::min(lo[0], dot(frame.r, d));
-        hi[0] = std::max(hi[0], dot(frame.r, d));
-        lo[1] = std::min(lo[1], dot(frame.c, d));
-        hi[1] = std::max(hi[1], dot(frame.c, d));
-      }
+  // The pixels: the contours' extent in the frame (above), on the CT's pixel lattice.
   const double first[2] = { (std::floor(lo[0] / dx) - kPad) * dx, (std::floor(lo[1] / dy) - kPad) * dy };
   const double nxd = std::ceil((hi[0] - first[0]) / dx) + kPad + 1, nyd = std::ceil((hi[1] - first[1]) / dy) + kPad + 1;
   if (!(nxd * nyd * sliceCount <= 1.0e9))
