@@ -294,7 +294,8 @@ public:
   std::string pieceLabel(std::size_t p) const;
   /// Names piece p (at: the point picked on it) or, with an empty name,
   /// takes its name away; the earlier names on it go. False, with `why`,
-  /// for a name validPieceName refuses or another piece has.
+  /// for a name validPieceName refuses, another piece has, or an unnamed
+  /// piece goes by in the structure set ("piece 2").
   bool namePiece(std::size_t p, const std::array<double, 3>& at, const std::string& name, std::string& why);
   /// Naming in the window (t): 1 while a click picks the piece, 2 while its
   /// name is typed (Return keeps it, Escape drops it).
