@@ -167,6 +167,21 @@ bool readFiles(CheckedDICOMReader* reader, const std::vector<std::string>& files
   return true;
 }
 
+/// The names in `folder` but "." and "..", in name order (a listing's own
+/// order is the disk's); none when it cannot be listed.
+std::vector<std::string> namesIn(const std::string& folder)
+{
+  std::vector<std::string> names;
+  vtksys::Directory listing;
+  if (!listing.Load(folder))
+    return names;
+  for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+    if (const std::string name = listing.GetFile(i); name != "." && name != "..")
+      names.push_back(name);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 /// The transfer syntaxes vtkDICOM (as Debian builds it, with GDCM) cannot
 /// parse or decode, by UID, with their names.
 const char* unreadableTransferSyntax(const std::string& uid)
@@ -194,18 +209,10 @@ std::string unreadableFilesNote(const std::string& folder, int depth)
   int looked = 0;
   std::vector<std::pair<std::string, int>> folders{ { folder, 1 } };
   for (std::size_t k = 0; k < folders.size() && looked < 64; ++k)
-  {
-    vtksys::Directory listing;
-    if (!listing.Load(folders[k].first))
-      continue;
-    std::vector<std::string> names;
-    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
-      names.push_back(listing.GetFile(i));
-    std::sort(names.begin(), names.end());
-    for (const std::string& name : names)
+    for (const std::string& name : namesIn(folders[k].first))
     {
-      if (name == "." || name == ".." || looked >= 64)
-        continue;
+      if (looked >= 64)
+        break;
       const std::string path = folders[k].first + "/" + name;
       struct stat info;
       if (stat(path.c_str(), &info) != 0)
@@ -226,7 +233,6 @@ std::string unreadableFilesNote(const std::string& folder, int depth)
       if (unreadableTransferSyntax(syntax))
         ++found[syntax];
     }
-  }
   std::string note;
   for (const auto& [syntax, count] : found)
     note += std::string(note.empty() ? "" : "; ") + std::to_string(count) + " of the files looked at " +
@@ -377,16 +383,11 @@ std::vector<FolderBeside> foldersBeside(const std::string& folder, bool* crowded
   const std::string parent = vtksys::SystemTools::GetParentDirectory(own);
   if (parent.empty() || parent == own)
     return found;
-  vtksys::Directory listing;
-  if (!listing.Load(parent))
-    return found;
-  std::vector<std::string> siblings;
-  for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+  std::vector<std::string> siblings; // in name order
+  for (const std::string& name : namesIn(parent))
   {
-    const std::string name = listing.GetFile(i);
     const std::string path = parent + (parent.back() == '/' ? "" : "/") + name;
-    if (name == "." || name == ".." || !vtksys::SystemTools::FileIsDirectory(path) ||
-      vtksys::SystemTools::CollapseFullPath(path) == own)
+    if (!vtksys::SystemTools::FileIsDirectory(path) || vtksys::SystemTools::CollapseFullPath(path) == own)
       continue;
     siblings.push_back(path);
     if (static_cast<int>(siblings.size()) > kFoldersBesideLimit)
@@ -396,22 +397,16 @@ std::vector<FolderBeside> foldersBeside(const std::string& folder, bool* crowded
       return {};
     }
   }
-  std::sort(siblings.begin(), siblings.end());
   for (const std::string& sibling : siblings)
   {
-    vtksys::Directory files;
-    if (!files.Load(sibling))
-      continue;
-    std::vector<std::string> names;
-    for (unsigned long i = 0; i < files.GetNumberOfFiles(); ++i)
+    std::vector<std::string> names; // in name order
+    for (const std::string& name : namesIn(sibling))
     {
       // Regular files only: opening a pipe or a device would wait for ever.
-      const std::string name = files.GetFile(i);
       struct stat info;
       if (stat((sibling + "/" + name).c_str(), &info) == 0 && S_ISREG(info.st_mode))
         names.push_back(name);
     }
-    std::sort(names.begin(), names.end());
     // A licence or a README may come first; a DICOMDIR names no series.
     for (std::size_t i = 0; i < names.size() && i < 4; ++i)
     {
