@@ -816,21 +816,15 @@ std::vector<std::vector<double>> Planner::pieceDistances(const std::vector<std::
 
 void Planner::resolveNames()
 {
-  if (session.names.empty())
-  {
-    nameTargets.clear();
-    namesKey.clear();
-    return;
-  }
-  std::string key = cut.key + "|" + std::to_string(cut.pieces.size());
+  std::vector<std::array<double, 3>> points;
   for (const PieceName& n : session.names)
-    key += "|" + std::to_string(n.at[0]) + "," + std::to_string(n.at[1]) + "," + std::to_string(n.at[2]);
-  if (key != namesKey || nameTargets.size() != session.names.size())
+    points.push_back(n.at);
+  // The nearest pieces change with the cut or the points only (a name
+  // given, taken away, undone), not at every step.
+  if (cut.key != namesCutKey || points != namesAt)
   {
-    std::vector<std::array<double, 3>> points;
-    for (const PieceName& n : session.names)
-      points.push_back(n.at);
-    const std::vector<std::vector<double>> distances = pieceDistances(points);
+    const std::vector<std::vector<double>> distances =
+      points.empty() ? std::vector<std::vector<double>>() : pieceDistances(points);
     nameTargets.assign(session.names.size(), -1);
     for (std::size_t i = 0; i < points.size(); ++i)
     {
@@ -838,7 +832,8 @@ void Planner::resolveNames()
       if (best != distances[i].end() && *best < VTK_DOUBLE_MAX)
         nameTargets[i] = static_cast<int>(best - distances[i].begin());
     }
-    namesKey = key;
+    namesCutKey = cut.key;
+    namesAt = points;
   }
   for (std::size_t p = 0; p < cut.pieces.size(); ++p)
   {

@@ -274,7 +274,9 @@ public:
   /// pieces), found again when the cut or the names change (the nearest
   /// piece to its point); a name on two pieces gets a message.
   std::vector<int> nameTargets;
-  std::string namesKey; ///< the cut and names nameTargets was found for
+  /// The cut (CutStage::key) and the names' points nameTargets was found for.
+  std::string namesCutKey;
+  std::vector<std::array<double, 3>> namesAt;
   void resolveNames();
   /// The session's name of piece p (the last one on it), or -1.
   int nameIndex(std::size_t p) const;
