@@ -61,6 +61,17 @@ struct RoiSpec
   std::string type = "CLOSED_PLANAR";
 };
 
+/// Writes `meta` as a DICOM file with no pixel data (an RT object).
+void writeDICOMObject(const std::string& file, vtkDICOMMetaData* meta)
+{
+  vtkNew<vtkDICOMCompiler> compiler;
+  compiler->SetFileName(file.c_str());
+  compiler->SetMetaData(meta);
+  compiler->WriteHeader();
+  compiler->Close();
+  ASSERT_EQ(compiler->GetErrorCode(), 0u);
+}
+
 std::string tempFolder(const std::string& name)
 {
   const std::string dir = std::string(LATTICEKIT_TEST_TMP) + "/" + name;
@@ -133,12 +144,7 @@ void writeStructureSet(const std::string& file, const std::vector<RoiSpec>& rois
   }
   meta->Set(DC::StructureSetROISequence, listed);
   meta->Set(DC::ROIContourSequence, contoured);
-  vtkNew<vtkDICOMCompiler> compiler;
-  compiler->SetFileName(file.c_str());
-  compiler->SetMetaData(meta);
-  compiler->WriteHeader();
-  compiler->Close();
-  ASSERT_EQ(compiler->GetErrorCode(), 0u);
+  writeDICOMObject(file, meta);
 }
 
 /// A rectangle [x0, x1] x [y0, y1] at height z (patient mm).
@@ -186,6 +192,16 @@ std::vector<RoiSpec> plan()
   canal.contours.push_back(hole);
   RoiSpec isocentre{ 9, "Isocenter", { { { 0.0, 0.0, 0.0 } } }, "POINT" };
   return { body, mandible, canal, isocentre };
+}
+
+/// plan()'s mandible on every other of its slices (z = -6, -2, 2, 6: 4 mm
+/// apart, on every other slice of writeSmallCT's CT).
+RoiSpec mandibleOnEveryOtherSlice()
+{
+  RoiSpec mandible{ 5, "Mandible", {} };
+  for (int k = 2; k <= 8; k += 2)
+    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
+  return mandible;
 }
 
 /// 40 x 40 x 12 voxels of 1 x 1 x 2 mm from (-20, -20, -10), every one 0 HU,
@@ -321,9 +337,7 @@ TEST(DicomStructureSet, AnROIOnEveryOtherSliceOfItsCTIsInterpolatedOnTheCTsSlice
   // the CT beside it, the grid has the CT's 2 mm slices and the 3 between
   // are interpolated (560 voxels, as on every slice); without it, the grid
   // is the contours' own, 4 mm slices (320 voxels).
-  RoiSpec mandible{ 5, "Mandible", {} };
-  for (int k = 2; k <= 8; k += 2)
-    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
+  const RoiSpec mandible = mandibleOnEveryOtherSlice();
   // Alone: one folder further down than a folder beside the CT's would be.
   const std::string withCT = tempFolder("rtstruct_sparse_with_ct"), alone = tempFolder("rtstruct_sparse_alone") + "/rs";
   vtksys::SystemTools::MakeDirectory(alone);
@@ -356,9 +370,7 @@ TEST(DicomStructureSet, AnROIOnEveryOtherSliceOfItsCTIsInterpolatedOnTheCTsSlice
 // own, and the CT its structure set; not a set drawn on another series.
 TEST(DicomStructureSet, ASetAndItsCTInFoldersSideBySideFindEachOther)
 {
-  RoiSpec mandible{ 5, "Mandible", {} }; // on every other slice, as above
-  for (int k = 2; k <= 8; k += 2)
-    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
+  const RoiSpec mandible = mandibleOnEveryOtherSlice();
   const std::string study = tempFolder("rtstruct_study");
   for (const char* folder : { "/0-pipe", "/1-CT", "/2-CT-other", "/3-RTSTRUCT", "/4-docs" })
     vtksys::SystemTools::MakeDirectory(study + folder);
@@ -431,9 +443,7 @@ TEST(DicomStructureSet, ASetAndItsCTInFoldersThatHoldOtherSeriesFirstFindEachOth
   // A study exported with its images in one folder and its RT objects in
   // another: a scout series' files come first in the one, a dose's in the
   // other, so neither folder's first file is what is looked for.
-  RoiSpec mandible{ 5, "Mandible", {} }; // on every other slice, as above
-  for (int k = 2; k <= 8; k += 2)
-    mandible.contours.push_back(rectangle(-10.5, -2.5, -5.5, 4.5, -10 + 2 * k));
+  const RoiSpec mandible = mandibleOnEveryOtherSlice();
   const std::string study = tempFolder("rtstruct_mixed");
   vtksys::SystemTools::MakeDirectory(study + "/IMAGES");
   vtksys::SystemTools::MakeDirectory(study + "/RT");
@@ -452,12 +462,7 @@ TEST(DicomStructureSet, ASetAndItsCTInFoldersThatHoldOtherSeriesFirstFindEachOth
     dose->Set(DC::StudyInstanceUID, studyUID);
     dose->Set(DC::SeriesInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SeriesInstanceUID));
     dose->Set(DC::Modality, "RTDOSE");
-    vtkNew<vtkDICOMCompiler> compiler;
-    compiler->SetFileName((study + "/RT/RD.dcm").c_str());
-    compiler->SetMetaData(dose);
-    compiler->WriteHeader();
-    compiler->Close();
-    ASSERT_EQ(compiler->GetErrorCode(), 0u);
+    writeDICOMObject(study + "/RT/RD.dcm", dose);
   }
   const std::string set = study + "/RT/RS.dcm";
   writeStructureSet(set, { mandible }, uid, 0, 0, nullptr, studyUID);
@@ -777,11 +782,7 @@ TEST(DicomStructureSet, BrokenStructureSetsAreClearErrors)
     meta->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.481.3");
     meta->Set(DC::Modality, "RTSTRUCT");
     meta->Set(DC::StructureSetROISequence, vtkDICOMValue(vtkDICOMVR::LO, "Body"));
-    vtkNew<vtkDICOMCompiler> compiler;
-    compiler->SetFileName((dir + "/notasequence.dcm").c_str());
-    compiler->SetMetaData(meta);
-    compiler->WriteHeader();
-    compiler->Close();
+    writeDICOMObject(dir + "/notasequence.dcm", meta);
   }
   EXPECT_EQ(read(dir + "/notasequence.dcm", messages), 1);
   EXPECT_NE(messages.find("the RT structure set lists no ROIs (StructureSetROISequence)"), std::string::npos)
