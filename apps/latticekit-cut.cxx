@@ -180,14 +180,16 @@ int main(int argc, char* argv[])
     plain->GetCellData()->Initialize();
     for (const char* ext : lkapp::pieceExtensions)
       if (!lkapp::writeMesh(ext == std::string(".vtp") ? piece.Get() : plain.Get(),
-            piecesFolder + "/piece" + std::to_string(p) + ext, error, space))
+            piecesFolder + "/" + lkapp::pieceFileStem(static_cast<std::size_t>(p)) + ext, error, space))
       {
         std::cerr << "error: " << error << "\n";
         return 1;
       }
   }
-  if (!piecesFolder.empty() &&
-    !lkapp::removeStaleExports(piecesFolder, static_cast<std::size_t>(cut->GetNumberOfPieces()), {}, error))
+  std::vector<std::string> pieceStems;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(cut->GetNumberOfPieces()); ++p)
+    pieceStems.push_back(lkapp::pieceFileStem(p));
+  if (!piecesFolder.empty() && !lkapp::removeStaleExports(piecesFolder, pieceStems, {}, error))
   {
     std::cerr << "error: " << error << "\n";
     return 1;

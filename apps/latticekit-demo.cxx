@@ -662,7 +662,7 @@ int main(int argc, char* argv[])
     }
   for (std::size_t p = 0; p < pieces.size(); ++p)
     for (const char* ext : lkapp::pieceExtensions)
-      if (!lkapp::writeMesh(pieces[p], folder + "/piece" + std::to_string(p) + ext, error, space))
+      if (!lkapp::writeMesh(pieces[p], folder + "/" + lkapp::pieceFileStem(p) + ext, error, space))
       {
         std::cerr << "error: " << error << "\n";
         return 1;

@@ -35,6 +35,7 @@
 #include <vtkWriter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <X11/Xlib.h>
@@ -509,6 +510,34 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
   return result;
 }
 
+std::string pieceFileStem(std::size_t p, const std::string& name)
+{
+  std::string stem = "piece" + std::to_string(p);
+  std::string suffix;
+  for (const char c : name)
+  {
+    const bool kept = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.';
+    if (kept)
+      suffix += c;
+    else if (!suffix.empty() && suffix.back() != '_')
+      suffix += '_';
+  }
+  while (!suffix.empty() && suffix.back() == '_')
+    suffix.pop_back();
+  return suffix.empty() ? stem : stem + "-" + suffix;
+}
+
+bool isPieceFileName(const std::string& name)
+{
+  const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(name);
+  const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(name));
+  if (std::none_of(pieceExtensions.begin(), pieceExtensions.end(), [&](const char* e) { return ext == e; }) ||
+    stem.size() < 6 || stem.rfind("piece", 0) != 0)
+    return false;
+  const std::size_t end = stem.find_first_not_of("0123456789", 5);
+  return end > 5 && (end == std::string::npos || stem[end] == '-');
+}
+
 bool isExportedFile(const std::string& path, const std::string& folder, std::initializer_list<const char*> others)
 {
   if (path.empty() || folder.empty())
@@ -517,34 +546,23 @@ bool isExportedFile(const std::string& path, const std::string& folder, std::ini
   if (vtksys::SystemTools::GetFilenamePath(full) != vtksys::SystemTools::CollapseFullPath(folder))
     return false;
   const std::string name = vtksys::SystemTools::GetFilenameName(full);
-  const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(name);
-  const std::string ext = lower(vtksys::SystemTools::GetFilenameLastExtension(name));
-  const bool pieceExtension =
-    std::any_of(pieceExtensions.begin(), pieceExtensions.end(), [&](const char* e) { return ext == e; });
-  const bool piece = pieceExtension && stem.size() > 5 && stem.rfind("piece", 0) == 0 &&
-    stem.find_first_not_of("0123456789", 5) == std::string::npos;
-  return piece || std::any_of(others.begin(), others.end(), [&](const char* o) { return name == o; });
+  return isPieceFileName(name) || std::any_of(others.begin(), others.end(), [&](const char* o) { return name == o; });
 }
 
-bool removeStaleExports(const std::string& folder, std::size_t pieces, const std::vector<std::string>& others,
-  std::string& error)
+bool removeStaleExports(const std::string& folder, const std::vector<std::string>& pieceStems,
+  const std::vector<std::string>& others, std::string& error)
 {
   std::vector<std::string> stale;
-  for (std::size_t p = pieces;; ++p)
-  {
-    bool any = false;
-    for (const char* ext : pieceExtensions)
+  vtksys::Directory listing;
+  if (listing.Load(folder))
+    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
     {
-      const std::string path = folder + "/piece" + std::to_string(p) + ext;
-      if (vtksys::SystemTools::FileExists(path, true))
-      {
-        stale.push_back(path);
-        any = true;
-      }
+      const std::string name = listing.GetFile(i);
+      const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(name);
+      if (isPieceFileName(name) && std::find(pieceStems.begin(), pieceStems.end(), stem) == pieceStems.end())
+        stale.push_back(folder + "/" + name);
     }
-    if (!any)
-      break;
-  }
+  std::sort(stale.begin(), stale.end());
   for (const std::string& name : others)
     stale.push_back(folder + "/" + name);
   for (const std::string& path : stale)

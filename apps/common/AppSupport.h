@@ -105,18 +105,29 @@ const char* meshExtensions();
 /// the cut's --pieces, the planner's export and the main job, and what
 /// removeStaleExports and isExportedFile look for.
 inline constexpr std::array<const char*, 3> pieceExtensions{ ".stl", ".vtp", ".obj" };
+/// The name, without its extension, of piece `p`'s exported files: "piece1",
+/// or for a piece the user named "piece1-" and the name, each run of
+/// characters other than letters, digits, '-' and '.' written as one '_'
+/// ("Strut fragment (L)" gives "piece1-Strut_fragment_L"). A print lab sees
+/// the piece's name, as 3D Slicer names exported segments' files; the number
+/// keeps two names that differ in case or punctuation apart and the files in
+/// the plan's order; no shell or file system takes the name apart.
+std::string pieceFileStem(std::size_t p, const std::string& name = std::string());
+/// Whether a file's name (no folder) is one an export writes for a piece:
+/// "piece", digits, optionally '-' and more, then .stl, .vtp or .obj.
+bool isPieceFileName(const std::string& name);
 /// Whether `path` names a file that an export into `folder` writes or
-/// removes: pieceN.stl, .vtp or .obj, or one of `others` (names in the
-/// folder). An input among them would be lost to the export.
+/// removes: a piece's file (isPieceFileName), or one of `others` (names in
+/// the folder). An input among them would be lost to the export.
 bool isExportedFile(const std::string& path, const std::string& folder, std::initializer_list<const char*> others);
-/// Removes what an earlier export left in `folder` of the pieces a tool
-/// writes there (pieceN.stl, .vtp, .obj) with N >= `pieces`, from N = `pieces`
-/// on while any of the three exists, and the files in `others` (names in
-/// the folder) that exist: a re-export of a plan with fewer pieces must not
-/// leave the old ones beside its own. Nothing else is touched. False with
+/// Removes what an earlier export left in `folder`: every piece file
+/// (isPieceFileName) whose stem is not among `pieceStems`, this export's own
+/// (pieceFileStem), and the files in `others` (names in the folder) that
+/// exist. A re-export with fewer pieces, or with a piece named anew, must not
+/// leave the old files beside its own. Nothing else is touched. False with
 /// `error` if a file cannot be removed.
-bool removeStaleExports(const std::string& folder, std::size_t pieces, const std::vector<std::string>& others,
-  std::string& error);
+bool removeStaleExports(const std::string& folder, const std::vector<std::string>& pieceStems,
+  const std::vector<std::string>& others, std::string& error);
 /// Size of a file in bytes (0 when it does not exist).
 long long fileBytes(const std::string& path);
 /// The first value of a field-data array of `pd` (0 when there is none): the

@@ -1409,6 +1409,7 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   vtksys::SystemTools::MakeDirectory(folder);
   const std::string space = lkapp::coordinateSpace(bone); // "LPS" from an oriented CT; a mesh file's own tag
   std::vector<vtkSmartPointer<vtkPolyData>> exported; // as written: the segment where the plan moves it
+  std::vector<std::string> stems;                     // the files' names: piece1, piece1-Strut_fragment
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     // The segment goes where the plan moves it.
@@ -1423,9 +1424,10 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       move->Update();
       piece = move->GetOutput();
     }
+    stems.push_back(lkapp::pieceFileStem(p, pieceName(p)));
     for (const char* ext : lkapp::pieceExtensions)
     {
-      const std::string path = folder + "/piece" + std::to_string(p) + ext;
+      const std::string path = folder + "/" + stems.back() + ext;
       if (!lkapp::writeMesh(piece, path, error, space))
         return false;
     }
@@ -1473,7 +1475,7 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     others.push_back("segment_transform.txt");
   if (!exportedStructureSet) // an earlier plan's set is not this plan's
     others.push_back("pieces.dcm");
-  if (!lkapp::removeStaleExports(folder, pieces.size(), others, error))
+  if (!lkapp::removeStaleExports(folder, stems, others, error))
     return false;
   if (!structureSetError.empty())
   {
