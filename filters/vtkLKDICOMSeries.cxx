@@ -41,6 +41,41 @@
 namespace lkvtk
 {
 
+bool isUTF8(const std::string& text)
+{
+  for (std::size_t i = 0; i < text.size();)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    if (n == 0 || i + n > text.size())
+      return false;
+    unsigned long code = n == 1 ? c : c & (0x7Fu >> n);
+    for (std::size_t k = 1; k < n; ++k)
+    {
+      const unsigned char t = static_cast<unsigned char>(text[i + k]);
+      if ((t >> 6) != 0x2)
+        return false;
+      code = (code << 6) | (t & 0x3Fu);
+    }
+    static const unsigned long least[] = { 0, 0, 0x80, 0x800, 0x10000 };
+    if (code < least[n] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+      return false;
+    i += n;
+  }
+  return true;
+}
+
+std::string dicomText(const vtkDICOMValue& value)
+{
+  const std::string raw = value.AsString();
+  const bool ascii = std::all_of(raw.begin(), raw.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+  if (ascii)
+    return raw;
+  if (value.GetCharacterSet() == vtkDICOMCharacterSet::ISO_IR_6) // declared none (or ASCII, wrongly)
+    return isUTF8(raw) ? raw : vtkDICOMCharacterSet(vtkDICOMCharacterSet::ISO_IR_100).ToUTF8(raw);
+  return value.AsUTF8String();
+}
+
 ErrorCatcher::ErrorCatcher(vtkObject* object)
   : observed(object)
 {
@@ -350,7 +385,7 @@ bool findDICOMSeries(const std::string& folder, std::vector<DICOMSeriesInfo>& se
     if (meta)
     {
       info.uid = meta->Get(DC::SeriesInstanceUID).AsString();
-      info.description = meta->Get(DC::SeriesDescription).AsString();
+      info.description = dicomText(meta->Get(DC::SeriesDescription));
       info.modality = meta->Get(DC::Modality).AsString();
       info.sopClass = meta->Get(DC::SOPClassUID).AsString();
     }
@@ -757,7 +792,7 @@ bool readDICOMSegmentation(const DICOMSeriesInfo& series, vtkImageData* output, 
   {
     Segment seg;
     seg.label = items[i].Get(DC::SegmentNumber).AsInt();
-    seg.name = items[i].Get(DC::SegmentLabel).AsString();
+    seg.name = dicomText(items[i].Get(DC::SegmentLabel));
     if (seg.label < 1 || seg.label > 65535)
     {
       error = "a segment of the DICOM segmentation has the SegmentNumber " + std::to_string(seg.label);

@@ -18,6 +18,7 @@
 class vtkAlgorithm;
 class vtkDICOMDirectory;
 class vtkDICOMMetaData;
+class vtkDICOMValue;
 class vtkImageData;
 class vtkMatrix4x4;
 
@@ -37,6 +38,17 @@ inline V3 sub(const V3& a, const V3& b)
 {
   return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
 }
+
+/// A DICOM text value (a name, a label, a description) in UTF-8, as the
+/// tools print it and as --label and the planner's names compare with it:
+/// converted from the character set its file declares (Latin-1, ISO 2022
+/// Japanese, ...). Where a file declares none, bytes beyond ASCII are taken
+/// as UTF-8 if they are valid UTF-8 and as Latin-1 (ISO_IR 100) otherwise,
+/// as older systems wrote them; nothing is lost to U+FFFD.
+std::string dicomText(const vtkDICOMValue& value);
+/// Whether `text` is well-formed UTF-8 (no overlong forms, no surrogates,
+/// nothing beyond U+10FFFF).
+bool isUTF8(const std::string& text);
 
 /// The slice frame of an ImageOrientationPatient: the rows' direction r, the
 /// columns' c and their cross product n.

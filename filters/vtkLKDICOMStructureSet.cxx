@@ -121,7 +121,7 @@ bool readROIs(vtkDICOMMetaData* meta, std::vector<ROI>& rois, int& skippedShort,
     const vtkDICOMItem& item = list.GetSequenceData()[i];
     ROI roi;
     roi.number = item.Get(DC::ROINumber).AsInt();
-    roi.name = item.Get(DC::ROIName).AsString();
+    roi.name = dicomText(item.Get(DC::ROIName));
     if (roi.name.empty())
       roi.name = "ROI " + std::to_string(roi.number);
     if (byNumber.count(roi.number))
@@ -787,7 +787,7 @@ std::vector<StructureSetInfo> findDICOMStructureSets(const std::string& folder, 
       info.referencedSeries = referencedSeriesUIDs(meta);
       const vtkDICOMValue& list = meta->Get(DC::StructureSetROISequence);
       for (unsigned int i = 0; i < itemCount(list); ++i)
-        info.roiNames.push_back(list.GetSequenceData()[i].Get(DC::ROIName).AsString());
+        info.roiNames.push_back(dicomText(list.GetSequenceData()[i].Get(DC::ROIName)));
       found.push_back(info);
     }
   }

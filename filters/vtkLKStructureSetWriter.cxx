@@ -155,6 +155,25 @@ std::vector<std::vector<std::vector<V3>>> contoursOf(
   return out;
 }
 
+/// Why `text` cannot be a DICOM text value of at most `most` characters
+/// (ROIName is an LO of 64, StructureSetLabel an SH of 16): not UTF-8, a
+/// control character, a backslash (DICOM's value separator), too long.
+/// Empty when it can.
+std::string badText(const std::string& text, std::size_t most)
+{
+  if (!lkvtk::isUTF8(text))
+    return "is not UTF-8 text";
+  if (std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; }))
+    return "holds a control character";
+  if (text.find('\\') != std::string::npos)
+    return "holds a backslash, which DICOM reads as a separator of values";
+  const std::size_t characters = static_cast<std::size_t>(
+    std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+  if (characters > most)
+    return "is longer than DICOM's " + std::to_string(most) + " characters";
+  return std::string();
+}
+
 std::string today(const char* format)
 {
   char text[32];
@@ -269,6 +288,23 @@ void vtkLKStructureSetWriter::WriteData()
     surfaces.push_back(surface);
   }
 
+  // The names: UTF-8, each to be written in the set's character set.
+  const std::string label = this->StructureSetLabel ? this->StructureSetLabel : "";
+  std::string unfit = label.empty() ? std::string("is empty") : badText(label, 16);
+  if (!unfit.empty())
+  {
+    vtkErrorMacro("The StructureSetLabel '" << label << "' " << unfit << ".");
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return;
+  }
+  for (std::size_t i = 0; i < this->ROINames.size() && i < surfaces.size(); ++i)
+    if (!(unfit = badText(this->ROINames[i], 64)).empty())
+    {
+      vtkErrorMacro("The ROI name '" << this->ROINames[i] << "' (input " << i << ") " << unfit << ".");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+
   // The planes: the reference CT's slices, or axial planes SliceSpacing apart.
   Reference ref;
   std::string error;
@@ -319,6 +355,33 @@ void vtkLKStructureSetWriter::WriteData()
     if (referenced && ref.first->Get(tag).IsValid())
       meta->Set(tag, ref.first->Get(tag));
   }
+  // The names go in the CT's character set where it spells them (a Latin-1
+  // CT's set stays Latin-1, for the systems that read that only); where it
+  // cannot, the set is UTF-8 (ISO_IR 192), the patient's and study's text
+  // converted to it.
+  vtkDICOMCharacterSet characterSet = referenced
+    ? vtkDICOMCharacterSet(ref.first->Get(DC::SpecificCharacterSet).AsString())
+    : vtkDICOMCharacterSet(vtkDICOMCharacterSet::ISO_IR_6);
+  bool spelt = true;
+  for (std::size_t i = 0; i <= this->ROINames.size() && spelt; ++i)
+  {
+    const std::string& text = i < this->ROINames.size() ? this->ROINames[i] : label;
+    std::size_t converted = 0;
+    characterSet.FromUTF8(text.data(), text.size(), &converted);
+    spelt = converted == text.size();
+  }
+  if (!spelt)
+  {
+    characterSet = vtkDICOMCharacterSet(vtkDICOMCharacterSet::ISO_IR_192);
+    for (vtkDICOMTag tag : { DC::PatientName, DC::PatientID, DC::ReferringPhysicianName, DC::StudyID,
+           DC::AccessionNumber, DC::StudyDescription })
+      if (meta->Get(tag).IsValid())
+      {
+        const vtkDICOMValue& value = meta->Get(tag);
+        meta->Set(tag, vtkDICOMValue::FromUTF8String(value.GetVR(), characterSet, lkvtk::dicomText(value)));
+      }
+    meta->Set(DC::SpecificCharacterSet, "ISO_IR 192");
+  }
   if (!meta->Get(DC::StudyInstanceUID).IsValid())
     meta->Set(DC::StudyInstanceUID, vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID));
   // Type 2 attributes of the RT Structure Set IOD are present, empty when
@@ -343,7 +406,7 @@ void vtkLKStructureSetWriter::WriteData()
   meta->Set(DC::InstanceNumber, 1.0);
   meta->Set(DC::SeriesDescription, "latticekit surfaces");
   meta->Set(DC::Manufacturer, "latticekit");
-  meta->Set(DC::StructureSetLabel, this->StructureSetLabel ? this->StructureSetLabel : "latticekit");
+  meta->Set(DC::StructureSetLabel, vtkDICOMValue::FromUTF8String(vtkDICOMVR::SH, characterSet, label));
   meta->Set(DC::StructureSetDate, today("%Y%m%d"));
   meta->Set(DC::StructureSetTime, today("%H%M%S"));
   {
@@ -421,7 +484,7 @@ void vtkLKStructureSetWriter::WriteData()
     vtkDICOMItem roi, item, observation;
     roi.Set(DC::ROINumber, static_cast<double>(number));
     roi.Set(DC::ReferencedFrameOfReferenceUID, ref.frameUID);
-    roi.Set(DC::ROIName, name);
+    roi.Set(DC::ROIName, vtkDICOMValue::FromUTF8String(vtkDICOMVR::LO, characterSet, name));
     roi.Set(DC::ROIGenerationAlgorithm, "SEMIAUTOMATIC");
     listed.AddItem(roi);
     item.Set(DC::ReferencedROINumber, static_cast<double>(number));

@@ -19,7 +19,12 @@
  * viewer, not tied to a scan).
  *
  * ROINames gives each input's ROIName (default "ROI 1", "ROI 2", ...);
- * ROINumbers are 1, 2, ... in input order. Open contours (a surface that is
+ * names and the StructureSetLabel are UTF-8 text within DICOM's rules (64
+ * and 16 characters, no control character or backslash; otherwise Write
+ * fails and says why). They are written in the reference CT's character set
+ * where it spells them; where it does not (a CT in ASCII or Latin-1, a name
+ * in Greek), the set is UTF-8 (ISO_IR 192), its patient's and study's text
+ * converted. vtkLKMedicalImageReader gives such names back in UTF-8. ROINumbers are 1, 2, ... in input order. Open contours (a surface that is
  * not closed, cut where it is open) are left out with a warning. The file is
  * written beside its destination and renamed over it only when complete, so
  * a failed write leaves an earlier file as it was.
@@ -82,7 +87,7 @@ public:
   ///@}
 
   ///@{
-  /// The StructureSetLabel (default "latticekit").
+  /// The StructureSetLabel (default "latticekit"; up to 16 characters).
   vtkSetStringMacro(StructureSetLabel);
   vtkGetStringMacro(StructureSetLabel);
   ///@}

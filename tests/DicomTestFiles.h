@@ -32,12 +32,18 @@ inline std::string seriesUIDOf(const std::string& file)
 /// `pattern` (of the folder and the slice number, from 1), its data
 /// coordinates mapped to patient mm by `matrix` when one is given, and
 /// `description` as its SeriesDescription and `studyUID` as its
-/// StudyInstanceUID when given. Returns its SeriesInstanceUID.
+/// StudyInstanceUID when given, and the attributes of `attributes` (a
+/// character set and a patient's name in it, say). Returns its
+/// SeriesInstanceUID.
 inline std::string writeCT(const std::string& dir, vtkImageData* image, vtkMatrix4x4* matrix = nullptr,
-  const char* pattern = "%s/ct_%03d.dcm", const char* description = nullptr, const char* studyUID = nullptr)
+  const char* pattern = "%s/ct_%03d.dcm", const char* description = nullptr, const char* studyUID = nullptr,
+  vtkDICOMMetaData* attributes = nullptr)
 {
   vtkNew<vtkDICOMCTGenerator> generator;
   vtkNew<vtkDICOMMetaData> meta;
+  if (attributes)
+    for (vtkDICOMDataElementIterator e = attributes->Begin(); e != attributes->End(); ++e)
+      meta->Set(e->GetTag(), e->GetValue());
   if (description)
     meta->Set(DC::SeriesDescription, description);
   if (studyUID)

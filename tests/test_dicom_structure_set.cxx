@@ -86,12 +86,17 @@ std::string tempFolder(const std::string& name)
 /// NumberOfContourPoints instead of the true one; `unlisted` adds contours
 /// of an ROI number the list lacks; `contourText` replaces every contour's
 /// ContourData; `studyUID` (when given) is the set's study and the one it
-/// references, as a planning system writes a set into its CT's study.
+/// references, as a planning system writes a set into its CT's study;
+/// `characterSet` (when given) its SpecificCharacterSet, which the ROI
+/// names are then spelt in.
 void writeStructureSet(const std::string& file, const std::vector<RoiSpec>& rois, const std::string& seriesUID,
-  int pointCount = 0, int unlisted = 0, const char* contourText = nullptr, const std::string& studyUID = std::string())
+  int pointCount = 0, int unlisted = 0, const char* contourText = nullptr, const std::string& studyUID = std::string(),
+  const char* characterSet = nullptr)
 {
   const std::string setStudy = studyUID.empty() ? vtkDICOMUtilities::GenerateUID(DC::StudyInstanceUID) : studyUID;
   vtkNew<vtkDICOMMetaData> meta;
+  if (characterSet)
+    meta->Set(DC::SpecificCharacterSet, characterSet);
   meta->Set(DC::SOPClassUID, "1.2.840.10008.5.1.4.1.1.481.3"); // RT Structure Set Storage
   meta->Set(DC::SOPInstanceUID, vtkDICOMUtilities::GenerateUID(DC::SOPInstanceUID));
   meta->Set(DC::StudyInstanceUID, setStudy);
@@ -206,8 +211,9 @@ RoiSpec mandibleOnEveryOtherSlice()
 
 /// 40 x 40 x 12 voxels of 1 x 1 x 2 mm from (-20, -20, -10), every one 0 HU,
 /// its files named by `pattern` (see writeCT), in the study `studyUID` when
-/// one is given.
-std::string writeSmallCT(const std::string& dir, const char* pattern = "%s/ct_%03d.dcm", const char* studyUID = nullptr)
+/// one is given, with `attributes` (see writeCT).
+std::string writeSmallCT(const std::string& dir, const char* pattern = "%s/ct_%03d.dcm", const char* studyUID = nullptr,
+  vtkDICOMMetaData* attributes = nullptr)
 {
   vtkNew<vtkImageData> ct;
   ct->SetDimensions(40, 40, 12);
@@ -218,7 +224,7 @@ std::string writeSmallCT(const std::string& dir, const char* pattern = "%s/ct_%0
   m->SetElement(0, 3, -20.0);
   m->SetElement(1, 3, -20.0);
   m->SetElement(2, 3, -10.0);
-  return writeCT(dir, ct, m, pattern, nullptr, studyUID);
+  return writeCT(dir, ct, m, pattern, nullptr, studyUID, attributes);
 }
 
 void expectThePlansVoxels(vtkLKMedicalImageReader* reader)
@@ -1325,5 +1331,113 @@ TEST(DicomStructureSet, WritingBadInputIsAClearErrorAndKeepsAnEarlierFile)
     EXPECT_NE(messages.find("Cannot write '" + dir + "/blocked'"), std::string::npos) << messages;
     EXPECT_FALSE(vtksys::SystemTools::FileExists(dir + "/blocked.part"));
     EXPECT_TRUE(vtksys::SystemTools::FileIsDirectory(dir + "/blocked/inside"));
+  }
+}
+
+TEST(DicomStructureSet, NamesInOtherCharacterSetsAreReadAndWrittenInUTF8)
+{
+  // Read: a German hospital's ROI "Kieferhöhle" in Latin-1, declared and
+  // (as older systems wrote it) undeclared, and in UTF-8, undeclared and
+  // declared. Each name comes back in UTF-8, so that a label typed on the
+  // command line finds it.
+  const std::string dir = tempFolder("rtstruct_character_sets");
+  const std::string utf8 = "Kieferh\xC3\xB6hle", latin1 = "Kieferh\xF6hle";
+  struct Case
+  {
+    const char* folder;
+    const char* characterSet;
+    std::string bytes;
+  };
+  for (const Case& c : { Case{ "latin1", "ISO_IR 100", latin1 }, Case{ "latin1_undeclared", nullptr, latin1 },
+         Case{ "utf8_undeclared", nullptr, utf8 }, Case{ "utf8", "ISO_IR 192", utf8 } })
+  {
+    SCOPED_TRACE(c.folder);
+    const std::string file = dir + "/" + c.folder + "/rs.dcm";
+    vtksys::SystemTools::MakeDirectory(dir + "/" + c.folder);
+    writeStructureSet(file,
+      { { 2, c.bytes, { rectangle(0.5, 5.5, 0.5, 5.5, 0.0), rectangle(0.5, 5.5, 0.5, 5.5, 2.0) } } }, "1.2.3", 0, 0,
+      nullptr, std::string(), c.characterSet);
+    vtkNew<vtkLKMedicalImageReader> reader;
+    reader->SetFileName(file.c_str());
+    lktest::ErrorRecorder quiet(reader); // no CT beside it
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    lktest::ErrorRecorder rec(bone);
+    bone->SetInputConnection(reader->GetOutputPort());
+    bone->SetLabelName(utf8.c_str());
+    bone->Update();
+    EXPECT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_EQ(bone->GetEffectiveLabel(), 2);
+    ASSERT_EQ(reader->GetNumberOfSegments(), 1);
+    EXPECT_EQ(std::string(reader->GetSegmentName(0)), utf8);
+  }
+
+  // Written on a Latin-1 CT (its patient "Müller"): a name Latin-1 spells is
+  // written in Latin-1, as the CT is; a Greek one ("Κάτω γνάθος") makes the
+  // set UTF-8, and the patient's name goes with it. Both read back.
+  vtkNew<vtkDICOMMetaData> german;
+  german->Set(DC::SpecificCharacterSet, "ISO_IR 100");
+  german->Set(DC::PatientName, "M\xFCller^Hans");
+  vtksys::SystemTools::MakeDirectory(dir + "/ct");
+  writeSmallCT(dir + "/ct", "%s/ct_%03d.dcm", nullptr, german);
+  vtksys::SystemTools::MakeDirectory(dir + "/rt");
+  const std::string greek = "\xCE\x9A\xCE\xAC\xCF\x84\xCF\x89 \xCE\xB3\xCE\xBD\xCE\xAC\xCE\xB8\xCE\xBF\xCF\x82";
+  struct Written
+  {
+    std::string name, characterSet, nameBytes, patientBytes;
+  };
+  for (const Written& w : { Written{ utf8, "ISO_IR 100", latin1, "M\xFCller^Hans" },
+         Written{ greek, "ISO_IR 192", greek, "M\xC3\xBCller^Hans" } })
+  {
+    SCOPED_TRACE(w.characterSet);
+    const std::string file = dir + "/rt/" + (w.name == greek ? "greek.dcm" : "german.dcm");
+    vtkNew<vtkLKStructureSetWriter> writer;
+    lktest::ErrorRecorder rec(writer);
+    writer->AddInputData(box(-10.5, -2.5, -5.5, 4.5, -5.0, 5.0));
+    writer->SetROIName(0, w.name.c_str());
+    writer->SetReferenceFileName((dir + "/ct").c_str());
+    writer->SetFileName(file.c_str());
+    ASSERT_EQ(writer->Write(), 1) << rec.messages;
+    vtkNew<vtkDICOMMetaData> meta;
+    vtkNew<vtkDICOMParser> parser;
+    parser->SetFileName(file.c_str());
+    parser->SetMetaData(meta);
+    parser->Update();
+    EXPECT_EQ(meta->Get(DC::SpecificCharacterSet).AsString(), w.characterSet);
+    EXPECT_EQ(meta->Get(DC::StructureSetROISequence).GetSequenceData()[0].Get(DC::ROIName).AsString(), w.nameBytes);
+    EXPECT_EQ(meta->Get(DC::PatientName).AsString(), w.patientBytes);
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder readRec(reader);
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    EXPECT_EQ(readRec.errors, 0) << readRec.messages;
+    ASSERT_EQ(reader->GetNumberOfSegments(), 1);
+    EXPECT_EQ(std::string(reader->GetSegmentName(0)), w.name);
+  }
+
+  // Names DICOM cannot hold are refused, with the reason; a name of 64
+  // two-byte characters is not one of them.
+  std::string umlauts;
+  for (int i = 0; i < 64; ++i)
+    umlauts += "\xC3\xB6";
+  struct Bad
+  {
+    std::string name, label, message;
+  };
+  for (const Bad& b : { Bad{ "upper\\lower", "latticekit", "holds a backslash, which DICOM reads as a separator" },
+         Bad{ std::string(65, 'x'), "latticekit", "is longer than DICOM's 64 characters" },
+         Bad{ "Kieferh\xF6hle", "latticekit", "is not UTF-8 text" }, Bad{ "a\nb", "latticekit", "holds a control character" },
+         Bad{ umlauts, "latticekit plan 2026", "The StructureSetLabel 'latticekit plan 2026' is longer than DICOM's 16" },
+         Bad{ umlauts, "", "The StructureSetLabel '' is empty" }, Bad{ umlauts, "latticekit", "" } })
+  {
+    vtkNew<vtkLKStructureSetWriter> writer;
+    lktest::ErrorRecorder rec(writer);
+    writer->AddInputData(box(-10.5, -2.5, -5.5, 4.5, -5.0, 5.0));
+    writer->SetROIName(0, b.name.c_str());
+    writer->SetStructureSetLabel(b.label.c_str());
+    writer->SetFileName((dir + "/rt/bad.dcm").c_str());
+    writer->Write();
+    EXPECT_EQ(rec.errors, b.message.empty() ? 0 : 1) << b.message;
+    EXPECT_NE(rec.messages.find(b.message), std::string::npos) << rec.messages;
+    EXPECT_EQ(vtksys::SystemTools::FileExists(dir + "/rt/bad.dcm"), b.message.empty());
   }
 }
