@@ -171,18 +171,24 @@ std::string unsavedSessionPath(const std::string& sessionPath)
 
 bool validPieceName(const std::string& name, std::string& why)
 {
+  // Shown as '?', a control character in a name read from a session does
+  // not reach the terminal that prints the reason.
+  std::string shown = name.substr(0, kPieceNameLength);
+  for (char& c : shown)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
+      c = '?';
   if (name.empty())
     why = "a piece's name is empty";
   else if (name.size() > kPieceNameLength)
-    why = "the piece name '" + name.substr(0, kPieceNameLength) + "...' is longer than " +
+    why = "the piece name '" + shown + "...' is longer than " +
       std::to_string(kPieceNameLength) + " characters";
   else if (name.front() == ' ' || name.back() == ' ')
-    why = "the piece name '" + name + "' starts or ends with a space";
+    why = "the piece name '" + shown + "' starts or ends with a space";
   else
     for (const char c : name)
       if (c < ' ' || c > '~' || c == '\\')
       {
-        why = "the piece name '" + name + "' holds a character other than the letters, digits, spaces and " +
+        why = "the piece name '" + shown + "' holds a character other than the letters, digits, spaces and " +
           "punctuation of ASCII (or a backslash, which DICOM reads as a separator)";
         break;
       }
