@@ -492,9 +492,20 @@ void PlannerStyle::typeName(const std::string& key)
   {
     // Printable ASCII only: the name goes into a DICOM ROI name. An event
     // log cannot give a space as a key code, so its key symbol counts.
+    // A key that gives no letter (Shift, an arrow) is passed over; one
+    // that gives a letter a name cannot hold is said.
     const char c = key == "space" ? ' ' : this->Interactor->GetKeyCode();
-    if (c >= ' ' && c <= '~' && c != '\\' && p.namingText.size() < kPieceNameLength)
+    const bool ascii = c >= ' ' && c <= '~' && c != '\\';
+    if (ascii && p.namingText.size() < kPieceNameLength)
+    {
       p.namingText += c;
+      p.message.clear();
+    }
+    else if (ascii)
+      p.message = "a name holds at most " + std::to_string(kPieceNameLength) + " characters";
+    else if (c == '\\' || static_cast<unsigned char>(c) >= 0x80)
+      p.message = "a name holds the letters, digits, spaces and punctuation of ASCII, which every DICOM "
+                  "character set spells alike, and no backslash (DICOM's separator)";
   }
   p.updateStatus();
   this->Interactor->Render();
