@@ -221,6 +221,10 @@ void Planner::setup()
   messages->GetPositionCoordinate()->SetValue(0.01, 0.985);
   renderer->AddViewProp(messages);
   scalarBar->SetVisibility(false);
+  // At the right, between the orientation cube and the status lines (its
+  // default place reaches down over them).
+  scalarBar->SetPosition(0.82, 0.22);
+  scalarBar->SetPosition2(0.17, 0.66);
   renderer->AddViewProp(scalarBar);
   vtkNew<vtkPolyDataMapper> sm;
   sm->SetInputData(strokePd);
