@@ -174,6 +174,8 @@ bool validPieceName(const std::string& name, std::string& why)
   // Shown as '?', a control character in a name read from a session does
   // not reach the terminal that prints the reason.
   std::string shown = name.substr(0, kPieceNameLength);
+  while (shown.size() < name.size() && !shown.empty() && (static_cast<unsigned char>(name[shown.size()]) & 0xC0) == 0x80)
+    shown.pop_back(); // not in the middle of a UTF-8 character
   for (char& c : shown)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
       c = '?';
