@@ -235,14 +235,15 @@ class PipelineTest(unittest.TestCase):
             # read again.
             writer = latticekit.vtkLKStructureSetWriter()
             writer.SetInputConnection(bone.GetOutputPort())
-            writer.SetROIName(0, "Ball")
+            writer.SetROIName(0, "Kieferh\u00f6hle")  # a Python str: UTF-8 through the wrappers
             writer.SetFileName(os.path.join(tmp, "written.dcm"))
             self.assertEqual(writer.Write(), 1)
             again = latticekit.vtkLKMedicalImageReader()
             again.SetFileName(os.path.join(tmp, "written.dcm"))
             again.AddObserver("WarningEvent", lambda caller, event: None)  # no CT beside it
             again.Update()
-            self.assertEqual([again.GetSegmentName(i) for i in range(again.GetNumberOfSegments())], ["Ball"])
+            self.assertEqual([again.GetSegmentName(i) for i in range(again.GetNumberOfSegments())],
+                             ["Kieferh\u00f6hle"])
         self.assertGreater(writer.GetNumberOfContours(), 15)
         self.assertEqual(reader.GetFileFormat(), "DICOM RTSTRUCT")
         self.assertEqual(reader.GetReferenceImageFileName(), "")  # no CT to write back onto
