@@ -1,5 +1,6 @@
 #include "vtkLKDICOMSeries.h"
 #include "vtkLKProgressRelay.h"
+#include "vtkLKText.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -40,30 +41,6 @@
 
 namespace lkvtk
 {
-
-bool isUTF8(const std::string& text)
-{
-  for (std::size_t i = 0; i < text.size();)
-  {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-    if (n == 0 || i + n > text.size())
-      return false;
-    unsigned long code = n == 1 ? c : c & (0x7Fu >> n);
-    for (std::size_t k = 1; k < n; ++k)
-    {
-      const unsigned char t = static_cast<unsigned char>(text[i + k]);
-      if ((t >> 6) != 0x2)
-        return false;
-      code = (code << 6) | (t & 0x3Fu);
-    }
-    static const unsigned long least[] = { 0, 0, 0x80, 0x800, 0x10000 };
-    if (code < least[n] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
-      return false;
-    i += n;
-  }
-  return true;
-}
 
 std::string dicomText(const vtkDICOMValue& value)
 {

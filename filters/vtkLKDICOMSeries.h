@@ -46,9 +46,6 @@ inline V3 sub(const V3& a, const V3& b)
 /// as UTF-8 if they are valid UTF-8 and as Latin-1 (ISO_IR 100) otherwise,
 /// as older systems wrote them; nothing is lost to U+FFFD.
 std::string dicomText(const vtkDICOMValue& value);
-/// Whether `text` is well-formed UTF-8 (no overlong forms, no surrogates,
-/// nothing beyond U+10FFFF).
-bool isUTF8(const std::string& text);
 
 /// The slice frame of an ImageOrientationPatient: the rows' direction r, the
 /// columns' c and their cross product n.

@@ -1,6 +1,7 @@
 #include "vtkLKStructureSetWriter.h"
 #include "vtkLKAbort.h"
 #include "vtkLKDICOMSeries.h"
+#include "vtkLKText.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -161,15 +162,14 @@ std::vector<std::vector<std::vector<V3>>> contoursOf(
 /// Empty when it can.
 std::string badText(const std::string& text, std::size_t most)
 {
-  if (!lkvtk::isUTF8(text))
+  std::vector<char32_t> characters;
+  if (!lkvtk::decodeUTF8(text, &characters))
     return "is not UTF-8 text";
-  if (std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; }))
+  if (std::any_of(characters.begin(), characters.end(), lkvtk::isControl))
     return "holds a control character";
   if (text.find('\\') != std::string::npos)
     return "holds a backslash, which DICOM reads as a separator of values";
-  const std::size_t characters = static_cast<std::size_t>(
-    std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-  if (characters > most)
+  if (characters.size() > most)
     return "is longer than DICOM's " + std::to_string(most) + " characters";
   return std::string();
 }

@@ -516,7 +516,9 @@ std::string pieceFileStem(std::size_t p, const std::string& name)
   std::string suffix;
   for (const char c : name)
   {
-    const bool kept = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.';
+    // A letter beyond ASCII (UTF-8, as names are) is kept whole.
+    const bool kept = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ||
+      static_cast<unsigned char>(c) >= 0x80;
     if (kept)
       suffix += c;
     else if (!suffix.empty() && suffix.back() != '_')

@@ -106,9 +106,10 @@ const char* meshExtensions();
 /// removeStaleExports and isExportedFile look for.
 inline constexpr std::array<const char*, 3> pieceExtensions{ ".stl", ".vtp", ".obj" };
 /// The name, without its extension, of piece `p`'s exported files: "piece1",
-/// or for a piece the user named "piece1-" and the name, each run of
+/// or for a piece the user named "piece1-" and the name, each run of ASCII
 /// characters other than letters, digits, '-' and '.' written as one '_'
-/// ("Strut fragment (L)" gives "piece1-Strut_fragment_L"). A print lab sees
+/// ("Strut fragment (L)" gives "piece1-Strut_fragment_L"; letters beyond
+/// ASCII stay, in UTF-8: "piece1-Unterkieferkörper"). A print lab sees
 /// the piece's name, as 3D Slicer names exported segments' files; the number
 /// keeps two names that differ in case or punctuation apart and the files in
 /// the plan's order; no shell or file system takes the name apart.

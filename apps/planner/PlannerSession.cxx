@@ -3,7 +3,9 @@
 #include "common/AppSupport.h"
 #include "common/AtomicFile.h"
 #include "common/JsonFields.h"
+#include "vtkLKText.h"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -171,29 +173,27 @@ std::string unsavedSessionPath(const std::string& sessionPath)
 
 bool validPieceName(const std::string& name, std::string& why)
 {
-  // Shown as '?', a control character in a name read from a session does
-  // not reach the terminal that prints the reason.
-  std::string shown = name.substr(0, kPieceNameLength);
-  while (shown.size() < name.size() && !shown.empty() && (static_cast<unsigned char>(name[shown.size()]) & 0xC0) == 0x80)
-    shown.pop_back(); // not in the middle of a UTF-8 character
-  for (char& c : shown)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
-      c = '?';
+  why.clear();
+  std::vector<char32_t> characters;
+  const bool utf8 = lkvtk::decodeUTF8(name, &characters);
+  // Shown with '?' for a control character (one read from a session must
+  // not reach the terminal that prints the reason) and cut to the length a
+  // name may have.
+  std::string shown;
+  for (std::size_t i = 0; i < characters.size() && i < kPieceNameLength; ++i)
+    shown += lkvtk::isControl(characters[i]) ? std::string("?") : lkvtk::encodeUTF8(characters[i]);
   if (name.empty())
     why = "a piece's name is empty";
-  else if (name.size() > kPieceNameLength)
-    why = "the piece name '" + shown + "...' is longer than " +
-      std::to_string(kPieceNameLength) + " characters";
-  else if (name.front() == ' ' || name.back() == ' ')
+  else if (!utf8)
+    why = "a piece's name is not UTF-8 text";
+  else if (characters.size() > kPieceNameLength)
+    why = "the piece name '" + shown + "...' is longer than " + std::to_string(kPieceNameLength) + " characters";
+  else if (characters.front() == ' ' || characters.back() == ' ')
     why = "the piece name '" + shown + "' starts or ends with a space";
-  else
-    for (const char c : name)
-      if (c < ' ' || c > '~' || c == '\\')
-      {
-        why = "the piece name '" + shown + "' holds a character other than the letters, digits, spaces and " +
-          "punctuation of ASCII (or a backslash, which DICOM reads as a separator)";
-        break;
-      }
+  else if (std::any_of(characters.begin(), characters.end(), lkvtk::isControl))
+    why = "the piece name '" + shown + "' holds a control character";
+  else if (name.find('\\') != std::string::npos)
+    why = "the piece name '" + shown + "' holds a backslash, which DICOM reads as a separator";
   return why.empty();
 }
 

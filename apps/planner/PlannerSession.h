@@ -97,10 +97,11 @@ struct PieceName
 /// segment's gets " (moved)".
 constexpr std::size_t kPieceNameLength = 56;
 
-/// Whether `name` can name a piece: 1 to kPieceNameLength printable ASCII
-/// characters (what every DICOM character set spells alike), no backslash
-/// (DICOM's value separator), not starting or ending with a space; else
-/// `why` says what is wrong.
+/// Whether `name` can name a piece: UTF-8 text of 1 to kPieceNameLength
+/// characters, no control character, no backslash (DICOM's value
+/// separator), not starting or ending with a space; else `why` says what is
+/// wrong. The structure set spells it in the CT's character set, or in UTF-8
+/// where that one cannot.
 bool validPieceName(const std::string& name, std::string& why);
 
 struct Session

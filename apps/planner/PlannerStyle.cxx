@@ -3,6 +3,7 @@
 #include "common/AppSupport.h"
 
 #include "vtkLKPatchDeformationFilter.h"
+#include "vtkLKText.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
@@ -485,27 +486,34 @@ void PlannerStyle::typeName(const std::string& key)
   }
   else if (key == "BackSpace")
   {
+    // A whole character, however many bytes it takes in UTF-8.
+    while (!p.namingText.empty() && (static_cast<unsigned char>(p.namingText.back()) & 0xC0) == 0x80)
+      p.namingText.pop_back();
     if (!p.namingText.empty())
       p.namingText.pop_back();
+    p.message.clear();
   }
   else
   {
-    // Printable ASCII only: the name goes into a DICOM ROI name. An event
-    // log cannot give a space as a key code, so its key symbol counts.
-    // A key that gives no letter (Shift, an arrow) is passed over; one
-    // that gives a letter a name cannot hold is said.
+    // X gives a typed letter as Latin-1 (an o with two dots is 0xF6): it
+    // goes into the name as UTF-8. An event log cannot give a space as a
+    // key code, so its key symbol counts. A key that gives no letter
+    // (Shift, an arrow, a control key) is passed over; a backslash and a
+    // name grown to its longest are said.
     const char c = key == "space" ? ' ' : this->Interactor->GetKeyCode();
-    const bool ascii = c >= ' ' && c <= '~' && c != '\\';
-    if (ascii && p.namingText.size() < kPieceNameLength)
+    const unsigned char code = static_cast<unsigned char>(c);
+    const bool letter = c != '\\' && ((code >= 0x20 && code < 0x7F) || code > 0xA0);
+    std::vector<char32_t> characters;
+    lkvtk::decodeUTF8(p.namingText, &characters);
+    if (letter && characters.size() < kPieceNameLength)
     {
-      p.namingText += c;
+      p.namingText += lkvtk::encodeUTF8(code);
       p.message.clear();
     }
-    else if (ascii)
+    else if (letter)
       p.message = "a name holds at most " + std::to_string(kPieceNameLength) + " characters";
-    else if (c == '\\' || static_cast<unsigned char>(c) >= 0x80)
-      p.message = "a name holds the letters, digits, spaces and punctuation of ASCII, which every DICOM "
-                  "character set spells alike, and no backslash (DICOM's separator)";
+    else if (c == '\\')
+      p.message = "a name cannot hold a backslash: DICOM reads it as a separator";
   }
   p.updateStatus();
   this->Interactor->Render();
