@@ -44,13 +44,12 @@ namespace lkvtk
 
 std::string dicomText(const vtkDICOMValue& value)
 {
-  const std::string raw = value.AsString();
-  const bool ascii = std::all_of(raw.begin(), raw.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; });
-  if (ascii)
-    return raw;
-  if (value.GetCharacterSet() == vtkDICOMCharacterSet::ISO_IR_6) // declared none (or ASCII, wrongly)
-    return isUTF8(raw) ? raw : vtkDICOMCharacterSet(vtkDICOMCharacterSet::ISO_IR_100).ToUTF8(raw);
-  return value.AsUTF8String();
+  // ISO 2022 sets (Japanese, Korean) are 7-bit, their text switched by
+  // escape sequences: only ASCII itself is taken as it is.
+  if (value.GetCharacterSet() != vtkDICOMCharacterSet::ISO_IR_6)
+    return value.AsUTF8String();
+  const std::string raw = value.AsString(); // declared none (or ASCII, wrongly)
+  return isUTF8(raw) ? raw : vtkDICOMCharacterSet(vtkDICOMCharacterSet::ISO_IR_100).ToUTF8(raw);
 }
 
 ErrorCatcher::ErrorCatcher(vtkObject* object)

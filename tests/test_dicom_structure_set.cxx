@@ -1414,6 +1414,39 @@ TEST(DicomStructureSet, NamesInOtherCharacterSetsAreReadAndWrittenInUTF8)
     EXPECT_EQ(std::string(reader->GetSegmentName(0)), w.name);
   }
 
+  // A Japanese CT (ISO 2022 with JIS X 0208, as Japanese hospitals' systems
+  // write): a name in kanji ("下顎骨", mandible) is written in the CT's
+  // character set, with its escape sequences, and reads back.
+  {
+    vtkNew<vtkDICOMMetaData> japanese;
+    japanese->Set(DC::SpecificCharacterSet, "\\ISO 2022 IR 87");
+    vtksys::SystemTools::MakeDirectory(dir + "/ct_jp");
+    writeSmallCT(dir + "/ct_jp", "%s/ct_%03d.dcm", nullptr, japanese);
+    const std::string kanji = "\xE4\xB8\x8B\xE9\xA1\x8E\xE9\xAA\xA8";
+    vtkNew<vtkLKStructureSetWriter> writer;
+    lktest::ErrorRecorder rec(writer);
+    writer->AddInputData(box(-10.5, -2.5, -5.5, 4.5, -5.0, 5.0));
+    writer->SetROIName(0, kanji.c_str());
+    writer->SetReferenceFileName((dir + "/ct_jp").c_str());
+    writer->SetFileName((dir + "/rt/japanese.dcm").c_str());
+    ASSERT_EQ(writer->Write(), 1) << rec.messages;
+    vtkNew<vtkDICOMMetaData> meta;
+    vtkNew<vtkDICOMParser> parser;
+    parser->SetFileName((dir + "/rt/japanese.dcm").c_str());
+    parser->SetMetaData(meta);
+    parser->Update();
+    EXPECT_EQ(meta->Get(DC::SpecificCharacterSet).AsString(), "\\ISO 2022 IR 87");
+    const std::string bytes = meta->Get(DC::StructureSetROISequence).GetSequenceData()[0].Get(DC::ROIName).AsString();
+    EXPECT_EQ(bytes.substr(0, 3), "\x1B$B"); // JIS X 0208 switched in
+    vtkNew<vtkLKMedicalImageReader> reader;
+    lktest::ErrorRecorder readRec(reader);
+    reader->SetFileName((dir + "/rt/japanese.dcm").c_str());
+    reader->Update();
+    EXPECT_EQ(readRec.errors, 0) << readRec.messages;
+    ASSERT_EQ(reader->GetNumberOfSegments(), 1);
+    EXPECT_EQ(std::string(reader->GetSegmentName(0)), kanji);
+  }
+
   // Names DICOM cannot hold are refused, with the reason; a name of 64
   // two-byte characters is not one of them.
   std::string umlauts;
