@@ -4,6 +4,7 @@
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKStructureSetWriter.h"
+#include "vtkLKText.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -51,6 +52,8 @@ void usage(std::ostream& os)
         "                     voxels of value N, as a 0/1 label map), or a segment of a\n"
         "                     segmentation (.seg.nrrd, DICOM SEG) or an ROI of an RT\n"
         "                     structure set by its name\n"
+        "  --roi NAME         the ROI's name in a .dcm OUTPUT (default: the segment's name,\n"
+        "                     or Bone; up to 64 characters, no backslash)\n"
         "  --series I         DICOM: read series I of the folder (0 = largest, the default)\n"
         "  --slice-spacing H  DICOM: resampled slice spacing in mm (default: smallest gap)\n"
         "  --fill-cavities    fill enclosed air (in 3D or within a slice) first: the outer\n"
@@ -74,7 +77,7 @@ int main(int argc, char* argv[])
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
   int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
   long label = 0;
-  std::string labelName;
+  std::string labelName, roiName;
   bool repair = true, quiet = false, fillCavities = false;
   lkapp::Arguments args(argc, argv, usage);
   const double inf = std::numeric_limits<double>::max();
@@ -114,6 +117,8 @@ int main(int argc, char* argv[])
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_OFF;
     else if (a == "--label")
       args.labelOrName(a, label, labelName);
+    else if (a == "--roi")
+      roiName = args.value(a);
     else if (a == "--series")
       series = args.integer(a, 0, std::numeric_limits<long>::max(), "an integer >= 0");
     else if (a == "--slice-spacing")
@@ -132,6 +137,18 @@ int main(int argc, char* argv[])
   if ((label > 0 || !labelName.empty()) && labelMode == vtkLKBoneSurfaceFilter::LABEL_MAP_OFF)
   {
     std::cerr << "error: --label takes one label of a label map; --no-label-map says the input is none\n";
+    return 2;
+  }
+  const bool structureSet =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(output)) == ".dcm";
+  if (!roiName.empty() && !structureSet)
+  {
+    std::cerr << "error: --roi names the ROI of a .dcm OUTPUT (an RT structure set)\n";
+    return 2;
+  }
+  if (!roiName.empty() && !lkvtk::dicomTextProblem(roiName, 64).empty())
+  {
+    std::cerr << "error: --roi: the name " << lkvtk::dicomTextProblem(roiName, 64) << "\n";
     return 2;
   }
   if (input.empty() || output.empty())
@@ -204,7 +221,7 @@ int main(int argc, char* argv[])
   }
   vtkPolyData* mesh = surface->GetOutput();
   std::string written;
-  if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(output)) == ".dcm")
+  if (structureSet)
   {
     // An RT structure set, for a PACS viewer or a planning system: the
     // surface as an ROI, its contours on the CT's slices when the input is
@@ -212,8 +229,16 @@ int main(int argc, char* argv[])
     // beside it (the set then belongs to the CT's patient and study).
     vtkNew<vtkLKStructureSetWriter> set;
     set->SetInputData(mesh);
+    // A segment's name from a segmentation file can be longer than an ROI
+    // name may be, or hold a backslash: it is fitted, and the change said.
     const std::string segment = surface->GetEffectiveSegmentName();
-    set->SetROIName(0, segment.empty() ? "Bone" : segment.c_str());
+    std::string roi = roiName.empty() ? (segment.empty() ? "Bone" : lkvtk::fittedDicomText(segment, 64)) : roiName;
+    if (roi.empty())
+      roi = "Bone";
+    if (roiName.empty() && !segment.empty() && roi != segment)
+      std::cerr << "warning: the segment's name is written as the ROI name '" << roi
+                << "' (64 characters at most, no backslash or control character); --roi gives another\n";
+    set->SetROIName(0, roi.c_str());
     const bool onTheCT = *reader->GetReferenceImageFileName() != '\0';
     if (onTheCT)
       set->SetReferenceFileName(reader->GetReferenceImageFileName());

@@ -156,24 +156,6 @@ std::vector<std::vector<std::vector<V3>>> contoursOf(
   return out;
 }
 
-/// Why `text` cannot be a DICOM text value of at most `most` characters
-/// (ROIName is an LO of 64, StructureSetLabel an SH of 16): not UTF-8, a
-/// control character, a backslash (DICOM's value separator), too long.
-/// Empty when it can.
-std::string badText(const std::string& text, std::size_t most)
-{
-  std::vector<char32_t> characters;
-  if (!lkvtk::decodeUTF8(text, &characters))
-    return "is not UTF-8 text";
-  if (std::any_of(characters.begin(), characters.end(), lkvtk::isControl))
-    return "holds a control character";
-  if (text.find('\\') != std::string::npos)
-    return "holds a backslash, which DICOM reads as a separator of values";
-  if (characters.size() > most)
-    return "is longer than DICOM's " + std::to_string(most) + " characters";
-  return std::string();
-}
-
 std::string today(const char* format)
 {
   char text[32];
@@ -290,7 +272,7 @@ void vtkLKStructureSetWriter::WriteData()
 
   // The names: UTF-8, each to be written in the set's character set.
   const std::string label = this->StructureSetLabel ? this->StructureSetLabel : "";
-  std::string unfit = label.empty() ? std::string("is empty") : badText(label, 16);
+  std::string unfit = label.empty() ? std::string("is empty") : lkvtk::dicomTextProblem(label, 16);
   if (!unfit.empty())
   {
     vtkErrorMacro("The StructureSetLabel '" << label << "' " << unfit << ".");
@@ -298,7 +280,7 @@ void vtkLKStructureSetWriter::WriteData()
     return;
   }
   for (std::size_t i = 0; i < this->ROINames.size() && i < surfaces.size(); ++i)
-    if (!(unfit = badText(this->ROINames[i], 64)).empty())
+    if (!(unfit = lkvtk::dicomTextProblem(this->ROINames[i], 64)).empty())
     {
       vtkErrorMacro("The ROI name '" << this->ROINames[i] << "' (input " << i << ") " << unfit << ".");
       this->SetErrorCode(vtkErrorCode::UserError);

@@ -79,6 +79,52 @@ inline bool isControl(char32_t code)
 {
   return code < 0x20 || (code >= 0x7F && code <= 0x9F);
 }
+/// Why `text` cannot be a DICOM name of at most `most` characters (an LO
+/// such as ROIName holds 64, an SH such as StructureSetLabel 16): not UTF-8,
+/// a control character, a backslash (DICOM's value separator), too long.
+/// Empty when it can.
+inline std::string dicomTextProblem(const std::string& text, std::size_t most)
+{
+  std::vector<char32_t> characters;
+  if (!decodeUTF8(text, &characters))
+    return "is not UTF-8 text";
+  for (const char32_t c : characters)
+    if (isControl(c))
+      return "holds a control character";
+  if (text.find('\\') != std::string::npos)
+    return "holds a backslash, which DICOM reads as a separator of values";
+  if (characters.size() > most)
+    return "is longer than " + std::to_string(most) + " characters";
+  return std::string();
+}
+
+/// `text` made a DICOM name of at most `most` characters, for a name taken
+/// from elsewhere (a segmentation's segment): bytes that are not UTF-8 read
+/// as Latin-1, control characters dropped, a backslash written as '/', the
+/// rest cut off, spaces at the ends trimmed.
+inline std::string fittedDicomText(const std::string& text, std::size_t most)
+{
+  std::vector<char32_t> characters;
+  if (!decodeUTF8(text, &characters))
+  {
+    characters.clear();
+    for (const char c : text)
+      characters.push_back(static_cast<unsigned char>(c));
+  }
+  std::string out;
+  std::size_t kept = 0;
+  for (const char32_t c : characters)
+  {
+    if (isControl(c) || (kept == 0 && c == ' '))
+      continue;
+    if (kept++ == most)
+      break;
+    out += c == '\\' ? std::string("/") : encodeUTF8(c);
+  }
+  while (!out.empty() && out.back() == ' ')
+    out.pop_back();
+  return out;
+}
 } // namespace lkvtk
 
 #endif

@@ -1457,9 +1457,9 @@ TEST(DicomStructureSet, NamesInOtherCharacterSetsAreReadAndWrittenInUTF8)
     std::string name, label, message;
   };
   for (const Bad& b : { Bad{ "upper\\lower", "latticekit", "holds a backslash, which DICOM reads as a separator" },
-         Bad{ std::string(65, 'x'), "latticekit", "is longer than DICOM's 64 characters" },
+         Bad{ std::string(65, 'x'), "latticekit", "is longer than 64 characters" },
          Bad{ "Kieferh\xF6hle", "latticekit", "is not UTF-8 text" }, Bad{ "a\nb", "latticekit", "holds a control character" },
-         Bad{ umlauts, "latticekit plan 2026", "The StructureSetLabel 'latticekit plan 2026' is longer than DICOM's 16" },
+         Bad{ umlauts, "latticekit plan 2026", "The StructureSetLabel 'latticekit plan 2026' is longer than 16" },
          Bad{ umlauts, "", "The StructureSetLabel '' is empty" }, Bad{ umlauts, "latticekit", "" } })
   {
     vtkNew<vtkLKStructureSetWriter> writer;

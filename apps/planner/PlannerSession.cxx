@@ -175,25 +175,20 @@ bool validPieceName(const std::string& name, std::string& why)
 {
   why.clear();
   std::vector<char32_t> characters;
-  const bool utf8 = lkvtk::decodeUTF8(name, &characters);
+  lkvtk::decodeUTF8(name, &characters);
   // Shown with '?' for a control character (one read from a session must
   // not reach the terminal that prints the reason) and cut to the length a
   // name may have.
   std::string shown;
   for (std::size_t i = 0; i < characters.size() && i < kPieceNameLength; ++i)
     shown += lkvtk::isControl(characters[i]) ? std::string("?") : lkvtk::encodeUTF8(characters[i]);
+  const std::string problem = lkvtk::dicomTextProblem(name, kPieceNameLength);
   if (name.empty())
     why = "a piece's name is empty";
-  else if (!utf8)
-    why = "a piece's name is not UTF-8 text";
-  else if (characters.size() > kPieceNameLength)
-    why = "the piece name '" + shown + "...' is longer than " + std::to_string(kPieceNameLength) + " characters";
-  else if (characters.front() == ' ' || characters.back() == ' ')
+  else if (!problem.empty())
+    why = "the piece name '" + shown + (characters.size() > kPieceNameLength ? "...' " : "' ") + problem;
+  else if (name.front() == ' ' || name.back() == ' ')
     why = "the piece name '" + shown + "' starts or ends with a space";
-  else if (std::any_of(characters.begin(), characters.end(), lkvtk::isControl))
-    why = "the piece name '" + shown + "' holds a control character";
-  else if (name.find('\\') != std::string::npos)
-    why = "the piece name '" + shown + "' holds a backslash, which DICOM reads as a separator";
   return why.empty();
 }
 
