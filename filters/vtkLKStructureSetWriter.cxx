@@ -275,14 +275,15 @@ void vtkLKStructureSetWriter::WriteData()
   std::string unfit = label.empty() ? std::string("is empty") : lkvtk::dicomTextProblem(label, 16);
   if (!unfit.empty())
   {
-    vtkErrorMacro("The StructureSetLabel '" << label << "' " << unfit << ".");
+    vtkErrorMacro("The StructureSetLabel '" << lkvtk::shownText(label, 80) << "' " << unfit << ".");
     this->SetErrorCode(vtkErrorCode::UserError);
     return;
   }
   for (std::size_t i = 0; i < this->ROINames.size() && i < surfaces.size(); ++i)
     if (!(unfit = lkvtk::dicomTextProblem(this->ROINames[i], 64)).empty())
     {
-      vtkErrorMacro("The ROI name '" << this->ROINames[i] << "' (input " << i << ") " << unfit << ".");
+      vtkErrorMacro(
+        "The ROI name '" << lkvtk::shownText(this->ROINames[i], 80) << "' (input " << i << ") " << unfit << ".");
       this->SetErrorCode(vtkErrorCode::UserError);
       return;
     }

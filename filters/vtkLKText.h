@@ -79,6 +79,19 @@ inline bool isControl(char32_t code)
 {
   return code < 0x20 || (code >= 0x7F && code <= 0x9F);
 }
+/// `text` as a message shows it: a control character as '?' (a terminal
+/// that printed one would act on it), cut after `most` characters, or where
+/// it stops being UTF-8, with "..." then.
+inline std::string shownText(const std::string& text, std::size_t most)
+{
+  std::vector<char32_t> characters;
+  const bool whole = decodeUTF8(text, &characters);
+  std::string out;
+  for (std::size_t i = 0; i < characters.size() && i < most; ++i)
+    out += isControl(characters[i]) ? std::string("?") : encodeUTF8(characters[i]);
+  return whole && characters.size() <= most ? out : out + "...";
+}
+
 /// Why `text` cannot be a DICOM name of at most `most` characters (an LO
 /// such as ROIName holds 64, an SH such as StructureSetLabel 16): not UTF-8,
 /// a control character, a backslash (DICOM's value separator), too long.

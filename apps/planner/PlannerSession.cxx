@@ -5,7 +5,6 @@
 #include "common/JsonFields.h"
 #include "vtkLKText.h"
 
-#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -174,19 +173,12 @@ std::string unsavedSessionPath(const std::string& sessionPath)
 bool validPieceName(const std::string& name, std::string& why)
 {
   why.clear();
-  std::vector<char32_t> characters;
-  lkvtk::decodeUTF8(name, &characters);
-  // Shown with '?' for a control character (one read from a session must
-  // not reach the terminal that prints the reason) and cut to the length a
-  // name may have.
-  std::string shown;
-  for (std::size_t i = 0; i < characters.size() && i < kPieceNameLength; ++i)
-    shown += lkvtk::isControl(characters[i]) ? std::string("?") : lkvtk::encodeUTF8(characters[i]);
+  const std::string shown = lkvtk::shownText(name, kPieceNameLength);
   const std::string problem = lkvtk::dicomTextProblem(name, kPieceNameLength);
   if (name.empty())
     why = "a piece's name is empty";
   else if (!problem.empty())
-    why = "the piece name '" + shown + (characters.size() > kPieceNameLength ? "...' " : "' ") + problem;
+    why = "the piece name '" + shown + "' " + problem;
   else if (name.front() == ' ' || name.back() == ' ')
     why = "the piece name '" + shown + "' starts or ends with a space";
   return why.empty();
