@@ -82,7 +82,8 @@ def main(argv):
     # Back to the hospital: on the CT's slices when the CT lies beside the set.
     writer = latticekit.vtkLKStructureSetWriter()
     writer.AddInputConnection(smooth.GetOutputPort())
-    writer.SetROIName(0, surface.GetEffectiveSegmentName() + " (lattice)")
+    # An ROI name holds 64 characters (a Python str counts them as DICOM does).
+    writer.SetROIName(0, surface.GetEffectiveSegmentName()[:54] + " (lattice)")
     if reader.GetReferenceImageFileName():
         writer.SetReferenceFileName(reader.GetReferenceImageFileName())
     writer.SetFileName(os.path.join(out, "lattice.dcm"))
