@@ -2,6 +2,7 @@
 #include "AtomicFile.h"
 #include "MeshFileCheck.h"
 #include "vtkLKMedicalImageReader.h"
+#include "vtkLKText.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -513,17 +514,24 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, std::string& erro
 std::string pieceFileStem(std::size_t p, const std::string& name)
 {
   std::string stem = "piece" + std::to_string(p);
+  std::vector<char32_t> characters;
+  lkvtk::decodeUTF8(name, &characters); // a valid piece name is UTF-8
+  // Kept: ASCII letters and digits, '-', '.', and letters beyond ASCII;
+  // not the invisible ones (no-break and zero-width spaces, a soft hyphen,
+  // the marks that turn text right to left, which could make a name read
+  // as another extension).
+  auto kept = [](char32_t c) {
+    if (c < 0x80)
+      return std::isalnum(static_cast<int>(c)) != 0 || c == '-' || c == '.';
+    return !lkvtk::isControl(c) && c != 0xA0 && c != 0xAD && !(c >= 0x2000 && c <= 0x200F) &&
+      !(c >= 0x2028 && c <= 0x202F) && !(c >= 0x205F && c <= 0x206F) && c != 0x3000 && c != 0xFEFF;
+  };
   std::string suffix;
-  for (const char c : name)
-  {
-    // A letter beyond ASCII (UTF-8, as names are) is kept whole.
-    const bool kept = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ||
-      static_cast<unsigned char>(c) >= 0x80;
-    if (kept)
-      suffix += c;
+  for (const char32_t c : characters)
+    if (kept(c))
+      suffix += lkvtk::encodeUTF8(c);
     else if (!suffix.empty() && suffix.back() != '_')
       suffix += '_';
-  }
   while (!suffix.empty() && suffix.back() == '_')
     suffix.pop_back();
   return suffix.empty() ? stem : stem + "-" + suffix;

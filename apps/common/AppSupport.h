@@ -109,7 +109,8 @@ inline constexpr std::array<const char*, 3> pieceExtensions{ ".stl", ".vtp", ".o
 /// or for a piece the user named "piece1-" and the name, each run of ASCII
 /// characters other than letters, digits, '-' and '.' written as one '_'
 /// ("Strut fragment (L)" gives "piece1-Strut_fragment_L"; letters beyond
-/// ASCII stay, in UTF-8: "piece1-Unterkieferkörper"). A print lab sees
+/// ASCII stay, in UTF-8: "piece1-Unterkieferkörper"; invisible ones, such as
+/// a no-break space or a right-to-left mark, do not). A print lab sees
 /// the piece's name, as 3D Slicer names exported segments' files; the number
 /// keeps two names that differ in case or punctuation apart and the files in
 /// the plan's order; no shell or file system takes the name apart.
