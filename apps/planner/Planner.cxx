@@ -131,7 +131,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | r: reset\n"
-                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius\n"
+                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: measure (two clicks)\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
@@ -201,6 +201,11 @@ std::string Planner::segmentText() const
 void Planner::setup()
 {
   window->AddRenderer(renderer);
+  overlay->SetLayer(1);
+  overlay->InteractiveOff();
+  overlay->SetActiveCamera(renderer->GetActiveCamera());
+  window->SetNumberOfLayers(2);
+  window->AddRenderer(overlay);
   window->SetSize(1000, 750);
   window->SetWindowName("latticekit planner");
   renderer->SetBackground(1, 1, 1);
@@ -244,6 +249,13 @@ void Planner::setup()
   preview->SetVisibility(false);
   preview->PickableOff();
   renderer->AddActor(preview);
+  // The first point of a distance being measured (u).
+  vtkNew<vtkPolyDataMapper> markerMapper;
+  measureMarker->SetMapper(markerMapper);
+  measureMarker->GetProperty()->SetColor(0.55, 0.0, 0.45);
+  measureMarker->SetVisibility(false);
+  measureMarker->PickableOff();
+  overlay->AddActor(measureMarker);
   // The patient's sides, as medical viewers show them: a mandible is nearly
   // symmetric, and a cut planned on the wrong side is the error to prevent.
   // Patient x, y, z point to the left, back and up in LPS; to the right,
@@ -291,7 +303,6 @@ void Planner::setup()
     markerRenderer->SetViewport(0.87, 0.85, 0.995, 0.995); // top right, above the distance colour bar
     markerRenderer->SetLayer(1);
     markerRenderer->InteractiveOff();
-    window->SetNumberOfLayers(2);
     window->AddRenderer(markerRenderer);
     renderer->AddObserver(vtkCommand::StartEvent, this, &Planner::followCamera);
   }
@@ -721,6 +732,7 @@ void Planner::rebuild()
     addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
       std::to_string(pieces.size()) + " piece(s)");
   showNames();
+  showMeasurements();
   placeSegment(session.segmentMatrix);
   if (std::string error; !keepUnsaved(error))
     addLine(message, "the changes not saved could not be kept (--session sets where): " + error);
@@ -897,6 +909,88 @@ void Planner::showNames()
     renderer->AddViewProp(caption);
     nameCaptions.push_back({ static_cast<int>(p), session.names[static_cast<std::size_t>(i)].at, caption });
   }
+}
+
+std::string Planner::lengthText(double length)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f mm", length);
+  return text;
+}
+
+void Planner::showMeasurements()
+{
+  for (const auto& c : measureCaptions)
+    renderer->RemoveViewProp(c);
+  measureCaptions.clear();
+  if (measureActor)
+    overlay->RemoveActor(measureActor);
+  measureActor = nullptr;
+  // The first click's point, while the second is awaited.
+  measureMarker->SetVisibility(measuring && measureHalf);
+  if (measuring && measureHalf)
+  {
+    vtkNew<vtkSphereSource> ball;
+    ball->SetCenter(measureFirst.data());
+    ball->SetRadius(0.5 * joinTolerance);
+    ball->SetThetaResolution(16);
+    ball->SetPhiResolution(12);
+    ball->Update();
+    vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())->SetInputData(ball->GetOutput());
+  }
+  if (session.measurements.empty())
+    return;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines, ends;
+  for (const Measurement& m : session.measurements)
+  {
+    const vtkIdType a = points->InsertNextPoint(m.from.data());
+    const vtkIdType b = points->InsertNextPoint(m.to.data());
+    const vtkIdType ids[2] = { a, b };
+    lines->InsertNextCell(2, ids);
+    ends->InsertNextCell(1, &ids[0]);
+    ends->InsertNextCell(1, &ids[1]);
+    // Its length at its middle, on a light background over any colours.
+    const std::string text = lengthText(m.length());
+    auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
+    const double middle[3] = { 0.5 * (m.from[0] + m.to[0]), 0.5 * (m.from[1] + m.to[1]), 0.5 * (m.from[2] + m.to[2]) };
+    caption->SetAttachmentPoint(const_cast<double*>(middle));
+    caption->SetCaption(text.c_str());
+    caption->BorderOff();
+    caption->LeaderOn();
+    caption->ThreeDimensionalLeaderOff();
+    caption->GetTextActor()->SetTextScaleModeToNone();
+    vtkTextProperty* property = caption->GetCaptionTextProperty();
+    property->SetFontSize(14);
+    property->SetColor(0.45, 0.0, 0.4);
+    property->BoldOn();
+    property->ItalicOff();
+    property->ShadowOff();
+    property->SetBackgroundColor(1.0, 1.0, 1.0);
+    property->SetBackgroundOpacity(0.75);
+    caption->GetProperty()->SetColor(0.45, 0.0, 0.4);
+    caption->SetPosition(15, -30); // pixels from the middle: below, beside a name's caption
+    caption->SetWidth(0.01 * static_cast<double>(text.size() + 2));
+    caption->SetHeight(0.035);
+    caption->PickableOff();
+    renderer->AddViewProp(caption);
+    measureCaptions.push_back(caption);
+  }
+  vtkNew<vtkPolyData> shown;
+  shown->SetPoints(points);
+  shown->SetLines(lines);
+  shown->SetVerts(ends);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(shown);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.55, 0.0, 0.45);
+  actor->GetProperty()->SetLineWidth(3);
+  actor->GetProperty()->SetPointSize(9);
+  actor->GetProperty()->RenderPointsAsSpheresOn();
+  actor->PickableOff();
+  overlay->AddActor(actor);
+  measureActor = actor;
 }
 
 std::string Planner::pieceLabel(std::size_t p) const
@@ -1179,6 +1273,11 @@ void Planner::updateStatus()
   else if (naming == 2)
     s << " | NAME " << pieceLabel(static_cast<std::size_t>(namingPiece)) << ": " << namingText
       << "_ (Return keeps it, an empty name takes it away; Escape: stop)";
+  if (measuring)
+    s << (measureHalf ? " | MEASURE: click the second point (u: stop)" : " | MEASURE: click the first point (u: stop)");
+  else if (!session.measurements.empty())
+    s << " | measured: " << lengthText(session.measurements.back().length())
+      << (session.measurements.size() > 1 ? " (last of " + std::to_string(session.measurements.size()) + ")" : "");
   if (moving)
     s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
   else if (hasSegment())
@@ -1301,6 +1400,13 @@ std::string Planner::planText()
       std::snprintf(line, sizeof line, ", %d iterations\n", d.iterations);
     else
       std::snprintf(line, sizeof line, ", amount %.3f\n", d.amount);
+    text += line;
+  }
+  for (std::size_t i = 0; i < session.measurements.size(); ++i)
+  {
+    const Measurement& m = session.measurements[i];
+    std::snprintf(line, sizeof line, "measurement %zu: %s from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)\n", i + 1,
+      lengthText(m.length()).c_str(), m.from[0], m.from[1], m.from[2], m.to[0], m.to[1], m.to[2]);
     text += line;
   }
   text += segmentText();

@@ -91,6 +91,9 @@ public:
   /// coordinate system is known (its SPACE tag: an oriented CT, or a tagged
   /// mesh file).
   vtkNew<vtkRenderer> markerRenderer;
+  /// The measurements, drawn over the bone (a distance's line runs through
+  /// it), with the main view's camera.
+  vtkNew<vtkRenderer> overlay;
   vtkNew<vtkAnnotatedCubeActor> marker;
   vtkNew<vtkAxesActor> markerAxes; ///< arrows to the patient's left (or right), back (or front) and top
   vtkNew<vtkTextActor> help, status, messages;
@@ -305,6 +308,21 @@ public:
   int namingPiece = -1;
   std::array<double, 3> namingAt{ 0, 0, 0 };
   std::string namingText;
+
+  /// Measuring in the window (u): the next two clicks on the bone give a
+  /// distance (session.measurements); `measureFirst` is the first click's
+  /// point while `measureHalf`.
+  bool measuring = false;
+  bool measureHalf = false;
+  std::array<double, 3> measureFirst{ 0, 0, 0 };
+  /// The measurements in the view: a line each, its ends, and its length at
+  /// its middle; the first click's point while one is being measured.
+  std::vector<vtkSmartPointer<vtkCaptionActor2D>> measureCaptions;
+  vtkNew<vtkActor> measureMarker;
+  vtkSmartPointer<vtkActor> measureActor;
+  void showMeasurements();
+  /// A measurement's text: "23.41 mm".
+  static std::string lengthText(double length);
 
   /// Re-runs the plan from the bone: strokes, cut (kept while unchanged),
   /// deformations, lattices, colours.

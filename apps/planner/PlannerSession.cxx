@@ -128,6 +128,13 @@ std::string sessionText(const Session& s)
     jn["at"] = triple(n.at);
     root["names"].append(jn);
   }
+  for (const Measurement& m : s.measurements)
+  {
+    Json::Value jm;
+    jm["from"] = triple(m.from);
+    jm["to"] = triple(m.to);
+    root["measurements"].append(jm);
+  }
   if (s.surface.given)
   {
     root["surface"]["iso"] = s.surface.iso;
@@ -170,6 +177,11 @@ std::string unsavedSessionPath(const std::string& sessionPath)
   return p.folder + p.stem + "-unsaved" + (p.extension.empty() ? ".json" : p.extension);
 }
 
+double Measurement::length() const
+{
+  return std::hypot(to[0] - from[0], to[1] - from[1], to[2] - from[2]);
+}
+
 bool validPieceName(const std::string& name, std::string& why)
 {
   why.clear();
@@ -207,6 +219,7 @@ bool readSession(
   s = Session();
   noteUnknownMembers(root,
     { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "segment", "deformations", "names",
+      "measurements",
       "surface", "input" },
     session, notes);
   const Json::Value& strokes = root["strokes"];
@@ -381,6 +394,26 @@ bool readSession(
       return false;
     }
     s.names.push_back(n);
+  }
+  const Json::Value& measurements = root["measurements"];
+  if (!measurements.isNull() && !measurements.isArray())
+  {
+    error = session + ": \"measurements\" must be a list";
+    return false;
+  }
+  for (Json::ArrayIndex i = 0; measurements.isArray() && i < measurements.size(); ++i)
+  {
+    const Json::Value& jm = measurements[i];
+    Measurement m;
+    const std::string where = "measurement " + std::to_string(i) + " in '" + path + "'";
+    noteUnknownMembers(jm, { "from", "to" }, where, notes);
+    if (!jm.isObject() || !jsonNumbers(jm["from"], m.from) || !jsonNumbers(jm["to"], m.to) ||
+      !std::isfinite(m.length()))
+    {
+      error = where + " needs two points \"from\" and \"to\", [x, y, z] each";
+      return false;
+    }
+    s.measurements.push_back(m);
   }
   if (root.isMember("surface"))
   {

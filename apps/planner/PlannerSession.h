@@ -22,6 +22,8 @@
 //                     "iterations": 1 to 100}, ...]       (smooth; 3)
 //   "names": [{"name": text, "at": [x, y, z]}, ...]   names given to pieces (see
 //                                                     PieceName)
+//   "measurements": [{"from": [x, y, z],              distances measured (see
+//                     "to": [x, y, z]}, ...]          Measurement)
 //   "surface": {"iso": HU, "seed": [x, y, z],
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
@@ -93,6 +95,16 @@ struct PieceName
   std::array<double, 3> at{ 0, 0, 0 };
 };
 
+/// A distance the surgeon measured (u, two clicks): two points on the bone
+/// as the window showed it when they were picked (the moved segment where it
+/// was moved), patient mm. It stays where it was measured when the plan
+/// changes after.
+struct Measurement
+{
+  std::array<double, 3> from{ 0, 0, 0 }, to{ 0, 0, 0 };
+  double length() const;
+};
+
 /// The longest name: a DICOM ROIName (LO) holds 64 characters, and the moved
 /// segment's gets " (moved)".
 constexpr std::size_t kPieceNameLength = 56;
@@ -124,6 +136,7 @@ struct Session
   /// Applied in order to the pieces after the cut, before the lattice.
   std::vector<Deformation> deformations;
   std::vector<PieceName> names;
+  std::vector<Measurement> measurements;
   /// How a CT's bone surface was made (saved with the session, so that its
   /// strokes find the same surface on replay): the threshold, the component
   /// at a seed or the largest, the DICOM series.

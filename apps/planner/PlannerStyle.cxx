@@ -354,10 +354,55 @@ void PlannerStyle::endSaw()
   this->Interactor->Render();
 }
 
+void PlannerStyle::stopMeasuring()
+{
+  planner->measuring = false;
+  if (planner->measureHalf)
+  {
+    planner->measureHalf = false;
+    planner->showMeasurements();
+  }
+}
+
+void PlannerStyle::measureClick()
+{
+  // A point on the bone as it is shown (the moved segment where it was
+  // moved), as strokes are picked.
+  const int* pos = this->Interactor->GetEventPosition();
+  picker->SetTolerance(0.0005);
+  locators.update(planner->renderer, picker);
+  if (!picker->Pick(pos[0], pos[1], 0, planner->renderer) || picker->GetCellId() < 0)
+    planner->message = "no bone there: click the bone to measure from and to (u: stop measuring)";
+  else
+  {
+    double p[3];
+    picker->GetPickPosition(p);
+    planner->message.clear();
+    if (!planner->measureHalf)
+    {
+      planner->measureFirst = { p[0], p[1], p[2] };
+      planner->measureHalf = true;
+      planner->showMeasurements();
+    }
+    else
+    {
+      planner->remember();
+      planner->session.measurements.push_back({ planner->measureFirst, { p[0], p[1], p[2] } });
+      planner->measureHalf = false;
+      planner->notice = "measured " + Planner::lengthText(planner->session.measurements.back().length());
+      planner->rebuild();
+    }
+  }
+  planner->updateStatus();
+  this->Interactor->Render();
+}
+
 void PlannerStyle::OnLeftButtonDown()
 {
   if (planner->naming == 1)
     return pickPieceToName();
+  if (planner->measuring)
+    return measureClick();
   if (planner->tool != NO_TOOL)
     return startDeform();
   if (planner->moving && planner->hasSegment())
@@ -541,6 +586,21 @@ void PlannerStyle::OnChar()
       planner->sawing = false;
       planner->moving = false;
       planner->tool = NO_TOOL;
+      stopMeasuring();
+    }
+  }
+  else if (key == "u")
+  {
+    rebuild = false;
+    const bool on = !planner->measuring;
+    stopMeasuring();
+    planner->measuring = on;
+    if (on)
+    {
+      planner->drawing = false;
+      planner->sawing = false;
+      planner->moving = false;
+      planner->tool = NO_TOOL;
     }
   }
   else if (key == "d" || key == "p")
@@ -551,6 +611,7 @@ void PlannerStyle::OnChar()
     planner->moving = false;
     planner->tool = NO_TOOL;
     rebuild = false;
+    stopMeasuring();
   }
   else if (key == "f")
   {
@@ -559,6 +620,7 @@ void PlannerStyle::OnChar()
     planner->sawing = false;
     planner->moving = false;
     rebuild = false;
+    stopMeasuring();
   }
   else if (key == "bracketleft" || key == "bracketright")
   {
@@ -611,6 +673,7 @@ void PlannerStyle::OnChar()
       planner->drawing = false;
       planner->sawing = false;
       planner->tool = NO_TOOL;
+      stopMeasuring();
     }
   }
   else if (key == "r")
@@ -657,6 +720,11 @@ void PlannerStyle::OnChar()
     else
       planner->message = error;
     rebuild = false;
+  }
+  else if (key == "Escape" && planner->measuring)
+  {
+    rebuild = false; // Escape ends measuring, as it ends naming; it quits only from the view
+    stopMeasuring();
   }
   else if (key == "q" || key == "Escape")
   {

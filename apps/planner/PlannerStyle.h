@@ -80,6 +80,10 @@ public:
 
   /// Naming (t): a click picks the piece, then the keys type its name.
   void pickPieceToName();
+  /// Measuring (u): a click's point on the bone, the first or the second of
+  /// a distance; stopMeasuring ends it (another mode's key does too).
+  void measureClick();
+  void stopMeasuring();
   /// A key while naming: every key is the naming's (Escape stops it).
   void typeName(const std::string& key);
 
