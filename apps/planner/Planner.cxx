@@ -139,6 +139,35 @@ const char* toolName(int tool)
   return tool == BUMP ? "bump" : tool == BOX ? "box" : tool == SMOOTH ? "smooth" : "off";
 }
 
+/// A caption in the view: `text` with a leader to its attachment point,
+/// `offset` pixels from it, bold in `colour` on a light background (readable
+/// over the Metro colours), not pickable.
+vtkSmartPointer<vtkCaptionActor2D> captionActor(
+  const std::string& text, const std::array<double, 3>& colour, int fontSize, const std::array<int, 2>& offset)
+{
+  auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
+  caption->SetCaption(text.c_str());
+  caption->BorderOff();
+  caption->LeaderOn();
+  caption->ThreeDimensionalLeaderOff();
+  caption->GetTextActor()->SetTextScaleModeToNone();
+  vtkTextProperty* property = caption->GetCaptionTextProperty();
+  property->SetFontSize(fontSize);
+  property->SetColor(colour.data());
+  property->BoldOn();
+  property->ItalicOff();
+  property->ShadowOff();
+  property->SetJustificationToLeft();
+  property->SetBackgroundColor(1.0, 1.0, 1.0);
+  property->SetBackgroundOpacity(0.75);
+  caption->GetProperty()->SetColor(colour.data()); // the leader
+  caption->SetPosition(offset[0], offset[1]);
+  caption->SetWidth(0.01 * static_cast<double>(text.size() + 2));
+  caption->SetHeight(0.0027 * fontSize);
+  caption->PickableOff();
+  return caption;
+}
+
 std::array<double, 3> pieceColour(std::size_t p)
 {
   const double colours[4][3] = { { 0.93, 0.85, 0.65 }, { 0.6, 0.75, 0.93 }, { 0.7, 0.9, 0.7 }, { 0.95, 0.7, 0.7 } };
@@ -886,26 +915,7 @@ void Planner::showNames()
     if (i < 0)
       continue;
     const std::string& name = session.names[static_cast<std::size_t>(i)].name;
-    auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
-    caption->SetCaption(name.c_str());
-    caption->BorderOff();
-    caption->LeaderOn();
-    caption->ThreeDimensionalLeaderOff();
-    caption->GetTextActor()->SetTextScaleModeToNone();
-    vtkTextProperty* text = caption->GetCaptionTextProperty();
-    text->SetFontSize(15);
-    text->SetColor(0.1, 0.1, 0.4);
-    text->BoldOn();
-    text->ItalicOff();
-    text->ShadowOff();
-    text->SetJustificationToLeft();
-    text->SetBackgroundColor(1.0, 1.0, 1.0); // readable over the Metro colours
-    text->SetBackgroundOpacity(0.75);
-    caption->GetProperty()->SetColor(0.1, 0.1, 0.4); // the leader
-    caption->SetPosition(20, 20); // pixels from the point
-    caption->SetWidth(0.01 * static_cast<double>(name.size() + 2));
-    caption->SetHeight(0.04);
-    caption->PickableOff();
+    auto caption = captionActor(name, { 0.1, 0.1, 0.4 }, 15, { 20, 20 }); // moved to its point by placeSegment
     renderer->AddViewProp(caption);
     nameCaptions.push_back({ static_cast<int>(p), session.names[static_cast<std::size_t>(i)].at, caption });
   }
@@ -950,29 +960,12 @@ void Planner::showMeasurements()
     lines->InsertNextCell(2, ids);
     ends->InsertNextCell(1, &ids[0]);
     ends->InsertNextCell(1, &ids[1]);
-    // Its length at its middle, on a light background over any colours.
+    // Its length.
     const std::string text = lengthText(m.length());
-    auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
-    const double middle[3] = { 0.5 * (m.from[0] + m.to[0]), 0.5 * (m.from[1] + m.to[1]), 0.5 * (m.from[2] + m.to[2]) };
-    caption->SetAttachmentPoint(const_cast<double*>(middle));
-    caption->SetCaption(text.c_str());
-    caption->BorderOff();
-    caption->LeaderOn();
-    caption->ThreeDimensionalLeaderOff();
-    caption->GetTextActor()->SetTextScaleModeToNone();
-    vtkTextProperty* property = caption->GetCaptionTextProperty();
-    property->SetFontSize(14);
-    property->SetColor(0.45, 0.0, 0.4);
-    property->BoldOn();
-    property->ItalicOff();
-    property->ShadowOff();
-    property->SetBackgroundColor(1.0, 1.0, 1.0);
-    property->SetBackgroundOpacity(0.75);
-    caption->GetProperty()->SetColor(0.45, 0.0, 0.4);
-    caption->SetPosition(15, -30); // pixels from the middle: below, beside a name's caption
-    caption->SetWidth(0.01 * static_cast<double>(text.size() + 2));
-    caption->SetHeight(0.035);
-    caption->PickableOff();
+    // Below its middle, beside where a name's caption would be.
+    auto caption = captionActor(text, { 0.45, 0.0, 0.4 }, 14, { 15, -30 });
+    double middle[3] = { 0.5 * (m.from[0] + m.to[0]), 0.5 * (m.from[1] + m.to[1]), 0.5 * (m.from[2] + m.to[2]) };
+    caption->SetAttachmentPoint(middle);
     renderer->AddViewProp(caption);
     measureCaptions.push_back(caption);
   }
