@@ -164,6 +164,7 @@ int main(int argc, char* argv[])
       : "",
     seconds);
   std::printf("%s", lkapp::lineFactsText(lkapp::lineFacts(lines ? lines.Get() : mesh.Get())).c_str());
+  std::vector<std::string> pieceStems; // the files' names, piece0, piece1, ...
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
   {
     vtkSmartPointer<vtkPolyData> piece = lkapp::cutPiece(cut->GetOutput(), p, true);
@@ -173,6 +174,7 @@ int main(int argc, char* argv[])
       static_cast<long long>(facts.capFaces), lkapp::pieceFactsText(facts).c_str());
     if (piecesFolder.empty())
       continue;
+    pieceStems.push_back(lkapp::pieceFileStem(static_cast<std::size_t>(p)));
     // For STL and OBJ the piece alone, without the cut's arrays.
     vtkNew<vtkPolyData> plain;
     plain->ShallowCopy(piece);
@@ -180,15 +182,12 @@ int main(int argc, char* argv[])
     plain->GetCellData()->Initialize();
     for (const char* ext : lkapp::pieceExtensions)
       if (!lkapp::writeMesh(ext == std::string(".vtp") ? piece.Get() : plain.Get(),
-            piecesFolder + "/" + lkapp::pieceFileStem(static_cast<std::size_t>(p)) + ext, error, space))
+            piecesFolder + "/" + pieceStems.back() + ext, error, space))
       {
         std::cerr << "error: " << error << "\n";
         return 1;
       }
   }
-  std::vector<std::string> pieceStems;
-  for (std::size_t p = 0; p < static_cast<std::size_t>(cut->GetNumberOfPieces()); ++p)
-    pieceStems.push_back(lkapp::pieceFileStem(p));
   if (!piecesFolder.empty() && !lkapp::removeStaleExports(piecesFolder, pieceStems, {}, error))
   {
     std::cerr << "error: " << error << "\n";

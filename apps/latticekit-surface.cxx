@@ -146,9 +146,10 @@ int main(int argc, char* argv[])
     std::cerr << "error: --roi names the ROI of a .dcm OUTPUT (an RT structure set)\n";
     return 2;
   }
-  if (!roiName.empty() && !lkvtk::dicomTextProblem(roiName, 64).empty())
+  if (const std::string problem = lkvtk::dicomTextProblem(roiName, lkvtk::kDICOMLongStringLength);
+      !roiName.empty() && !problem.empty())
   {
-    std::cerr << "error: --roi: the name " << lkvtk::dicomTextProblem(roiName, 64) << "\n";
+    std::cerr << "error: --roi: the name " << problem << "\n";
     return 2;
   }
   if (input.empty() || output.empty())
@@ -232,7 +233,7 @@ int main(int argc, char* argv[])
     // A segment's name from a segmentation file can be longer than an ROI
     // name may be, or hold a backslash: it is fitted, and the change said.
     const std::string segment = surface->GetEffectiveSegmentName();
-    std::string roi = roiName.empty() ? (segment.empty() ? "Bone" : lkvtk::fittedDicomText(segment, 64)) : roiName;
+    std::string roi = roiName.empty() ? (segment.empty() ? "Bone" : lkvtk::fittedDicomText(segment, lkvtk::kDICOMLongStringLength)) : roiName;
     if (roi.empty())
       roi = "Bone";
     if (roiName.empty() && !segment.empty() && roi != segment)

@@ -270,23 +270,30 @@ void vtkLKStructureSetWriter::WriteData()
     surfaces.push_back(surface);
   }
 
-  // The names: UTF-8, each to be written in the set's character set.
+  // The names: UTF-8, each to be written in the set's character set; an
+  // input without one is "ROI 1", "ROI 2", ...
   const std::string label = this->StructureSetLabel ? this->StructureSetLabel : "";
-  std::string unfit = label.empty() ? std::string("is empty") : lkvtk::dicomTextProblem(label, 16);
+  std::string unfit =
+    label.empty() ? std::string("is empty") : lkvtk::dicomTextProblem(label, lkvtk::kDICOMShortStringLength);
   if (!unfit.empty())
   {
     vtkErrorMacro("The StructureSetLabel '" << lkvtk::shownText(label, 80) << "' " << unfit << ".");
     this->SetErrorCode(vtkErrorCode::UserError);
     return;
   }
-  for (std::size_t i = 0; i < this->ROINames.size() && i < surfaces.size(); ++i)
-    if (!(unfit = lkvtk::dicomTextProblem(this->ROINames[i], 64)).empty())
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    const bool given = i < this->ROINames.size() && !this->ROINames[i].empty();
+    names.push_back(given ? this->ROINames[i] : "ROI " + std::to_string(i + 1));
+    if (!(unfit = lkvtk::dicomTextProblem(names.back(), lkvtk::kDICOMLongStringLength)).empty())
     {
       vtkErrorMacro(
-        "The ROI name '" << lkvtk::shownText(this->ROINames[i], 80) << "' (input " << i << ") " << unfit << ".");
+        "The ROI name '" << lkvtk::shownText(names.back(), 80) << "' (input " << i << ") " << unfit << ".");
       this->SetErrorCode(vtkErrorCode::UserError);
       return;
     }
+  }
 
   // The planes: the reference CT's slices, or axial planes SliceSpacing apart.
   Reference ref;
@@ -345,15 +352,12 @@ void vtkLKStructureSetWriter::WriteData()
   vtkDICOMCharacterSet characterSet = referenced
     ? vtkDICOMCharacterSet(ref.first->Get(DC::SpecificCharacterSet).AsString())
     : vtkDICOMCharacterSet(vtkDICOMCharacterSet::ISO_IR_6);
-  bool spelt = true;
-  for (std::size_t i = 0; i <= this->ROINames.size() && spelt; ++i)
-  {
-    const std::string& text = i < this->ROINames.size() ? this->ROINames[i] : label;
+  auto spells = [&characterSet](const std::string& text) {
     std::size_t converted = 0;
     characterSet.FromUTF8(text.data(), text.size(), &converted);
-    spelt = converted == text.size();
-  }
-  if (!spelt)
+    return converted == text.size();
+  };
+  if (!spells(label) || !std::all_of(names.begin(), names.end(), spells))
   {
     characterSet = vtkDICOMCharacterSet(vtkDICOMCharacterSet::ISO_IR_192);
     for (vtkDICOMTag tag : { DC::PatientName, DC::PatientID, DC::ReferringPhysicianName, DC::StudyID,
@@ -424,8 +428,7 @@ void vtkLKStructureSetWriter::WriteData()
     if (lkvtk::stopRequested(this, {})) // nothing written: an earlier file stays
       return;
     const int number = static_cast<int>(i) + 1;
-    const std::string name = i < this->ROINames.size() && !this->ROINames[i].empty() ? this->ROINames[i]
-                                                                                    : "ROI " + std::to_string(number);
+    const std::string& name = names[i];
     int open = 0;
     const auto perPlane = contoursOf(surfaces[i], ref.frame.n, ref.planes, open);
     this->NumberOfOpenContours += open;

@@ -10,6 +10,12 @@
 
 namespace lkvtk
 {
+/// DICOM's longest values of the text kinds a name takes: an LO (Long
+/// String, such as ROIName) holds 64 characters, an SH (Short String, such
+/// as StructureSetLabel) 16.
+constexpr std::size_t kDICOMLongStringLength = 64;
+constexpr std::size_t kDICOMShortStringLength = 16;
+
 /// The code points of `text`, appended to `points` when it is given. False
 /// where `text` is not well-formed UTF-8 (a stray or missing continuation
 /// byte, an overlong form, a surrogate, beyond U+10FFFF).
@@ -92,8 +98,8 @@ inline std::string shownText(const std::string& text, std::size_t most)
   return whole && characters.size() <= most ? out : out + "...";
 }
 
-/// Why `text` cannot be a DICOM name of at most `most` characters (an LO
-/// such as ROIName holds 64, an SH such as StructureSetLabel 16): not UTF-8,
+/// Why `text` cannot be a DICOM name of at most `most` characters
+/// (kDICOMLongStringLength, kDICOMShortStringLength): not UTF-8,
 /// a control character, a backslash (DICOM's value separator), too long.
 /// Empty when it can.
 inline std::string dicomTextProblem(const std::string& text, std::size_t most)

@@ -139,6 +139,18 @@ const char* toolName(int tool)
   return tool == BUMP ? "bump" : tool == BOX ? "box" : tool == SMOOTH ? "smooth" : "off";
 }
 
+/// A marker ball (an open line's end, a measurement's first point).
+vtkSmartPointer<vtkPolyData> ballAt(const std::array<double, 3>& centre, double radius)
+{
+  vtkNew<vtkSphereSource> ball;
+  ball->SetCenter(centre.data());
+  ball->SetRadius(radius);
+  ball->SetThetaResolution(16);
+  ball->SetPhiResolution(12);
+  ball->Update();
+  return ball->GetOutput();
+}
+
 /// A caption in the view: `text` with a leader to its attachment point,
 /// `offset` pixels from it, bold in `colour` on a light background (readable
 /// over the Metro colours), not pickable.
@@ -696,13 +708,7 @@ void Planner::rebuild()
   // Where an open line can be continued: a drag that starts in a marker.
   for (const auto& end : openEnds())
   {
-    vtkNew<vtkSphereSource> ball;
-    ball->SetCenter(end.data());
-    ball->SetRadius(joinTolerance);
-    ball->SetThetaResolution(16);
-    ball->SetPhiResolution(12);
-    ball->Update();
-    auto marker = addActorData(ball->GetOutput(), { 0.95, 0.55, 0.1 }, false);
+    auto marker = addActorData(ballAt(end, joinTolerance), { 0.95, 0.55, 0.1 }, false);
     marker->GetProperty()->SetOpacity(0.6);
     marker->PickableOff(); // a drag that starts in it picks the bone under it
   }
@@ -940,13 +946,7 @@ void Planner::showMeasurements()
   measureMarker->SetVisibility(measuring && measureHalf);
   if (measuring && measureHalf)
   {
-    vtkNew<vtkSphereSource> ball;
-    ball->SetCenter(measureFirst.data());
-    ball->SetRadius(0.5 * joinTolerance);
-    ball->SetThetaResolution(16);
-    ball->SetPhiResolution(12);
-    ball->Update();
-    vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())->SetInputData(ball->GetOutput());
+    vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())->SetInputData(ballAt(measureFirst, 0.5 * joinTolerance));
   }
   if (session.measurements.empty())
     return;

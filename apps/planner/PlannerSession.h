@@ -45,6 +45,7 @@
 #define latticekit_apps_PlannerSession_h
 
 #include "vtkLKStrokeFeatureLineFilter.h"
+#include "vtkLKText.h"
 
 #include <vtk_jsoncpp.h>
 
@@ -106,8 +107,8 @@ struct Measurement
 };
 
 /// The longest name: a DICOM ROIName (LO) holds 64 characters, and the moved
-/// segment's gets " (moved)".
-constexpr std::size_t kPieceNameLength = 56;
+/// segment's gets " (moved)" (8).
+constexpr std::size_t kPieceNameLength = lkvtk::kDICOMLongStringLength - 8;
 
 /// Whether `name` can name a piece: UTF-8 text of 1 to kPieceNameLength
 /// characters, no control character, no backslash (DICOM's value
