@@ -224,6 +224,31 @@ void Planner::placeSegment(const std::array<double, 16>& matrix)
       else
         a->SetUserMatrix(nullptr);
     }
+  shownMatrix = matrix;
+  showMeasurements(); // an end on the segment moves with it
+}
+
+std::array<double, 3> Planner::shownPoint(const std::array<double, 3>& point, int piece,
+  const std::array<double, 16>& matrix) const
+{
+  if (piece < 0 || piece != movedPiece())
+    return point;
+  std::array<double, 3> moved{ matrix[3], matrix[7], matrix[11] };
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j)
+      moved[i] += matrix[4 * i + j] * point[j];
+  return moved;
+}
+
+std::array<std::array<double, 3>, 2> Planner::measuredEnds(const Measurement& m) const
+{
+  return { shownPoint(m.from, m.pieces[0], session.segmentMatrix), shownPoint(m.to, m.pieces[1], session.segmentMatrix) };
+}
+
+double Planner::measuredLength(const Measurement& m) const
+{
+  const auto ends = measuredEnds(m);
+  return std::sqrt(vtkMath::Distance2BetweenPoints(ends[0].data(), ends[1].data()));
 }
 
 std::string Planner::segmentText() const
@@ -767,8 +792,7 @@ void Planner::rebuild()
     addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
       std::to_string(pieces.size()) + " piece(s)");
   showNames();
-  showMeasurements();
-  placeSegment(session.segmentMatrix);
+  placeSegment(session.segmentMatrix); // and the measurements
   if (std::string error; !keepUnsaved(error))
     addLine(message, "the changes not saved could not be kept (--session sets where): " + error);
   updateStatus();
@@ -946,7 +970,8 @@ void Planner::showMeasurements()
   measureMarker->SetVisibility(measuring && measureHalf);
   if (measuring && measureHalf)
   {
-    vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())->SetInputData(ballAt(measureFirst, 0.5 * joinTolerance));
+    vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())
+      ->SetInputData(ballAt(shownPoint(measureFirst, measureFirstPiece, shownMatrix), 0.5 * joinTolerance));
   }
   if (session.measurements.empty())
     return;
@@ -954,17 +979,19 @@ void Planner::showMeasurements()
   vtkNew<vtkCellArray> lines, ends;
   for (const Measurement& m : session.measurements)
   {
-    const vtkIdType a = points->InsertNextPoint(m.from.data());
-    const vtkIdType b = points->InsertNextPoint(m.to.data());
+    const std::array<double, 3> from = shownPoint(m.from, m.pieces[0], shownMatrix);
+    const std::array<double, 3> to = shownPoint(m.to, m.pieces[1], shownMatrix);
+    const vtkIdType a = points->InsertNextPoint(from.data());
+    const vtkIdType b = points->InsertNextPoint(to.data());
     const vtkIdType ids[2] = { a, b };
     lines->InsertNextCell(2, ids);
     ends->InsertNextCell(1, &ids[0]);
     ends->InsertNextCell(1, &ids[1]);
     // Its length.
-    const std::string text = lengthText(m.length());
+    const std::string text = lengthText(std::sqrt(vtkMath::Distance2BetweenPoints(from.data(), to.data())));
     // Below its middle, beside where a name's caption would be.
     auto caption = captionActor(text, { 0.45, 0.0, 0.4 }, 14, { 15, -30 });
-    double middle[3] = { 0.5 * (m.from[0] + m.to[0]), 0.5 * (m.from[1] + m.to[1]), 0.5 * (m.from[2] + m.to[2]) };
+    double middle[3] = { 0.5 * (from[0] + to[0]), 0.5 * (from[1] + to[1]), 0.5 * (from[2] + to[2]) };
     caption->SetAttachmentPoint(middle);
     renderer->AddViewProp(caption);
     measureCaptions.push_back(caption);
@@ -1022,12 +1049,18 @@ bool Planner::namePiece(std::size_t p, const std::array<double, 3>& at, const st
 void Planner::followPieces()
 {
   const bool segmentFollows = session.segment >= 0 && session.segmentAnchored && cut.pieces.size() >= 2;
-  if (!segmentFollows && session.deformations.empty())
+  if (!segmentFollows && session.deformations.empty() && session.measurements.empty())
     return; // without a cut the segment keeps its number for the cut's return
-  // One locator per piece serves the segment's point and every centre.
+  // One locator per piece serves the segment's point, every centre and
+  // every measured end.
   std::vector<std::array<double, 3>> points;
   for (const Deformation& d : session.deformations)
     points.push_back(d.centre);
+  for (const Measurement& m : session.measurements)
+  {
+    points.push_back(m.from);
+    points.push_back(m.to);
+  }
   points.push_back(session.segmentAnchor);
   const std::vector<std::vector<double>> distances = pieceDistances(points);
   double diagonal = 0.0;
@@ -1082,6 +1115,13 @@ void Planner::followPieces()
   }
   if (!moved.empty())
     notice += (notice.empty() ? "" : "; ") + std::string("the deformations follow their pieces: ") + moved;
+  // Each measured end goes with its piece, as the segment's move shows it.
+  for (std::size_t i = 0; i < session.measurements.size(); ++i)
+    for (std::size_t end = 0; end < 2; ++end)
+    {
+      int& piece = session.measurements[i].pieces[end];
+      piece = nearest(distances[session.deformations.size() + 2 * i + end], piece);
+    }
 }
 
 std::string Planner::summaryOfCut()
@@ -1269,7 +1309,7 @@ void Planner::updateStatus()
   if (measuring)
     s << (measureHalf ? " | MEASURE: click the second point (u: stop)" : " | MEASURE: click the first point (u: stop)");
   else if (!session.measurements.empty())
-    s << " | measured: " << lengthText(session.measurements.back().length())
+    s << " | measured: " << lengthText(measuredLength(session.measurements.back()))
       << (session.measurements.size() > 1 ? " (last of " + std::to_string(session.measurements.size()) + ")" : "");
   if (moving)
     s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
@@ -1398,9 +1438,15 @@ std::string Planner::planText()
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
   {
     const Measurement& m = session.measurements[i];
-    std::snprintf(line, sizeof line, "measurement %zu: %s from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)\n", i + 1,
-      lengthText(m.length()).c_str(), m.from[0], m.from[1], m.from[2], m.to[0], m.to[1], m.to[2]);
+    const auto [from, to] = measuredEnds(m);
+    std::snprintf(line, sizeof line, "measurement %zu: %s from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)", i + 1,
+      lengthText(measuredLength(m)).c_str(), from[0], from[1], from[2], to[0], to[1], to[2]);
     text += line;
+    // An end on the moved segment moved with it: the distance as picked
+    // too, where the move changed it.
+    if (lengthText(m.length()) != lengthText(measuredLength(m)))
+      text += ", " + lengthText(m.length()) + " before the segment's move";
+    text += "\n";
   }
   text += segmentText();
   // What the cut said (why it failed, a failed stroke) belongs to the plan

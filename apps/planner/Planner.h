@@ -311,16 +311,29 @@ public:
 
   /// Measuring in the window (u): the next two clicks on the bone give a
   /// distance (session.measurements); `measureFirst` is the first click's
-  /// point while `measureHalf`.
+  /// point (in its piece's frame) and `measureFirstPiece` its piece while
+  /// `measureHalf`.
   bool measuring = false;
   bool measureHalf = false;
   std::array<double, 3> measureFirst{ 0, 0, 0 };
-  /// The measurements in the view: a line each, its ends, and its length at
+  int measureFirstPiece = -1;
+  /// The measurements in the view, with the segment where `shownMatrix`
+  /// puts it (during a drag too): a line each, its ends, and its length at
   /// its middle; the first click's point while one is being measured.
   std::vector<vtkSmartPointer<vtkCaptionActor2D>> measureCaptions;
   vtkNew<vtkActor> measureMarker;
   vtkSmartPointer<vtkActor> measureActor;
   void showMeasurements();
+  /// The segment's transform as the view shows it (placeSegment's).
+  std::array<double, 16> shownMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  /// Where a point of piece `piece` (in its own frame) is shown: moved by
+  /// `matrix` on the moved segment, else where it is.
+  std::array<double, 3> shownPoint(const std::array<double, 3>& point, int piece,
+    const std::array<double, 16>& matrix) const;
+  /// A measurement's ends as the plan places them (the segment moved), and
+  /// the distance between them.
+  std::array<std::array<double, 3>, 2> measuredEnds(const Measurement& m) const;
+  double measuredLength(const Measurement& m) const;
   /// A measurement's text: "23.41 mm".
   static std::string lengthText(double length);
 

@@ -133,6 +133,8 @@ std::string sessionText(const Session& s)
     Json::Value jm;
     jm["from"] = triple(m.from);
     jm["to"] = triple(m.to);
+    for (int piece : m.pieces)
+      jm["pieces"].append(piece);
     root["measurements"].append(jm);
   }
   if (s.surface.given)
@@ -406,12 +408,28 @@ bool readSession(
     const Json::Value& jm = measurements[i];
     Measurement m;
     const std::string where = "measurement " + std::to_string(i) + " in '" + path + "'";
-    noteUnknownMembers(jm, { "from", "to" }, where, notes);
+    noteUnknownMembers(jm, { "from", "to", "pieces" }, where, notes);
     if (!jm.isObject() || !jsonNumbers(jm["from"], m.from) || !jsonNumbers(jm["to"], m.to) ||
       !std::isfinite(m.length()))
     {
       error = where + " needs two points \"from\" and \"to\", [x, y, z] each";
       return false;
+    }
+    if (jm.isMember("pieces"))
+    {
+      const Json::Value& jp = jm["pieces"];
+      bool valid = jp.isArray() && jp.size() == 2;
+      for (Json::ArrayIndex k = 0; valid && k < 2; ++k)
+      {
+        long long piece = -1;
+        valid = jsonInteger(jp[k], -1, std::numeric_limits<int>::max(), piece);
+        m.pieces[k] = static_cast<int>(piece);
+      }
+      if (!valid)
+      {
+        error = where + ": \"pieces\" must be two piece numbers [i, j] (-1: none)";
+        return false;
+      }
     }
     s.measurements.push_back(m);
   }

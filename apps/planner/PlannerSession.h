@@ -23,7 +23,8 @@
 //   "names": [{"name": text, "at": [x, y, z]}, ...]   names given to pieces (see
 //                                                     PieceName)
 //   "measurements": [{"from": [x, y, z],              distances measured (see
-//                     "to": [x, y, z]}, ...]          Measurement)
+//                     "to": [x, y, z],                Measurement)
+//                     "pieces": [i, j]}, ...]         (optional)
 //   "surface": {"iso": HU, "seed": [x, y, z],
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
@@ -96,13 +97,19 @@ struct PieceName
   std::array<double, 3> at{ 0, 0, 0 };
 };
 
-/// A distance the surgeon measured (u, two clicks): two points on the bone
-/// as the window showed it when they were picked (the moved segment where it
-/// was moved), patient mm. It stays where it was measured when the plan
-/// changes after.
+/// A distance the surgeon measured (u, two clicks): two points picked on
+/// the bone, patient mm, each in its piece's own frame (before the
+/// segment's move, as a name's point and a deformation's centre), and the
+/// piece each was picked on. An end on the moved segment moves with it, so
+/// a distance from the segment to the bone beside it follows the move. Each
+/// end goes with the piece nearest it when the cut numbers the pieces anew
+/// (its own when that is as near: a point on a cut line lies on both); an
+/// end without a piece (-1, an older session) takes the nearest.
 struct Measurement
 {
   std::array<double, 3> from{ 0, 0, 0 }, to{ 0, 0, 0 };
+  std::array<int, 2> pieces{ -1, -1 };
+  /// The distance between the points as picked (the segment not moved).
   double length() const;
 };
 

@@ -366,30 +366,33 @@ void PlannerStyle::stopMeasuring()
 
 void PlannerStyle::measureClick()
 {
-  // A point on the bone as it is shown (the moved segment where it was
-  // moved), as strokes are picked.
+  // A point of a piece, in the piece's own frame (an end on the moved
+  // segment moves with it), as names and deformations are picked.
   const int* pos = this->Interactor->GetEventPosition();
-  picker->SetTolerance(0.0005);
-  locators.update(planner->renderer, picker);
-  if (!picker->Pick(pos[0], pos[1], 0, planner->renderer) || picker->GetCellId() < 0)
+  std::array<double, 3> point, normal;
+  const int piece = pickPiece(pos[0], pos[1], point, normal);
+  if (piece < 0)
     planner->message = "no bone there: click the bone to measure from and to (u: stop measuring)";
   else
   {
-    double p[3];
-    picker->GetPickPosition(p);
     planner->message.clear();
     if (!planner->measureHalf)
     {
-      planner->measureFirst = { p[0], p[1], p[2] };
+      planner->measureFirst = point;
+      planner->measureFirstPiece = piece;
       planner->measureHalf = true;
       planner->showMeasurements();
     }
     else
     {
       planner->remember();
-      planner->session.measurements.push_back({ planner->measureFirst, { p[0], p[1], p[2] } });
+      Measurement m;
+      m.from = planner->measureFirst;
+      m.to = point;
+      m.pieces = { planner->measureFirstPiece, piece };
+      planner->session.measurements.push_back(m);
       planner->measureHalf = false;
-      planner->notice = "measured " + Planner::lengthText(planner->session.measurements.back().length());
+      planner->notice = "measured " + Planner::lengthText(planner->measuredLength(m));
       planner->rebuild();
     }
   }
