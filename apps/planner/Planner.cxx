@@ -793,9 +793,14 @@ void Planner::rebuild()
       std::to_string(pieces.size()) + " piece(s)");
   showNames();
   placeSegment(session.segmentMatrix); // and the measurements
+  keepChanges();
+  updateStatus();
+}
+
+void Planner::keepChanges()
+{
   if (std::string error; !keepUnsaved(error))
     addLine(message, "the changes not saved could not be kept (--session sets where): " + error);
-  updateStatus();
 }
 
 void Planner::markSaved()

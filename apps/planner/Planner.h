@@ -126,10 +126,14 @@ public:
   /// copy goes.
   void markSaved();
   /// Writes the session to unsavedPath if it differs from savedSession (and
-  /// removes the file once it no longer does). rebuild() calls it after each
-  /// step, so a crash loses at most the step that crashed. False, with
-  /// `error`, if the file cannot be written.
+  /// removes the file once it no longer does). False, with `error`, if the
+  /// file cannot be written.
   bool keepUnsaved(std::string& error);
+  /// keepUnsaved after a step, a failure said in the window's message.
+  /// rebuild() calls it, and so does every step that changes the session
+  /// without one (the segment picked, moved or reset), so a crash loses at
+  /// most the step that crashed.
+  void keepChanges();
   std::string notice;  ///< an outcome (saved, exported): shown only
   bool cutFailed = false;
   bool moving = false;                    ///< the mouse moves the segment

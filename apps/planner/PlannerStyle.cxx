@@ -100,6 +100,7 @@ void PlannerStyle::endMove()
   planner->session.segmentMatrix = dragMatrix;
   std::printf("%s", planner->segmentText().c_str());
   std::fflush(stdout);
+  planner->keepChanges();
   planner->updateStatus();
   this->Interactor->Render();
 }
@@ -739,6 +740,8 @@ void PlannerStyle::OnChar()
     return; // no VTK default keys: 'e' and 'w' mean other things here
   if (rebuild)
     planner->rebuild();
+  else
+    planner->keepChanges(); // a step without a rebuild (n, r) changes the session too
   planner->updateStatus();
   this->Interactor->Render();
 }
