@@ -56,6 +56,7 @@
 #include <cstring>
 #include <map>
 #include <set>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -130,7 +131,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 } // namespace
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
-                    "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | r: reset\n"
+                    "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: measure (two clicks)\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
@@ -255,13 +256,114 @@ std::string Planner::segmentText() const
 {
   if (!hasSegment())
     return "";
+  // The move as a surgeon states it (and types it with v): how far the
+  // segment's centre goes, and its turn about the axes through the centre.
+  // The matrix's own translation is the move of the coordinates' origin,
+  // far from the bone, once the segment turns.
   const auto& m = session.segmentMatrix;
   const double trace = m[0] + m[5] + m[10];
-  const double angle = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979;
-  char line[200];
-  std::snprintf(line, sizeof line, "segment: %s moved, translation %.2f %.2f %.2f mm, rotation %.2f deg\n",
-    pieceLabel(static_cast<std::size_t>(session.segment)).c_str(), m[3], m[7], m[11], angle);
-  return line + matrixText(m);
+  const double angle = std::acos(std::clamp((trace - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / vtkMath::Pi();
+  const std::array<double, 3> c = segmentCentre();
+  const SegmentMove move = segmentMove();
+  char line[400];
+  std::snprintf(line, sizeof line, "segment: %s moved, translation %.2f %.2f %.2f mm (of its centre), rotation %.2f deg\n",
+    pieceLabel(static_cast<std::size_t>(session.segment)).c_str(), move.translation[0], move.translation[1],
+    move.translation[2], angle);
+  std::string text = line;
+  std::snprintf(line, sizeof line,
+    "segment centre: (%.2f, %.2f, %.2f); the rotation is %.2f %.2f %.2f deg about x, y, z through it, in that order%s%s\n",
+    c[0], c[1], c[2], move.angles[0], move.angles[1], move.angles[2], axesText.empty() ? "" : " (",
+    axesText.empty() ? "" : (axesText + ")").c_str());
+  return text + line + matrixText(m);
+}
+
+std::array<double, 3> Planner::segmentCentre() const
+{
+  std::array<double, 3> centre{ 0, 0, 0 };
+  if (!hasSegment() || static_cast<std::size_t>(session.segment) >= cut.pieces.size())
+    return centre;
+  double b[6];
+  cut.pieces[static_cast<std::size_t>(session.segment)]->GetBounds(b);
+  return { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+}
+
+Planner::SegmentMove Planner::segmentMove() const
+{
+  const auto& m = session.segmentMatrix;
+  SegmentMove move;
+  const std::array<double, 3> c = segmentCentre();
+  for (std::size_t i = 0; i < 3; ++i)
+    move.translation[i] = m[4 * i + 3] + m[4 * i] * c[0] + m[4 * i + 1] * c[1] + m[4 * i + 2] * c[2] - c[i];
+  // R = Rz(c) Ry(b) Rx(a): m[8] = -sin b, m[9] = cos b sin a,
+  // m[10] = cos b cos a, m[4] = cos b sin c, m[0] = cos b cos c.
+  const double degrees = 180.0 / vtkMath::Pi();
+  const double b = std::asin(std::clamp(-m[8], -1.0, 1.0));
+  if (std::abs(m[8]) < 1.0 - 1e-12)
+  {
+    move.angles = { std::atan2(m[9], m[10]) * degrees, b * degrees, std::atan2(m[4], m[0]) * degrees };
+  }
+  else
+    move.angles = { 0.0, b * degrees, std::atan2(-m[1], m[5]) * degrees }; // a and c turn about one axis
+  for (auto* values : { &move.translation, &move.angles })
+    for (double& v : *values)
+      v = std::abs(v) < 1e-9 ? 0.0 : v; // rounding's dust, and no "-0.00"
+  return move;
+}
+
+std::array<double, 16> Planner::moveMatrix(const std::array<double, 3>& centre, const SegmentMove& move)
+{
+  vtkNew<vtkTransform> t;
+  t->PostMultiply(); // each step after the last, about the fixed axes
+  t->Translate(-centre[0], -centre[1], -centre[2]);
+  t->RotateX(move.angles[0]);
+  t->RotateY(move.angles[1]);
+  t->RotateZ(move.angles[2]);
+  t->Translate(centre[0] + move.translation[0], centre[1] + move.translation[1], centre[2] + move.translation[2]);
+  std::array<double, 16> m{};
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k)
+      m[static_cast<std::size_t>(4 * r + k)] = t->GetMatrix()->GetElement(r, k);
+  return m;
+}
+
+bool Planner::moveSegmentTo(const std::string& text, std::string& why)
+{
+  std::string spaced = text;
+  std::replace(spaced.begin(), spaced.end(), ',', ' ');
+  std::istringstream in(spaced);
+  std::vector<double> values;
+  for (std::string word; in >> word;)
+  {
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    if (end != word.c_str() + word.size() || !std::isfinite(v))
+    {
+      why = "'" + word + "' is not a number: type x y z (mm), then rx ry rz (degrees) to turn it";
+      return false;
+    }
+    values.push_back(v);
+  }
+  if (values.size() != 3 && values.size() != 6)
+  {
+    why = "type three numbers, x y z (mm), or six, x y z rx ry rz (mm, then degrees about x, y, z): " +
+      std::to_string(values.size()) + " given";
+    return false;
+  }
+  SegmentMove move;
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    const double most = i < 3 ? 1000.0 : 360.0;
+    if (std::abs(values[i]) > most)
+    {
+      why = i < 3 ? "a move beyond 1000 mm is a slip" : "a turn beyond 360 degrees is a slip";
+      return false;
+    }
+    (i < 3 ? move.translation[i] : move.angles[i - 3]) = values[i];
+  }
+  remember();
+  session.segmentMatrix = moveMatrix(segmentCentre(), move);
+  placeSegment(session.segmentMatrix);
+  return true;
 }
 
 void Planner::setup()
@@ -329,6 +431,7 @@ void Planner::setup()
   if (const std::string space = lkapp::coordinateSpace(bone); !space.empty())
   {
     const bool lps = space == "LPS";
+    axesText = lps ? "x to the left, y back, z up" : "x to the right, y to the front, z up";
     marker->SetXPlusFaceText(lps ? "L" : "R");
     marker->SetXMinusFaceText(lps ? "R" : "L");
     marker->SetYPlusFaceText(lps ? "P" : "A");
@@ -1316,7 +1419,10 @@ void Planner::updateStatus()
   else if (!session.measurements.empty())
     s << " | measured: " << lengthText(measuredLength(session.measurements.back()))
       << (session.measurements.size() > 1 ? " (last of " + std::to_string(session.measurements.size()) + ")" : "");
-  if (moving)
+  if (typingMove)
+    s << " | MOVE segment " << session.segment << " BY: " << moveText << "_ (x y z mm, then rx ry rz deg to turn"
+      << (axesText.empty() ? "" : "; " + axesText) << "; Return; Escape: stop)";
+  else if (moving)
     s << " | MOVE segment " << session.segment << " (drag; shift+drag rotates)";
   else if (hasSegment())
     s << " | segment: " << pieceLabel(static_cast<std::size_t>(session.segment))

@@ -313,6 +313,33 @@ public:
   std::array<double, 3> namingAt{ 0, 0, 0 };
   std::string namingText;
 
+  /// Moving the segment by numbers (v): the text typed so far, while
+  /// `typingMove`.
+  bool typingMove = false;
+  std::string moveText;
+  /// Where the patient's axes point, for the prompt ("x to the left, y
+  /// back, z up" in LPS), empty when the bone's coordinate system is not
+  /// known.
+  std::string axesText;
+  /// The segment's move as a surgeon states it: how far its centre moves
+  /// (mm) and its turns (degrees) about the x, y and z axes through its
+  /// centre, applied in that order.
+  struct SegmentMove
+  {
+    std::array<double, 3> translation{ 0, 0, 0 }, angles{ 0, 0, 0 };
+  };
+  /// The segment's centre: the middle of its bounds, before its move and
+  /// deformations.
+  std::array<double, 3> segmentCentre() const;
+  /// The session's segment matrix as a SegmentMove, and back.
+  SegmentMove segmentMove() const;
+  static std::array<double, 16> moveMatrix(const std::array<double, 3>& centre, const SegmentMove& move);
+  /// Reads "x y z" or "x y z rx ry rz" (spaces or commas between; mm and
+  /// degrees) and puts the segment there: the move replaces the segment's
+  /// move so far (undo brings that back). False, with `why`, for other text,
+  /// a translation beyond 1000 mm or a turn beyond 360 degrees.
+  bool moveSegmentTo(const std::string& text, std::string& why);
+
   /// Measuring in the window (u): the next two clicks on the bone give a
   /// distance (session.measurements); `measureFirst` is the first click's
   /// point (in its piece's frame) and `measureFirstPiece` its piece while

@@ -23,7 +23,9 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <cstdio>
 #include <fstream>
@@ -568,12 +570,61 @@ void PlannerStyle::typeName(const std::string& key)
   this->Interactor->Render();
 }
 
+void PlannerStyle::typeMove(const std::string& key)
+{
+  Planner& p = *planner;
+  if (key == "Escape")
+    p.typingMove = false;
+  else if (key == "Return" || key == "KP_Enter")
+  {
+    std::string why;
+    if (p.moveSegmentTo(p.moveText, why))
+    {
+      p.typingMove = false;
+      p.message.clear();
+      p.notice = "segment moved by numbers";
+      std::printf("%s", p.segmentText().c_str());
+      std::fflush(stdout);
+      p.keepChanges();
+    }
+    else
+      p.message = why;
+  }
+  else if (key == "BackSpace")
+  {
+    if (!p.moveText.empty())
+      p.moveText.pop_back();
+    p.message.clear();
+  }
+  else
+  {
+    // Numbers: digits, a sign, a point, spaces or commas between them. An
+    // event log cannot give a space or a 0 as a key code (VTK reads "0" as
+    // none), so their key symbols count: space, and the keypad's KP_0 as
+    // the keypad gives it.
+    char c = key == "space" ? ' ' : this->Interactor->GetKeyCode();
+    if (c == 0 && key.size() == 4 && key.compare(0, 3, "KP_") == 0 && std::isdigit(static_cast<unsigned char>(key[3])))
+      c = key[3];
+    if (std::strchr("0123456789+-., ", c) != nullptr && c != '\0' && p.moveText.size() < 80)
+    {
+      p.moveText += c;
+      p.message.clear();
+    }
+    else if (std::isprint(static_cast<unsigned char>(c)))
+      p.message = std::string("'") + c + "' is not part of a number: type x y z (mm), then rx ry rz (degrees)";
+  }
+  p.updateStatus();
+  this->Interactor->Render();
+}
+
 void PlannerStyle::OnChar()
 {
   const std::string key = this->Interactor->GetKeySym() ? this->Interactor->GetKeySym() : "";
   // While a name is typed every key is a letter of it (q does not quit).
   if (planner->naming != 0)
     return typeName(key);
+  if (planner->typingMove)
+    return typeMove(key);
   Session& s = planner->session;
   std::string error;
   bool rebuild = true;
@@ -676,6 +727,22 @@ void PlannerStyle::OnChar()
       planner->moving = !planner->moving;
       planner->drawing = false;
       planner->sawing = false;
+      planner->tool = NO_TOOL;
+      stopMeasuring();
+    }
+  }
+  else if (key == "v")
+  {
+    rebuild = false;
+    if (!planner->hasSegment())
+      planner->message = "pick a segment first (n)";
+    else
+    {
+      planner->typingMove = true;
+      planner->moveText.clear();
+      planner->drawing = false;
+      planner->sawing = false;
+      planner->moving = false;
       planner->tool = NO_TOOL;
       stopMeasuring();
     }

@@ -86,6 +86,9 @@ public:
   void stopMeasuring();
   /// A key while naming: every key is the naming's (Escape stops it).
   void typeName(const std::string& key);
+  /// A key while the segment's move is typed (v): digits, sign, point,
+  /// spaces and commas; Return moves it, BackSpace, Escape.
+  void typeMove(const std::string& key);
 
   void startDeform();
 
