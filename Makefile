@@ -11,8 +11,9 @@ demo: setup
 # A failed test runs once more (its failed run stays in the log): a rendering
 # test under Xvfb crashed once in CI before printing anything (NOTES, "A crash
 # under Xvfb in CI"); a test that fails twice fails the run. No test takes
-# a minute (the slowest about 40 s on two cores): one that waits (a window
-# left open for a user) is stopped at 10 minutes instead of holding CI.
+# two minutes (the slowest, the demo's, about 100 s on two cores): one that
+# waits (a window left open for a user) is stopped at 10 minutes instead of
+# holding CI.
 test: setup
 	cd build && ctest --output-on-failure -j 2 --repeat until-pass:2 --timeout 600
 
