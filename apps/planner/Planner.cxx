@@ -227,6 +227,50 @@ void Planner::placeSegment(const std::array<double, 16>& matrix)
     }
   shownMatrix = matrix;
   showMeasurements(); // an end on the segment moves with it
+  updateContacts(matrix);
+}
+
+void Planner::updateContacts(const std::array<double, 16>& matrix)
+{
+  contacts.clear();
+  if (!hasSegment() || isIdentity(matrix))
+    return;
+  std::vector<vtkPolyData*> shown;
+  for (const auto& piece : pieces)
+    shown.push_back(piece);
+  if (shown != contactPieces)
+  {
+    contactSurfaces.clear();
+    for (vtkPolyData* piece : shown)
+      contactSurfaces.push_back(std::make_unique<lkapp::ContactSurface>(piece));
+    contactPieces = shown;
+  }
+  // Closer than this the pieces touch (a cut's two caps lie on each other).
+  const double touch = 1e-4 * bone->GetLength();
+  const auto s = static_cast<std::size_t>(session.segment);
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+    if (p != s)
+      contacts.emplace_back(static_cast<int>(p), lkapp::contactOf(*contactSurfaces[s], matrix, *contactSurfaces[p], touch));
+}
+
+std::string Planner::contactStatus() const
+{
+  const std::pair<int, lkapp::Contact>* shown = nullptr;
+  for (const auto& c : contacts)
+  {
+    const bool deeper = c.second.overlap && (!shown || !shown->second.overlap || c.second.depth > shown->second.depth);
+    const bool nearer = !c.second.overlap && (!shown || (!shown->second.overlap && c.second.gap < shown->second.gap));
+    if (deeper || nearer)
+      shown = &c;
+  }
+  if (!shown)
+    return "";
+  char text[120];
+  if (shown->second.overlap)
+    std::snprintf(text, sizeof text, "OVERLAPS piece %d by %.2f mm", shown->first, shown->second.depth);
+  else
+    std::snprintf(text, sizeof text, "%.2f mm from piece %d", shown->second.gap, shown->first);
+  return text;
 }
 
 std::array<double, 3> Planner::shownPoint(const std::array<double, 3>& point, int piece,
@@ -270,6 +314,9 @@ std::string Planner::segmentText() const
     pieceLabel(static_cast<std::size_t>(session.segment)).c_str(), move.translation[0], move.translation[1],
     move.translation[2], angle);
   std::string text = line;
+  // How it meets the bone beside it where the plan puts it.
+  for (const auto& [piece, contact] : contacts)
+    text += "segment and " + pieceLabel(static_cast<std::size_t>(piece)) + ": " + lkapp::contactText(contact) + "\n";
   std::snprintf(line, sizeof line,
     "segment centre: (%.2f, %.2f, %.2f); the rotation is %.2f %.2f %.2f deg about x, y, z through it, in that order%s%s\n",
     c[0], c[1], c[2], move.angles[0], move.angles[1], move.angles[2], axesText.empty() ? "" : " (",
@@ -1427,6 +1474,8 @@ void Planner::updateStatus()
   else if (hasSegment())
     s << " | segment: " << pieceLabel(static_cast<std::size_t>(session.segment))
       << (isIdentity(session.segmentMatrix) ? "" : " (moved)");
+  if (const std::string contact = contactStatus(); !contact.empty() && !typingMove)
+    s << ", " << contact;
   if (!notice.empty())
     s << " | " << notice;
   if (!cutSummary.empty())

@@ -8,6 +8,7 @@
 /// apps/latticekit-planner.cxx.
 
 #include "common/CutReport.h"
+#include "common/PieceContact.h"
 #include "planner/PlannerSession.h"
 
 #include "vtkLKPatchDeformationFilter.h"
@@ -29,6 +30,7 @@
 #include <vtkTextActor.h>
 
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -159,6 +161,17 @@ public:
   /// Under the status line, after a cut: each cut line's length, the
   /// distance and angle between two lines, each piece's volume.
   std::string cutSummary;
+  /// How the moved segment meets each other piece as the view shows it
+  /// (placeSegment's matrix, during a drag too): {piece, contact}, empty
+  /// when the segment is not moved. The pieces' contact surfaces are built
+  /// once per set of pieces shown.
+  std::vector<std::pair<int, lkapp::Contact>> contacts;
+  std::vector<std::unique_ptr<lkapp::ContactSurface>> contactSurfaces;
+  std::vector<vtkPolyData*> contactPieces; ///< what contactSurfaces were built on
+  void updateContacts(const std::array<double, 16>& matrix);
+  /// The status line's word on them: the deepest overlap, or the nearest
+  /// piece's gap.
+  std::string contactStatus() const;
   std::size_t latticeFits = 0, latticesReused = 0;
 
   /// Call before a change: the session as it was goes on the undo stack.
