@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <vtkNew.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSphereSource.h>
 #include <vtkSmartPointer.h>
@@ -49,9 +50,19 @@ TEST(PieceContact, OverlappingSpheresGiveTheirDepth)
 {
   auto a = sphere(1.0), b = sphere(1.0);
   lkapp::ContactSurface moved(a), fixed(b);
-  // Centres 1.5 apart: each reaches 0.5 into the other.
-  const lkapp::Contact c = lkapp::contactOf(moved, shift(0.0, 1.5), fixed, 1e-6);
+  // Centres 1.5 apart: each reaches 0.5 into the other. The vertices
+  // inside are given where they are shown: the moved sphere's moved.
+  vtkNew<vtkPoints> inside;
+  const lkapp::Contact c = lkapp::contactOf(moved, shift(0.0, 1.5), fixed, 1e-6, inside);
   EXPECT_TRUE(c.overlap);
+  ASSERT_EQ(inside->GetNumberOfPoints(), c.inside);
+  for (vtkIdType i = 0; i < inside->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    inside->GetPoint(i, x);
+    EXPECT_LT(std::hypot(x[0], x[1], x[2]), 1.0 + 1e-6); // in the fixed sphere (float points)
+    EXPECT_LT(std::hypot(x[0], x[1] - 1.5, x[2]), 1.0 + 1e-6); // and the moved one
+  }
   EXPECT_NEAR(c.depth, 0.5, 0.02);
   EXPECT_GT(c.inside, 20);
   EXPECT_EQ(c.gap, 0.0);

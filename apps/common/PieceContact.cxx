@@ -139,7 +139,7 @@ std::array<double, 16> rigidInverse(const std::array<double, 16>& m)
 /// Every vertex of `from` (placed by `place`) against `to`: the nearest
 /// distance of those outside, and the deepest of those inside.
 void vertexPass(const ContactSurface& from, const std::array<double, 16>& place, const ContactSurface& to, double touch,
-  bool insideKnown, Contact& c, double& nearest)
+  bool insideKnown, Contact& c, double& nearest, vtkPoints* insidePoints, const std::array<double, 16>* show)
 {
   vtkPolyData* surface = from.surface();
   vtkPoints* points = surface->GetPoints();
@@ -163,6 +163,12 @@ void vertexPass(const ContactSurface& from, const std::array<double, 16>& place,
       c.overlap = true;
       c.depth = std::max(c.depth, d);
       ++c.inside;
+      if (insidePoints)
+      {
+        double shown[3];
+        transform(*show, x, shown);
+        insidePoints->InsertNextPoint(shown);
+      }
     }
     else
       nearest = std::min(nearest, d);
@@ -171,7 +177,7 @@ void vertexPass(const ContactSurface& from, const std::array<double, 16>& place,
 } // namespace
 
 Contact contactOf(const ContactSurface& moved, const std::array<double, 16>& matrix, const ContactSurface& fixed,
-  double touch)
+  double touch, vtkPoints* insidePoints)
 {
   Contact c;
   c.known = moved.closed() && fixed.closed();
@@ -189,8 +195,11 @@ Contact contactOf(const ContactSurface& moved, const std::array<double, 16>& mat
         nearest = std::min(nearest, fixed.vertexDistance(y));
     }
   }
-  vertexPass(moved, matrix, fixed, touch, c.known, c, nearest);
-  vertexPass(fixed, rigidInverse(matrix), moved, touch, c.known, c, nearest);
+  // The moved piece's vertices are shown where the matrix puts them, the
+  // fixed piece's where they are.
+  const std::array<double, 16> identity{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  vertexPass(moved, matrix, fixed, touch, c.known, c, nearest, insidePoints, &matrix);
+  vertexPass(fixed, rigidInverse(matrix), moved, touch, c.known, c, nearest, insidePoints, &identity);
   c.gap = c.overlap ? 0.0 : nearest;
   return c;
 }

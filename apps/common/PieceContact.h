@@ -5,6 +5,7 @@
 /// through bone), how deep, and over how many vertices. A segment advanced
 /// or turned into its neighbour cannot be placed so in the patient.
 
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -62,8 +63,11 @@ struct Contact
   long long inside = 0; ///< overlapping: vertices of either inside the other
   bool known = true;   ///< false when either surface is open: no overlap can be told, only the gap
 };
+/// With `insidePoints`, the vertices inside the other are added to it, where
+/// they are shown (the moved piece's placed by `matrix`): where the bone
+/// runs through bone.
 Contact contactOf(const ContactSurface& moved, const std::array<double, 16>& matrix, const ContactSurface& fixed,
-  double touch);
+  double touch, vtkPoints* insidePoints = nullptr);
 
 /// "1.23 mm apart", "overlapping 2.10 mm deep (412 vertices inside)", or
 /// "1.23 mm apart at the nearest vertex (piece 0 is open: an overlap cannot be told)".

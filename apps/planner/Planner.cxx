@@ -233,6 +233,7 @@ void Planner::placeSegment(const std::array<double, 16>& matrix)
 void Planner::updateContacts(const std::array<double, 16>& matrix)
 {
   contacts.clear();
+  overlapMarker->SetVisibility(false);
   if (!hasSegment() || isIdentity(matrix))
     return;
   std::vector<vtkPolyData*> shown;
@@ -248,9 +249,22 @@ void Planner::updateContacts(const std::array<double, 16>& matrix)
   // Closer than this the pieces touch (a cut's two caps lie on each other).
   const double touch = 1e-4 * bone->GetLength();
   const auto s = static_cast<std::size_t>(session.segment);
+  vtkNew<vtkPoints> inside;
   for (std::size_t p = 0; p < pieces.size(); ++p)
     if (p != s)
-      contacts.emplace_back(static_cast<int>(p), lkapp::contactOf(*contactSurfaces[s], matrix, *contactSurfaces[p], touch));
+      contacts.emplace_back(
+        static_cast<int>(p), lkapp::contactOf(*contactSurfaces[s], matrix, *contactSurfaces[p], touch, inside));
+  if (inside->GetNumberOfPoints() > 0)
+  {
+    vtkNew<vtkPolyData> points;
+    points->SetPoints(inside);
+    vtkNew<vtkCellArray> verts;
+    for (vtkIdType i = 0; i < inside->GetNumberOfPoints(); ++i)
+      verts->InsertNextCell(1, &i);
+    points->SetVerts(verts);
+    vtkPolyDataMapper::SafeDownCast(overlapMarker->GetMapper())->SetInputData(points);
+    overlapMarker->SetVisibility(true);
+  }
 }
 
 std::string Planner::contactStatus() const
@@ -471,6 +485,14 @@ void Planner::setup()
   measureMarker->SetVisibility(false);
   measureMarker->PickableOff();
   overlay->AddActor(measureMarker);
+  vtkNew<vtkPolyDataMapper> overlapMapper;
+  overlapMarker->SetMapper(overlapMapper);
+  overlapMarker->GetProperty()->SetColor(0.9, 0.05, 0.05);
+  overlapMarker->GetProperty()->SetPointSize(5);
+  overlapMarker->GetProperty()->RenderPointsAsSpheresOn();
+  overlapMarker->SetVisibility(false);
+  overlapMarker->PickableOff();
+  overlay->AddActor(overlapMarker);
   // The patient's sides, as medical viewers show them: a mandible is nearly
   // symmetric, and a cut planned on the wrong side is the error to prevent.
   // Patient x, y, z point to the left, back and up in LPS; to the right,

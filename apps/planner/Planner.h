@@ -169,6 +169,9 @@ public:
   std::vector<std::unique_ptr<lkapp::ContactSurface>> contactSurfaces;
   std::vector<vtkPolyData*> contactPieces; ///< what contactSurfaces were built on
   void updateContacts(const std::array<double, 16>& matrix);
+  /// Where the moved segment and another piece run through each other: red
+  /// points on the vertices of either inside the other, over the bone.
+  vtkNew<vtkActor> overlapMarker;
   /// The status line's word on them: the deepest overlap, or the nearest
   /// piece's gap.
   std::string contactStatus() const;
