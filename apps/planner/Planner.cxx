@@ -16,6 +16,7 @@
 #include "vtkLKStrokeFeatureLineFilter.h"
 
 #include <vtkActor.h>
+#include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
@@ -132,7 +133,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
-                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: measure (two clicks)\n"
+                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: measure, a: angle (two, three clicks)\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
@@ -299,15 +300,25 @@ std::array<double, 3> Planner::shownPoint(const std::array<double, 3>& point, in
   return moved;
 }
 
-std::array<std::array<double, 3>, 2> Planner::measuredEnds(const Measurement& m) const
+Measurement Planner::placed(const Measurement& m, const std::array<double, 16>& matrix) const
 {
-  return { shownPoint(m.from, m.pieces[0], session.segmentMatrix), shownPoint(m.to, m.pieces[1], session.segmentMatrix) };
+  Measurement shown = m;
+  shown.from = shownPoint(m.from, m.pieces[Measurement::FROM], matrix);
+  shown.to = shownPoint(m.to, m.pieces[Measurement::TO], matrix);
+  shown.at = shownPoint(m.at, m.pieces[Measurement::AT], matrix);
+  return shown;
 }
 
-double Planner::measuredLength(const Measurement& m) const
+std::string Planner::measuredText(const Measurement& m) const
 {
-  const auto ends = measuredEnds(m);
-  return std::sqrt(vtkMath::Distance2BetweenPoints(ends[0].data(), ends[1].data()));
+  return m.angle ? degreesText(measuredDegrees(m)) : lengthText(measuredLength(m));
+}
+
+std::string Planner::degreesText(double degrees)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f deg", degrees);
+  return text;
 }
 
 std::string Planner::segmentText() const
@@ -1143,12 +1154,15 @@ void Planner::showMeasurements()
   if (measureActor)
     overlay->RemoveActor(measureActor);
   measureActor = nullptr;
-  // The first click's point, while the second is awaited.
-  measureMarker->SetVisibility(measuring && measureHalf);
-  if (measuring && measureHalf)
+  // The points clicked so far, while the next is awaited.
+  measureMarker->SetVisibility(measuring && !measurePicked.empty());
+  if (measuring && !measurePicked.empty())
   {
-    vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())
-      ->SetInputData(ballAt(shownPoint(measureFirst, measureFirstPiece, shownMatrix), 0.5 * joinTolerance));
+    vtkNew<vtkAppendPolyData> balls;
+    for (std::size_t k = 0; k < measurePicked.size(); ++k)
+      balls->AddInputData(ballAt(shownPoint(measurePicked[k], measurePickedPieces[k], shownMatrix), 0.5 * joinTolerance));
+    balls->Update();
+    vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())->SetInputData(balls->GetOutput());
   }
   if (session.measurements.empty())
     return;
@@ -1156,20 +1170,33 @@ void Planner::showMeasurements()
   vtkNew<vtkCellArray> lines, ends;
   for (const Measurement& m : session.measurements)
   {
-    const std::array<double, 3> from = shownPoint(m.from, m.pieces[0], shownMatrix);
-    const std::array<double, 3> to = shownPoint(m.to, m.pieces[1], shownMatrix);
-    const vtkIdType a = points->InsertNextPoint(from.data());
-    const vtkIdType b = points->InsertNextPoint(to.data());
-    const vtkIdType ids[2] = { a, b };
-    lines->InsertNextCell(2, ids);
-    ends->InsertNextCell(1, &ids[0]);
-    ends->InsertNextCell(1, &ids[1]);
-    // Its length.
-    const std::string text = lengthText(std::sqrt(vtkMath::Distance2BetweenPoints(from.data(), to.data())));
-    // Below its middle, beside where a name's caption would be.
+    const Measurement shown = placed(m, shownMatrix);
+    const vtkIdType a = points->InsertNextPoint(shown.from.data());
+    const vtkIdType b = points->InsertNextPoint(shown.to.data());
+    ends->InsertNextCell(1, &a);
+    ends->InsertNextCell(1, &b);
+    // A distance's line, with its length below its middle (beside where a
+    // name's caption would be); an angle's arms, with its degrees at its
+    // vertex.
+    std::array<double, 3> label;
+    if (m.angle)
+    {
+      const vtkIdType c = points->InsertNextPoint(shown.at.data());
+      const vtkIdType arms[3] = { a, c, b };
+      lines->InsertNextCell(3, arms);
+      ends->InsertNextCell(1, &c);
+      label = shown.at;
+    }
+    else
+    {
+      const vtkIdType ids[2] = { a, b };
+      lines->InsertNextCell(2, ids);
+      for (std::size_t k = 0; k < 3; ++k)
+        label[k] = 0.5 * (shown.from[k] + shown.to[k]);
+    }
+    const std::string text = m.angle ? degreesText(shown.degrees()) : lengthText(shown.length());
     auto caption = captionActor(text, { 0.45, 0.0, 0.4 }, 14, { 15, -30 });
-    double middle[3] = { 0.5 * (from[0] + to[0]), 0.5 * (from[1] + to[1]), 0.5 * (from[2] + to[2]) };
-    caption->SetAttachmentPoint(middle);
+    caption->SetAttachmentPoint(label.data());
     renderer->AddViewProp(caption);
     measureCaptions.push_back(caption);
   }
@@ -1233,10 +1260,12 @@ void Planner::followPieces()
   std::vector<std::array<double, 3>> points;
   for (const Deformation& d : session.deformations)
     points.push_back(d.centre);
+  std::vector<std::size_t> firstPoint; // each measurement's first point in `points`
   for (const Measurement& m : session.measurements)
   {
-    points.push_back(m.from);
-    points.push_back(m.to);
+    firstPoint.push_back(points.size());
+    for (const auto& x : m.points())
+      points.push_back(x);
   }
   points.push_back(session.segmentAnchor);
   const std::vector<std::vector<double>> distances = pieceDistances(points);
@@ -1292,13 +1321,13 @@ void Planner::followPieces()
   }
   if (!moved.empty())
     notice += (notice.empty() ? "" : "; ") + std::string("the deformations follow their pieces: ") + moved;
-  // Each measured end goes with its piece, as the segment's move shows it.
+  // Each measured point goes with its piece, as the segment's move shows it.
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
-    for (std::size_t end = 0; end < 2; ++end)
-    {
-      int& piece = session.measurements[i].pieces[end];
-      piece = nearest(distances[session.deformations.size() + 2 * i + end], piece);
-    }
+  {
+    Measurement& m = session.measurements[i];
+    for (std::size_t k = 0; k < m.points().size(); ++k)
+      m.pieces[k] = nearest(distances[firstPoint[i] + k], m.pieces[k]);
+  }
 }
 
 std::string Planner::summaryOfCut()
@@ -1483,10 +1512,14 @@ void Planner::updateStatus()
   else if (naming == 2)
     s << " | NAME " << pieceLabel(static_cast<std::size_t>(namingPiece)) << ": " << namingText
       << "_ (Return keeps it, an empty name takes it away; Escape: stop)";
-  if (measuring)
-    s << (measureHalf ? " | MEASURE: click the second point (u: stop)" : " | MEASURE: click the first point (u: stop)");
+  if (measuring == 2)
+    s << (measurePicked.empty() ? " | MEASURE: click the first point (u: stop)" : " | MEASURE: click the second point (u: stop)");
+  else if (measuring == 3)
+    s << (measurePicked.empty()       ? " | ANGLE: click an arm's end (a: stop)"
+            : measurePicked.size() == 1 ? " | ANGLE: click the vertex (a: stop)"
+                                        : " | ANGLE: click the other arm's end (a: stop)");
   else if (!session.measurements.empty())
-    s << " | measured: " << lengthText(measuredLength(session.measurements.back()))
+    s << " | measured: " << measuredText(session.measurements.back())
       << (session.measurements.size() > 1 ? " (last of " + std::to_string(session.measurements.size()) + ")" : "");
   if (typingMove)
     s << " | MOVE segment " << session.segment << " BY: " << moveText << "_ (x y z mm, then rx ry rz deg to turn"
@@ -1620,14 +1653,20 @@ std::string Planner::planText()
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
   {
     const Measurement& m = session.measurements[i];
-    const auto [from, to] = measuredEnds(m);
-    std::snprintf(line, sizeof line, "measurement %zu: %s from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)", i + 1,
-      lengthText(measuredLength(m)).c_str(), from[0], from[1], from[2], to[0], to[1], to[2]);
+    const Measurement shown = placed(m, session.segmentMatrix);
+    if (m.angle)
+      std::snprintf(line, sizeof line, "measurement %zu: angle %s at (%.2f, %.2f, %.2f) between (%.2f, %.2f, %.2f) and (%.2f, %.2f, %.2f)",
+        i + 1, measuredText(m).c_str(), shown.at[0], shown.at[1], shown.at[2], shown.from[0], shown.from[1], shown.from[2],
+        shown.to[0], shown.to[1], shown.to[2]);
+    else
+      std::snprintf(line, sizeof line, "measurement %zu: %s from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)", i + 1,
+        measuredText(m).c_str(), shown.from[0], shown.from[1], shown.from[2], shown.to[0], shown.to[1], shown.to[2]);
     text += line;
-    // An end on the moved segment moved with it: the distance as picked
-    // too, where the move changed it.
-    if (lengthText(m.length()) != lengthText(measuredLength(m)))
-      text += ", " + lengthText(m.length()) + " before the segment's move";
+    // A point on the moved segment moved with it: the value as picked too,
+    // where the move changed it.
+    const std::string picked = m.angle ? degreesText(m.degrees()) : lengthText(m.length());
+    if (picked != measuredText(m))
+      text += ", " + picked + " before the segment's move";
     text += "\n";
   }
   text += segmentText();

@@ -356,17 +356,18 @@ public:
   /// a translation beyond 1000 mm or a turn beyond 360 degrees.
   bool moveSegmentTo(const std::string& text, std::string& why);
 
-  /// Measuring in the window (u): the next two clicks on the bone give a
-  /// distance (session.measurements); `measureFirst` is the first click's
-  /// point (in its piece's frame) and `measureFirstPiece` its piece while
-  /// `measureHalf`.
-  bool measuring = false;
-  bool measureHalf = false;
-  std::array<double, 3> measureFirst{ 0, 0, 0 };
-  int measureFirstPiece = -1;
+  /// Measuring in the window: u, a distance (two clicks on the bone); a, an
+  /// angle (three: an arm's end, the vertex, the other arm's end).
+  /// `measuring` is the clicks a measurement takes (0: not measuring);
+  /// `measurePicked` holds the points clicked so far (in their pieces'
+  /// frames) and `measurePickedPieces` their pieces.
+  int measuring = 0;
+  std::vector<std::array<double, 3>> measurePicked;
+  std::vector<int> measurePickedPieces;
   /// The measurements in the view, with the segment where `shownMatrix`
-  /// puts it (during a drag too): a line each, its ends, and its length at
-  /// its middle; the first click's point while one is being measured.
+  /// puts it (during a drag too): a distance's line, its ends and its
+  /// length at its middle; an angle's two arms and its degrees at its
+  /// vertex; the points clicked while one is being measured.
   std::vector<vtkSmartPointer<vtkCaptionActor2D>> measureCaptions;
   vtkNew<vtkActor> measureMarker;
   vtkSmartPointer<vtkActor> measureActor;
@@ -377,12 +378,17 @@ public:
   /// `matrix` on the moved segment, else where it is.
   std::array<double, 3> shownPoint(const std::array<double, 3>& point, int piece,
     const std::array<double, 16>& matrix) const;
-  /// A measurement's ends as the plan places them (the segment moved), and
-  /// the distance between them.
-  std::array<std::array<double, 3>, 2> measuredEnds(const Measurement& m) const;
-  double measuredLength(const Measurement& m) const;
-  /// A measurement's text: "23.41 mm".
+  /// A measurement's points (from, to; at for an angle) where `matrix`
+  /// shows them, and as the plan places them (the segment moved): the
+  /// distance and the angle there.
+  Measurement placed(const Measurement& m, const std::array<double, 16>& matrix) const;
+  double measuredLength(const Measurement& m) const { return placed(m, session.segmentMatrix).length(); }
+  double measuredDegrees(const Measurement& m) const { return placed(m, session.segmentMatrix).degrees(); }
+  /// "23.41 mm" for a distance, "112.5 deg" for an angle, as the plan places it.
+  std::string measuredText(const Measurement& m) const;
+  /// A measurement's text: "23.41 mm", "112.5 deg".
   static std::string lengthText(double length);
+  static std::string degreesText(double degrees);
 
   /// Re-runs the plan from the bone: strokes, cut (kept while unchanged),
   /// deformations, lattices, colours.

@@ -133,8 +133,10 @@ std::string sessionText(const Session& s)
     Json::Value jm;
     jm["from"] = triple(m.from);
     jm["to"] = triple(m.to);
-    for (int piece : m.pieces)
-      jm["pieces"].append(piece);
+    if (m.angle)
+      jm["at"] = triple(m.at);
+    for (std::size_t k = 0; k < m.points().size(); ++k)
+      jm["pieces"].append(m.pieces[k]);
     root["measurements"].append(jm);
   }
   if (s.surface.given)
@@ -179,9 +181,34 @@ std::string unsavedSessionPath(const std::string& sessionPath)
   return p.folder + p.stem + "-unsaved" + (p.extension.empty() ? ".json" : p.extension);
 }
 
+std::vector<std::array<double, 3>> Measurement::points() const
+{
+  if (angle)
+    return { from, to, at };
+  return { from, to };
+}
+
 double Measurement::length() const
 {
   return std::hypot(to[0] - from[0], to[1] - from[1], to[2] - from[2]);
+}
+
+double Measurement::degrees() const
+{
+  return angleAt(from, at, to);
+}
+
+double angleAt(const std::array<double, 3>& a, const std::array<double, 3>& at, const std::array<double, 3>& b)
+{
+  const double u[3] = { a[0] - at[0], a[1] - at[1], a[2] - at[2] };
+  const double v[3] = { b[0] - at[0], b[1] - at[1], b[2] - at[2] };
+  const double lu = std::hypot(u[0], u[1], u[2]), lv = std::hypot(v[0], v[1], v[2]);
+  if (!(lu > 0.0) || !(lv > 0.0))
+    return std::numeric_limits<double>::quiet_NaN();
+  // atan2 of the cross and dot products: exact near 0 and 180 degrees too.
+  const double cross[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+  const double dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  return std::atan2(std::hypot(cross[0], cross[1], cross[2]), dot) * 180.0 / 3.14159265358979323846;
 }
 
 bool validPieceName(const std::string& name, std::string& why)
@@ -408,18 +435,25 @@ bool readSession(
     const Json::Value& jm = measurements[i];
     Measurement m;
     const std::string where = "measurement " + std::to_string(i) + " in '" + path + "'";
-    noteUnknownMembers(jm, { "from", "to", "pieces" }, where, notes);
+    noteUnknownMembers(jm, { "from", "to", "at", "pieces" }, where, notes);
     if (!jm.isObject() || !jsonNumbers(jm["from"], m.from) || !jsonNumbers(jm["to"], m.to) ||
       !std::isfinite(m.length()))
     {
       error = where + " needs two points \"from\" and \"to\", [x, y, z] each";
       return false;
     }
+    m.angle = jm.isMember("at");
+    if (m.angle && (!jsonNumbers(jm["at"], m.at) || !std::isfinite(m.degrees())))
+    {
+      error = where + ": an angle's vertex \"at\" must be a point [x, y, z] apart from \"from\" and \"to\"";
+      return false;
+    }
     if (jm.isMember("pieces"))
     {
       const Json::Value& jp = jm["pieces"];
-      bool valid = jp.isArray() && jp.size() == 2;
-      for (Json::ArrayIndex k = 0; valid && k < 2; ++k)
+      const Json::ArrayIndex count = m.angle ? 3 : 2;
+      bool valid = jp.isArray() && jp.size() == count;
+      for (Json::ArrayIndex k = 0; valid && k < count; ++k)
       {
         long long piece = -1;
         valid = jsonInteger(jp[k], -1, std::numeric_limits<int>::max(), piece);
@@ -427,7 +461,8 @@ bool readSession(
       }
       if (!valid)
       {
-        error = where + ": \"pieces\" must be two piece numbers [i, j] (-1: none)";
+        error = where + (m.angle ? ": \"pieces\" must be three piece numbers [i, j, k] (from, to, at; -1: none)"
+                                 : ": \"pieces\" must be two piece numbers [i, j] (-1: none)");
         return false;
       }
     }

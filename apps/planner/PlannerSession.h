@@ -22,9 +22,12 @@
 //                     "iterations": 1 to 100}, ...]       (smooth; 3)
 //   "names": [{"name": text, "at": [x, y, z]}, ...]   names given to pieces (see
 //                                                     PieceName)
-//   "measurements": [{"from": [x, y, z],              distances measured (see
-//                     "to": [x, y, z],                Measurement)
-//                     "pieces": [i, j]}, ...]         (optional)
+//   "measurements": [{"from": [x, y, z],              distances and angles
+//                     "to": [x, y, z],                measured (see Measurement)
+//                     "at": [x, y, z],                an angle's vertex (none: a
+//                                                     distance)
+//                     "pieces": [i, j(, k)]}, ...]    from's, to's (and at's)
+//                                                     pieces (optional)
 //   "surface": {"iso": HU, "seed": [x, y, z],
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
@@ -105,13 +108,34 @@ struct PieceName
 /// end goes with the piece nearest it when the cut numbers the pieces anew
 /// (its own when that is as near: a point on a cut line lies on both); an
 /// end without a piece (-1, an older session) takes the nearest.
+///
+/// An angle (a, three clicks: an arm's end, the vertex, the other arm's
+/// end) is the angle at `at` between the arms to `from` and `to`; its
+/// vertex follows its piece as the ends do.
 struct Measurement
 {
+  enum End
+  {
+    FROM = 0,
+    TO = 1,
+    AT = 2
+  };
   std::array<double, 3> from{ 0, 0, 0 }, to{ 0, 0, 0 };
-  std::array<int, 2> pieces{ -1, -1 };
+  bool angle = false;
+  std::array<double, 3> at{ 0, 0, 0 };
+  /// The pieces of from, to and at (-1: none yet).
+  std::array<int, 3> pieces{ -1, -1, -1 };
+  /// Its points (from, to; at for an angle) as picked.
+  std::vector<std::array<double, 3>> points() const;
   /// The distance between the points as picked (the segment not moved).
   double length() const;
+  /// The angle's degrees as picked (0 to 180).
+  double degrees() const;
 };
+
+/// The angle at `at` between the arms to a and b, in degrees (0 to 180); NaN
+/// where an arm has no length.
+double angleAt(const std::array<double, 3>& a, const std::array<double, 3>& at, const std::array<double, 3>& b);
 
 /// The longest name: a DICOM ROIName (LO) holds 64 characters, and the moved
 /// segment's gets " (moved)" (8).

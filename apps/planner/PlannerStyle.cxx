@@ -359,45 +359,65 @@ void PlannerStyle::endSaw()
 
 void PlannerStyle::stopMeasuring()
 {
-  planner->measuring = false;
-  if (planner->measureHalf)
+  planner->measuring = 0;
+  if (!planner->measurePicked.empty())
   {
-    planner->measureHalf = false;
+    planner->measurePicked.clear();
+    planner->measurePickedPieces.clear();
     planner->showMeasurements();
   }
 }
 
 void PlannerStyle::measureClick()
 {
-  // A point of a piece, in the piece's own frame (an end on the moved
+  // A point of a piece, in the piece's own frame (a point on the moved
   // segment moves with it), as names and deformations are picked.
+  Planner& p = *planner;
   const int* pos = this->Interactor->GetEventPosition();
   std::array<double, 3> point, normal;
   const int piece = pickPiece(pos[0], pos[1], point, normal);
+  const bool angle = p.measuring == 3;
   if (piece < 0)
-    planner->message = "no bone there: click the bone to measure from and to (u: stop measuring)";
+  {
+    p.message = angle ? "no bone there: click the bone for an arm's end, the vertex and the other arm's end (a: stop)"
+                      : "no bone there: click the bone to measure from and to (u: stop measuring)";
+    p.updateStatus();
+    this->Interactor->Render();
+    return;
+  }
+  p.message.clear();
+  // An angle's arm needs a length: its end apart from the vertex, as shown.
+  const auto shown = [&](std::size_t k) { return p.shownPoint(p.measurePicked[k], p.measurePickedPieces[k], p.shownMatrix); };
+  const std::array<double, 3> here = p.shownPoint(point, piece, p.shownMatrix);
+  if (angle && !p.measurePicked.empty() && here == shown(p.measurePicked.size() - 1))
+    p.message = "click a point apart from the last: an angle's arm needs a length";
   else
   {
-    planner->message.clear();
-    if (!planner->measureHalf)
+    p.measurePicked.push_back(point);
+    p.measurePickedPieces.push_back(piece);
+  }
+  if (static_cast<int>(p.measurePicked.size()) < p.measuring)
+    p.showMeasurements();
+  else
+  {
+    p.remember();
+    Measurement m;
+    m.from = p.measurePicked[0];
+    m.pieces[Measurement::FROM] = p.measurePickedPieces[0];
+    const std::size_t last = p.measurePicked.size() - 1;
+    m.to = p.measurePicked[last];
+    m.pieces[Measurement::TO] = p.measurePickedPieces[last];
+    if (angle)
     {
-      planner->measureFirst = point;
-      planner->measureFirstPiece = piece;
-      planner->measureHalf = true;
-      planner->showMeasurements();
+      m.angle = true;
+      m.at = p.measurePicked[1];
+      m.pieces[Measurement::AT] = p.measurePickedPieces[1];
     }
-    else
-    {
-      planner->remember();
-      Measurement m;
-      m.from = planner->measureFirst;
-      m.to = point;
-      m.pieces = { planner->measureFirstPiece, piece };
-      planner->session.measurements.push_back(m);
-      planner->measureHalf = false;
-      planner->notice = "measured " + Planner::lengthText(planner->measuredLength(m));
-      planner->rebuild();
-    }
+    p.session.measurements.push_back(m);
+    p.measurePicked.clear();
+    p.measurePickedPieces.clear();
+    p.notice = "measured " + p.measuredText(m);
+    p.rebuild();
   }
   planner->updateStatus();
   this->Interactor->Render();
@@ -644,12 +664,14 @@ void PlannerStyle::OnChar()
       stopMeasuring();
     }
   }
-  else if (key == "u")
+  else if (key == "u" || key == "a")
   {
+    // u: a distance (two clicks), a: an angle (three); the same key again stops.
     rebuild = false;
-    const bool on = !planner->measuring;
+    const int clicks = key == "u" ? 2 : 3;
+    const bool on = planner->measuring != clicks;
     stopMeasuring();
-    planner->measuring = on;
+    planner->measuring = on ? clicks : 0;
     if (on)
     {
       planner->drawing = false;
