@@ -189,6 +189,7 @@ void vtkLKStructureSetWriter::PrintSelf(ostream& os, vtkIndent indent)
   for (std::size_t i = 0; i < this->ROINames.size(); ++i)
     os << (i ? ", " : " ") << "'" << this->ROINames[i] << "'";
   os << (this->ROINames.empty() ? " (defaults: ROI 1, ROI 2, ...)\n" : "\n");
+  os << indent << "Markers: " << this->Markers.size() << "\n";
 }
 
 int vtkLKStructureSetWriter::FillInputPortInformation(int, vtkInformation* info)
@@ -214,6 +215,19 @@ void vtkLKStructureSetWriter::SetROIName(int i, const char* name)
     this->ROINames.resize(static_cast<std::size_t>(i) + 1);
   this->ROINames[static_cast<std::size_t>(i)] = name ? name : "";
   this->Modified();
+}
+
+void vtkLKStructureSetWriter::AddMarker(const char* name, double x, double y, double z)
+{
+  this->Markers.push_back({ name ? name : "", { x, y, z } });
+  this->Modified();
+}
+
+void vtkLKStructureSetWriter::RemoveAllMarkers()
+{
+  if (!this->Markers.empty())
+    this->Modified();
+  this->Markers.clear();
 }
 
 const char* vtkLKStructureSetWriter::GetROIName(int i)
@@ -293,6 +307,25 @@ void vtkLKStructureSetWriter::WriteData()
       this->SetErrorCode(vtkErrorCode::UserError);
       return;
     }
+  }
+
+  for (std::size_t k = 0; k < this->Markers.size(); ++k)
+  {
+    const Marker& m = this->Markers[k];
+    unfit = m.name.empty() ? std::string("is empty") : lkvtk::dicomTextProblem(m.name, lkvtk::kDICOMLongStringLength);
+    if (!unfit.empty())
+    {
+      vtkErrorMacro("The marker name '" << lkvtk::shownText(m.name, 80) << "' (marker " << k << ") " << unfit << ".");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+    if (!std::isfinite(m.x[0]) || !std::isfinite(m.x[1]) || !std::isfinite(m.x[2]))
+    {
+      vtkErrorMacro("Marker " << k << " ('" << lkvtk::shownText(m.name, 80) << "') has a coordinate that is not a number.");
+      this->SetErrorCode(vtkErrorCode::UserError);
+      return;
+    }
+    names.push_back(m.name); // after the surfaces' names, as the ROIs follow
   }
 
   // The planes: the reference CT's slices, or axial planes SliceSpacing apart.
@@ -428,7 +461,7 @@ void vtkLKStructureSetWriter::WriteData()
     if (lkvtk::stopRequested(this, {})) // nothing written: an earlier file stays
       return;
     const int number = static_cast<int>(i) + 1;
-    const std::string& name = names[i];
+    const std::string& name = names[i]; // the surfaces' names come first
     int open = 0;
     const auto perPlane = contoursOf(surfaces[i], ref.frame.n, ref.planes, open);
     this->NumberOfOpenContours += open;
@@ -480,6 +513,30 @@ void vtkLKStructureSetWriter::WriteData()
     observation.Set(DC::ObservationNumber, static_cast<double>(number));
     observation.Set(DC::ReferencedROINumber, static_cast<double>(number));
     observation.Set(DC::RTROIInterpretedType, "ORGAN");
+    observation.Set(DC::ROIInterpreter, "");
+    observed.AddItem(observation);
+  }
+  // The markers: one point each.
+  for (std::size_t k = 0; k < this->Markers.size(); ++k)
+  {
+    const Marker& m = this->Markers[k];
+    const int number = static_cast<int>(surfaces.size() + k) + 1;
+    vtkDICOMItem contour, roi, item, observation;
+    contour.Set(DC::ContourGeometricType, "POINT");
+    contour.Set(DC::NumberOfContourPoints, 1.0);
+    contour.Set(DC::ContourData, vtkDICOMValue(vtkDICOMVR::DS, m.x, 3));
+    roi.Set(DC::ROINumber, static_cast<double>(number));
+    roi.Set(DC::ReferencedFrameOfReferenceUID, ref.frameUID);
+    roi.Set(DC::ROIName, vtkDICOMValue::FromUTF8String(vtkDICOMVR::LO, characterSet, names[surfaces.size() + k]));
+    roi.Set(DC::ROIGenerationAlgorithm, "MANUAL");
+    listed.AddItem(roi);
+    item.Set(DC::ReferencedROINumber, static_cast<double>(number));
+    item.Set(DC::ROIDisplayColor, "140\\0\\115");
+    item.Set(DC::ContourSequence, vtkDICOMSequence(contour));
+    contoured.AddItem(item);
+    observation.Set(DC::ObservationNumber, static_cast<double>(number));
+    observation.Set(DC::ReferencedROINumber, static_cast<double>(number));
+    observation.Set(DC::RTROIInterpretedType, "MARKER");
     observation.Set(DC::ROIInterpreter, "");
     observed.AddItem(observation);
   }

@@ -24,7 +24,10 @@
  * fails and says why). They are written in the reference CT's character set
  * where it spells them; where it does not (a CT in ASCII or Latin-1, a name
  * in Greek), the set is UTF-8 (ISO_IR 192), its patient's and study's text
- * converted. vtkLKMedicalImageReader gives such names back in UTF-8. ROINumbers are 1, 2, ... in input order. Open contours (a surface that is
+ * converted. vtkLKMedicalImageReader gives such names back in UTF-8. ROINumbers are 1, 2, ... in input order,
+ * then the markers (AddMarker: a point each, POINT contours of
+ * interpreted type MARKER, which planning systems show as landmarks and
+ * vtkLKMedicalImageReader passes over with a note). Open contours (a surface that is
  * not closed, cut where it is open) are left out with a warning. The file is
  * written beside its destination and renamed over it only when complete, so
  * a failed write leaves an earlier file as it was.
@@ -92,6 +95,15 @@ public:
   vtkGetStringMacro(StructureSetLabel);
   ///@}
 
+  ///@{
+  /// Points to mark, written after the surfaces as ROIs of one point each
+  /// (ContourGeometricType POINT, RTROIInterpretedType MARKER): landmarks, a
+  /// measured distance's ends. A name follows the ROI names' rules.
+  void AddMarker(const char* name, double x, double y, double z);
+  void RemoveAllMarkers();
+  int GetNumberOfMarkers() const { return static_cast<int>(this->Markers.size()); }
+  ///@}
+
   /// After a write: how many contours were written, and how many open
   /// pieces of contour (where a surface is not closed) were left out.
   int GetNumberOfContours() const { return this->NumberOfContours; }
@@ -110,6 +122,12 @@ protected:
   double SliceSpacing = 1.0;
   int ReferenceSeriesIndex = -1;
   std::vector<std::string> ROINames;
+  struct Marker
+  {
+    std::string name;
+    double x[3];
+  };
+  std::vector<Marker> Markers;
   int NumberOfContours = 0;
   int NumberOfOpenContours = 0;
 

@@ -44,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <tuple>
 #include <map>
 
 namespace
@@ -1472,5 +1473,79 @@ TEST(DicomStructureSet, NamesInOtherCharacterSetsAreReadAndWrittenInUTF8)
     EXPECT_EQ(rec.errors, b.message.empty() ? 0 : 1) << b.message;
     EXPECT_NE(rec.messages.find(b.message), std::string::npos) << rec.messages;
     EXPECT_EQ(vtksys::SystemTools::FileExists(dir + "/rt/bad.dcm"), b.message.empty());
+  }
+}
+
+TEST(DicomStructureSet, MarkersAreWrittenAsPointROIsAfterTheSurfaces)
+{
+  // A measured distance's ends as landmarks beside a surface: one POINT
+  // contour each, interpreted as MARKER, numbered after the surfaces; a
+  // name beyond ASCII makes the set UTF-8 as a surface's name does. The
+  // set still reads back as its surface (the markers passed over).
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(0, 20, 0, 20, 0, 20);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  const std::string dir = tempFolder("rtstruct_markers");
+  vtkNew<vtkLKStructureSetWriter> writer;
+  lktest::ErrorRecorder rec(writer);
+  writer->SetInputConnection(triangles->GetOutputPort());
+  writer->SetROIName(0, "Block");
+  writer->AddMarker("measurement 1, 5.00 mm: from", 1.0, 2.0, 3.0);
+  writer->AddMarker("Messung 1, 5.00 mm: bis Kinnspitze \xC3\xA4", 4.0, 6.0, 3.0);
+  EXPECT_EQ(writer->GetNumberOfMarkers(), 2);
+  writer->SetFileName((dir + "/markers.dcm").c_str());
+  ASSERT_EQ(writer->Write(), 1) << rec.messages;
+  vtkNew<vtkDICOMMetaData> written;
+  vtkNew<vtkDICOMParser> parser;
+  parser->SetFileName((dir + "/markers.dcm").c_str());
+  parser->SetMetaData(written);
+  parser->Update();
+  EXPECT_EQ(written->Get(DC::SpecificCharacterSet).AsString(), "ISO_IR 192");
+  const vtkDICOMValue& listed = written->Get(DC::StructureSetROISequence);
+  const vtkDICOMValue& contoured = written->Get(DC::ROIContourSequence);
+  const vtkDICOMValue& observed = written->Get(DC::RTROIObservationsSequence);
+  ASSERT_EQ(listed.GetNumberOfValues(), 3u);
+  ASSERT_EQ(contoured.GetNumberOfValues(), 3u);
+  ASSERT_EQ(observed.GetNumberOfValues(), 3u);
+  EXPECT_EQ(listed.GetSequenceData()[0].Get(DC::ROIName).AsString(), "Block");
+  EXPECT_EQ(observed.GetSequenceData()[0].Get(DC::RTROIInterpretedType).AsString(), "ORGAN");
+  for (unsigned int k = 1; k < 3; ++k)
+  {
+    EXPECT_EQ(listed.GetSequenceData()[k].Get(DC::ROINumber).AsInt(), static_cast<int>(k) + 1);
+    EXPECT_EQ(observed.GetSequenceData()[k].Get(DC::RTROIInterpretedType).AsString(), "MARKER");
+    const vtkDICOMValue& contours = contoured.GetSequenceData()[k].Get(DC::ContourSequence);
+    ASSERT_EQ(contours.GetNumberOfValues(), 1u);
+    const vtkDICOMItem& point = contours.GetSequenceData()[0];
+    EXPECT_EQ(point.Get(DC::ContourGeometricType).AsString(), "POINT");
+    EXPECT_EQ(point.Get(DC::NumberOfContourPoints).AsInt(), 1);
+    EXPECT_EQ(point.Get(DC::ContourData).AsString(), k == 1 ? "1\\2\\3" : "4\\6\\3");
+  }
+  EXPECT_EQ(listed.GetSequenceData()[2].Get(DC::ROIName).AsUTF8String(), "Messung 1, 5.00 mm: bis Kinnspitze \xC3\xA4");
+
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName((dir + "/markers.dcm").c_str());
+  lktest::ErrorRecorder readRec(reader);
+  vtkNew<vtkLKBoneSurfaceFilter> again;
+  again->SetInputConnection(reader->GetOutputPort());
+  again->SetLabelName("Block");
+  vtkNew<vtkMassProperties> back;
+  back->SetInputConnection(again->GetOutputPort());
+  back->Update();
+  ASSERT_EQ(readRec.errors, 0) << readRec.messages;
+  EXPECT_NEAR(back->GetVolume(), 8000.0, 0.1 * 8000.0);
+
+  // Markers that DICOM cannot hold are refused with the reason.
+  for (const auto& [name, x, why] : std::vector<std::tuple<std::string, double, std::string>>{
+         { "", 0.0, "is empty" }, { "a\\b", 0.0, "backslash" }, { "fine", std::nan(""), "not a number" } })
+  {
+    vtkNew<vtkLKStructureSetWriter> bad;
+    lktest::ErrorRecorder badRec(bad);
+    bad->SetInputConnection(triangles->GetOutputPort());
+    bad->AddMarker(name.c_str(), x, 0.0, 0.0);
+    bad->SetFileName((dir + "/bad.dcm").c_str());
+    EXPECT_EQ(bad->Write(), 0) << name;
+    EXPECT_NE(badRec.messages.find(why), std::string::npos) << badRec.messages;
+    EXPECT_FALSE(vtksys::SystemTools::FileExists(dir + "/bad.dcm"));
   }
 }

@@ -1746,6 +1746,25 @@ std::string Planner::exportStructureSet(
         "); a bone that the scan's border cuts is closed with --close";
     return std::string();
   }
+  // The measurements' points as landmarks where the plan puts them (the
+  // segment moved), named by what they measure.
+  for (std::size_t i = 0; i < session.measurements.size(); ++i)
+  {
+    const Measurement& m = session.measurements[i];
+    const Measurement shown = placed(m, session.segmentMatrix);
+    const std::string what = "measurement " + std::to_string(i + 1) + ", " + measuredText(m) + ": ";
+    if (m.angle)
+    {
+      structureSet->AddMarker((what + "vertex").c_str(), shown.at[0], shown.at[1], shown.at[2]);
+      structureSet->AddMarker((what + "arm 1").c_str(), shown.from[0], shown.from[1], shown.from[2]);
+      structureSet->AddMarker((what + "arm 2").c_str(), shown.to[0], shown.to[1], shown.to[2]);
+    }
+    else
+    {
+      structureSet->AddMarker((what + "from").c_str(), shown.from[0], shown.from[1], shown.from[2]);
+      structureSet->AddMarker((what + "to").c_str(), shown.to[0], shown.to[1], shown.to[2]);
+    }
+  }
   structureSet->SetReferenceFileName(referenceImage.c_str());
   structureSet->SetStructureSetLabel("latticekit plan");
   structureSet->SetFileName((folder + "/pieces.dcm").c_str());
@@ -1759,6 +1778,8 @@ std::string Planner::exportStructureSet(
   exportedStructureSet = true;
   exportNote = "pieces.dcm (RT structure set on the CT's slices): " + quotedList(roiNames) + ", " +
     std::to_string(structureSet->GetNumberOfContours()) + " contours";
+  if (const int markers = structureSet->GetNumberOfMarkers())
+    exportNote += ", " + std::to_string(markers) + " marker" + (markers == 1 ? "" : "s") + " (the measurements' points)";
   if (!leftOut.empty())
     exportNote += "; left out, open: " + quotedList(leftOut);
   return std::string();

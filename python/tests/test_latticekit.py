@@ -236,11 +236,13 @@ class PipelineTest(unittest.TestCase):
             writer = latticekit.vtkLKStructureSetWriter()
             writer.SetInputConnection(bone.GetOutputPort())
             writer.SetROIName(0, "Kieferh\u00f6hle")  # a Python str: UTF-8 through the wrappers
+            writer.AddMarker("Gnathion", 10.0, -20.0, 18.0)  # a landmark: a POINT ROI after the surfaces
+            self.assertEqual(writer.GetNumberOfMarkers(), 1)
             writer.SetFileName(os.path.join(tmp, "written.dcm"))
             self.assertEqual(writer.Write(), 1)
             again = latticekit.vtkLKMedicalImageReader()
             again.SetFileName(os.path.join(tmp, "written.dcm"))
-            again.AddObserver("WarningEvent", lambda caller, event: None)  # no CT beside it
+            again.AddObserver("WarningEvent", lambda caller, event: None)  # no CT beside it; the marker is a point
             again.Update()
             self.assertEqual([again.GetSegmentName(i) for i in range(again.GetNumberOfSegments())],
                              ["Kieferh\u00f6hle"])
