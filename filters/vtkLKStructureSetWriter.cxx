@@ -455,6 +455,25 @@ void vtkLKStructureSetWriter::WriteData()
   static const char* const colours[] = { "241\\214\\145", "216\\101\\79", "128\\174\\128", "111\\184\\210",
     "221\\130\\101", "144\\238\\144", "220\\245\\20", "78\\63\\0" };
   vtkDICOMSequence listed, contoured, observed;
+  // An ROI in the set's three lists: its name, its contours, what it is.
+  auto addROI = [&](int number, const std::string& name, const char* algorithm, const char* colour,
+                  const vtkDICOMSequence& contours, const char* interpretedType) {
+    vtkDICOMItem roi, item, observation;
+    roi.Set(DC::ROINumber, static_cast<double>(number));
+    roi.Set(DC::ReferencedFrameOfReferenceUID, ref.frameUID);
+    roi.Set(DC::ROIName, vtkDICOMValue::FromUTF8String(vtkDICOMVR::LO, characterSet, name));
+    roi.Set(DC::ROIGenerationAlgorithm, algorithm);
+    listed.AddItem(roi);
+    item.Set(DC::ReferencedROINumber, static_cast<double>(number));
+    item.Set(DC::ROIDisplayColor, colour);
+    item.Set(DC::ContourSequence, contours);
+    contoured.AddItem(item);
+    observation.Set(DC::ObservationNumber, static_cast<double>(number));
+    observation.Set(DC::ReferencedROINumber, static_cast<double>(number));
+    observation.Set(DC::RTROIInterpretedType, interpretedType);
+    observation.Set(DC::ROIInterpreter, "");
+    observed.AddItem(observation);
+  };
   for (std::size_t i = 0; i < surfaces.size(); ++i)
   {
     this->UpdateProgress(static_cast<double>(i) / static_cast<double>(surfaces.size()));
@@ -500,45 +519,17 @@ void vtkLKStructureSetWriter::WriteData()
       this->SetErrorCode(vtkErrorCode::UserError);
       return;
     }
-    vtkDICOMItem roi, item, observation;
-    roi.Set(DC::ROINumber, static_cast<double>(number));
-    roi.Set(DC::ReferencedFrameOfReferenceUID, ref.frameUID);
-    roi.Set(DC::ROIName, vtkDICOMValue::FromUTF8String(vtkDICOMVR::LO, characterSet, name));
-    roi.Set(DC::ROIGenerationAlgorithm, "SEMIAUTOMATIC");
-    listed.AddItem(roi);
-    item.Set(DC::ReferencedROINumber, static_cast<double>(number));
-    item.Set(DC::ROIDisplayColor, colours[i % 8]);
-    item.Set(DC::ContourSequence, contours);
-    contoured.AddItem(item);
-    observation.Set(DC::ObservationNumber, static_cast<double>(number));
-    observation.Set(DC::ReferencedROINumber, static_cast<double>(number));
-    observation.Set(DC::RTROIInterpretedType, "ORGAN");
-    observation.Set(DC::ROIInterpreter, "");
-    observed.AddItem(observation);
+    addROI(number, name, "SEMIAUTOMATIC", colours[i % 8], contours, "ORGAN");
   }
   // The markers: one point each.
   for (std::size_t k = 0; k < this->Markers.size(); ++k)
   {
-    const Marker& m = this->Markers[k];
-    const int number = static_cast<int>(surfaces.size() + k) + 1;
-    vtkDICOMItem contour, roi, item, observation;
-    contour.Set(DC::ContourGeometricType, "POINT");
-    contour.Set(DC::NumberOfContourPoints, 1.0);
-    contour.Set(DC::ContourData, vtkDICOMValue(vtkDICOMVR::DS, m.x, 3));
-    roi.Set(DC::ROINumber, static_cast<double>(number));
-    roi.Set(DC::ReferencedFrameOfReferenceUID, ref.frameUID);
-    roi.Set(DC::ROIName, vtkDICOMValue::FromUTF8String(vtkDICOMVR::LO, characterSet, names[surfaces.size() + k]));
-    roi.Set(DC::ROIGenerationAlgorithm, "MANUAL");
-    listed.AddItem(roi);
-    item.Set(DC::ReferencedROINumber, static_cast<double>(number));
-    item.Set(DC::ROIDisplayColor, "140\\0\\115");
-    item.Set(DC::ContourSequence, vtkDICOMSequence(contour));
-    contoured.AddItem(item);
-    observation.Set(DC::ObservationNumber, static_cast<double>(number));
-    observation.Set(DC::ReferencedROINumber, static_cast<double>(number));
-    observation.Set(DC::RTROIInterpretedType, "MARKER");
-    observation.Set(DC::ROIInterpreter, "");
-    observed.AddItem(observation);
+    vtkDICOMItem point;
+    point.Set(DC::ContourGeometricType, "POINT");
+    point.Set(DC::NumberOfContourPoints, 1.0);
+    point.Set(DC::ContourData, vtkDICOMValue(vtkDICOMVR::DS, this->Markers[k].x, 3));
+    addROI(static_cast<int>(surfaces.size() + k) + 1, names[surfaces.size() + k], "MANUAL", "140\\0\\115",
+      vtkDICOMSequence(point), "MARKER");
   }
   meta->Set(DC::StructureSetROISequence, listed);
   meta->Set(DC::ROIContourSequence, contoured);
