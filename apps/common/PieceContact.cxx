@@ -114,13 +114,16 @@ bool ContactSurface::nearBounds(const double x[3], double margin) const
   return true;
 }
 
-namespace
+std::array<double, 3> placedPoint(const std::array<double, 16>& m, const std::array<double, 3>& x)
 {
-void transform(const std::array<double, 16>& m, const double x[3], double y[3])
-{
+  std::array<double, 3> y;
   for (std::size_t i = 0; i < 3; ++i)
     y[i] = m[4 * i] * x[0] + m[4 * i + 1] * x[1] + m[4 * i + 2] * x[2] + m[4 * i + 3];
+  return y;
 }
+
+namespace
+{
 
 /// The inverse of a rigid transform: the rotation's transpose, and the
 /// translation turned back.
@@ -147,28 +150,24 @@ void vertexPass(const ContactSurface& from, const std::array<double, 16>& place,
     return;
   for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
   {
-    double x[3], y[3];
-    points->GetPoint(i, x);
-    transform(place, x, y);
+    std::array<double, 3> x;
+    points->GetPoint(i, x.data());
+    const std::array<double, 3> y = placedPoint(place, x);
     // Beyond `nearest` from the other's bounds a vertex is neither inside
     // it nor nearer it than a vertex already measured.
-    if (!to.nearBounds(y, nearest))
+    if (!to.nearBounds(y.data(), nearest))
       continue;
     // A vertex outside the other's bounds, or within `touch` of its
     // surface, is not inside it.
     bool inside = false;
-    const double d = to.distance(y, insideKnown && to.nearBounds(y, 0.0) ? &inside : nullptr);
+    const double d = to.distance(y.data(), insideKnown && to.nearBounds(y.data(), 0.0) ? &inside : nullptr);
     if (inside && d > touch)
     {
       c.overlap = true;
       c.depth = std::max(c.depth, d);
       ++c.inside;
       if (insidePoints)
-      {
-        double shown[3];
-        transform(*show, x, shown);
-        insidePoints->InsertNextPoint(shown);
-      }
+        insidePoints->InsertNextPoint(placedPoint(*show, x).data());
     }
     else
       nearest = std::min(nearest, d);
@@ -188,11 +187,11 @@ Contact contactOf(const ContactSurface& moved, const std::array<double, 16>& mat
     vtkPoints* points = moved.surface()->GetPoints();
     for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
     {
-      double x[3], y[3];
-      points->GetPoint(i, x);
-      transform(matrix, x, y);
-      if (fixed.nearBounds(y, nearest))
-        nearest = std::min(nearest, fixed.vertexDistance(y));
+      std::array<double, 3> x;
+      points->GetPoint(i, x.data());
+      const std::array<double, 3> y = placedPoint(matrix, x);
+      if (fixed.nearBounds(y.data(), nearest))
+        nearest = std::min(nearest, fixed.vertexDistance(y.data()));
     }
   }
   // The moved piece's vertices are shown where the matrix puts them, the

@@ -11,9 +11,14 @@
 
 #include <array>
 #include <memory>
+#include <string>
 
 namespace lkapp
 {
+
+/// Point x placed by a rigid transform, row-major 4x4 (the planner's
+/// segment matrix).
+std::array<double, 3> placedPoint(const std::array<double, 16>& m, const std::array<double, 3>& x);
 
 /// One surface made ready for contact queries: a cell locator for distances
 /// and, when it is closed (no border edge), outward face normals

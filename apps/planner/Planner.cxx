@@ -204,16 +204,7 @@ vtkSmartPointer<vtkMatrix4x4> Planner::segmentMatrix() const
 void Planner::placeSegment(const std::array<double, 16>& matrix)
 {
   for (const NameCaption& c : nameCaptions)
-  {
-    double at[4] = { c.at[0], c.at[1], c.at[2], 1.0 };
-    if (c.piece == movedPiece())
-    {
-      vtkNew<vtkMatrix4x4> m;
-      m->DeepCopy(matrix.data());
-      m->MultiplyPoint(at, at);
-    }
-    c.actor->SetAttachmentPoint(at);
-  }
+    c.actor->SetAttachmentPoint(shownPoint(c.at, c.piece, matrix).data());
   for (std::size_t p = 0; p < pieceActors.size(); ++p)
     for (auto& a : pieceActors[p])
     {
@@ -291,13 +282,7 @@ std::string Planner::contactStatus() const
 std::array<double, 3> Planner::shownPoint(const std::array<double, 3>& point, int piece,
   const std::array<double, 16>& matrix) const
 {
-  if (piece < 0 || piece != movedPiece())
-    return point;
-  std::array<double, 3> moved{ matrix[3], matrix[7], matrix[11] };
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j)
-      moved[i] += matrix[4 * i + j] * point[j];
-  return moved;
+  return piece < 0 || piece != movedPiece() ? point : lkapp::placedPoint(matrix, point);
 }
 
 Measurement Planner::placed(const Measurement& m, const std::array<double, 16>& matrix) const
@@ -309,9 +294,9 @@ Measurement Planner::placed(const Measurement& m, const std::array<double, 16>& 
   return shown;
 }
 
-std::string Planner::measuredText(const Measurement& m) const
+std::string Planner::valueText(const Measurement& m)
 {
-  return m.angle ? degreesText(measuredDegrees(m)) : lengthText(measuredLength(m));
+  return m.angle ? degreesText(m.degrees()) : lengthText(m.length());
 }
 
 std::string Planner::degreesText(double degrees)
@@ -364,8 +349,9 @@ Planner::SegmentMove Planner::segmentMove() const
   const auto& m = session.segmentMatrix;
   SegmentMove move;
   const std::array<double, 3> c = segmentCentre();
+  const std::array<double, 3> moved = lkapp::placedPoint(m, c);
   for (std::size_t i = 0; i < 3; ++i)
-    move.translation[i] = m[4 * i + 3] + m[4 * i] * c[0] + m[4 * i + 1] * c[1] + m[4 * i + 2] * c[2] - c[i];
+    move.translation[i] = moved[i] - c[i];
   // R = Rz(c) Ry(b) Rx(a): m[8] = -sin b, m[9] = cos b sin a,
   // m[10] = cos b cos a, m[4] = cos b sin c, m[0] = cos b cos c.
   const double degrees = 180.0 / vtkMath::Pi();
@@ -1194,7 +1180,7 @@ void Planner::showMeasurements()
       for (std::size_t k = 0; k < 3; ++k)
         label[k] = 0.5 * (shown.from[k] + shown.to[k]);
     }
-    const std::string text = m.angle ? degreesText(shown.degrees()) : lengthText(shown.length());
+    const std::string text = valueText(shown);
     auto caption = captionActor(text, { 0.45, 0.0, 0.4 }, 14, { 15, -30 });
     caption->SetAttachmentPoint(label.data());
     renderer->AddViewProp(caption);
@@ -1654,18 +1640,19 @@ std::string Planner::planText()
   {
     const Measurement& m = session.measurements[i];
     const Measurement shown = placed(m, session.segmentMatrix);
+    const std::string value = valueText(shown);
     if (m.angle)
       std::snprintf(line, sizeof line, "measurement %zu: angle %s at (%.2f, %.2f, %.2f) between (%.2f, %.2f, %.2f) and (%.2f, %.2f, %.2f)",
-        i + 1, measuredText(m).c_str(), shown.at[0], shown.at[1], shown.at[2], shown.from[0], shown.from[1], shown.from[2],
+        i + 1, value.c_str(), shown.at[0], shown.at[1], shown.at[2], shown.from[0], shown.from[1], shown.from[2],
         shown.to[0], shown.to[1], shown.to[2]);
     else
       std::snprintf(line, sizeof line, "measurement %zu: %s from (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)", i + 1,
-        measuredText(m).c_str(), shown.from[0], shown.from[1], shown.from[2], shown.to[0], shown.to[1], shown.to[2]);
+        value.c_str(), shown.from[0], shown.from[1], shown.from[2], shown.to[0], shown.to[1], shown.to[2]);
     text += line;
     // A point on the moved segment moved with it: the value as picked too,
     // where the move changed it.
-    const std::string picked = m.angle ? degreesText(m.degrees()) : lengthText(m.length());
-    if (picked != measuredText(m))
+    const std::string picked = valueText(m);
+    if (picked != value)
       text += ", " + picked + " before the segment's move";
     text += "\n";
   }

@@ -379,13 +379,13 @@ public:
   std::array<double, 3> shownPoint(const std::array<double, 3>& point, int piece,
     const std::array<double, 16>& matrix) const;
   /// A measurement's points (from, to; at for an angle) where `matrix`
-  /// shows them, and as the plan places them (the segment moved): the
-  /// distance and the angle there.
+  /// shows them.
   Measurement placed(const Measurement& m, const std::array<double, 16>& matrix) const;
-  double measuredLength(const Measurement& m) const { return placed(m, session.segmentMatrix).length(); }
-  double measuredDegrees(const Measurement& m) const { return placed(m, session.segmentMatrix).degrees(); }
-  /// "23.41 mm" for a distance, "112.5 deg" for an angle, as the plan places it.
-  std::string measuredText(const Measurement& m) const;
+  /// A measurement's value as its points stand: "23.41 mm" for a distance,
+  /// "112.5 deg" for an angle.
+  static std::string valueText(const Measurement& m);
+  /// Its value as the plan places it (the segment moved).
+  std::string measuredText(const Measurement& m) const { return valueText(placed(m, session.segmentMatrix)); }
   /// A measurement's text: "23.41 mm", "112.5 deg".
   static std::string lengthText(double length);
   static std::string degreesText(double degrees);

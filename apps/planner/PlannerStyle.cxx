@@ -387,9 +387,9 @@ void PlannerStyle::measureClick()
   }
   p.message.clear();
   // An angle's arm needs a length: its end apart from the vertex, as shown.
-  const auto shown = [&](std::size_t k) { return p.shownPoint(p.measurePicked[k], p.measurePickedPieces[k], p.shownMatrix); };
-  const std::array<double, 3> here = p.shownPoint(point, piece, p.shownMatrix);
-  if (angle && !p.measurePicked.empty() && here == shown(p.measurePicked.size() - 1))
+  if (angle && !p.measurePicked.empty() &&
+    p.shownPoint(point, piece, p.shownMatrix) ==
+      p.shownPoint(p.measurePicked.back(), p.measurePickedPieces.back(), p.shownMatrix))
     p.message = "click a point apart from the last: an angle's arm needs a length";
   else
   {
