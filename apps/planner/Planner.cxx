@@ -6,6 +6,7 @@
 #include "common/DistanceColourBar.h"
 #include "common/JsonFields.h"
 #include "common/PlaneSection.h"
+#include "common/TextFont.h"
 
 #include "vtkLKClosedLineCutFilter.h"
 #include "vtkLKLatticeFitFilter.h"
@@ -14,6 +15,7 @@
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStructureSetWriter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
+#include "vtkLKText.h"
 
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
@@ -93,6 +95,11 @@ std::string matrixText(const std::array<double, 16>& m)
 /// (a longer word stays whole).
 std::string wrapped(const std::string& text, std::size_t width)
 {
+  // Widths count characters, not UTF-8 bytes (a Cyrillic letter takes two).
+  const auto length = [](const std::string& t) {
+    return static_cast<std::size_t>(
+      std::count_if(t.begin(), t.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+  };
   std::string out;
   std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);)
@@ -101,7 +108,7 @@ std::string wrapped(const std::string& text, std::size_t width)
     std::istringstream words(line);
     for (std::string word; words >> word;)
     {
-      if (!current.empty() && current.size() + 1 + word.size() > width)
+      if (!current.empty() && length(current) + 1 + length(word) > width)
       {
         out += current + "\n";
         current = "  "; // continuation lines are indented
@@ -175,8 +182,20 @@ vtkSmartPointer<vtkCaptionActor2D> captionActor(
   property->SetBackgroundColor(1.0, 1.0, 1.0);
   property->SetBackgroundOpacity(0.75);
   caption->GetProperty()->SetColor(colour.data()); // the leader
+  // A name in a script VTK's compiled font lacks (Greek, Cyrillic, kanji)
+  // is drawn with an installed font that has it; one that no font has is
+  // said once.
+  if (const std::string lacking = lkapp::useFontFor(property, text); !lacking.empty())
+  {
+    static std::set<std::string> said;
+    if (said.insert(text).second)
+      std::fprintf(stderr, "planner: no installed font draws '%s' of '%s'; the view leaves them out\n",
+        lkvtk::shownText(lacking, 64).c_str(), lkvtk::shownText(text, 64).c_str());
+  }
   caption->SetPosition(offset[0], offset[1]);
-  caption->SetWidth(0.01 * static_cast<double>(text.size() + 2));
+  std::vector<char32_t> characters;
+  lkvtk::decodeUTF8(text, &characters);
+  caption->SetWidth(0.01 * static_cast<double>(characters.size() + 2));
   caption->SetHeight(0.0027 * fontSize);
   caption->PickableOff();
   return caption;
@@ -1521,8 +1540,12 @@ void Planner::updateStatus()
     s << " | " << notice;
   if (!cutSummary.empty())
     s << "\n" << cutSummary;
-  status->SetInput(wrapped(s.str(), 130).c_str()); // the window is 1000 pixels wide
-  messages->SetInput(wrapped(message, 120).c_str());
+  const std::string statusText = wrapped(s.str(), 130); // the window is 1000 pixels wide
+  const std::string messageText = wrapped(message, 120);
+  lkapp::useFontFor(status->GetTextProperty(), statusText); // names in any script
+  lkapp::useFontFor(messages->GetTextProperty(), messageText);
+  status->SetInput(statusText.c_str());
+  messages->SetInput(messageText.c_str());
 }
 
 void Planner::showStroke()

@@ -1,6 +1,7 @@
 #include "planner/PlannerStyle.h"
 
 #include "common/AppSupport.h"
+#include "common/KeyCharacter.h"
 
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKText.h"
@@ -566,14 +567,15 @@ void PlannerStyle::typeName(const std::string& key)
   }
   else
   {
-    // X gives a typed letter as Latin-1 (an o with two dots is 0xF6): it
-    // goes into the name as UTF-8. An event log cannot give a space as a
-    // key code, so its key symbol counts. A key that gives no letter
-    // (Shift, an arrow, a control key) is passed over; a backslash and a
-    // name grown to its longest are said.
-    const char c = key == "space" ? ' ' : this->Interactor->GetKeyCode();
-    const unsigned char code = static_cast<unsigned char>(c);
-    const bool letter = c != '\\' && ((code >= 0x20 && code < 0x7F) || code > 0xA0);
+    // The typed letter goes into the name as UTF-8. A key that gives no
+    // letter (Shift, an arrow, a control key, a dead accent, which X does
+    // not compose without an input method) is passed over; a backslash and
+    // a name grown to its longest are said. A no-break space (U+00A0) is
+    // not a letter: it looks like a space and is not one.
+    const char32_t code =
+      lkapp::keyCharacter(key, this->Interactor->GetKeyCode(), this->Interactor->GetControlKey() != 0);
+    const bool letter = code != U'\\' && code != 0xA0 && code != 0 && !lkvtk::isControl(code) && code <= 0x10FFFF &&
+                        (code < 0xD800 || code > 0xDFFF);
     std::vector<char32_t> characters;
     lkvtk::decodeUTF8(p.namingText, &characters);
     if (letter && characters.size() < kPieceNameLength)
@@ -583,7 +585,7 @@ void PlannerStyle::typeName(const std::string& key)
     }
     else if (letter)
       p.message = "a name holds at most " + std::to_string(kPieceNameLength) + " characters";
-    else if (c == '\\')
+    else if (code == U'\\')
       p.message = "a name cannot hold a backslash: DICOM reads it as a separator";
   }
   p.updateStatus();
@@ -618,20 +620,18 @@ void PlannerStyle::typeMove(const std::string& key)
   }
   else
   {
-    // Numbers: digits, a sign, a point, spaces or commas between them. An
-    // event log cannot give a space or a 0 as a key code (VTK reads "0" as
-    // none), so their key symbols count: space, and the keypad's KP_0 as
-    // the keypad gives it.
-    char c = key == "space" ? ' ' : this->Interactor->GetKeyCode();
-    if (c == 0 && key.size() == 4 && key.compare(0, 3, "KP_") == 0 && std::isdigit(static_cast<unsigned char>(key[3])))
-      c = key[3];
-    if (std::strchr("0123456789+-., ", c) != nullptr && c != '\0' && p.moveText.size() < 80)
+    // Numbers: digits, a sign, a point, spaces or commas between them, from
+    // the keypad too.
+    const char32_t typed =
+      lkapp::keyCharacter(key, this->Interactor->GetKeyCode(), this->Interactor->GetControlKey() != 0);
+    const bool number = typed != 0 && typed < 0x80 && std::strchr("0123456789+-., ", static_cast<char>(typed)) != nullptr;
+    if (number && p.moveText.size() < 80)
     {
-      p.moveText += c;
+      p.moveText += static_cast<char>(typed);
       p.message.clear();
     }
-    else if (std::isprint(static_cast<unsigned char>(c)))
-      p.message = std::string("'") + c + "' is not part of a number: type x y z (mm), then rx ry rz (degrees)";
+    else if (!number && typed != 0 && !lkvtk::isControl(typed))
+      p.message = "'" + lkvtk::encodeUTF8(typed) + "' is not part of a number: type x y z (mm), then rx ry rz (degrees)";
   }
   p.updateStatus();
   this->Interactor->Render();
