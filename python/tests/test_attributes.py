@@ -327,6 +327,35 @@ class AttributeTest(unittest.TestCase):
         # The fit's own field data is there beside it.
         self.assertEqual(fit.GetOutput().GetFieldData().GetArray("ControlVertices").GetValue(0), 40)
 
+    def test_the_mirror_image_carries_every_points_and_faces_data(self):
+        # Each point of the mirror image is the reflection of its own: it keeps
+        # its data, each face its label, the normals are reflected (still
+        # outward), and the file's tag stays.
+        sphere = tagged_sphere(16, 16)
+        mirror = latticekit.vtkLKSymmetryPlaneFilter()
+        mirror.SetInputData(sphere)
+        mirror.Update()
+        out = mirror.GetOutput()
+        n = mirror.GetPlaneNormal()
+        self.assertAlmostEqual(n[0], 1.0, places=6)  # a sphere: the plane it started from
+        self.assertEqual(out.GetNumberOfPoints(), sphere.GetNumberOfPoints())
+        self.assertEqual(space_of(out), "RAS")
+        elevation_in = sphere.GetPointData().GetArray("Elevation")
+        elevation_out = out.GetPointData().GetArray("Elevation")
+        label_out = out.GetCellData().GetArray("Label")
+        normals_in = sphere.GetPointData().GetNormals()
+        normals_out = out.GetPointData().GetNormals()
+        for i in range(0, out.GetNumberOfPoints(), 7):
+            self.assertEqual(elevation_out.GetValue(i), elevation_in.GetValue(i))
+            a, b = normals_in.GetTuple3(i), normals_out.GetTuple3(i)
+            along = sum(a[k] * n[k] for k in range(3))
+            for k in range(3):
+                self.assertAlmostEqual(b[k], a[k] - 2 * along * n[k], places=5)
+        for c in range(out.GetNumberOfCells()):
+            self.assertEqual(label_out.GetValue(c), 10 * c)
+            self.assertEqual(point_ids(out, c), list(reversed(point_ids(sphere, c))))
+        self.assertEqual(out.GetFieldData().GetArray("SymmetryPlaneNormal").GetNumberOfComponents(), 3)
+
     def test_a_fit_does_not_pass_on_an_earlier_fits_report(self):
         # A mesh that carries an earlier fit's report (a fitted lattice's
         # surface, fitted again): without an error search or a Metro run of its

@@ -1,0 +1,93 @@
+/**
+ * @class   vtkLKSymmetryPlaneFilter
+ * @brief   Finds a bone's plane of symmetry (a mandible's or a skull's
+ *          mid-sagittal plane) and mirrors the surface across it.
+ *
+ * Mirror-image planning: where one side of the jaw is deformed, resected or
+ * broken, the mirror image of the other side is what the surgeon rebuilds
+ * it to. The segment is moved onto it, and a reconstruction plate is bent on
+ * a printed model of it before the operation.
+ *
+ * Method: the surface is reflected across the plane through the mean of its
+ * points normal to InitialNormal (default x, the patient's left-right axis in
+ * both LPS and RAS), and that reflection is registered rigidly to the surface
+ * with VTK's iterative closest point (vtkIterativeClosestPointTransform:
+ * landmarks taken evenly from the mirrored points, matched to the closest
+ * points of the surface's cells). The reflection followed by the rigid
+ * motion is an improper isometry; the plane is that of the reflection
+ * nearest it (Frobenius norm): its normal is the eigenvector of the smallest
+ * eigenvalue of the symmetric part of the linear map, turned to agree with
+ * InitialNormal, and it passes through the mean of the midpoints between
+ * the points and their images. A bone far from symmetric, or an InitialNormal
+ * far from its plane, can end in a local minimum: the fitted normal and the
+ * mean distance tell.
+ *
+ * Input: a surface (polygons or strips, any number of pieces). Output: the
+ * input mirrored across the fitted plane: points and point normals and
+ * vectors reflected, each cell's points in reverse order so that its normal
+ * still points out of the bone, point, cell and field data carried. Field
+ * data: SymmetryPlaneOrigin and SymmetryPlaneNormal (3 values each),
+ * SymmetryMeanDistance and SymmetryMaximumDistance: the mean and largest
+ * distance from the input's points to the mirror image, in the input's
+ * units (how far the bone is from symmetric about the plane). The same
+ * values are kept in the filter after an update (GetPlaneOrigin, ...).
+ */
+#ifndef vtkLKSymmetryPlaneFilter_h
+#define vtkLKSymmetryPlaneFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class LATTICEKITFILTERS_EXPORT vtkLKSymmetryPlaneFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKSymmetryPlaneFilter* New();
+  vtkTypeMacro(vtkLKSymmetryPlaneFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The normal of the plane to start from (default 1, 0, 0); finite and not
+  /// zero. Its length does not matter.
+  vtkSetVector3Macro(InitialNormal, double);
+  vtkGetVector3Macro(InitialNormal, double);
+  ///@}
+
+  ///@{
+  /// The registration's iterations (default 100; 1 to 10,000) and the
+  /// number of mirrored points it matches (default 2,000; 3 to 10^7; all of
+  /// them when there are fewer).
+  vtkSetMacro(MaximumNumberOfIterations, int);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  vtkSetMacro(MaximumNumberOfLandmarks, int);
+  vtkGetMacro(MaximumNumberOfLandmarks, int);
+  ///@}
+
+  ///@{
+  /// The fitted plane (a point of it and its unit normal) and the mean and
+  /// largest distance from the input's points to its mirror image, after an
+  /// update (zeros before, or after an error).
+  vtkGetVector3Macro(PlaneOrigin, double);
+  vtkGetVector3Macro(PlaneNormal, double);
+  vtkGetMacro(MeanDistance, double);
+  vtkGetMacro(MaximumDistance, double);
+  ///@}
+
+protected:
+  vtkLKSymmetryPlaneFilter() = default;
+  ~vtkLKSymmetryPlaneFilter() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double InitialNormal[3] = { 1.0, 0.0, 0.0 };
+  int MaximumNumberOfIterations = 100;
+  int MaximumNumberOfLandmarks = 2000;
+  double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
+  double PlaneNormal[3] = { 0.0, 0.0, 0.0 };
+  double MeanDistance = 0.0;
+  double MaximumDistance = 0.0;
+
+private:
+  vtkLKSymmetryPlaneFilter(const vtkLKSymmetryPlaneFilter&) = delete;
+  void operator=(const vtkLKSymmetryPlaneFilter&) = delete;
+};
+
+#endif

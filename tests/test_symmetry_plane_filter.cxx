@@ -1,0 +1,276 @@
+// vtkLKSymmetryPlaneFilter: a bone's plane of symmetry and its mirror image,
+// on a shape symmetric about one tilted plane only (exact answer), on the
+// TCIA mandible, and on bad input.
+#include "TestSupport.h"
+
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
+#include "vtkLKSymmetryPlaneFilter.h"
+
+#include <vtkAppendPolyData.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCleanPolyData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkMath.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkSphereSource.h>
+#include <vtkStringArray.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+/// The volume a closed triangle surface encloses, positive when its faces
+/// are ordered with their normals pointing out (divergence theorem).
+double signedVolume(vtkPolyData* pd)
+{
+  double volume = 0.0;
+  auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    double a[3], b[3], c[3], bc[3];
+    pd->GetPoint(ids[0], a);
+    for (vtkIdType k = 1; k + 1 < n; ++k)
+    {
+      pd->GetPoint(ids[k], b);
+      pd->GetPoint(ids[k + 1], c);
+      vtkMath::Cross(b, c, bc);
+      volume += vtkMath::Dot(a, bc) / 6.0;
+    }
+  }
+  return volume;
+}
+
+/// An ellipsoid (30, 20, 12) with a ball of radius 4 on it at (0, 15, 8):
+/// symmetric about the plane x = 0 and about no other. Then turned 12
+/// degrees about z and 6 about y and moved by (5, -3, 100), with point
+/// normals and field data SPACE = LPS.
+struct TiltedShape
+{
+  vtkSmartPointer<vtkPolyData> surface;
+  vtkNew<vtkTransform> motion;
+  TiltedShape()
+  {
+    vtkNew<vtkSphereSource> body;
+    body->SetThetaResolution(64);
+    body->SetPhiResolution(32);
+    body->SetRadius(1.0);
+    vtkNew<vtkTransform> scale;
+    scale->Scale(30, 20, 12);
+    vtkNew<vtkTransformPolyDataFilter> ellipsoid;
+    ellipsoid->SetInputConnection(body->GetOutputPort());
+    ellipsoid->SetTransform(scale);
+    vtkNew<vtkSphereSource> ball;
+    ball->SetThetaResolution(32);
+    ball->SetPhiResolution(16);
+    ball->SetRadius(4.0);
+    ball->SetCenter(0, 15, 8);
+    vtkNew<vtkAppendPolyData> both;
+    both->AddInputConnection(ellipsoid->GetOutputPort());
+    both->AddInputConnection(ball->GetOutputPort());
+    motion->PostMultiply();
+    motion->RotateZ(12);
+    motion->RotateY(6);
+    motion->Translate(5, -3, 100);
+    vtkNew<vtkTransformPolyDataFilter> place;
+    place->SetInputConnection(both->GetOutputPort());
+    place->SetTransform(motion);
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(place->GetOutputPort());
+    normals->SplittingOff();
+    normals->Update();
+    surface = normals->GetOutput();
+    vtkNew<vtkStringArray> space;
+    space->SetName("SPACE");
+    space->InsertNextValue("LPS");
+    surface->GetFieldData()->AddArray(space);
+  }
+};
+} // namespace
+
+TEST(SymmetryPlaneFilter, FindsTheOnePlaneOfATiltedShapeAndMirrorsItOutwardFacing)
+{
+  TiltedShape shape;
+  vtkNew<vtkLKSymmetryPlaneFilter> filter;
+  filter->SetInputData(shape.surface);
+  lktest::ProgressRecorder progress(filter);
+  filter->Update();
+  EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
+  double expected[3];
+  const double xAxis[3] = { 1.0, 0.0, 0.0 };
+  shape.motion->TransformNormal(xAxis, expected);
+  double normal[3], origin[3];
+  filter->GetPlaneNormal(normal);
+  filter->GetPlaneOrigin(origin);
+  EXPECT_NEAR(vtkMath::Norm(normal), 1.0, 1e-12);
+  // Started 12.4 degrees off (the x axis); ends on the plane.
+  EXPECT_LT(vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal, expected)), 0.05);
+  const double moved[3] = { 5, -3, 100 };
+  double apart[3];
+  vtkMath::Subtract(origin, moved, apart);
+  EXPECT_LT(std::abs(vtkMath::Dot(apart, expected)), 0.01);
+  // Symmetric: its mirror image lies on it (the facets' own mismatch).
+  EXPECT_LT(filter->GetMeanDistance(), 0.01);
+  EXPECT_LT(filter->GetMaximumDistance(), 0.1);
+
+  vtkPolyData* image = filter->GetOutput();
+  ASSERT_EQ(image->GetNumberOfPoints(), shape.surface->GetNumberOfPoints());
+  ASSERT_EQ(image->GetNumberOfPolys(), shape.surface->GetNumberOfPolys());
+  // Faces still point out: the same positive volume.
+  const double volume = signedVolume(shape.surface);
+  EXPECT_GT(volume, 0.0);
+  EXPECT_NEAR(signedVolume(image), volume, 1e-9 * volume);
+  // Each point is the reflection of its own, and its normal the reflected
+  // normal (still outward).
+  vtkDataArray* normalsIn = shape.surface->GetPointData()->GetNormals();
+  vtkDataArray* normalsOut = image->GetPointData()->GetNormals();
+  ASSERT_NE(normalsOut, nullptr);
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); i += 97)
+  {
+    double x[3], y[3], d[3], m[3], a[3], b[3];
+    shape.surface->GetPoint(i, x);
+    image->GetPoint(i, y);
+    vtkMath::Subtract(y, x, d);
+    vtkMath::Cross(d, normal, m); // the point moves along the normal
+    EXPECT_LT(vtkMath::Norm(m), 1e-9);
+    for (int k = 0; k < 3; ++k)
+      m[k] = 0.5 * (x[k] + y[k]) - origin[k];
+    EXPECT_NEAR(vtkMath::Dot(m, normal), 0.0, 1e-9);
+    normalsIn->GetTuple(i, a);
+    normalsOut->GetTuple(i, b);
+    const double along = vtkMath::Dot(a, normal);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(b[k], a[k] - 2.0 * along * normal[k], 1e-6);
+  }
+  // Field data: the input's, and the plane.
+  EXPECT_NE(image->GetFieldData()->GetAbstractArray("SPACE"), nullptr);
+  vtkDataArray* fitted = image->GetFieldData()->GetArray("SymmetryPlaneNormal");
+  ASSERT_NE(fitted, nullptr);
+  EXPECT_EQ(fitted->GetNumberOfComponents(), 3);
+  EXPECT_DOUBLE_EQ(fitted->GetComponent(0, 1), normal[1]);
+  ASSERT_NE(image->GetFieldData()->GetArray("SymmetryMeanDistance"), nullptr);
+  EXPECT_DOUBLE_EQ(image->GetFieldData()->GetArray("SymmetryMeanDistance")->GetTuple1(0), filter->GetMeanDistance());
+}
+
+TEST(SymmetryPlaneFilter, TheNormalFollowsTheInitialNormalsSide)
+{
+  TiltedShape shape;
+  vtkNew<vtkLKSymmetryPlaneFilter> filter;
+  filter->SetInputData(shape.surface);
+  filter->SetInitialNormal(-2.0, 0.1, 0.0);
+  filter->Update();
+  double expected[3], normal[3];
+  const double minusX[3] = { -1.0, 0.0, 0.0 };
+  shape.motion->TransformNormal(minusX, expected);
+  filter->GetPlaneNormal(normal);
+  EXPECT_LT(vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal, expected)), 0.05);
+}
+
+TEST(SymmetryPlaneFilter, TheMandiblesMidSagittalPlane)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkLKSymmetryPlaneFilter> filter;
+  filter->SetInputConnection(bone->GetOutputPort());
+  filter->Update();
+  double normal[3], origin[3], bounds[6];
+  filter->GetPlaneNormal(normal);
+  filter->GetPlaneOrigin(origin);
+  bone->GetOutput()->GetBounds(bounds);
+  const double x[3] = { 1, 0, 0 };
+  const double tilt = vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal, x));
+  std::printf("mandible: normal (%.4f, %.4f, %.4f), %.2f degrees from x, through x = %.2f (bounds %.2f to %.2f); "
+              "mean %.3f mm, max %.3f mm to its mirror image\n",
+    normal[0], normal[1], normal[2], tilt, origin[0], bounds[0], bounds[1], filter->GetMeanDistance(),
+    filter->GetMaximumDistance());
+  // Left-right, near the middle, and a mirror image close to the bone (a
+  // plane off by a few degrees would put the condyles centimetres apart).
+  EXPECT_LT(tilt, 10.0);
+  EXPECT_NEAR(origin[0], 0.5 * (bounds[0] + bounds[1]), 0.1 * (bounds[1] - bounds[0]));
+  EXPECT_LT(filter->GetMeanDistance(), 1.5);
+  // Better than the first guess: the plane x = centre, with the same measure.
+  vtkNew<vtkLKSymmetryPlaneFilter> once;
+  once->SetInputConnection(bone->GetOutputPort());
+  once->SetMaximumNumberOfIterations(1);
+  once->Update();
+  EXPECT_LT(filter->GetMeanDistance(), once->GetMeanDistance());
+  EXPECT_NEAR(signedVolume(filter->GetOutput()), signedVolume(bone->GetOutput()), 1e-6 * signedVolume(bone->GetOutput()));
+}
+
+TEST(SymmetryPlaneFilter, StopsWhenAsked)
+{
+  TiltedShape shape;
+  vtkNew<vtkLKSymmetryPlaneFilter> filter;
+  filter->SetInputData(shape.surface);
+  lktest::ProgressRecorder progress(filter);
+  progress.stopAt = 0.5;
+  lktest::ErrorRecorder rec(filter);
+  filter->Update();
+  EXPECT_EQ(rec.errors, 0);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_LT(progress.progress.back(), 1.0);
+}
+
+TEST(SymmetryPlaneFilter, BadInputAndParametersAreRefused)
+{
+  TiltedShape shape;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto refused = [](vtkLKSymmetryPlaneFilter* filter, const std::string& text) {
+    lktest::ErrorRecorder rec(filter);
+    filter->Update();
+    EXPECT_EQ(rec.errors, 1) << text;
+    EXPECT_NE(rec.messages.find(text), std::string::npos) << rec.messages;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << text;
+    double n[3];
+    filter->GetPlaneNormal(n);
+    EXPECT_EQ(vtkMath::Norm(n), 0.0) << text;
+  };
+  {
+    vtkNew<vtkLKSymmetryPlaneFilter> filter;
+    vtkNew<vtkPolyData> empty;
+    filter->SetInputData(empty);
+    refused(filter, "no surface");
+  }
+  {
+    vtkNew<vtkLKSymmetryPlaneFilter> filter;
+    filter->SetInputData(shape.surface);
+    filter->SetInitialNormal(0, 0, 0);
+    refused(filter, "InitialNormal");
+    filter->SetInitialNormal(nan, 0, 1);
+    refused(filter, "InitialNormal");
+    filter->SetInitialNormal(1, 0, 0);
+    filter->SetMaximumNumberOfIterations(0);
+    refused(filter, "MaximumNumberOfIterations");
+    filter->SetMaximumNumberOfIterations(100);
+    filter->SetMaximumNumberOfLandmarks(2);
+    refused(filter, "MaximumNumberOfLandmarks");
+  }
+  {
+    vtkNew<vtkPolyData> broken;
+    broken->DeepCopy(shape.surface);
+    broken->GetPoints()->SetPoint(5, nan, 0, 0);
+    vtkNew<vtkLKSymmetryPlaneFilter> filter;
+    filter->SetInputData(broken);
+    refused(filter, "point 5 is not finite");
+  }
+  {
+    vtkNew<vtkPolyData> flat;
+    flat->DeepCopy(shape.surface);
+    for (vtkIdType i = 0; i < flat->GetNumberOfPoints(); ++i)
+      flat->GetPoints()->SetPoint(i, 1, 2, 3);
+    vtkNew<vtkLKSymmetryPlaneFilter> filter;
+    filter->SetInputData(flat);
+    refused(filter, "every point is in one place");
+  }
+}
