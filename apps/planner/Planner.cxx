@@ -14,6 +14,9 @@
 #include "vtkLKMetroFilter.h"
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStructureSetWriter.h"
+#include "vtkLKSymmetryPlaneFilter.h"
+
+#include "latticekit/ClosestPointTree.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
 #include "vtkLKText.h"
 
@@ -140,7 +143,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
-                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: measure, a: angle (two, three clicks)\n"
+                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: measure, a: angle (two, three clicks) | o: mirror image\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
@@ -239,6 +242,142 @@ void Planner::placeSegment(const std::array<double, 16>& matrix)
   shownMatrix = matrix;
   showMeasurements(); // an end on the segment moves with it
   updateContacts(matrix);
+  updateMirrorFit(matrix);
+}
+
+const Planner::MirrorImage& Planner::mirrorImage()
+{
+  if (mirror.made)
+    return mirror;
+  mirror.made = true;
+  vtkNew<vtkLKSymmetryPlaneFilter> symmetry;
+  symmetry->SetInputData(facesOnly(bone));
+  // The patient's left-right axis: x in LPS and RAS alike (a CT's patient
+  // lies along z, facing y).
+  symmetry->SetInitialNormal(1.0, 0.0, 0.0);
+  const int before = lkapp::errorCount();
+  symmetry->Update();
+  if (symmetry->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    mirror.error = lkapp::errorCount() > before ? lkapp::errorsSince(before) : std::string("no mirror image was made");
+    return mirror;
+  }
+  mirror.surface = vtkSmartPointer<vtkPolyData>::New();
+  mirror.surface->ShallowCopy(symmetry->GetOutput());
+  symmetry->GetPlaneOrigin(mirror.origin.data());
+  symmetry->GetPlaneNormal(mirror.normal.data());
+  mirror.mean = symmetry->GetMeanDistance();
+  mirror.largest = symmetry->GetMaximumDistance();
+  lk::TriangleMesh mesh;
+  mesh.points.resize(static_cast<std::size_t>(mirror.surface->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mirror.surface->GetNumberOfPoints(); ++i)
+    mirror.surface->GetPoint(i, mesh.points[static_cast<std::size_t>(i)].data());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mirror.surface->GetNumberOfCells(); ++c)
+  {
+    mirror.surface->GetCellPoints(c, ids);
+    if (mirror.surface->GetCellType(c) == VTK_POLYGON || mirror.surface->GetCellType(c) == VTK_TRIANGLE ||
+      mirror.surface->GetCellType(c) == VTK_QUAD)
+      for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+        mesh.triangles.push_back({ ids->GetId(0), ids->GetId(k), ids->GetId(k + 1) });
+  }
+  try
+  {
+    mirror.tree = std::make_shared<const lk::ClosestPointTree>(mesh);
+  }
+  catch (const std::exception& e)
+  {
+    mirror.surface = nullptr;
+    mirror.error = e.what();
+    return mirror;
+  }
+  vtkPolyDataMapper::SafeDownCast(mirrorActor->GetMapper())->SetInputData(mirror.surface);
+  return mirror;
+}
+
+Planner::MirrorFit Planner::mirrorFitOf(const std::array<double, 16>& matrix) const
+{
+  MirrorFit fit;
+  if (!mirror.tree || !hasSegment())
+    return fit;
+  vtkPolyData* segment = pieces[static_cast<std::size_t>(session.segment)];
+  // The vertices of the bone's own surface: a cap's lie inside the mirror
+  // image, where the cut went through the bone.
+  std::vector<char> onBone(static_cast<std::size_t>(segment->GetNumberOfPoints()), 0);
+  vtkDataArray* cap = segment->GetCellData()->GetArray("Cap");
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < segment->GetNumberOfCells(); ++c)
+  {
+    if (segment->GetCellType(c) != VTK_TRIANGLE && segment->GetCellType(c) != VTK_POLYGON &&
+      segment->GetCellType(c) != VTK_QUAD)
+      continue;
+    if (cap && cap->GetTuple1(c) != 0.0)
+      continue;
+    segment->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      onBone[static_cast<std::size_t>(ids->GetId(k))] = 1;
+  }
+  double sum = 0.0;
+  vtkIdType count = 0;
+  lk::ClosestPointTree::Hit hit; // each vertex's hit starts its neighbour's search
+  for (vtkIdType i = 0; i < segment->GetNumberOfPoints(); ++i)
+  {
+    if (!onBone[static_cast<std::size_t>(i)])
+      continue;
+    std::array<double, 3> x;
+    segment->GetPoint(i, x.data());
+    x = lkapp::placedPoint(matrix, x);
+    const lk::Vec3 q(x[0], x[1], x[2]);
+    hit = count == 0 ? mirror.tree->closest(q) : mirror.tree->closest(q, hit);
+    const double d = hit.distance;
+    sum += d;
+    fit.largest = std::max(fit.largest, d);
+    ++count;
+  }
+  fit.valid = count > 0;
+  fit.mean = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  return fit;
+}
+
+void Planner::updateMirrorFit(const std::array<double, 16>& matrix)
+{
+  segmentToMirror = MirrorFit();
+  if (!session.mirror || !mirror.surface || !hasSegment())
+    return;
+  segmentToMirror = mirrorFitOf(matrix);
+  vtkPolyData* segment = pieces[static_cast<std::size_t>(session.segment)];
+  if (segment != mirrorFitPiece || segment->GetMTime() != mirrorFitTime)
+  {
+    segmentToMirrorBefore = isIdentity(matrix) ? segmentToMirror : mirrorFitOf(Session().segmentMatrix);
+    mirrorFitPiece = segment;
+    mirrorFitTime = segment->GetMTime();
+  }
+}
+
+std::string Planner::mirrorText() const
+{
+  if (!session.mirror)
+    return "";
+  if (!mirror.surface)
+    return "mirror image: none (" + mirror.error + ")\n";
+  const double x[3] = { 1.0, 0.0, 0.0 };
+  const double tilt = vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(mirror.normal.data(), x));
+  char line[400];
+  std::snprintf(line, sizeof line,
+    "mirror image: across the bone's plane of symmetry through (%.2f, %.2f, %.2f), normal (%.4f, %.4f, %.4f), "
+    "%.1f deg from x; the bone is %.2f mm from it on average, %.2f mm at most\n",
+    mirror.origin[0], mirror.origin[1], mirror.origin[2], mirror.normal[0], mirror.normal[1], mirror.normal[2], tilt,
+    mirror.mean, mirror.largest);
+  std::string text = line;
+  if (segmentToMirror.valid)
+  {
+    std::snprintf(line, sizeof line,
+      "segment and the mirror image: %.2f mm apart on average, %.2f mm at most (%.2f and %.2f before the segment's "
+      "move)\n",
+      segmentToMirror.mean, segmentToMirror.largest, segmentToMirrorBefore.mean, segmentToMirrorBefore.largest);
+    text += line;
+  }
+  return text;
 }
 
 void Planner::updateContacts(const std::array<double, 16>& matrix)
@@ -509,6 +648,16 @@ void Planner::setup()
   overlapMarker->SetVisibility(false);
   overlapMarker->PickableOff();
   overlay->AddActor(overlapMarker);
+  // The mirror image: translucent over the bone, so that the bone shows
+  // through where the two agree and the mirror stands out where they do not.
+  vtkNew<vtkPolyDataMapper> mirrorMapper;
+  mirrorMapper->ScalarVisibilityOff();
+  mirrorActor->SetMapper(mirrorMapper);
+  mirrorActor->GetProperty()->SetColor(0.55, 0.35, 0.85);
+  mirrorActor->GetProperty()->SetOpacity(0.35);
+  mirrorActor->SetVisibility(false);
+  mirrorActor->PickableOff(); // strokes and picks land on the bone
+  renderer->AddActor(mirrorActor);
   // The patient's sides, as medical viewers show them: a mandible is nearly
   // symmetric, and a cut planned on the wrong side is the error to prevent.
   // Patient x, y, z point to the left, back and up in LPS; to the right,
@@ -979,8 +1128,17 @@ void Planner::rebuild()
   else if (session.segment >= static_cast<int>(pieces.size()))
     addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
       std::to_string(pieces.size()) + " piece(s)");
+  // The mirror image, made once per bone.
+  mirrorActor->SetVisibility(false);
+  if (session.mirror)
+  {
+    if (mirrorImage().surface)
+      mirrorActor->SetVisibility(true);
+    else
+      addLine(message, "no mirror image: " + mirror.error);
+  }
   showNames();
-  placeSegment(session.segmentMatrix); // and the measurements
+  placeSegment(session.segmentMatrix); // and the measurements and the fit to the mirror
   keepChanges();
   updateStatus();
 }
@@ -1503,6 +1661,15 @@ void Planner::updateStatus()
     << " | pieces: " << pieces.size() << (cut.innerWallLines > 0 ? " (cut through the marrow cavity too)" : "")
     << (session.lattice ? " | lattice" : "")
     << (session.metro ? (session.lattice ? " | Metro colours" : " | Metro colours (on the lattice: press l)") : "");
+  if (session.mirror && mirror.surface)
+  {
+    char text[120];
+    if (segmentToMirror.valid)
+      std::snprintf(text, sizeof text, " | mirror image: the segment %.2f mm from it", segmentToMirror.mean);
+    else
+      std::snprintf(text, sizeof text, " | mirror image: the bone %.2f mm from it", mirror.mean);
+    s << text;
+  }
   if (tool != NO_TOOL)
   {
     char r[32];
@@ -1680,6 +1847,7 @@ std::string Planner::planText()
     text += "\n";
   }
   text += segmentText();
+  text += mirrorText();
   // What the cut said (why it failed, a failed stroke) belongs to the plan
   // even when a later key's answer took its place in the window's message.
   std::vector<std::string> said;
@@ -1801,7 +1969,8 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   // made on an exported surface.vtp, exported into the same folder) would
   // be lost. A replayed session.json there is the plan's own, rewritten.
   if (lkapp::isExportedFile(input, folder,
-        { "surface.vtp", "cut_lines.vtp", "plan.txt", "plan.png", "segment_transform.txt", "pieces.dcm" }))
+        { "surface.vtp", "cut_lines.vtp", "plan.txt", "plan.png", "segment_transform.txt", "pieces.dcm", "mirror.stl",
+          "mirror.vtp" }))
   {
     error = "the input '" + input + "' is one of the files the export writes or removes in '" + folder +
       "': export to another folder";
@@ -1841,6 +2010,13 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   for (const auto& [mesh, name] : { std::make_pair(cut.surface, "surface.vtp"), std::make_pair(cut.loops, "cut_lines.vtp") })
     if (mesh && !lkapp::writeMesh(mesh, folder + "/" + name, error, space))
       return false;
+  // The mirror image shown: a printed model of it is what a reconstruction
+  // plate is bent on before the operation.
+  const bool mirrorShown = session.mirror && mirror.surface;
+  if (mirrorShown)
+    for (const char* name : { "mirror.stl", "mirror.vtp" })
+      if (!lkapp::writeMesh(mirror.surface, folder + "/" + name, error, space))
+        return false;
   // What the plan is, and the session that replays it beside the files.
   // Which scan, and which coordinates every position in the plan is in: a
   // plan file read later (or beside another patient's) must say so itself.
@@ -1876,6 +2052,11 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     others.push_back("segment_transform.txt");
   if (!exportedStructureSet) // an earlier plan's set is not this plan's
     others.push_back("pieces.dcm");
+  if (!mirrorShown)
+  {
+    others.push_back("mirror.stl");
+    others.push_back("mirror.vtp");
+  }
   if (!lkapp::removeStaleExports(folder, stems, others, error))
     return false;
   if (!structureSetError.empty())

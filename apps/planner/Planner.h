@@ -38,6 +38,11 @@
 
 class vtkAlgorithmOutput;
 
+namespace lk
+{
+class ClosestPointTree;
+}
+
 namespace lkplanner
 {
 
@@ -176,6 +181,41 @@ public:
   /// piece's gap.
   std::string contactStatus() const;
   std::size_t latticeFits = 0, latticesReused = 0;
+
+  /// The bone's mirror image across its plane of symmetry (o, the session's
+  /// "mirror"): the template of mirror-image planning, the healthy side
+  /// mirrored onto the other, found once per bone (vtkLKSymmetryPlaneFilter)
+  /// and shown translucent over it.
+  struct MirrorImage
+  {
+    bool made = false;                    ///< asked for once (made or failed)
+    vtkSmartPointer<vtkPolyData> surface; ///< null when it could not be made (error)
+    std::shared_ptr<const lk::ClosestPointTree> tree; ///< distances to it (CGAL's AABB tree)
+    std::array<double, 3> origin{ 0, 0, 0 }, normal{ 0, 0, 0 };
+    double mean = 0.0, largest = 0.0; ///< from the bone's points to it
+    std::string error;
+  } mirror;
+  /// The mirror image, made on first use.
+  const MirrorImage& mirrorImage();
+  vtkNew<vtkActor> mirrorActor;
+  /// How far the segment's surface (its caps left out: the mirror has none
+  /// there) is from the mirror image: mean and largest over its vertices,
+  /// where `matrix` puts it and where it was cut (`before`). Set by
+  /// updateMirrorFit, with the mirror shown and a segment.
+  struct MirrorFit
+  {
+    bool valid = false;
+    double mean = 0.0, largest = 0.0;
+  };
+  MirrorFit segmentToMirror, segmentToMirrorBefore;
+  /// The piece (and its modification time) segmentToMirrorBefore is of: a
+  /// drag measures only the moved fit.
+  vtkPolyData* mirrorFitPiece = nullptr;
+  vtkMTimeType mirrorFitTime = 0;
+  MirrorFit mirrorFitOf(const std::array<double, 16>& matrix) const;
+  void updateMirrorFit(const std::array<double, 16>& matrix);
+  /// The plan's lines on the mirror image (empty when it is not shown).
+  std::string mirrorText() const;
 
   /// Call before a change: the session as it was goes on the undo stack.
   void remember() { remember(session); }

@@ -95,6 +95,7 @@ std::string sessionText(const Session& s)
   root["lattice"] = s.lattice;
   root["latticeVertices"] = static_cast<Json::Int64>(s.latticeVertices);
   root["metro"] = s.metro;
+  root["mirror"] = s.mirror;
   if (s.segment >= 0)
   {
     root["segment"]["piece"] = s.segment;
@@ -247,7 +248,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "segment", "deformations", "names",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "segment", "deformations", "names",
       "measurements",
       "surface", "input" },
     session, notes);
@@ -318,6 +319,7 @@ bool readSession(
     !jsonMember(root, "capping", s.capping, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "lattice", s.lattice, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "metro", s.metro, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "mirror", s.mirror, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "latticeVertices", vertices, count, session, "a whole number from 4 to 100,000,000", error))
     return false;
   s.latticeVertices = static_cast<long>(vertices);

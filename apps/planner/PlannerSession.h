@@ -13,6 +13,9 @@
 //   "cut": bool, "capping": bool (default true)       the closed lines cut, capped
 //   "lattice": bool, "latticeVertices": 4 to 1e8      a lattice per piece (600)
 //   "metro": bool                                     Metro colours on the lattices
+//   "mirror": bool                                    the bone's mirror image across its
+//                                                     plane of symmetry, and the segment's
+//                                                     distance to it
 //   "segment": {"piece": i, "matrix": [16 numbers],   the moved piece, row-major 4x4,
 //               "at": [x, y, z]}                      and a point of it (see below)
 //   "deformations": [{"tool": "bump" | "box" | "smooth", "piece": i,
@@ -156,6 +159,9 @@ struct Session
   bool lattice = false;
   long latticeVertices = 600;
   bool metro = false;
+  /// The bone's mirror image across its plane of symmetry, shown as the
+  /// template of mirror-image planning (o).
+  bool mirror = false;
   /// The moved segment: a piece index (pieces in cut order) and its rigid
   /// transform, row-major 4x4 (the surgery moves the segment).
   int segment = -1;

@@ -709,10 +709,10 @@ void PlannerStyle::OnChar()
     planner->mode = key[0] - '1';
     rebuild = false;
   }
-  else if (key == "x" || key == "l" || key == "m")
+  else if (key == "x" || key == "l" || key == "m" || key == "o")
   {
     planner->remember();
-    bool& flag = key == "x" ? s.cut : key == "l" ? s.lattice : s.metro;
+    bool& flag = key == "x" ? s.cut : key == "l" ? s.lattice : key == "m" ? s.metro : s.mirror;
     flag = !flag;
   }
   else if (key == "n")
