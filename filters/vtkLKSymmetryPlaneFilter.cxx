@@ -114,6 +114,12 @@ int vtkLKSymmetryPlaneFilter::RequestData(
     vtkErrorMacro("Cannot find a plane of symmetry: every point is in one place.");
     return 0;
   }
+  if (!std::isfinite(diagonalLength))
+  {
+    vtkErrorMacro("Cannot find a plane of symmetry: the surface is too large to measure (its bounding box's "
+                  "diagonal overflows).");
+    return 0;
+  }
   this->UpdateProgress(0.05);
 
   // The first mirror: across the plane through the centre normal to
@@ -180,6 +186,12 @@ int vtkLKSymmetryPlaneFilter::RequestData(
   const double along = vtkMath::Dot(n, centre) - offset;
   for (int k = 0; k < 3; ++k)
     origin[k] = centre[k] - along * n[k];
+  if (!std::isfinite(vtkMath::Norm(n)) || !std::isfinite(origin[0]) || !std::isfinite(origin[1]) ||
+    !std::isfinite(origin[2]))
+  {
+    vtkErrorMacro("Cannot find a plane of symmetry: the registration gave no finite plane.");
+    return 0;
+  }
 
   vtkNew<vtkMatrix4x4> mirror;
   reflectionMatrix(origin, n, mirror);

@@ -265,6 +265,23 @@ TEST(SymmetryPlaneFilter, BadInputAndParametersAreRefused)
     refused(filter, "point 5 is not finite");
   }
   {
+    // Points far beyond any body: their squared distances overflow.
+    vtkNew<vtkPolyData> huge;
+    huge->DeepCopy(shape.surface);
+    vtkNew<vtkPoints> far;
+    far->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < huge->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      huge->GetPoint(i, x);
+      far->InsertNextPoint(1e300 * x[0], 1e300 * x[1], 1e300 * x[2]);
+    }
+    huge->SetPoints(far);
+    vtkNew<vtkLKSymmetryPlaneFilter> filter;
+    filter->SetInputData(huge);
+    refused(filter, "too large");
+  }
+  {
     vtkNew<vtkPolyData> flat;
     flat->DeepCopy(shape.surface);
     for (vtkIdType i = 0; i < flat->GetNumberOfPoints(); ++i)
