@@ -1,8 +1,10 @@
 #include "vtkLKSymmetryPlaneFilter.h"
 #include "vtkLKAbort.h"
 
+#include <vtkCellLocator.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkGenericCell.h>
 #include <vtkIterativeClosestPointTransform.h>
 #include <vtkLandmarkTransform.h>
 #include <vtkMath.h>
@@ -19,6 +21,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkLKSymmetryPlaneFilter);
 
@@ -80,6 +84,11 @@ int vtkLKSymmetryPlaneFilter::RequestData(
     vtkErrorMacro("MaximumNumberOfIterations must be 1 to 10000, not " << this->MaximumNumberOfIterations << ".");
     return 0;
   }
+  if (!(this->TrimFraction >= 0.0 && this->TrimFraction <= 0.9))
+  {
+    vtkErrorMacro("TrimFraction must be 0 to 0.9, not " << this->TrimFraction << ".");
+    return 0;
+  }
   if (this->MaximumNumberOfLandmarks < 3 || this->MaximumNumberOfLandmarks > 10000000)
   {
     vtkErrorMacro("MaximumNumberOfLandmarks must be 3 to 10^7, not " << this->MaximumNumberOfLandmarks << ".");
@@ -128,40 +137,84 @@ int vtkLKSymmetryPlaneFilter::RequestData(
   vtkMath::Normalize(n0);
   vtkNew<vtkMatrix4x4> first;
   reflectionMatrix(centre, n0, first);
-  vtkNew<vtkPoints> firstPoints;
-  firstPoints->SetDataTypeToDouble();
-  firstPoints->SetNumberOfPoints(count);
+  // Registers the points `kept`, placed by `from`, to the surface, rigidly;
+  // `result` = the motion x from.
+  vtkNew<vtkCellLocator> surfaceLocator; // the kind ICP takes
+  surfaceLocator->SetDataSet(input);
+  surfaceLocator->BuildLocator();
+  auto registered = [&](const std::vector<vtkIdType>& kept, vtkMatrix4x4* from, vtkMatrix4x4* result) {
+    vtkNew<vtkPoints> placed;
+    placed->SetDataTypeToDouble();
+    placed->SetNumberOfPoints(static_cast<vtkIdType>(kept.size()));
+    for (std::size_t j = 0; j < kept.size(); ++j)
+    {
+      double x[4] = { 0, 0, 0, 1 }, y[4];
+      input->GetPoint(kept[j], x);
+      from->MultiplyPoint(x, y);
+      placed->SetPoint(static_cast<vtkIdType>(j), y);
+    }
+    vtkNew<vtkPolyData> source;
+    source->SetPoints(placed);
+    vtkNew<vtkIterativeClosestPointTransform> icp;
+    icp->SetSource(source);
+    icp->SetTarget(input);
+    icp->SetLocator(surfaceLocator);
+    icp->GetLandmarkTransform()->SetModeToRigidBody();
+    icp->SetMaximumNumberOfIterations(this->MaximumNumberOfIterations);
+    icp->SetMaximumNumberOfLandmarks(
+      static_cast<int>(std::min<vtkIdType>(static_cast<vtkIdType>(kept.size()), this->MaximumNumberOfLandmarks)));
+    icp->StartByMatchingCentroidsOff();
+    icp->CheckMeanDistanceOn();
+    icp->SetMeanDistanceModeToAbsoluteValue();
+    icp->SetMaximumMeanDistance(1e-5 * diagonalLength); // how far the points moved in an iteration
+    icp->Modified();
+    icp->Update();
+    vtkMatrix4x4::Multiply4x4(icp->GetMatrix(), from, result);
+  };
+  std::vector<vtkIdType> kept(static_cast<std::size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
+    kept[static_cast<std::size_t>(i)] = i;
+  vtkNew<vtkMatrix4x4> s; // the improper isometry: the mirror, then the motion found
+  registered(kept, first, s);
+  this->UpdateProgress(0.3);
+  // Trimmed ICP (Chetverikov et al. 2002): the points whose mirror lands
+  // farthest from the bone (a tumour, a fracture's displaced part, a missing
+  // condyle: what mirror-image planning is for) are left out of the next
+  // registration, so that they do not pull the plane.
+  const int rounds = this->TrimFraction > 0.0 ? 4 : 0;
+  for (int round = 0; round < rounds; ++round)
   {
-    double x[4] = { 0, 0, 0, 1 }, y[4];
-    input->GetPoint(i, x);
-    first->MultiplyPoint(x, y);
-    firstPoints->SetPoint(i, y);
+    std::vector<std::pair<double, vtkIdType>> apart(static_cast<std::size_t>(count));
+    vtkNew<vtkGenericCell> cell;
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      double x[4] = { 0, 0, 0, 1 }, y[4], closest[3], d2;
+      vtkIdType cellId;
+      int sub;
+      input->GetPoint(i, x);
+      s->MultiplyPoint(x, y);
+      surfaceLocator->FindClosestPoint(y, closest, cell, cellId, sub, d2);
+      apart[static_cast<std::size_t>(i)] = { d2, i };
+    }
+    const auto keep = static_cast<std::size_t>(
+      std::max<double>(3.0, std::ceil((1.0 - this->TrimFraction) * static_cast<double>(count))));
+    std::nth_element(apart.begin(), apart.begin() + static_cast<std::ptrdiff_t>(keep - 1), apart.end());
+    kept.resize(keep);
+    for (std::size_t j = 0; j < keep; ++j)
+      kept[j] = apart[j].second;
+    std::sort(kept.begin(), kept.end()); // the landmarks ICP takes are evenly spread over the bone
+    vtkNew<vtkMatrix4x4> previous;
+    previous->DeepCopy(s);
+    registered(kept, previous, s);
+    this->UpdateProgress(0.3 + 0.4 * (round + 1) / rounds);
+    if (lkvtk::stopRequested(this, { output }))
+      return 1;
   }
-  vtkNew<vtkPolyData> firstMirror;
-  firstMirror->SetPoints(firstPoints);
-
-  // Register it to the surface, rigidly.
-  vtkNew<vtkIterativeClosestPointTransform> icp;
-  icp->SetSource(firstMirror);
-  icp->SetTarget(input);
-  icp->GetLandmarkTransform()->SetModeToRigidBody();
-  icp->SetMaximumNumberOfIterations(this->MaximumNumberOfIterations);
-  icp->SetMaximumNumberOfLandmarks(static_cast<int>(std::min<vtkIdType>(count, this->MaximumNumberOfLandmarks)));
-  icp->StartByMatchingCentroidsOff();
-  icp->CheckMeanDistanceOn();
-  icp->SetMeanDistanceModeToAbsoluteValue();
-  icp->SetMaximumMeanDistance(1e-7 * diagonalLength);
-  icp->Modified();
-  icp->Update();
   this->UpdateProgress(0.7);
   if (lkvtk::stopRequested(this, { output }))
     return 1;
 
-  // The improper isometry S = motion x first mirror, and the reflection
-  // nearest it.
-  vtkNew<vtkMatrix4x4> s;
-  vtkMatrix4x4::Multiply4x4(icp->GetMatrix(), first, s);
+  // The reflection nearest S.
   double symmetric[3][3], values[3], vectors[3][3];
   double* rows[3] = { symmetric[0], symmetric[1], symmetric[2] };
   double* vectorRows[3] = { vectors[0], vectors[1], vectors[2] };
@@ -173,14 +226,15 @@ int vtkLKSymmetryPlaneFilter::RequestData(
   vtkMath::Normalize(n);
   if (vtkMath::Dot(n, n0) < 0.0)
     vtkMath::MultiplyScalar(n, -1.0);
+  // Through the midpoints of the points kept and their images.
   double offset = 0.0;
-  for (vtkIdType i = 0; i < count; ++i)
+  for (const vtkIdType i : kept)
   {
     double x[4] = { 0, 0, 0, 1 }, y[4];
     input->GetPoint(i, x);
     s->MultiplyPoint(x, y);
     const double middle[3] = { 0.5 * (x[0] + y[0]), 0.5 * (x[1] + y[1]), 0.5 * (x[2] + y[2]) };
-    offset += vtkMath::Dot(n, middle) / static_cast<double>(count);
+    offset += vtkMath::Dot(n, middle) / static_cast<double>(kept.size());
   }
   double origin[3];
   const double along = vtkMath::Dot(n, centre) - offset;
@@ -244,6 +298,7 @@ void vtkLKSymmetryPlaneFilter::PrintSelf(ostream& os, vtkIndent indent)
      << this->InitialNormal[2] << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "MaximumNumberOfLandmarks: " << this->MaximumNumberOfLandmarks << "\n";
+  os << indent << "TrimFraction: " << this->TrimFraction << "\n";
   os << indent << "PlaneOrigin: " << this->PlaneOrigin[0] << " " << this->PlaneOrigin[1] << " " << this->PlaneOrigin[2]
      << "\n";
   os << indent << "PlaneNormal: " << this->PlaneNormal[0] << " " << this->PlaneNormal[1] << " " << this->PlaneNormal[2]

@@ -13,12 +13,15 @@
  * both LPS and RAS), and that reflection is registered rigidly to the surface
  * with VTK's iterative closest point (vtkIterativeClosestPointTransform:
  * landmarks taken evenly from the mirrored points, matched to the closest
- * points of the surface's cells). The reflection followed by the rigid
+ * points of the surface's cells). Four more registrations follow, each
+ * without the TrimFraction of the points whose images land farthest from
+ * the bone (trimmed ICP), so that a one-sided lesion does not pull the
+ * plane. The reflection followed by the rigid
  * motion is an improper isometry; the plane is that of the reflection
  * nearest it (Frobenius norm): its normal is the eigenvector of the smallest
  * eigenvalue of the symmetric part of the linear map, turned to agree with
  * InitialNormal, and it passes through the mean of the midpoints between
- * the points and their images. A bone far from symmetric, or an InitialNormal
+ * the points kept and their images. A bone far from symmetric, or an InitialNormal
  * far from its plane, can end in a local minimum: the fitted normal and the
  * mean distance tell.
  *
@@ -63,6 +66,15 @@ public:
   ///@}
 
   ///@{
+  /// The share of the points left out of each of four further registrations:
+  /// those whose mirror image lands farthest from the bone (trimmed ICP).
+  /// A tumour, a displaced fragment or a missing part on one side then does
+  /// not pull the plane toward it. Default 0.2; 0 (plain ICP) to 0.9.
+  vtkSetMacro(TrimFraction, double);
+  vtkGetMacro(TrimFraction, double);
+  ///@}
+
+  ///@{
   /// The fitted plane (a point of it and its unit normal) and the mean and
   /// largest distance from the input's points to its mirror image, after an
   /// update (zeros before, or after an error).
@@ -80,6 +92,7 @@ protected:
   double InitialNormal[3] = { 1.0, 0.0, 0.0 };
   int MaximumNumberOfIterations = 100;
   int MaximumNumberOfLandmarks = 2000;
+  double TrimFraction = 0.2;
   double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
   double PlaneNormal[3] = { 0.0, 0.0, 0.0 };
   double MeanDistance = 0.0;

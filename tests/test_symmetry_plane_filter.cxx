@@ -53,12 +53,13 @@ double signedVolume(vtkPolyData* pd)
 /// An ellipsoid (30, 20, 12) with a ball of radius 4 on it at (0, 15, 8):
 /// symmetric about the plane x = 0 and about no other. Then turned 12
 /// degrees about z and 6 about y and moved by (5, -3, 100), with point
-/// normals and field data SPACE = LPS.
+/// normals and field data SPACE = LPS. With `lesion`, a ball of that radius
+/// on one side only, at (22, -6, 6) before the move.
 struct TiltedShape
 {
   vtkSmartPointer<vtkPolyData> surface;
   vtkNew<vtkTransform> motion;
-  TiltedShape()
+  explicit TiltedShape(double lesion = 0.0)
   {
     vtkNew<vtkSphereSource> body;
     body->SetThetaResolution(64);
@@ -77,6 +78,13 @@ struct TiltedShape
     vtkNew<vtkAppendPolyData> both;
     both->AddInputConnection(ellipsoid->GetOutputPort());
     both->AddInputConnection(ball->GetOutputPort());
+    vtkNew<vtkSphereSource> growth;
+    growth->SetThetaResolution(32);
+    growth->SetPhiResolution(16);
+    growth->SetRadius(lesion);
+    growth->SetCenter(22, -6, 6);
+    if (lesion > 0.0)
+      both->AddInputConnection(growth->GetOutputPort());
     motion->PostMultiply();
     motion->RotateZ(12);
     motion->RotateY(6);
@@ -175,6 +183,38 @@ TEST(SymmetryPlaneFilter, TheNormalFollowsTheInitialNormalsSide)
   EXPECT_LT(vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal, expected)), 0.05);
 }
 
+TEST(SymmetryPlaneFilter, AOneSidedLesionDoesNotPullThePlane)
+{
+  // What mirror-image planning is for: one side is not as the other. Plain
+  // ICP lets the lesion pull the plane; the trimmed registrations leave its
+  // points out.
+  TiltedShape shape(9.0);
+  double expected[3];
+  const double xAxis[3] = { 1.0, 0.0, 0.0 };
+  shape.motion->TransformNormal(xAxis, expected);
+  const double moved[3] = { 5, -3, 100 };
+  auto fitted = [&](double trim, double& degrees, double& offset) {
+    vtkNew<vtkLKSymmetryPlaneFilter> filter;
+    filter->SetInputData(shape.surface);
+    filter->SetTrimFraction(trim);
+    filter->Update();
+    double normal[3], origin[3], apart[3];
+    filter->GetPlaneNormal(normal);
+    filter->GetPlaneOrigin(origin);
+    degrees = vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal, expected));
+    vtkMath::Subtract(origin, moved, apart);
+    offset = std::abs(vtkMath::Dot(apart, expected));
+  };
+  double plainDegrees, plainOffset, trimmedDegrees, trimmedOffset;
+  fitted(0.0, plainDegrees, plainOffset);
+  fitted(0.2, trimmedDegrees, trimmedOffset);
+  std::printf("lesion: plain ICP %.3f degrees, %.3f off; trimmed %.3f degrees, %.3f off\n", plainDegrees, plainOffset,
+    trimmedDegrees, trimmedOffset);
+  EXPECT_GT(plainDegrees, 1.0); // measured 2.9
+  EXPECT_LT(trimmedDegrees, 0.05);
+  EXPECT_LT(trimmedOffset, 0.01);
+}
+
 TEST(SymmetryPlaneFilter, TheMandiblesMidSagittalPlane)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
@@ -255,6 +295,11 @@ TEST(SymmetryPlaneFilter, BadInputAndParametersAreRefused)
     filter->SetMaximumNumberOfIterations(100);
     filter->SetMaximumNumberOfLandmarks(2);
     refused(filter, "MaximumNumberOfLandmarks");
+    filter->SetMaximumNumberOfLandmarks(2000);
+    filter->SetTrimFraction(nan);
+    refused(filter, "TrimFraction");
+    filter->SetTrimFraction(0.95);
+    refused(filter, "TrimFraction");
   }
   {
     vtkNew<vtkPolyData> broken;
