@@ -292,6 +292,50 @@ const Planner::MirrorImage& Planner::mirrorImage()
     return mirror;
   }
   vtkPolyDataMapper::SafeDownCast(mirrorActor->GetMapper())->SetInputData(mirror.surface);
+  // The plane over the bone's extent: two axes in it (the one nearest the
+  // patient's z first, so a mid-sagittal plane's sheet stands upright), the
+  // bone's bounding box projected onto them, and 5 % more on each side.
+  const std::array<double, 3>& n = mirror.normal;
+  std::array<double, 3> u = std::abs(n[2]) < 0.9 ? std::array<double, 3>{ 0, 0, 1 } : std::array<double, 3>{ 0, 1, 0 };
+  const double along = vtkMath::Dot(u.data(), n.data());
+  for (int k = 0; k < 3; ++k)
+    u[k] -= along * n[k];
+  vtkMath::Normalize(u.data());
+  std::array<double, 3> v;
+  vtkMath::Cross(n.data(), u.data(), v.data());
+  double bounds[6];
+  bone->GetBounds(bounds);
+  double low[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, high[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double x[3] = { bounds[corner & 1] - mirror.origin[0], bounds[2 + ((corner >> 1) & 1)] - mirror.origin[1],
+      bounds[4 + ((corner >> 2) & 1)] - mirror.origin[2] };
+    const double a[2] = { vtkMath::Dot(x, u.data()), vtkMath::Dot(x, v.data()) };
+    for (int k = 0; k < 2; ++k)
+    {
+      low[k] = std::min(low[k], a[k]);
+      high[k] = std::max(high[k], a[k]);
+    }
+  }
+  vtkNew<vtkPoints> corners;
+  for (const auto& [cu, cv] : { std::make_pair(0, 0), std::make_pair(1, 0), std::make_pair(1, 1), std::make_pair(0, 1) })
+  {
+    const double margin[2] = { 0.05 * (high[0] - low[0]), 0.05 * (high[1] - low[1]) };
+    const double a = cu ? high[0] + margin[0] : low[0] - margin[0];
+    const double b = cv ? high[1] + margin[1] : low[1] - margin[1];
+    corners->InsertNextPoint(mirror.origin[0] + a * u[0] + b * v[0], mirror.origin[1] + a * u[1] + b * v[1],
+      mirror.origin[2] + a * u[2] + b * v[2]);
+  }
+  const vtkIdType quad[4] = { 0, 1, 2, 3 }, loop[5] = { 0, 1, 2, 3, 0 };
+  vtkNew<vtkPolyData> sheet, outline;
+  sheet->SetPoints(corners);
+  sheet->Allocate(1);
+  sheet->InsertNextCell(VTK_QUAD, 4, quad);
+  outline->SetPoints(corners);
+  outline->Allocate(1);
+  outline->InsertNextCell(VTK_POLY_LINE, 5, loop);
+  vtkPolyDataMapper::SafeDownCast(mirrorPlaneActor->GetMapper())->SetInputData(sheet);
+  vtkPolyDataMapper::SafeDownCast(mirrorPlaneOutline->GetMapper())->SetInputData(outline);
   return mirror;
 }
 
@@ -658,6 +702,18 @@ void Planner::setup()
   mirrorActor->SetVisibility(false);
   mirrorActor->PickableOff(); // strokes and picks land on the bone
   renderer->AddActor(mirrorActor);
+  for (vtkActor* actor : { mirrorPlaneActor.Get(), mirrorPlaneOutline.Get() })
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(0.45, 0.25, 0.75);
+    actor->GetProperty()->LightingOff();
+    actor->SetVisibility(false);
+    actor->PickableOff();
+    renderer->AddActor(actor);
+  }
+  mirrorPlaneActor->GetProperty()->SetOpacity(0.12);
+  mirrorPlaneOutline->GetProperty()->SetLineWidth(2.0);
   // The patient's sides, as medical viewers show them: a mandible is nearly
   // symmetric, and a cut planned on the wrong side is the error to prevent.
   // Patient x, y, z point to the left, back and up in LPS; to the right,
@@ -1129,11 +1185,13 @@ void Planner::rebuild()
     addLine(message, "the session's segment (piece " + std::to_string(session.segment) + ") does not exist: the plan has " +
       std::to_string(pieces.size()) + " piece(s)");
   // The mirror image, made once per bone.
-  mirrorActor->SetVisibility(false);
+  for (vtkActor* actor : { mirrorActor.Get(), mirrorPlaneActor.Get(), mirrorPlaneOutline.Get() })
+    actor->SetVisibility(false);
   if (session.mirror)
   {
     if (mirrorImage().surface)
-      mirrorActor->SetVisibility(true);
+      for (vtkActor* actor : { mirrorActor.Get(), mirrorPlaneActor.Get(), mirrorPlaneOutline.Get() })
+        actor->SetVisibility(true);
     else
       addLine(message, "no mirror image: " + mirror.error);
   }

@@ -198,6 +198,10 @@ public:
   /// The mirror image, made on first use.
   const MirrorImage& mirrorImage();
   vtkNew<vtkActor> mirrorActor;
+  /// The plane of symmetry over the bone's extent: a faint sheet and its
+  /// outline, for the surgeon to judge it by (a mid-sagittal plane runs
+  /// between the incisors and the condyles).
+  vtkNew<vtkActor> mirrorPlaneActor, mirrorPlaneOutline;
   /// How far the segment's surface (its caps left out: the mirror has none
   /// there) is from the mirror image: mean and largest over its vertices,
   /// where `matrix` puts it and where it was cut (`before`). Set by
