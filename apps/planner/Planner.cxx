@@ -204,6 +204,67 @@ vtkSmartPointer<vtkCaptionActor2D> captionActor(
   return caption;
 }
 
+namespace
+{
+/// The surface's polygons as the core's triangles (fans).
+lk::TriangleMesh trianglesOf(vtkPolyData* surface)
+{
+  lk::TriangleMesh mesh;
+  mesh.points.resize(static_cast<std::size_t>(surface->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    surface->GetPoint(i, mesh.points[static_cast<std::size_t>(i)].data());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    const int type = surface->GetCellType(c);
+    if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
+      continue;
+    surface->GetCellPoints(c, ids);
+    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+      mesh.triangles.push_back({ ids->GetId(0), ids->GetId(k), ids->GetId(k + 1) });
+  }
+  return mesh;
+}
+
+/// The corners of the plane (origin, unit normal) over a box: two axes in
+/// it (the one nearest z first, so a mid-sagittal plane stands upright),
+/// the box's corners projected onto them, and 5 % more on each side.
+vtkSmartPointer<vtkPoints> planeCorners(
+  const std::array<double, 3>& origin, const std::array<double, 3>& normal, const double bounds[6])
+{
+  std::array<double, 3> u =
+    std::abs(normal[2]) < 0.9 ? std::array<double, 3>{ 0, 0, 1 } : std::array<double, 3>{ 0, 1, 0 };
+  const double along = vtkMath::Dot(u.data(), normal.data());
+  for (int k = 0; k < 3; ++k)
+    u[k] -= along * normal[k];
+  vtkMath::Normalize(u.data());
+  std::array<double, 3> v;
+  vtkMath::Cross(normal.data(), u.data(), v.data());
+  double low[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, high[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double x[3] = { bounds[corner & 1] - origin[0], bounds[2 + ((corner >> 1) & 1)] - origin[1],
+      bounds[4 + ((corner >> 2) & 1)] - origin[2] };
+    const double a[2] = { vtkMath::Dot(x, u.data()), vtkMath::Dot(x, v.data()) };
+    for (int k = 0; k < 2; ++k)
+    {
+      low[k] = std::min(low[k], a[k]);
+      high[k] = std::max(high[k], a[k]);
+    }
+  }
+  const double margin[2] = { 0.05 * (high[0] - low[0]), 0.05 * (high[1] - low[1]) };
+  auto corners = vtkSmartPointer<vtkPoints>::New();
+  for (const auto& [cu, cv] : { std::make_pair(0, 0), std::make_pair(1, 0), std::make_pair(1, 1), std::make_pair(0, 1) })
+  {
+    const double a = cu ? high[0] + margin[0] : low[0] - margin[0];
+    const double b = cv ? high[1] + margin[1] : low[1] - margin[1];
+    corners->InsertNextPoint(
+      origin[0] + a * u[0] + b * v[0], origin[1] + a * u[1] + b * v[1], origin[2] + a * u[2] + b * v[2]);
+  }
+  return corners;
+}
+} // namespace
+
 std::array<double, 3> pieceColour(std::size_t p)
 {
   const double colours[4][3] = { { 0.93, 0.85, 0.65 }, { 0.6, 0.75, 0.93 }, { 0.7, 0.9, 0.7 }, { 0.95, 0.7, 0.7 } };
@@ -268,22 +329,9 @@ const Planner::MirrorImage& Planner::mirrorImage()
   symmetry->GetPlaneNormal(mirror.normal.data());
   mirror.mean = symmetry->GetMeanDistance();
   mirror.largest = symmetry->GetMaximumDistance();
-  lk::TriangleMesh mesh;
-  mesh.points.resize(static_cast<std::size_t>(mirror.surface->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < mirror.surface->GetNumberOfPoints(); ++i)
-    mirror.surface->GetPoint(i, mesh.points[static_cast<std::size_t>(i)].data());
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < mirror.surface->GetNumberOfCells(); ++c)
-  {
-    mirror.surface->GetCellPoints(c, ids);
-    if (mirror.surface->GetCellType(c) == VTK_POLYGON || mirror.surface->GetCellType(c) == VTK_TRIANGLE ||
-      mirror.surface->GetCellType(c) == VTK_QUAD)
-      for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
-        mesh.triangles.push_back({ ids->GetId(0), ids->GetId(k), ids->GetId(k + 1) });
-  }
   try
   {
-    mirror.tree = std::make_shared<const lk::ClosestPointTree>(mesh);
+    mirror.tree = std::make_shared<const lk::ClosestPointTree>(trianglesOf(mirror.surface));
   }
   catch (const std::exception& e)
   {
@@ -292,40 +340,10 @@ const Planner::MirrorImage& Planner::mirrorImage()
     return mirror;
   }
   vtkPolyDataMapper::SafeDownCast(mirrorActor->GetMapper())->SetInputData(mirror.surface);
-  // The plane over the bone's extent: two axes in it (the one nearest the
-  // patient's z first, so a mid-sagittal plane's sheet stands upright), the
-  // bone's bounding box projected onto them, and 5 % more on each side.
-  const std::array<double, 3>& n = mirror.normal;
-  std::array<double, 3> u = std::abs(n[2]) < 0.9 ? std::array<double, 3>{ 0, 0, 1 } : std::array<double, 3>{ 0, 1, 0 };
-  const double along = vtkMath::Dot(u.data(), n.data());
-  for (int k = 0; k < 3; ++k)
-    u[k] -= along * n[k];
-  vtkMath::Normalize(u.data());
-  std::array<double, 3> v;
-  vtkMath::Cross(n.data(), u.data(), v.data());
+  // The plane over the bone's extent: a faint sheet and its outline.
   double bounds[6];
   bone->GetBounds(bounds);
-  double low[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, high[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const double x[3] = { bounds[corner & 1] - mirror.origin[0], bounds[2 + ((corner >> 1) & 1)] - mirror.origin[1],
-      bounds[4 + ((corner >> 2) & 1)] - mirror.origin[2] };
-    const double a[2] = { vtkMath::Dot(x, u.data()), vtkMath::Dot(x, v.data()) };
-    for (int k = 0; k < 2; ++k)
-    {
-      low[k] = std::min(low[k], a[k]);
-      high[k] = std::max(high[k], a[k]);
-    }
-  }
-  vtkNew<vtkPoints> corners;
-  for (const auto& [cu, cv] : { std::make_pair(0, 0), std::make_pair(1, 0), std::make_pair(1, 1), std::make_pair(0, 1) })
-  {
-    const double margin[2] = { 0.05 * (high[0] - low[0]), 0.05 * (high[1] - low[1]) };
-    const double a = cu ? high[0] + margin[0] : low[0] - margin[0];
-    const double b = cv ? high[1] + margin[1] : low[1] - margin[1];
-    corners->InsertNextPoint(mirror.origin[0] + a * u[0] + b * v[0], mirror.origin[1] + a * u[1] + b * v[1],
-      mirror.origin[2] + a * u[2] + b * v[2]);
-  }
+  vtkSmartPointer<vtkPoints> corners = planeCorners(mirror.origin, mirror.normal, bounds);
   const vtkIdType quad[4] = { 0, 1, 2, 3 }, loop[5] = { 0, 1, 2, 3, 0 };
   vtkNew<vtkPolyData> sheet, outline;
   sheet->SetPoints(corners);
