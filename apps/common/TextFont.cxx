@@ -104,16 +104,19 @@ std::string useFontFor(vtkTextProperty* property, const std::string& text)
 {
   if (property->GetFontFamily() == VTK_FONT_FILE)
     property->SetFontFamily(VTK_ARIAL);
+  // The distinct characters beyond ASCII that draw: every font has ASCII,
+  // so the lookups (kept, and a status line's changing digits would
+  // otherwise multiply them) go by the rest.
   std::vector<char32_t> characters;
   lkvtk::decodeUTF8(text, &characters);
-  // The distinct characters that draw (a line break draws none).
+  characters.erase(std::remove_if(characters.begin(), characters.end(),
+                     [](char32_t c) { return c < 0x80 || lkvtk::isControl(c); }),
+    characters.end());
   std::sort(characters.begin(), characters.end());
   characters.erase(std::unique(characters.begin(), characters.end()), characters.end());
-  characters.erase(std::remove_if(characters.begin(), characters.end(), [](char32_t c) { return lkvtk::isControl(c) || c == U' '; }),
-    characters.end());
   std::vector<char32_t> lacking;
   for (const char32_t c : characters)
-    if (c >= 0x80 && !compiledFontHas(property, c))
+    if (!compiledFontHas(property, c))
       lacking.push_back(c);
   if (lacking.empty())
     return std::string();
