@@ -2000,6 +2000,17 @@ std::string Planner::exportStructureSet(
         "); a bone that the scan's border cuts is closed with --close";
     return std::string();
   }
+  // The mirror image shown, as the template the hospital's planning system
+  // can show beside the pieces (closed, as the bone; a piece of that name
+  // keeps it).
+  const std::string mirrorName = "mirror image";
+  if (session.mirror && mirror.surface && lkapp::pieceFacts(mirror.surface).openEdges == 0 &&
+    std::find(roiNames.begin(), roiNames.end(), mirrorName) == roiNames.end())
+  {
+    structureSet->SetROIName(static_cast<int>(roiNames.size()), mirrorName.c_str());
+    structureSet->AddInputData(mirror.surface);
+    roiNames.push_back(mirrorName);
+  }
   // The measurements' points as landmarks where the plan puts them (the
   // segment moved), named by what they measure.
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
