@@ -171,9 +171,15 @@ int vtkLKSymmetryPlaneFilter::RequestData(
     icp->Update();
     vtkMatrix4x4::Multiply4x4(icp->GetMatrix(), from, result);
   };
-  std::vector<vtkIdType> kept(static_cast<std::size_t>(count));
-  for (vtkIdType i = 0; i < count; ++i)
-    kept[static_cast<std::size_t>(i)] = i;
+  // The points registered: every one up to kWorkingPoints, else that many
+  // evenly spread (a skull's 280,000 points took 20 s to trim; ICP itself
+  // takes at most MaximumNumberOfLandmarks of them).
+  constexpr vtkIdType kWorkingPoints = 20000;
+  const vtkIdType stride = std::max<vtkIdType>(1, count / kWorkingPoints);
+  std::vector<vtkIdType> working;
+  for (vtkIdType i = 0; i < count; i += stride)
+    working.push_back(i);
+  std::vector<vtkIdType> kept = working;
   vtkNew<vtkMatrix4x4> s; // the improper isometry: the mirror, then the motion found
   registered(kept, first, s);
   this->UpdateProgress(0.3);
@@ -184,20 +190,20 @@ int vtkLKSymmetryPlaneFilter::RequestData(
   const int rounds = this->TrimFraction > 0.0 ? 4 : 0;
   for (int round = 0; round < rounds; ++round)
   {
-    std::vector<std::pair<double, vtkIdType>> apart(static_cast<std::size_t>(count));
+    std::vector<std::pair<double, vtkIdType>> apart(working.size());
     vtkNew<vtkGenericCell> cell;
-    for (vtkIdType i = 0; i < count; ++i)
+    for (std::size_t j = 0; j < working.size(); ++j)
     {
       double x[4] = { 0, 0, 0, 1 }, y[4], closest[3], d2;
       vtkIdType cellId;
       int sub;
-      input->GetPoint(i, x);
+      input->GetPoint(working[j], x);
       s->MultiplyPoint(x, y);
       surfaceLocator->FindClosestPoint(y, closest, cell, cellId, sub, d2);
-      apart[static_cast<std::size_t>(i)] = { d2, i };
+      apart[j] = { d2, working[j] };
     }
-    const auto keep = static_cast<std::size_t>(
-      std::max<double>(3.0, std::ceil((1.0 - this->TrimFraction) * static_cast<double>(count))));
+    const auto keep = std::min(working.size(), static_cast<std::size_t>(std::max<double>(
+      3.0, std::ceil((1.0 - this->TrimFraction) * static_cast<double>(working.size())))));
     std::nth_element(apart.begin(), apart.begin() + static_cast<std::ptrdiff_t>(keep - 1), apart.end());
     kept.resize(keep);
     for (std::size_t j = 0; j < keep; ++j)

@@ -58,7 +58,9 @@ public:
   ///@{
   /// The registration's iterations (default 100; 1 to 10,000) and the
   /// number of mirrored points it matches (default 2,000; 3 to 10^7; all of
-  /// them when there are fewer).
+  /// them when there are fewer). The registrations and the trimming work on
+  /// at most 20,000 of the input's points, evenly spread (a skull's 280,000
+  /// took 25 s; 7.6 s so); the distances reported are over every point.
   vtkSetMacro(MaximumNumberOfIterations, int);
   vtkGetMacro(MaximumNumberOfIterations, int);
   vtkSetMacro(MaximumNumberOfLandmarks, int);
