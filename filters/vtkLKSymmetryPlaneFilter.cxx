@@ -14,7 +14,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkReverseSense.h>
-#include <vtkStaticCellLocator.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 
@@ -260,20 +259,21 @@ int vtkLKSymmetryPlaneFilter::RequestData(
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
   this->UpdateProgress(0.85);
 
-  // How far the bone is from its mirror image.
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(output);
-  locator->BuildLocator();
+  // How far the bone is from its mirror image: a point's distance to the
+  // mirror is its mirrored point's distance to the bone (a reflection keeps
+  // distances), so the bone's locator serves.
   double sum = 0.0, most = 0.0;
+  vtkNew<vtkGenericCell> cell;
   for (vtkIdType i = 0; i < count; ++i)
   {
     if (i % 4096 == 0 && lkvtk::stopRequested(this, { output }))
       return 1;
-    double x[3], closest[3], d2;
-    vtkIdType cell;
+    double x[4] = { 0, 0, 0, 1 }, y[4], closest[3], d2;
+    vtkIdType cellId;
     int sub;
     input->GetPoint(i, x);
-    locator->FindClosestPoint(x, closest, cell, sub, d2);
+    mirror->MultiplyPoint(x, y);
+    surfaceLocator->FindClosestPoint(y, closest, cell, cellId, sub, d2);
     const double d = std::sqrt(d2);
     sum += d;
     most = std::max(most, d);
