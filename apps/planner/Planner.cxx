@@ -13,6 +13,7 @@
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMetroFilter.h"
 #include "vtkLKPatchDeformationFilter.h"
+#include "vtkLKPolyDataConversion.h"
 #include "vtkLKStructureSetWriter.h"
 #include "vtkLKSymmetryPlaneFilter.h"
 
@@ -206,26 +207,6 @@ vtkSmartPointer<vtkCaptionActor2D> captionActor(
 
 namespace
 {
-/// The surface's polygons as the core's triangles (fans).
-lk::TriangleMesh trianglesOf(vtkPolyData* surface)
-{
-  lk::TriangleMesh mesh;
-  mesh.points.resize(static_cast<std::size_t>(surface->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
-    surface->GetPoint(i, mesh.points[static_cast<std::size_t>(i)].data());
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
-  {
-    const int type = surface->GetCellType(c);
-    if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
-      continue;
-    surface->GetCellPoints(c, ids);
-    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
-      mesh.triangles.push_back({ ids->GetId(0), ids->GetId(k), ids->GetId(k + 1) });
-  }
-  return mesh;
-}
-
 /// The corners of the plane (origin, unit normal) over a box: two axes in
 /// it (the one nearest z first, so a mid-sagittal plane stands upright),
 /// the box's corners projected onto them, and 5 % more on each side.
@@ -329,14 +310,20 @@ const Planner::MirrorImage& Planner::mirrorImage()
   symmetry->GetPlaneNormal(mirror.normal.data());
   mirror.mean = symmetry->GetMeanDistance();
   mirror.largest = symmetry->GetMaximumDistance();
+  lk::TriangleMesh triangles;
+  mirror.error = lkvtk::toTriangleMesh(mirror.surface, triangles);
   try
   {
-    mirror.tree = std::make_shared<const lk::ClosestPointTree>(trianglesOf(mirror.surface));
+    if (mirror.error.empty())
+      mirror.tree = std::make_shared<const lk::ClosestPointTree>(triangles);
   }
   catch (const std::exception& e)
   {
-    mirror.surface = nullptr;
     mirror.error = e.what();
+  }
+  if (!mirror.tree)
+  {
+    mirror.surface = nullptr;
     return mirror;
   }
   vtkPolyDataMapper::SafeDownCast(mirrorActor->GetMapper())->SetInputData(mirror.surface);
@@ -363,41 +350,20 @@ Planner::MirrorFit Planner::mirrorFitOf(const std::array<double, 16>& matrix) co
   if (!mirror.tree || !hasSegment())
     return fit;
   vtkPolyData* segment = pieces[static_cast<std::size_t>(session.segment)];
-  // The vertices of the bone's own surface: a cap's lie inside the mirror
-  // image, where the cut went through the bone.
-  std::vector<char> onBone(static_cast<std::size_t>(segment->GetNumberOfPoints()), 0);
-  vtkDataArray* cap = segment->GetCellData()->GetArray("Cap");
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < segment->GetNumberOfCells(); ++c)
-  {
-    if (segment->GetCellType(c) != VTK_TRIANGLE && segment->GetCellType(c) != VTK_POLYGON &&
-      segment->GetCellType(c) != VTK_QUAD)
-      continue;
-    if (cap && cap->GetTuple1(c) != 0.0)
-      continue;
-    segment->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      onBone[static_cast<std::size_t>(ids->GetId(k))] = 1;
-  }
   double sum = 0.0;
-  vtkIdType count = 0;
   lk::ClosestPointTree::Hit hit; // each vertex's hit starts its neighbour's search
-  for (vtkIdType i = 0; i < segment->GetNumberOfPoints(); ++i)
+  for (std::size_t k = 0; k < mirrorFitVertices.size(); ++k)
   {
-    if (!onBone[static_cast<std::size_t>(i)])
-      continue;
     std::array<double, 3> x;
-    segment->GetPoint(i, x.data());
+    segment->GetPoint(mirrorFitVertices[k], x.data());
     x = lkapp::placedPoint(matrix, x);
     const lk::Vec3 q(x[0], x[1], x[2]);
-    hit = count == 0 ? mirror.tree->closest(q) : mirror.tree->closest(q, hit);
-    const double d = hit.distance;
-    sum += d;
-    fit.largest = std::max(fit.largest, d);
-    ++count;
+    hit = k == 0 ? mirror.tree->closest(q) : mirror.tree->closest(q, hit);
+    sum += hit.distance;
+    fit.largest = std::max(fit.largest, hit.distance);
   }
-  fit.valid = count > 0;
-  fit.mean = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  fit.valid = !mirrorFitVertices.empty();
+  fit.mean = fit.valid ? sum / static_cast<double>(mirrorFitVertices.size()) : 0.0;
   return fit;
 }
 
@@ -406,14 +372,33 @@ void Planner::updateMirrorFit(const std::array<double, 16>& matrix)
   segmentToMirror = MirrorFit();
   if (!session.mirror || !mirror.surface || !hasSegment())
     return;
-  segmentToMirror = mirrorFitOf(matrix);
   vtkPolyData* segment = pieces[static_cast<std::size_t>(session.segment)];
   if (segment != mirrorFitPiece || segment->GetMTime() != mirrorFitTime)
   {
-    segmentToMirrorBefore = isIdentity(matrix) ? segmentToMirror : mirrorFitOf(Session().segmentMatrix);
+    // A piece the drag has not seen: its vertices of the bone's own surface
+    // (a cap's lie inside the mirror image, where the cut went through the
+    // bone), and its fit where it was cut.
+    std::vector<char> onBone(static_cast<std::size_t>(segment->GetNumberOfPoints()), 0);
+    vtkDataArray* cap = segment->GetCellData()->GetArray("Cap");
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < segment->GetNumberOfCells(); ++c)
+    {
+      const int type = segment->GetCellType(c);
+      if ((type != VTK_TRIANGLE && type != VTK_POLYGON && type != VTK_QUAD) || (cap && cap->GetTuple1(c) != 0.0))
+        continue;
+      segment->GetCellPoints(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        onBone[static_cast<std::size_t>(ids->GetId(k))] = 1;
+    }
+    mirrorFitVertices.clear();
+    for (vtkIdType i = 0; i < segment->GetNumberOfPoints(); ++i)
+      if (onBone[static_cast<std::size_t>(i)])
+        mirrorFitVertices.push_back(i);
     mirrorFitPiece = segment;
     mirrorFitTime = segment->GetMTime();
+    segmentToMirrorBefore = mirrorFitOf(Session().segmentMatrix);
   }
+  segmentToMirror = isIdentity(matrix) ? segmentToMirrorBefore : mirrorFitOf(matrix);
 }
 
 std::string Planner::mirrorText() const

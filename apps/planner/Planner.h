@@ -212,10 +212,12 @@ public:
     double mean = 0.0, largest = 0.0;
   };
   MirrorFit segmentToMirror, segmentToMirrorBefore;
-  /// The piece (and its modification time) segmentToMirrorBefore is of: a
-  /// drag measures only the moved fit.
+  /// The piece (and its modification time) segmentToMirrorBefore and
+  /// mirrorFitVertices are of, the latter its vertices of the bone's own
+  /// surface (its caps' left out): a drag measures only the moved fit.
   vtkPolyData* mirrorFitPiece = nullptr;
   vtkMTimeType mirrorFitTime = 0;
+  std::vector<vtkIdType> mirrorFitVertices;
   MirrorFit mirrorFitOf(const std::array<double, 16>& matrix) const;
   void updateMirrorFit(const std::array<double, 16>& matrix);
   /// The plan's lines on the mirror image (empty when it is not shown).
