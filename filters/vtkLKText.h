@@ -16,6 +16,13 @@ namespace lkvtk
 constexpr std::size_t kDICOMLongStringLength = 64;
 constexpr std::size_t kDICOMShortStringLength = 16;
 
+/// Whether `code` is a Unicode scalar value, which UTF-8 can carry: up to
+/// U+10FFFF and no surrogate.
+inline bool isScalarValue(char32_t code)
+{
+  return code <= 0x10FFFF && (code < 0xD800 || code > 0xDFFF);
+}
+
 /// The code points of `text`, appended to `points` when it is given. False
 /// where `text` is not well-formed UTF-8 (a stray or missing continuation
 /// byte, an overlong form, a surrogate, beyond U+10FFFF).
@@ -36,7 +43,7 @@ inline bool decodeUTF8(const std::string& text, std::vector<char32_t>* points = 
         return false;
       code = (code << 6) | (t & 0x3Fu);
     }
-    if (code < least[n] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+    if (code < least[n] || !isScalarValue(code))
       return false;
     if (points)
       points->push_back(code);

@@ -574,8 +574,8 @@ void PlannerStyle::typeName(const std::string& key)
     // not a letter: it looks like a space and is not one.
     const char32_t code =
       lkapp::keyCharacter(key, this->Interactor->GetKeyCode(), this->Interactor->GetControlKey() != 0);
-    const bool letter = code != U'\\' && code != 0xA0 && code != 0 && !lkvtk::isControl(code) && code <= 0x10FFFF &&
-                        (code < 0xD800 || code > 0xDFFF);
+    const bool letter =
+      code != U'\\' && code != 0xA0 && code != 0 && !lkvtk::isControl(code) && lkvtk::isScalarValue(code);
     std::vector<char32_t> characters;
     lkvtk::decodeUTF8(p.namingText, &characters);
     if (letter && characters.size() < kPieceNameLength)
