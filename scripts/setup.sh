@@ -11,7 +11,7 @@ packages=(
   libvtk-dicom-dev python3-vtk-dicom
   libcgal-dev libeigen3-dev libceres-dev
   libgtest-dev
-  libxkbcommon-dev libfontconfig-dev fonts-dejavu-core fonts-droid-fallback
+  libxkbcommon-dev libx11-data libfontconfig-dev fonts-dejavu-core fonts-droid-fallback
   xvfb xauth
 )
 

@@ -42,7 +42,7 @@ TEST(KeyCharacter, KeysThatTypeNothing)
   EXPECT_EQ(keyCharacter("Shift_L", 0, false), 0U);
   EXPECT_EQ(keyCharacter("Left", 0, false), 0U);
   EXPECT_EQ(keyCharacter("F5", 0, false), 0U);
-  EXPECT_EQ(keyCharacter("dead_acute", 0, false), 0U); // no composing without an input method
+  EXPECT_EQ(keyCharacter("dead_acute", 0, false), 0U); // KeyComposer composes it
   EXPECT_EQ(keyCharacter("a", '\x01', true), 0U);      // Control+a
   EXPECT_EQ(keyCharacter("Cyrillic_a", 0, true), 0U);
   // Return and Tab give their control characters, which a caller refuses.

@@ -16,7 +16,7 @@ namespace lkapp
 /// xkbcommon knows it ("Ccaron" U+010C, "Greek_alpha" U+03B1, "KP_0" '0',
 /// "space" ' ', "U20AC" the euro sign), or the byte where there is no symbol
 /// xkbcommon knows. 0 for a key that types nothing: Shift, an arrow, a
-/// function key, a dead accent (X composes none without an input method),
+/// function key, a dead accent (KeyComposer composes it with the next key),
 /// and any key pressed with Control. Return, Tab and the like give their
 /// control characters (U+000D, U+0009).
 char32_t keyCharacter(const std::string& keySym, char keyCode, bool control);

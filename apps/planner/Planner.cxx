@@ -1743,7 +1743,7 @@ void Planner::updateStatus()
   if (naming == 1)
     s << " | NAME: click a piece (Escape: stop)";
   else if (naming == 2)
-    s << " | NAME " << pieceLabel(static_cast<std::size_t>(namingPiece)) << ": " << namingText
+    s << " | NAME " << pieceLabel(static_cast<std::size_t>(namingPiece)) << ": " << namingText << composer.pending()
       << "_ (Return keeps it, an empty name takes it away; Escape: stop)";
   if (measuring == 2)
     s << (measurePicked.empty() ? " | MEASURE: click the first point (u: stop)" : " | MEASURE: click the second point (u: stop)");

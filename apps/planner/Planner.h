@@ -8,6 +8,7 @@
 /// apps/latticekit-planner.cxx.
 
 #include "common/CutReport.h"
+#include "common/KeyComposer.h"
 #include "common/PieceContact.h"
 #include "planner/PlannerSession.h"
 
@@ -374,6 +375,9 @@ public:
   int namingPiece = -1;
   std::array<double, 3> namingAt{ 0, 0, 0 };
   std::string namingText;
+  /// Dead accents and the Compose key while a name is typed: "´" then "e"
+  /// types "é".
+  lkapp::KeyComposer composer;
 
   /// Moving the segment by numbers (v): the text typed so far, while
   /// `typingMove`.

@@ -524,6 +524,7 @@ void PlannerStyle::pickPieceToName()
     planner->namingPiece = piece;
     planner->namingAt = point;
     planner->namingText = planner->pieceName(static_cast<std::size_t>(piece));
+    planner->composer.reset();
     planner->message.clear();
   }
   planner->updateStatus();
@@ -533,7 +534,11 @@ void PlannerStyle::pickPieceToName()
 void PlannerStyle::typeName(const std::string& key)
 {
   Planner& p = *planner;
-  if (key == "Escape" || (p.naming == 1 && key == "t"))
+  // Escape and BackSpace drop a dead accent that waits for its letter, as
+  // X's input methods do; Return drops it and keeps the name.
+  if (p.naming == 2 && p.composer.composing() && (key == "Escape" || key == "BackSpace"))
+    p.composer.reset();
+  else if (key == "Escape" || (p.naming == 1 && key == "t"))
     p.naming = 0;
   else if (p.naming == 1)
     // A click that missed leaves the keys of the name to come: none of them
@@ -541,6 +546,7 @@ void PlannerStyle::typeName(const std::string& key)
     p.message = "click the piece to name first (Escape: stop naming)";
   else if (key == "Return" || key == "KP_Enter")
   {
+    p.composer.reset();
     // Spaces around the name are a slip of the thumb, not part of it.
     const auto first = p.namingText.find_first_not_of(' ');
     p.namingText = first == std::string::npos ? std::string()
@@ -567,26 +573,40 @@ void PlannerStyle::typeName(const std::string& key)
   }
   else
   {
-    // The typed letter goes into the name as UTF-8. A key that gives no
-    // letter (Shift, an arrow, a control key, a dead accent, which X does
-    // not compose without an input method) is passed over; a backslash and
-    // a name grown to its longest are said. A no-break space (U+00A0) is
-    // not a letter: it looks like a space and is not one.
-    const char32_t code =
-      lkapp::keyCharacter(key, this->Interactor->GetKeyCode(), this->Interactor->GetControlKey() != 0);
-    const bool letter =
-      code != U'\\' && code != 0xA0 && code != 0 && !lkvtk::isControl(code) && lkvtk::isScalarValue(code);
+    // The typed letters go into the name as UTF-8: a key's own, or what a
+    // dead accent (or the Compose key) and the next key compose ("é"). A
+    // key that gives no letter (Shift, an arrow, a control key) is passed
+    // over; a backslash, a name grown to its longest and an accent that
+    // goes on no such letter are said. A no-break space (U+00A0) is not a
+    // letter: it looks like a space and is not one.
+    const std::string accent = p.composer.pending();
+    const std::u32string typed =
+      p.composer.type(key, this->Interactor->GetKeyCode(), this->Interactor->GetControlKey() != 0);
     std::vector<char32_t> characters;
     lkvtk::decodeUTF8(p.namingText, &characters);
-    if (letter && characters.size() < kPieceNameLength)
+    if (p.composer.cancelled())
     {
-      p.namingText += lkvtk::encodeUTF8(code);
-      p.message.clear();
+      const char32_t plain = lkapp::keyCharacter(key, this->Interactor->GetKeyCode(), false);
+      const std::string what = plain != 0 && !lkvtk::isControl(plain) ? lkvtk::encodeUTF8(plain) : key;
+      p.message = (accent.empty() ? "Compose" : "'" + accent + "'") + " and '" + what + "' make no letter: both are dropped";
     }
-    else if (letter)
-      p.message = "a name holds at most " + std::to_string(kPieceNameLength) + " characters";
-    else if (code == U'\\')
-      p.message = "a name cannot hold a backslash: DICOM reads it as a separator";
+    else if (p.composer.composing())
+      p.message.clear();
+    for (const char32_t code : typed)
+    {
+      const bool letter =
+        code != U'\\' && code != 0xA0 && !lkvtk::isControl(code) && lkvtk::isScalarValue(code);
+      if (letter && characters.size() < kPieceNameLength)
+      {
+        p.namingText += lkvtk::encodeUTF8(code);
+        characters.push_back(code);
+        p.message.clear();
+      }
+      else if (letter)
+        p.message = "a name holds at most " + std::to_string(kPieceNameLength) + " characters";
+      else if (code == U'\\')
+        p.message = "a name cannot hold a backslash: DICOM reads it as a separator";
+    }
   }
   p.updateStatus();
   this->Interactor->Render();
