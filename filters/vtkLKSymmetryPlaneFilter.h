@@ -8,22 +8,24 @@
  * it to. The segment is moved onto it, and a reconstruction plate is bent on
  * a printed model of it before the operation.
  *
- * Method: the surface is reflected across the plane through the mean of its
- * points normal to InitialNormal (default x, the patient's left-right axis in
- * both LPS and RAS), and that reflection is registered rigidly to the surface
- * with VTK's iterative closest point (vtkIterativeClosestPointTransform:
- * landmarks taken evenly from the mirrored points, matched to the closest
- * points of the surface's cells). Four more registrations follow, each
- * without the TrimFraction of the points whose images land farthest from
- * the bone (trimmed ICP), so that a one-sided lesion does not pull the
- * plane. The reflection followed by the rigid
- * motion is an improper isometry; the plane is that of the reflection
- * nearest it (Frobenius norm): its normal is the eigenvector of the smallest
- * eigenvalue of the symmetric part of the linear map, turned to agree with
- * InitialNormal, and it passes through the mean of the midpoints between
- * the points kept and their images. A bone far from symmetric, or an InitialNormal
- * far from its plane, can end in a local minimum: the fitted normal and the
- * mean distance tell.
+ * Method (lk::findSymmetryPlane): the surface is reflected across the plane
+ * through the mean of its points normal to InitialNormal (default x, the
+ * patient's left-right axis in both LPS and RAS), and that reflection is
+ * registered rigidly onto the surface by iterative closest points (closest
+ * points on the triangles through CGAL's AABB tree, the rigid motion by
+ * Eigen's umeyama). At every iteration the points whose mirror lands
+ * farthest from the bone are left out, in the share that FICP's fractional
+ * RMS picks (Phillips, Liu and Tomasi 2007), at most TrimFraction: a tumour,
+ * a displaced fragment or a missing part on one side (and the healthy side's
+ * mirror over the gap) do not pull the plane, and a symmetric bone keeps
+ * nearly every point. The reflection followed by the rigid motion is an
+ * improper isometry; the plane is that of the reflection nearest it
+ * (Frobenius norm): its normal is the eigenvector of the smallest eigenvalue
+ * of the symmetric part of the linear map, turned to agree with
+ * InitialNormal, and it passes through the mean of the midpoints between the
+ * points kept and their images. A bone far from symmetric, or an
+ * InitialNormal far from its plane, can end in a local minimum: the fitted
+ * normal, the mean distance and the share kept tell.
  *
  * Input: a surface (polygons or strips, any number of pieces). Output: the
  * input mirrored across the fitted plane: points and point normals and
@@ -32,7 +34,8 @@
  * data: SymmetryPlaneOrigin and SymmetryPlaneNormal (3 values each),
  * SymmetryMeanDistance and SymmetryMaximumDistance: the mean and largest
  * distance from the input's points to the mirror image, in the input's
- * units (how far the bone is from symmetric about the plane). The same
+ * units (how far the bone is from symmetric about the plane), and
+ * SymmetryKeptFraction, the share of the points the registration kept. The same
  * values are kept in the filter after an update (GetPlaneOrigin, ...).
  */
 #ifndef vtkLKSymmetryPlaneFilter_h
@@ -56,22 +59,22 @@ public:
   ///@}
 
   ///@{
-  /// The registration's iterations (default 100; 1 to 10,000) and the
-  /// number of mirrored points it matches (default 2,000; 3 to 10^7; all of
-  /// them when there are fewer). The registrations and the trimming work on
-  /// at most 20,000 of the input's points, evenly spread (a skull's 280,000
-  /// took 25 s; 7.6 s so); the distances reported are over every point.
+  /// The registration's iterations (default 200; 1 to 10,000; it stops
+  /// sooner when no point moves farther than 10^-6 of the bounding box's
+  /// diagonal) and the points it registers (default 20,000; 3 to 10^7; all
+  /// of them when there are fewer, else as many evenly spread: a skull's
+  /// 280,000 points cost 14 times the time for the same plane). The
+  /// distances reported are over every point.
   vtkSetMacro(MaximumNumberOfIterations, int);
   vtkGetMacro(MaximumNumberOfIterations, int);
-  vtkSetMacro(MaximumNumberOfLandmarks, int);
-  vtkGetMacro(MaximumNumberOfLandmarks, int);
+  vtkSetMacro(MaximumNumberOfPoints, int);
+  vtkGetMacro(MaximumNumberOfPoints, int);
   ///@}
 
   ///@{
-  /// The share of the points left out of each of four further registrations:
-  /// those whose mirror image lands farthest from the bone (trimmed ICP).
-  /// A tumour, a displaced fragment or a missing part on one side then does
-  /// not pull the plane toward it. Default 0.2; 0 (plain ICP) to 0.9.
+  /// The largest share of the points an iteration may leave out: those whose
+  /// mirror image lands farthest from the bone (trimmed ICP; the share is
+  /// picked at each iteration, up to this). Default 0.5; 0 (plain ICP) to 0.9.
   vtkSetMacro(TrimFraction, double);
   vtkGetMacro(TrimFraction, double);
   ///@}
@@ -84,6 +87,8 @@ public:
   vtkGetVector3Macro(PlaneNormal, double);
   vtkGetMacro(MeanDistance, double);
   vtkGetMacro(MaximumDistance, double);
+  /// The share of the points kept at the registration's last iteration.
+  vtkGetMacro(KeptFraction, double);
   ///@}
 
 protected:
@@ -92,13 +97,14 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double InitialNormal[3] = { 1.0, 0.0, 0.0 };
-  int MaximumNumberOfIterations = 100;
-  int MaximumNumberOfLandmarks = 2000;
-  double TrimFraction = 0.2;
+  int MaximumNumberOfIterations = 200;
+  int MaximumNumberOfPoints = 20000;
+  double TrimFraction = 0.5;
   double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
   double PlaneNormal[3] = { 0.0, 0.0, 0.0 };
   double MeanDistance = 0.0;
   double MaximumDistance = 0.0;
+  double KeptFraction = 0.0;
 
 private:
   vtkLKSymmetryPlaneFilter(const vtkLKSymmetryPlaneFilter&) = delete;
