@@ -90,7 +90,11 @@ TEST(SymmetryPlane, TrimmingKeepsAOneSidedLesionFromPullingThePlane)
     degreesApart(pulled.normal, truth), degreesApart(trimmed.normal, truth), trimmed.keptFraction);
   EXPECT_GT(degreesApart(pulled.normal, truth), 0.5);
   EXPECT_LT(degreesApart(trimmed.normal, truth), 0.1);
+  // Not all, and not the fewest allowed (0.5): on this exact shape even the
+  // lesion's far tail (a few micrometres high) is left out, the rest match
+  // their mirror to rounding.
   EXPECT_LT(trimmed.keptFraction, 0.97);
+  EXPECT_GT(trimmed.keptFraction, 0.55);
   EXPECT_DOUBLE_EQ(pulled.keptFraction, 1.0);
   EXPECT_GT(trimmed.maximumDistance, 5.0); // the lesion, against nothing on the other side
 }

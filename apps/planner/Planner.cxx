@@ -310,6 +310,7 @@ const Planner::MirrorImage& Planner::mirrorImage()
   symmetry->GetPlaneNormal(mirror.normal.data());
   mirror.mean = symmetry->GetMeanDistance();
   mirror.largest = symmetry->GetMaximumDistance();
+  mirror.kept = symmetry->GetKeptFraction();
   lk::TriangleMesh triangles;
   mirror.error = lkvtk::toTriangleMesh(mirror.surface, triangles);
   try
@@ -412,9 +413,10 @@ std::string Planner::mirrorText() const
   char line[400];
   std::snprintf(line, sizeof line,
     "mirror image: across the bone's plane of symmetry through (%.2f, %.2f, %.2f), normal (%.4f, %.4f, %.4f), "
-    "%.1f deg from x; the bone is %.2f mm from it on average, %.2f mm at most\n",
+    "%.1f deg from x; the bone is %.2f mm from it on average, %.2f mm at most; the plane was fitted to %.0f %% of "
+    "the bone (the rest lies farther from its mirror)\n",
     mirror.origin[0], mirror.origin[1], mirror.origin[2], mirror.normal[0], mirror.normal[1], mirror.normal[2], tilt,
-    mirror.mean, mirror.largest);
+    mirror.mean, mirror.largest, 100.0 * mirror.kept);
   std::string text = line;
   if (segmentToMirror.valid)
   {

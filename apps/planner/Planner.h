@@ -194,6 +194,7 @@ public:
     std::shared_ptr<const lk::ClosestPointTree> tree; ///< distances to it (CGAL's AABB tree)
     std::array<double, 3> origin{ 0, 0, 0 }, normal{ 0, 0, 0 };
     double mean = 0.0, largest = 0.0; ///< from the bone's points to it
+    double kept = 0.0; ///< the share of the bone's points the plane was fitted to
     std::string error;
   } mirror;
   /// The mirror image, made on first use.

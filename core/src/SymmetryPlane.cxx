@@ -5,9 +5,11 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
-#include <cstdio>
-#include <cstdlib>
+#include <vector>
 
 namespace lk
 {
@@ -89,6 +91,7 @@ SymmetryPlaneResult findSymmetryPlane(const TriangleMesh& mesh, const SymmetryPl
       return fit.hits[a].distance < fit.hits[b].distance || (fit.hits[a].distance == fit.hits[b].distance && a < b);
     });
     // The fraction kept: the least fractional RMS, from the nearest points.
+    const double floor = options.tolerance * diagonal;
     const std::size_t fewest = std::max<std::size_t>(
       3, static_cast<std::size_t>(std::ceil((1.0 - options.trimFraction) * static_cast<double>(count))));
     double sum = 0.0;
@@ -101,7 +104,9 @@ SymmetryPlaneResult findSymmetryPlane(const TriangleMesh& mesh, const SymmetryPl
         continue;
       const double f = static_cast<double>(k) / static_cast<double>(count);
       const double rms = std::sqrt(sum / static_cast<double>(k));
-      if (const double psi = rms / std::pow(f, kFractionExponent); psi < fit.psi)
+      // Distances below the tolerance are rounding: on an exactly symmetric
+      // surface they would let noise pick the fewest points.
+      if (const double psi = std::hypot(rms, floor) / std::pow(f, kFractionExponent); psi < fit.psi)
       {
         fit.psi = psi;
         fit.kept = k;

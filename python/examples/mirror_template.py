@@ -42,8 +42,8 @@ def main(argv):
 
     origin, normal = mirror.GetPlaneOrigin(), mirror.GetPlaneNormal()
     print("plane of symmetry: through (%.2f, %.2f, %.2f), normal (%.4f, %.4f, %.4f)" % (origin + normal))
-    print("bone to its mirror image: mean %.2f mm, largest %.2f mm"
-          % (mirror.GetMeanDistance(), mirror.GetMaximumDistance()))
+    print("bone to its mirror image: mean %.2f mm, largest %.2f mm; the plane was fitted to %.0f %% of the bone"
+          % (mirror.GetMeanDistance(), mirror.GetMaximumDistance(), 100.0 * mirror.GetKeptFraction()))
     fields = asymmetry.GetOutput().GetFieldData()
     print("Metro, both ways: mean %.3f mm, max %.3f mm"
           % (fields.GetArray("Hausdorff_Mean").GetValue(0), fields.GetArray("Hausdorff_Max").GetValue(0)))

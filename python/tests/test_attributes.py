@@ -355,6 +355,9 @@ class AttributeTest(unittest.TestCase):
             self.assertEqual(label_out.GetValue(c), 10 * c)
             self.assertEqual(point_ids(out, c), list(reversed(point_ids(sphere, c))))
         self.assertEqual(out.GetFieldData().GetArray("SymmetryPlaneNormal").GetNumberOfComponents(), 3)
+        kept = out.GetFieldData().GetArray("SymmetryKeptFraction")
+        self.assertEqual(kept.GetValue(0), mirror.GetKeptFraction())
+        self.assertGreater(kept.GetValue(0), 0.99)  # a sphere is its own mirror: nothing left out
 
     def test_a_fit_does_not_pass_on_an_earlier_fits_report(self):
         # A mesh that carries an earlier fit's report (a fitted lattice's

@@ -13,6 +13,7 @@
 #include "latticekit/TriangleMesh.h"
 
 #include <functional>
+#include <string>
 
 namespace lk
 {
@@ -25,12 +26,15 @@ struct SymmetryPlaneOptions
   /// The largest fraction of points an iteration may leave out, 0 (plain
   /// ICP) to 0.9.
   double trimFraction = 0.5;
+  /// Iterations of each stage. They stop sooner when no point moved farther
+  /// than `tolerance` times the bounding box's diagonal, or when the trimmed
+  /// fit has not improved for 10 iterations (the best motion is kept).
   int maximumIterations = 200;
-  /// Iterations stop when no point moved farther than this fraction of the
-  /// bounding box's diagonal.
   double tolerance = 1e-6;
   /// The points registered: all up to this many, else as many evenly spread
   /// (by index, which for a marching-cubes surface is spread over the bone).
+  /// Where that is 10,000 or more, a tenth of them is registered first, to
+  /// come near at a tenth of the cost.
   std::size_t maximumPoints = 20000;
   /// Called with the fraction done (iterations / maximumIterations);
   /// returning false stops, with `stopped` set.
