@@ -150,12 +150,16 @@ int vtkLKSymmetryPlaneFilter::RequestData(
     this->UpdateProgress(0.1 + 0.7 * done);
     return this->GetAbortExecute() == 0;
   };
-  const lk::SymmetryPlaneResult plane = lk::findSymmetryPlane(mesh, options);
+  const lk::SymmetryPlaneResult plane = this->FitPlane
+    ? lk::findSymmetryPlane(mesh, options)
+    : lk::measureMirror(mesh, lk::Vec3(this->GivenPlaneOrigin[0], this->GivenPlaneOrigin[1], this->GivenPlaneOrigin[2]),
+        lk::Vec3(this->GivenPlaneNormal[0], this->GivenPlaneNormal[1], this->GivenPlaneNormal[2]));
   if (lkvtk::stopRequested(this, { output }))
     return 1;
   if (!plane.ok)
   {
-    vtkErrorMacro("Cannot find a plane of symmetry: " << plane.error << ".");
+    vtkErrorMacro(<< (this->FitPlane ? "Cannot find a plane of symmetry: " : "Cannot mirror across the given plane: ")
+                  << plane.error << ".");
     return 0;
   }
   const double n[3] = { plane.normal.x(), plane.normal.y(), plane.normal.z() };
@@ -199,6 +203,11 @@ void vtkLKSymmetryPlaneFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "MaximumNumberOfPoints: " << this->MaximumNumberOfPoints << "\n";
   os << indent << "TrimFraction: " << this->TrimFraction << "\n";
+  os << indent << "FitPlane: " << (this->FitPlane ? "on" : "off") << "\n";
+  os << indent << "GivenPlaneOrigin: " << this->GivenPlaneOrigin[0] << " " << this->GivenPlaneOrigin[1] << " "
+     << this->GivenPlaneOrigin[2] << "\n";
+  os << indent << "GivenPlaneNormal: " << this->GivenPlaneNormal[0] << " " << this->GivenPlaneNormal[1] << " "
+     << this->GivenPlaneNormal[2] << "\n";
   os << indent << "PlaneOrigin: " << this->PlaneOrigin[0] << " " << this->PlaneOrigin[1] << " " << this->PlaneOrigin[2]
      << "\n";
   os << indent << "PlaneNormal: " << this->PlaneNormal[0] << " " << this->PlaneNormal[1] << " " << this->PlaneNormal[2]

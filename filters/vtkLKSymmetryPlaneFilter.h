@@ -27,6 +27,10 @@
  * InitialNormal far from its plane, can end in a local minimum: the fitted
  * normal, the mean distance and the share kept tell.
  *
+ * With FitPlane off, no plane is fitted: the surface is mirrored across a
+ * given plane (one a surgeon set through midline landmarks), and the same
+ * distances are reported.
+ *
  * Input: a surface (polygons or strips, any number of pieces). Output: the
  * input mirrored across the fitted plane: points and point normals and
  * vectors reflected, each cell's points in reverse order so that its normal
@@ -80,7 +84,21 @@ public:
   ///@}
 
   ///@{
-  /// The fitted plane (a point of it and its unit normal) and the mean and
+  /// Off: no plane is fitted; the surface is mirrored across the plane
+  /// through GivenPlaneOrigin with normal GivenPlaneNormal (a plane a surgeon
+  /// set by landmarks), and the distances to that mirror image are
+  /// reported, with KeptFraction 0. Default on.
+  vtkSetMacro(FitPlane, bool);
+  vtkGetMacro(FitPlane, bool);
+  vtkBooleanMacro(FitPlane, bool);
+  vtkSetVector3Macro(GivenPlaneOrigin, double);
+  vtkGetVector3Macro(GivenPlaneOrigin, double);
+  vtkSetVector3Macro(GivenPlaneNormal, double);
+  vtkGetVector3Macro(GivenPlaneNormal, double);
+  ///@}
+
+  ///@{
+  /// The fitted (or given) plane (a point of it and its unit normal) and the mean and
   /// largest distance from the input's points to its mirror image, after an
   /// update (zeros before, or after an error).
   vtkGetVector3Macro(PlaneOrigin, double);
@@ -100,6 +118,9 @@ protected:
   int MaximumNumberOfIterations = 200;
   int MaximumNumberOfPoints = 20000;
   double TrimFraction = 0.5;
+  bool FitPlane = true;
+  double GivenPlaneOrigin[3] = { 0.0, 0.0, 0.0 };
+  double GivenPlaneNormal[3] = { 1.0, 0.0, 0.0 };
   double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
   double PlaneNormal[3] = { 0.0, 0.0, 0.0 };
   double MeanDistance = 0.0;

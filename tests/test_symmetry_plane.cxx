@@ -146,3 +146,21 @@ TEST(SymmetryPlane, BadInputIsRefusedWithAReason)
     p *= 1e300;
   refused(huge, {}, "too large");
 }
+
+TEST(SymmetryPlane, MeasureMirrorAcrossAGivenPlane)
+{
+  const Eigen::Affine3d motion = placement();
+  const lk::TriangleMesh mesh = shape(3, 0.0, motion);
+  const lk::Vec3 truth = motion.linear() * lk::Vec3::UnitX();
+  const lk::SymmetryPlaneResult exact = lk::measureMirror(mesh, motion.translation(), 3.0 * truth);
+  ASSERT_TRUE(exact.ok) << exact.error;
+  EXPECT_NEAR(exact.normal.norm(), 1.0, 1e-12);
+  EXPECT_LT(exact.meanDistance, 1e-3);
+  EXPECT_EQ(exact.keptFraction, 0.0);
+  // Moved 2 mm along its normal: the mirror moves 4 mm, the mean grows.
+  const lk::SymmetryPlaneResult off = lk::measureMirror(mesh, motion.translation() + 2.0 * truth, truth);
+  ASSERT_TRUE(off.ok);
+  EXPECT_GT(off.meanDistance, 1.0);
+  EXPECT_FALSE(lk::measureMirror(mesh, motion.translation(), lk::Vec3::Zero()).ok);
+  EXPECT_FALSE(lk::measureMirror(lk::TriangleMesh(), motion.translation(), truth).ok);
+}

@@ -376,6 +376,55 @@ TEST(SymmetryPlaneFilter, AMissingRamusDoesNotTiltThePlane)
   EXPECT_GT(apart(n), 10.0);
 }
 
+TEST(SymmetryPlaneFilter, AGivenPlaneIsUsedAsItIs)
+{
+  // A plane set by hand: the true one gives a mirror on the bone; one turned
+  // 5 degrees gives it farther off; the plane is reported as given.
+  TiltedShape shape;
+  double truth[3], turned[3];
+  const double xAxis[3] = { 1.0, 0.0, 0.0 }, tilted[3] = { std::cos(vtkMath::RadiansFromDegrees(5.0)),
+                                                 std::sin(vtkMath::RadiansFromDegrees(5.0)), 0.0 };
+  shape.motion->TransformNormal(xAxis, truth);
+  shape.motion->TransformNormal(tilted, turned);
+  const double through[3] = { 5, -3, 100 };
+  double means[2];
+  const double* normals[2] = { truth, turned };
+  for (int k = 0; k < 2; ++k)
+  {
+    vtkNew<vtkLKSymmetryPlaneFilter> filter;
+    filter->SetInputData(shape.surface);
+    filter->FitPlaneOff();
+    filter->SetGivenPlaneOrigin(through[0], through[1], through[2]);
+    filter->SetGivenPlaneNormal(2.0 * normals[k][0], 2.0 * normals[k][1], 2.0 * normals[k][2]);
+    lktest::ErrorRecorder rec(filter);
+    filter->Update();
+    EXPECT_EQ(rec.errors, 0) << rec.messages;
+    double normal[3], origin[3];
+    filter->GetPlaneNormal(normal);
+    filter->GetPlaneOrigin(origin);
+    for (int i = 0; i < 3; ++i)
+    {
+      EXPECT_NEAR(normal[i], normals[k][i], 1e-12);
+      EXPECT_DOUBLE_EQ(origin[i], through[i]);
+    }
+    EXPECT_EQ(filter->GetKeptFraction(), 0.0);
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), shape.surface->GetNumberOfPoints());
+    means[k] = filter->GetMeanDistance();
+  }
+  EXPECT_LT(means[0], 0.01);
+  EXPECT_GT(means[1], 0.5);
+
+  vtkNew<vtkLKSymmetryPlaneFilter> filter;
+  filter->SetInputData(shape.surface);
+  filter->FitPlaneOff();
+  filter->SetGivenPlaneNormal(0, 0, 0);
+  lktest::ErrorRecorder rec(filter);
+  filter->Update();
+  EXPECT_EQ(rec.errors, 1);
+  EXPECT_NE(rec.messages.find("Cannot mirror across the given plane"), std::string::npos) << rec.messages;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 TEST(SymmetryPlaneFilter, StopsWhenAsked)
 {
   TiltedShape shape;

@@ -22,6 +22,25 @@ namespace
 /// the mandible without a ramus, NOTES session 50).
 constexpr double kFractionExponent = 3.0;
 
+/// The mean and largest distance of the mesh's points, mirrored across the
+/// plane, to the mesh (each point's distance to the mirror image: a
+/// reflection keeps distances), each query hinted by the last hit.
+void mirrorDistances(const TriangleMesh& mesh, const ClosestPointTree& tree, SymmetryPlaneResult& result)
+{
+  const Vec3 n = result.normal, o = result.origin;
+  const Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity() - 2.0 * n * n.transpose();
+  ClosestPointTree::Hit hint = tree.closest(reflection * (mesh.points[0] - o) + o);
+  double sum = 0.0;
+  result.maximumDistance = 0.0;
+  for (const Vec3& x : mesh.points)
+  {
+    hint = tree.closest(reflection * (x - o) + o, hint);
+    sum += hint.distance;
+    result.maximumDistance = std::max(result.maximumDistance, hint.distance);
+  }
+  result.meanDistance = sum / static_cast<double>(mesh.points.size());
+}
+
 }
 
 SymmetryPlaneResult findSymmetryPlane(const TriangleMesh& mesh, const SymmetryPlaneOptions& options)
@@ -242,16 +261,27 @@ SymmetryPlaneResult findSymmetryPlane(const TriangleMesh& mesh, const SymmetryPl
     result.error = "the registration gave no finite plane";
     return result;
   }
-  const Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity() - 2.0 * n * n.transpose();
-  ClosestPointTree::Hit hint = tree.closest(reflection * (mesh.points[0] - result.origin) + result.origin);
-  double sum = 0.0;
-  for (const Vec3& x : mesh.points)
-  {
-    hint = tree.closest(reflection * (x - result.origin) + result.origin, hint);
-    sum += hint.distance;
-    result.maximumDistance = std::max(result.maximumDistance, hint.distance);
-  }
-  result.meanDistance = sum / static_cast<double>(mesh.points.size());
+  mirrorDistances(mesh, tree, result);
+  result.ok = true;
+  return result;
+}
+
+SymmetryPlaneResult measureMirror(const TriangleMesh& mesh, const Vec3& origin, const Vec3& normal)
+{
+  SymmetryPlaneResult result;
+  result.keptFraction = 0.0;
+  if (mesh.triangles.empty() || mesh.points.empty())
+    result.error = "the surface has no triangles";
+  else if (!origin.allFinite() || !normal.allFinite() || !(normal.norm() > 0.0))
+    result.error = "the plane must have a finite point and a finite, non-zero normal";
+  else if (std::any_of(mesh.points.begin(), mesh.points.end(), [](const Vec3& p) { return !p.allFinite(); }))
+    result.error = "a point is not finite";
+  if (!result.error.empty())
+    return result;
+  result.origin = origin;
+  result.normal = normal.normalized();
+  const ClosestPointTree tree(mesh);
+  mirrorDistances(mesh, tree, result);
   result.ok = true;
   return result;
 }

@@ -62,4 +62,11 @@ struct SymmetryPlaneResult
 /// The plane of symmetry of `mesh` (at least one triangle; finite points).
 SymmetryPlaneResult findSymmetryPlane(const TriangleMesh& mesh, const SymmetryPlaneOptions& options = {});
 
+/// How far `mesh` is from its mirror image across the plane through `origin`
+/// with unit `normal` (a plane set by hand): meanDistance and
+/// maximumDistance over every point, as findSymmetryPlane reports them;
+/// keptFraction 0 (nothing was fitted). Not ok, with the error, for a mesh
+/// without triangles, a point or a plane that is not finite, a zero normal.
+SymmetryPlaneResult measureMirror(const TriangleMesh& mesh, const Vec3& origin, const Vec3& normal);
+
 } // namespace lk
