@@ -144,7 +144,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
-                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: measure, a: angle (two, three clicks) | o: mirror image\n"
+                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: distance, a: angle | o: mirror image, O: set its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
@@ -289,14 +289,32 @@ void Planner::placeSegment(const std::array<double, 16>& matrix)
 
 const Planner::MirrorImage& Planner::mirrorImage()
 {
-  if (mirror.made)
+  if (mirror.made && mirror.madeWith == session.mirrorPlane)
     return mirror;
+  mirror = MirrorImage();
   mirror.made = true;
+  mirror.madeWith = session.mirrorPlane;
+  mirrorFitPiece = nullptr; // the segment's distance before its move, anew
   vtkNew<vtkLKSymmetryPlaneFilter> symmetry;
   symmetry->SetInputData(facesOnly(bone));
   // The patient's left-right axis: x in LPS and RAS alike (a CT's patient
   // lies along z, facing y).
   symmetry->SetInitialNormal(1.0, 0.0, 0.0);
+  if (!session.mirrorPlane.empty())
+  {
+    // The plane the surgeon set through three points (checked when read or
+    // clicked).
+    std::array<double, 3> origin, normal;
+    std::string why;
+    if (!lkplanner::planeThrough(session.mirrorPlane, origin, normal, why))
+    {
+      mirror.error = why;
+      return mirror;
+    }
+    symmetry->FitPlaneOff();
+    symmetry->SetGivenPlaneOrigin(origin.data());
+    symmetry->SetGivenPlaneNormal(normal.data());
+  }
   const int before = lkapp::errorCount();
   symmetry->Update();
   if (symmetry->GetOutput()->GetNumberOfPolys() == 0)
@@ -308,6 +326,9 @@ const Planner::MirrorImage& Planner::mirrorImage()
   mirror.surface->ShallowCopy(symmetry->GetOutput());
   symmetry->GetPlaneOrigin(mirror.origin.data());
   symmetry->GetPlaneNormal(mirror.normal.data());
+  for (auto* values : { &mirror.origin, &mirror.normal })
+    for (double& v : *values)
+      v = std::abs(v) < 1e-9 ? 0.0 : v; // rounding's dust (a plane set by clicks), and no "-0.0000"
   mirror.mean = symmetry->GetMeanDistance();
   mirror.largest = symmetry->GetMaximumDistance();
   mirror.kept = symmetry->GetKeptFraction();
@@ -410,13 +431,23 @@ std::string Planner::mirrorText() const
     return "mirror image: none (" + mirror.error + ")\n";
   const double x[3] = { 1.0, 0.0, 0.0 };
   const double tilt = vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(mirror.normal.data(), x));
-  char line[400];
-  std::snprintf(line, sizeof line,
-    "mirror image: across the bone's plane of symmetry through (%.2f, %.2f, %.2f), normal (%.4f, %.4f, %.4f), "
-    "%.1f deg from x; the bone is %.2f mm from it on average, %.2f mm at most; the plane was fitted to %.0f %% of "
-    "the bone (the rest lies farther from its mirror)\n",
-    mirror.origin[0], mirror.origin[1], mirror.origin[2], mirror.normal[0], mirror.normal[1], mirror.normal[2], tilt,
-    mirror.mean, mirror.largest, 100.0 * mirror.kept);
+  char line[600];
+  if (mirror.madeWith.empty())
+    std::snprintf(line, sizeof line,
+      "mirror image: across the bone's plane of symmetry through (%.2f, %.2f, %.2f), normal (%.4f, %.4f, %.4f), "
+      "%.1f deg from x; the bone is %.2f mm from it on average, %.2f mm at most; the plane was fitted to %.0f %% of "
+      "the bone (the rest lies farther from its mirror)\n",
+      mirror.origin[0], mirror.origin[1], mirror.origin[2], mirror.normal[0], mirror.normal[1], mirror.normal[2],
+      tilt, mirror.mean, mirror.largest, 100.0 * mirror.kept);
+  else
+  {
+    const auto& p = mirror.madeWith;
+    std::snprintf(line, sizeof line,
+      "mirror image: across the plane set through (%.2f, %.2f, %.2f), (%.2f, %.2f, %.2f) and (%.2f, %.2f, %.2f), "
+      "normal (%.4f, %.4f, %.4f), %.1f deg from x; the bone is %.2f mm from it on average, %.2f mm at most\n",
+      p[0][0], p[0][1], p[0][2], p[1][0], p[1][1], p[1][2], p[2][0], p[2][1], p[2][2], mirror.normal[0],
+      mirror.normal[1], mirror.normal[2], tilt, mirror.mean, mirror.largest);
+  }
   std::string text = line;
   if (segmentToMirror.valid)
   {
@@ -1749,6 +1780,9 @@ void Planner::updateStatus()
       << "_ (Return keeps it, an empty name takes it away; Escape: stop)";
   if (measuring == 2)
     s << (measurePicked.empty() ? " | MEASURE: click the first point (u: stop)" : " | MEASURE: click the second point (u: stop)");
+  else if (measuring == 3 && settingPlane)
+    s << " | MIRROR PLANE: click a point of the bone's midline, " << measurePicked.size() + 1
+      << " of 3 (O again: the fitted plane; Escape: stop)";
   else if (measuring == 3)
     s << (measurePicked.empty()       ? " | ANGLE: click an arm's end (a: stop)"
             : measurePicked.size() == 1 ? " | ANGLE: click the vertex (a: stop)"

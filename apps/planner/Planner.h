@@ -189,7 +189,8 @@ public:
   /// and shown translucent over it.
   struct MirrorImage
   {
-    bool made = false;                    ///< asked for once (made or failed)
+    bool made = false;                    ///< asked for (made or failed) ...
+    std::vector<std::array<double, 3>> madeWith; ///< ... with this set plane (empty: fitted)
     vtkSmartPointer<vtkPolyData> surface; ///< null when it could not be made (error)
     std::shared_ptr<const lk::ClosestPointTree> tree; ///< distances to it (CGAL's AABB tree)
     std::array<double, 3> origin{ 0, 0, 0 }, normal{ 0, 0, 0 };
@@ -413,6 +414,8 @@ public:
   /// `measurePicked` holds the points clicked so far (in their pieces'
   /// frames) and `measurePickedPieces` their pieces.
   int measuring = 0;
+  /// The three clicks set the mirror plane (O), not an angle.
+  bool settingPlane = false;
   std::vector<std::array<double, 3>> measurePicked;
   std::vector<int> measurePickedPieces;
   /// The measurements in the view, with the segment where `shownMatrix`

@@ -5,6 +5,7 @@
 #include "common/JsonFields.h"
 #include "vtkLKText.h"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -96,6 +97,8 @@ std::string sessionText(const Session& s)
   root["latticeVertices"] = static_cast<Json::Int64>(s.latticeVertices);
   root["metro"] = s.metro;
   root["mirror"] = s.mirror;
+  for (const auto& p : s.mirrorPlane)
+    root["mirrorPlane"].append(triple(p));
   if (s.segment >= 0)
   {
     root["segment"]["piece"] = s.segment;
@@ -241,6 +244,51 @@ void noteUnknownMembers(const Json::Value& object, std::initializer_list<const c
 }
 } // namespace
 
+bool planeThrough(const std::vector<std::array<double, 3>>& points, std::array<double, 3>& origin,
+  std::array<double, 3>& normal, std::string& why)
+{
+  if (points.size() != 3)
+  {
+    why = "a plane needs three points";
+    return false;
+  }
+  using V = std::array<double, 3>;
+  auto minus = [](const V& a, const V& b) { return V{ a[0] - b[0], a[1] - b[1], a[2] - b[2] }; };
+  auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto cross = [](const V& a, const V& b) {
+    return V{ a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+  };
+  // The sine of each corner's angle: |e1 x e2| / (|e1| |e2|).
+  double smallest = 1.0;
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    const V e1 = minus(points[(k + 1) % 3], points[k]), e2 = minus(points[(k + 2) % 3], points[k]);
+    const V c = cross(e1, e2);
+    const double lengths = std::sqrt(dot(e1, e1) * dot(e2, e2));
+    smallest = std::min(smallest, lengths > 0.0 ? std::sqrt(dot(c, c)) / lengths : 0.0);
+  }
+  const V n = cross(minus(points[1], points[0]), minus(points[2], points[0]));
+  const double length = std::sqrt(dot(n, n));
+  if (!std::isfinite(length) || !std::isfinite(smallest))
+  {
+    why = "the three points must be finite";
+    return false;
+  }
+  if (!(smallest >= std::sin(2.0 * M_PI / 180.0)))
+  {
+    why = "the three points are nearly in a line (a corner of their triangle under 2 degrees): no plane is "
+          "defined well by them";
+    return false;
+  }
+  const double sign = n[0] < 0.0 ? -1.0 : 1.0;
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    normal[i] = sign * n[i] / length;
+    origin[i] = (points[0][i] + points[1][i] + points[2][i]) / 3.0;
+  }
+  return true;
+}
+
 bool readSession(
   const Json::Value& root, const std::string& path, Session& s, std::string& error, std::string* notes)
 {
@@ -248,7 +296,8 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "segment", "deformations", "names",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "segment",
+      "deformations", "names",
       "measurements",
       "surface", "input" },
     session, notes);
@@ -323,6 +372,30 @@ bool readSession(
     !jsonMember(root, "latticeVertices", vertices, count, session, "a whole number from 4 to 100,000,000", error))
     return false;
   s.latticeVertices = static_cast<long>(vertices);
+  if (root.isMember("mirrorPlane"))
+  {
+    const Json::Value& plane = root["mirrorPlane"];
+    const std::string where = session + ": \"mirrorPlane\"";
+    if (!plane.isArray() || plane.size() != 3)
+    {
+      error = where + " must be three points [[x, y, z], [x, y, z], [x, y, z]]";
+      return false;
+    }
+    s.mirrorPlane.resize(3);
+    for (Json::ArrayIndex k = 0; k < 3; ++k)
+      if (!jsonNumbers(plane[k], s.mirrorPlane[k]))
+      {
+        error = where + " must be three points [[x, y, z], [x, y, z], [x, y, z]] of finite numbers";
+        return false;
+      }
+    std::array<double, 3> origin, normal;
+    std::string why;
+    if (!planeThrough(s.mirrorPlane, origin, normal, why))
+    {
+      error = where + ": " + why;
+      return false;
+    }
+  }
   if (root.isMember("segment"))
   {
     const Json::Value& seg = root["segment"];

@@ -16,6 +16,9 @@
 //   "mirror": bool                                    the bone's mirror image across its
 //                                                     plane of symmetry, and the segment's
 //                                                     distance to it
+//   "mirrorPlane": [[x, y, z], [x, y, z], [x, y, z]]  the plane to mirror across, set by
+//                                                     three points (midline landmarks;
+//                                                     none: the fitted plane)
 //   "segment": {"piece": i, "matrix": [16 numbers],   the moved piece, row-major 4x4,
 //               "at": [x, y, z]}                      and a point of it (see below)
 //   "deformations": [{"tool": "bump" | "box" | "smooth", "piece": i,
@@ -162,6 +165,10 @@ struct Session
   /// The bone's mirror image across its plane of symmetry, shown as the
   /// template of mirror-image planning (o).
   bool mirror = false;
+  /// Three points of the bone (midline landmarks, in its frame before any
+  /// move) that set the plane to mirror across (O, three clicks); empty: the
+  /// bone's fitted plane of symmetry.
+  std::vector<std::array<double, 3>> mirrorPlane;
   /// The moved segment: a piece index (pieces in cut order) and its rigid
   /// transform, row-major 4x4 (the surgery moves the segment).
   int segment = -1;
@@ -224,6 +231,13 @@ bool saveSession(const Session& s, const std::string& path, std::string& error);
 /// Where a session left unsaved at quitting is kept: `sessionPath` with
 /// "-unsaved" before its extension (planner_session-unsaved.json).
 std::string unsavedSessionPath(const std::string& sessionPath);
+
+/// The plane through three points: their centroid and unit normal, turned
+/// to the patient's left (x >= 0, as the fitted plane is). False, with
+/// `why`, when the points are nearly in a line (the smallest angle of their
+/// triangle under 2 degrees), or not finite.
+bool planeThrough(const std::vector<std::array<double, 3>>& points, std::array<double, 3>& origin,
+  std::array<double, 3>& normal, std::string& why);
 
 /// Reads a session, every field's kind checked (a wrong one is refused with
 /// a message naming it and `path`, not an exception). Fields it does not

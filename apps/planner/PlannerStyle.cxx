@@ -361,6 +361,7 @@ void PlannerStyle::endSaw()
 void PlannerStyle::stopMeasuring()
 {
   planner->measuring = 0;
+  planner->settingPlane = false;
   if (!planner->measurePicked.empty())
   {
     planner->measurePicked.clear();
@@ -377,18 +378,20 @@ void PlannerStyle::measureClick()
   const int* pos = this->Interactor->GetEventPosition();
   std::array<double, 3> point, normal;
   const int piece = pickPiece(pos[0], pos[1], point, normal);
-  const bool angle = p.measuring == 3;
+  const bool angle = p.measuring == 3 && !p.settingPlane;
   if (piece < 0)
   {
-    p.message = angle ? "no bone there: click the bone for an arm's end, the vertex and the other arm's end (a: stop)"
-                      : "no bone there: click the bone to measure from and to (u: stop measuring)";
+    p.message = p.settingPlane ? "no bone there: click three points of the bone's midline (O: stop)"
+      : angle                  ? "no bone there: click the bone for an arm's end, the vertex and the other arm's end (a: stop)"
+                               : "no bone there: click the bone to measure from and to (u: stop measuring)";
     p.updateStatus();
     this->Interactor->Render();
     return;
   }
   p.message.clear();
-  // An angle's arm needs a length: its end apart from the vertex, as shown.
-  if (angle && !p.measurePicked.empty() &&
+  // An angle's arm needs a length: its end apart from the vertex, as shown
+  // (and a plane three points apart).
+  if (p.measuring == 3 && !p.measurePicked.empty() &&
     p.shownPoint(point, piece, p.shownMatrix) ==
       p.shownPoint(p.measurePicked.back(), p.measurePickedPieces.back(), p.shownMatrix))
     p.message = "click a point apart from the last: an angle's arm needs a length";
@@ -399,6 +402,29 @@ void PlannerStyle::measureClick()
   }
   if (static_cast<int>(p.measurePicked.size()) < p.measuring)
     p.showMeasurements();
+  else if (p.settingPlane)
+  {
+    // The plane through the three points (midline landmarks) replaces the
+    // fitted one, and the mirror is shown across it.
+    std::array<double, 3> origin, normal;
+    std::string why;
+    if (!planeThrough(p.measurePicked, origin, normal, why))
+    {
+      p.message = why + ": click three points again (O: stop)";
+      p.measurePicked.clear();
+      p.measurePickedPieces.clear();
+      p.showMeasurements();
+    }
+    else
+    {
+      p.remember();
+      p.session.mirrorPlane = p.measurePicked;
+      p.session.mirror = true;
+      stopMeasuring();
+      p.notice = "mirror plane set through three points";
+      p.rebuild();
+    }
+  }
   else
   {
     p.remember();
@@ -682,6 +708,30 @@ void PlannerStyle::OnChar()
       planner->moving = false;
       planner->tool = NO_TOOL;
       stopMeasuring();
+    }
+  }
+  else if (key == "O")
+  {
+    // O: the mirror plane through three clicked points; O again before the
+    // third click takes the bone's fitted plane back.
+    rebuild = false;
+    const bool on = !planner->settingPlane;
+    stopMeasuring();
+    if (on)
+    {
+      planner->measuring = 3;
+      planner->settingPlane = true;
+      planner->drawing = false;
+      planner->sawing = false;
+      planner->moving = false;
+      planner->tool = NO_TOOL;
+    }
+    else if (!s.mirrorPlane.empty())
+    {
+      planner->remember();
+      s.mirrorPlane.clear();
+      planner->notice = "mirror plane: the bone's own plane of symmetry again";
+      rebuild = true;
     }
   }
   else if (key == "u" || key == "a")
