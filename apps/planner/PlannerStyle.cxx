@@ -422,7 +422,19 @@ void PlannerStyle::measureClick()
       p.session.mirror = true;
       stopMeasuring();
       p.notice = "mirror plane set through three points";
-      p.rebuild();
+      // A mid-sagittal plane is within a few degrees of the left-right
+      // axis; far from it, the clicks were likely not on the midline.
+      p.rebuild(); // (which says anew what the plan warns)
+      const double tilt = std::acos(std::min(1.0, std::abs(normal[0]))) * 180.0 / vtkMath::Pi();
+      if (tilt > 30.0)
+      {
+        char text[200];
+        std::snprintf(text, sizeof text,
+          "the plane set is %.0f deg from x, the patient's left-right axis: were the clicks on the midline? (O: "
+          "set it again)",
+          tilt);
+        p.message += (p.message.empty() ? "" : "\n") + std::string(text);
+      }
     }
   }
   else
