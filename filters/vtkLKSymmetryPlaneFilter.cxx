@@ -136,7 +136,8 @@ int vtkLKSymmetryPlaneFilter::RequestData(
   triangles->PassLinesOff();
   triangles->Update();
   lk::TriangleMesh mesh;
-  if (const std::string why = lkvtk::toTriangleMesh(triangles->GetOutput(), mesh); !why.empty() || mesh.triangles.empty())
+  if (const std::string why = lkvtk::toTriangleMesh(triangles->GetOutput(), mesh);
+      !why.empty() || mesh.triangles.empty())
   {
     vtkErrorMacro("Cannot find a plane of symmetry: " << (why.empty() ? "the input has no triangles" : why));
     return 0;

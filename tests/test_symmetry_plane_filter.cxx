@@ -365,7 +365,8 @@ TEST(SymmetryPlaneFilter, AMissingRamusDoesNotTiltThePlane)
   auto apart = [&](const double n[3]) { return vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(n, n0)); };
   double n[3], o[3];
   const double kept = plane(lacking, 0.5, n, o);
-  std::printf("without the ramus: trimmed %.2f degrees from the intact plane (%.2f of the points kept)", apart(n), kept);
+  std::printf("without the ramus: trimmed %.2f degrees from the intact plane (%.2f of the points kept)", apart(n),
+    kept);
   EXPECT_LT(apart(n), 2.0);
   EXPECT_LT(kept, 0.8);
   double shift[3];

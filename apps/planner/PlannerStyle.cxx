@@ -382,8 +382,8 @@ void PlannerStyle::measureClick()
   if (piece < 0)
   {
     p.message = p.settingPlane ? "no bone there: click three points of the bone's midline (O: stop)"
-      : angle                  ? "no bone there: click the bone for an arm's end, the vertex and the other arm's end (a: stop)"
-                               : "no bone there: click the bone to measure from and to (u: stop measuring)";
+      : angle ? "no bone there: click the bone for an arm's end, the vertex and the other arm's end (a: stop)"
+              : "no bone there: click the bone to measure from and to (u: stop measuring)";
     p.updateStatus();
     this->Interactor->Render();
     return;
@@ -422,10 +422,11 @@ void PlannerStyle::measureClick()
       p.session.mirror = true;
       stopMeasuring();
       p.notice = "mirror plane set through three points";
+      p.rebuild(); // (which says anew what the plan warns)
       // A mid-sagittal plane is within a few degrees of the left-right
       // axis; far from it, the clicks were likely not on the midline.
-      p.rebuild(); // (which says anew what the plan warns)
-      const double tilt = std::acos(std::min(1.0, std::abs(normal[0]))) * 180.0 / vtkMath::Pi();
+      const double x[3] = { 1.0, 0.0, 0.0 };
+      const double tilt = vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal.data(), x));
       if (tilt > 30.0)
       {
         char text[200];
@@ -626,7 +627,8 @@ void PlannerStyle::typeName(const std::string& key)
     {
       const char32_t plain = lkapp::keyCharacter(key, this->Interactor->GetKeyCode(), false);
       const std::string what = plain != 0 && !lkvtk::isControl(plain) ? lkvtk::encodeUTF8(plain) : key;
-      p.message = (accent.empty() ? "Compose" : "'" + accent + "'") + " and '" + what + "' make no letter: both are dropped";
+      p.message =
+        (accent.empty() ? "Compose" : "'" + accent + "'") + " and '" + what + "' make no letter: both are dropped";
     }
     else if (p.composer.composing())
       p.message.clear();
