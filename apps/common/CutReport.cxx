@@ -3,16 +3,16 @@
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkFieldData.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
-#include <vtkGeometryFilter.h>
 #include <vtkMassProperties.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkThreshold.h>
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <utility>
+#include <vector>
 
 namespace lkapp
 {
@@ -175,21 +176,74 @@ std::string lineFactsText(const std::vector<LineFacts>& facts)
 
 vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes)
 {
-  vtkNew<vtkThreshold> t;
-  t->SetInputData(cut);
-  t->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "RegionId");
-  t->SetLowerThreshold(region - 0.5);
-  t->SetUpperThreshold(region + 0.5);
-  vtkNew<vtkGeometryFilter> g;
-  g->SetInputConnection(t->GetOutputPort());
-  g->Update();
+  // The region's cells in the cut's order, and the points they use in the
+  // cut's order, with their data. (vtkThreshold and vtkGeometryFilter, which
+  // did this, run on threads in VTK 9.1 and gave the cells in another order
+  // from run to run: the same plan exported different files, and a click
+  // where two faces meet picked one or the other.)
   auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(g->GetOutput());
-  if (!attributes)
+  vtkDataArray* regions = cut->GetCellData()->GetArray("RegionId");
+  if (!regions || !cut->GetPoints())
+    return out;
+  const vtkIdType cellCount = cut->GetNumberOfCells(), pointCount = cut->GetNumberOfPoints();
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(pointCount), -1);
+  std::vector<vtkIdType> kept;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < cellCount; ++c)
+    if (std::lround(regions->GetTuple1(c)) == region)
+    {
+      kept.push_back(c);
+      cut->GetCellPoints(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        newId[static_cast<std::size_t>(ids->GetId(k))] = 0;
+    }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(cut->GetPoints()->GetDataType());
+  vtkPointData* pointData = out->GetPointData();
+  if (attributes)
+    pointData->CopyAllocate(cut->GetPointData());
+  for (vtkIdType i = 0; i < pointCount; ++i)
+    if (newId[static_cast<std::size_t>(i)] == 0)
+    {
+      newId[static_cast<std::size_t>(i)] = points->InsertNextPoint(cut->GetPoint(i));
+      if (attributes)
+        pointData->CopyData(cut->GetPointData(), i, newId[static_cast<std::size_t>(i)]);
+    }
+  out->SetPoints(points);
+  // A polydata's cells go vertices, lines, polygons, strips, whatever the
+  // order in the cut; cell data follows that order.
+  vtkNew<vtkCellArray> verts, lines, polys, strips;
+  std::vector<vtkIdType> order[4];
+  for (const vtkIdType c : kept)
   {
-    out->GetPointData()->Initialize();
-    out->GetCellData()->Initialize();
+    const int type = cut->GetCellType(c);
+    const int kind = type == VTK_VERTEX || type == VTK_POLY_VERTEX ? 0
+      : type == VTK_LINE || type == VTK_POLY_LINE                 ? 1
+      : type == VTK_TRIANGLE_STRIP                                ? 3
+                                                                  : 2;
+    order[kind].push_back(c);
   }
+  vtkCellArray* arrays[4] = { verts, lines, polys, strips };
+  vtkCellData* cellData = out->GetCellData();
+  if (attributes)
+    cellData->CopyAllocate(cut->GetCellData());
+  vtkIdType next = 0;
+  for (int kind = 0; kind < 4; ++kind)
+    for (const vtkIdType c : order[kind])
+    {
+      cut->GetCellPoints(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        ids->SetId(k, newId[static_cast<std::size_t>(ids->GetId(k))]);
+      arrays[kind]->InsertNextCell(ids);
+      if (attributes)
+        cellData->CopyData(cut->GetCellData(), c, next);
+      ++next;
+    }
+  out->SetVerts(verts);
+  out->SetLines(lines);
+  out->SetPolys(polys);
+  out->SetStrips(strips);
+  out->GetFieldData()->ShallowCopy(cut->GetFieldData()); // SPACE, as the filters pass it
   return out;
 }
 
