@@ -91,8 +91,9 @@ std::u32string KeyComposer::type(const std::string& keySym, char keyCode, bool c
   Internal& in = *internal;
   in.cancelled = false;
   const char32_t plain = keyCharacter(keySym, keyCode, control);
+  const std::u32string own = plain != 0 ? std::u32string(1, plain) : std::u32string(); // the key's own character
   if (in.state == nullptr)
-    return plain != 0 ? std::u32string(1, plain) : std::u32string();
+    return own;
   if (control)
   {
     in.cancelled = composing();
@@ -104,7 +105,7 @@ std::u32string KeyComposer::type(const std::string& keySym, char keyCode, bool c
   if (symbol == XKB_KEY_NoSymbol && plain != 0)
     symbol = xkb_utf32_to_keysym(plain); // a key known by its byte only
   if (symbol == XKB_KEY_NoSymbol || xkb_compose_state_feed(in.state, symbol) == XKB_COMPOSE_FEED_IGNORED)
-    return composing() ? std::u32string() : plain != 0 ? std::u32string(1, plain) : std::u32string();
+    return composing() ? std::u32string() : own;
   switch (xkb_compose_state_get_status(in.state))
   {
     case XKB_COMPOSE_COMPOSING:
@@ -122,7 +123,7 @@ std::u32string KeyComposer::type(const std::string& keySym, char keyCode, bool c
       reset();
       return {};
     default:
-      return plain != 0 ? std::u32string(1, plain) : std::u32string();
+      return own;
   }
 }
 

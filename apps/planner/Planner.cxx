@@ -423,14 +423,19 @@ void Planner::updateMirrorFit(const std::array<double, 16>& matrix)
   segmentToMirror = isIdentity(matrix) ? segmentToMirrorBefore : mirrorFitOf(matrix);
 }
 
+double Planner::degreesFromX(const std::array<double, 3>& normal)
+{
+  const double x[3] = { 1.0, 0.0, 0.0 };
+  return vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal.data(), x));
+}
+
 std::string Planner::mirrorText() const
 {
   if (!session.mirror)
     return "";
   if (!mirror.surface)
     return "mirror image: none (" + mirror.error + ")\n";
-  const double x[3] = { 1.0, 0.0, 0.0 };
-  const double tilt = vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(mirror.normal.data(), x));
+  const double tilt = degreesFromX(mirror.normal);
   char line[600];
   if (mirror.madeWith.empty())
     std::snprintf(line, sizeof line,

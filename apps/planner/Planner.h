@@ -223,6 +223,9 @@ public:
   std::vector<vtkIdType> mirrorFitVertices;
   MirrorFit mirrorFitOf(const std::array<double, 16>& matrix) const;
   void updateMirrorFit(const std::array<double, 16>& matrix);
+  /// The angle (degrees) between a plane's normal and x, the patient's
+  /// left-right axis: how far a plane is from mid-sagittal.
+  static double degreesFromX(const std::array<double, 3>& normal);
   /// The plan's lines on the mirror image (empty when it is not shown).
   std::string mirrorText() const;
 

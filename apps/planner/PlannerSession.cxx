@@ -5,6 +5,8 @@
 #include "common/JsonFields.h"
 #include "vtkLKText.h"
 
+#include <vtkMath.h>
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -252,29 +254,28 @@ bool planeThrough(const std::vector<std::array<double, 3>>& points, std::array<d
     why = "a plane needs three points";
     return false;
   }
-  using V = std::array<double, 3>;
-  auto minus = [](const V& a, const V& b) { return V{ a[0] - b[0], a[1] - b[1], a[2] - b[2] }; };
-  auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  auto cross = [](const V& a, const V& b) {
-    return V{ a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-  };
   // The sine of each corner's angle: |e1 x e2| / (|e1| |e2|).
   double smallest = 1.0;
   for (std::size_t k = 0; k < 3; ++k)
   {
-    const V e1 = minus(points[(k + 1) % 3], points[k]), e2 = minus(points[(k + 2) % 3], points[k]);
-    const V c = cross(e1, e2);
-    const double lengths = std::sqrt(dot(e1, e1) * dot(e2, e2));
-    smallest = std::min(smallest, lengths > 0.0 ? std::sqrt(dot(c, c)) / lengths : 0.0);
+    double e1[3], e2[3], c[3];
+    vtkMath::Subtract(points[(k + 1) % 3].data(), points[k].data(), e1);
+    vtkMath::Subtract(points[(k + 2) % 3].data(), points[k].data(), e2);
+    vtkMath::Cross(e1, e2, c);
+    const double lengths = vtkMath::Norm(e1) * vtkMath::Norm(e2);
+    smallest = std::min(smallest, lengths > 0.0 ? vtkMath::Norm(c) / lengths : 0.0);
   }
-  const V n = cross(minus(points[1], points[0]), minus(points[2], points[0]));
-  const double length = std::sqrt(dot(n, n));
+  double a[3], b[3], n[3];
+  vtkMath::Subtract(points[1].data(), points[0].data(), a);
+  vtkMath::Subtract(points[2].data(), points[0].data(), b);
+  vtkMath::Cross(a, b, n);
+  const double length = vtkMath::Norm(n);
   if (!std::isfinite(length) || !std::isfinite(smallest))
   {
     why = "the three points must be finite";
     return false;
   }
-  if (!(smallest >= std::sin(2.0 * M_PI / 180.0)))
+  if (!(smallest >= std::sin(vtkMath::RadiansFromDegrees(2.0))))
   {
     why = "the three points are nearly in a line (a corner of their triangle under 2 degrees): no plane is "
           "defined well by them";

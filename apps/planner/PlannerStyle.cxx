@@ -425,8 +425,7 @@ void PlannerStyle::measureClick()
       p.rebuild(); // (which says anew what the plan warns)
       // A mid-sagittal plane is within a few degrees of the left-right
       // axis; far from it, the clicks were likely not on the midline.
-      const double x[3] = { 1.0, 0.0, 0.0 };
-      const double tilt = vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(normal.data(), x));
+      const double tilt = Planner::degreesFromX(normal);
       if (tilt > 30.0)
       {
         char text[200];
