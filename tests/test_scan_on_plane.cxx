@@ -1,0 +1,186 @@
+// lkapp::viewFrame, scanOnPlane: a plane shown as radiologists show the
+// nearest standard plane, and a volume resliced on it exactly where its
+// data-to-patient matrix puts it.
+#include "common/ScanOnPlane.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkShortArray.h>
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+
+void expectFrame(const lkapp::ViewFrame& f, const char* right, const char* up, const char* towardViewer)
+{
+  EXPECT_EQ(std::string(lkapp::directionLetter(f.right)), right);
+  EXPECT_EQ(std::string(lkapp::directionLetter(f.up)), up);
+  EXPECT_EQ(std::string(lkapp::directionLetter(f.towardViewer)), towardViewer);
+  // Right-handed and orthonormal: right x up = toward the viewer.
+  std::array<double, 3> cross;
+  vtkMath::Cross(f.right.data(), f.up.data(), cross.data());
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(cross[static_cast<std::size_t>(i)], f.towardViewer[static_cast<std::size_t>(i)], 1e-12);
+  EXPECT_NEAR(vtkMath::Norm(f.right.data()), 1.0, 1e-12);
+  EXPECT_NEAR(vtkMath::Norm(f.up.data()), 1.0, 1e-12);
+  EXPECT_NEAR(vtkMath::Dot(f.right.data(), f.up.data()), 0.0, 1e-12);
+}
+
+} // namespace
+
+TEST(ScanOnPlane, ShowsPlanesAsRadiologistsDo)
+{
+  // Axial: from the feet, the front up, the patient's right on the screen's left.
+  expectFrame(lkapp::viewFrame({ 0, 0, 0 }, { 0, 0, 1 }), "L", "A", "I");
+  expectFrame(lkapp::viewFrame({ 0, 0, 0 }, { 0, 0, -3 }), "L", "A", "I");
+  // Coronal: from the front, the head up, the patient's right on the left.
+  expectFrame(lkapp::viewFrame({ 0, 0, 0 }, { 0, 1, 0 }), "L", "S", "A");
+  // Sagittal: from the left, the head up, the front on the left.
+  expectFrame(lkapp::viewFrame({ 0, 0, 0 }, { -2, 0, 0 }), "P", "S", "L");
+  // The main job's saw plane across the mandible body: nearest coronal, and
+  // its up is the head's direction exactly (the normal has no z).
+  const lkapp::ViewFrame saw = lkapp::viewFrame({ 89, 65, 185 }, { -0.55, 0.83, 0 });
+  expectFrame(saw, "L", "S", "A");
+  EXPECT_NEAR(saw.up[2], 1.0, 1e-12);
+  std::array<double, 3> point;
+  for (std::size_t i = 0; i < 3; ++i)
+    point[i] = saw.centre[i] + 2 * saw.right[i] + 5 * saw.up[i] - 3 * saw.towardViewer[i];
+  const auto p = lkapp::inFrame(saw, point);
+  EXPECT_NEAR(p[0], 2.0, 1e-12);
+  EXPECT_NEAR(p[1], 5.0, 1e-12);
+  EXPECT_NEAR(p[2], -3.0, 1e-12);
+}
+
+TEST(ScanOnPlane, ReslicesWhereThePatientMatrixPutsTheVolume)
+{
+  // A volume whose value is a linear function of the patient position
+  // (trilinear interpolation gives it exactly): 40 x 30 x 20 voxels of
+  // 0.8 x 0.9 x 1.5 mm, its x and y axes turned to -x and -y (an RAS-like
+  // file read as LPS) and moved.
+  const double spacing[3] = { 0.8, 0.9, 1.5 };
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(40, 30, 20);
+  volume->SetSpacing(spacing);
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(40 * 30 * 20);
+  vtkNew<vtkMatrix4x4> toPatient;
+  toPatient->SetElement(0, 0, -1.0);
+  toPatient->SetElement(1, 1, -1.0);
+  toPatient->SetElement(0, 3, 10.0);
+  toPatient->SetElement(1, 3, 20.0);
+  toPatient->SetElement(2, 3, -30.0);
+  const auto field = [](const double p[3]) { return 3.0 * p[0] - 2.0 * p[1] + 0.5 * p[2] + 7.0; };
+  for (int k = 0; k < 20; ++k)
+    for (int j = 0; j < 30; ++j)
+      for (int i = 0; i < 40; ++i)
+      {
+        const double data[4] = { i * spacing[0], j * spacing[1], k * spacing[2], 1.0 };
+        double patient[4];
+        toPatient->MultiplyPoint(data, patient);
+        values->SetValue(i + 40 * (j + 30 * k), field(patient));
+      }
+  volume->GetPointData()->SetScalars(values);
+  // An oblique plane through the middle of the volume (patient x from -21.2
+  // to 10, y from -6.1 to 20, z from -30 to -1.5).
+  const lkapp::ViewFrame frame = lkapp::viewFrame({ -5.0, 7.0, -16.0 }, { 0.3, -0.8, 0.4 });
+  const double side = 40.0;
+  const int pixels = 64;
+  auto image = lkapp::scanOnPlane(volume, toPatient, frame, side, pixels, -1000.0);
+  ASSERT_NE(image, nullptr);
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], pixels);
+  EXPECT_EQ(dims[1], pixels);
+  EXPECT_EQ(dims[2], 1);
+  const double pixel = side / pixels;
+  int inside = 0, outside = 0;
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  for (int j = 0; j < pixels; ++j)
+    for (int i = 0; i < pixels; ++i)
+    {
+      // The pixel's point in the frame, then in the patient.
+      double xy[3];
+      image->GetPoint(i + pixels * j, xy);
+      EXPECT_NEAR(xy[0], -0.5 * side + (i + 0.5) * pixel, 1e-9);
+      double patient[4] = { 0, 0, 0, 1 };
+      for (int c = 0; c < 3; ++c)
+      {
+        const std::size_t cc = static_cast<std::size_t>(c);
+        patient[c] = frame.centre[cc] + xy[0] * frame.right[cc] + xy[1] * frame.up[cc];
+      }
+      // Inside the volume's box (a voxel's margin)?
+      double data[4];
+      vtkNew<vtkMatrix4x4> back;
+      vtkMatrix4x4::Invert(toPatient, back);
+      back->MultiplyPoint(patient, data);
+      const double value = scalars->GetTuple1(i + pixels * j);
+      bool in = true, farOut = false;
+      const int dimsIn[3] = { 40, 30, 20 };
+      for (int c = 0; c < 3; ++c)
+      {
+        const double extent = (dimsIn[c] - 1) * spacing[c];
+        in = in && data[c] >= 0.01 && data[c] <= extent - 0.01;
+        farOut = farOut || data[c] < -spacing[c] - 0.01 || data[c] > extent + spacing[c] + 0.01;
+      }
+      if (in)
+      {
+        // The reslice computes in float; the field changes 3.6 per mm.
+        EXPECT_NEAR(value, field(patient), 1e-3) << "pixel " << i << ", " << j;
+        ++inside;
+      }
+      else if (farOut)
+      {
+        EXPECT_EQ(value, -1000.0) << "pixel " << i << ", " << j;
+        ++outside;
+      }
+    }
+  EXPECT_GT(inside, 1000);
+  EXPECT_GT(outside, 100);
+}
+
+TEST(ScanOnPlane, RefusesWhatCannotBeResliced)
+{
+  vtkNew<vtkImageData> empty;
+  vtkNew<vtkMatrix4x4> identity;
+  const lkapp::ViewFrame frame = lkapp::viewFrame({ 0, 0, 0 }, { 0, 0, 1 });
+  EXPECT_EQ(lkapp::scanOnPlane(empty, identity, frame, 10.0, 8, 0.0), nullptr);
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(4, 4, 4);
+  volume->AllocateScalars(VTK_SHORT, 1);
+  EXPECT_NE(lkapp::scanOnPlane(volume, identity, frame, 10.0, 8, 0.0), nullptr);
+  vtkNew<vtkMatrix4x4> flat;
+  flat->SetElement(2, 2, 0.0);
+  EXPECT_EQ(lkapp::scanOnPlane(volume, flat, frame, 10.0, 8, 0.0), nullptr);
+  EXPECT_EQ(lkapp::scanOnPlane(volume, identity, frame, 0.0, 8, 0.0), nullptr);
+  EXPECT_EQ(lkapp::scanOnPlane(volume, identity, frame, std::nan(""), 8, 0.0), nullptr);
+  EXPECT_EQ(lkapp::scanOnPlane(volume, identity, frame, 10.0, 1, 0.0), nullptr);
+  EXPECT_EQ(lkapp::scanOnPlane(volume, nullptr, frame, 10.0, 8, 0.0), nullptr);
+}
+
+TEST(ScanOnPlane, GreyWindows)
+{
+  vtkNew<vtkImageData> labels;
+  labels->SetDimensions(3, 1, 1);
+  vtkNew<vtkShortArray> v;
+  v->SetNumberOfValues(3);
+  v->SetValue(0, 0);
+  v->SetValue(1, 1);
+  v->SetValue(2, 4);
+  labels->GetPointData()->SetScalars(v);
+  const lkapp::GreyWindow label = lkapp::greyWindowOf(labels, true);
+  EXPECT_EQ(label.width, 4.0);
+  EXPECT_EQ(label.level, 2.0);
+  const lkapp::GreyWindow ct = lkapp::greyWindowOf(labels, false);
+  EXPECT_EQ(ct.width, 2000.0);
+  EXPECT_EQ(ct.level, 500.0);
+  v->SetValue(2, 0);
+  v->SetValue(1, 0);
+  v->Modified();
+  EXPECT_EQ(lkapp::greyWindowOf(labels, true).width, 1.0); // one value: not a zero width
+}
