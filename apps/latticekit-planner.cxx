@@ -68,7 +68,8 @@ void usage(std::ostream& os)
         "                       on (surface.vtp), the lines it took (cut_lines.vtp, for\n"
         "                       latticekit-cut --lines), the plan (plan.txt: the input, the\n"
         "                       coordinates, pieces, volumes, cut lines and planes), a picture\n"
-        "                       of it (plan.png), the session that replays it (session.json)\n"
+        "                       of it (plan.png), the session that replays it (session.json),\n"
+        "                       from a CT the CT on each cut line's plane (cut_line1_ct.png, ...)\n"
         "                       and, from a DICOM CT, the closed pieces as an RT structure set\n"
         "                       on the CT's slices (pieces.dcm), and exit\n"
         "  --session OUT        where 'w' saves the session (default planner_session.json);\n"
@@ -250,6 +251,14 @@ int main(int argc, char* argv[])
     {
       lkapp::ProgressBar bar(reader, "read", bars);
       reader->Update();
+      // The scan, for the CT on a cut line's plane (c, the export's
+      // pictures); kept before an organ's structure set replaces it.
+      if (lkapp::errorCount() == 0)
+      {
+        planner.scan = vtkSmartPointer<vtkImageData>::New();
+        planner.scan->ShallowCopy(reader->GetOutput());
+        planner.scanToPatient->DeepCopy(reader->GetPatientMatrix());
+      }
     }
     // --label NAME on a CT exported with the organs contoured on it (a
     // radiotherapy export): the organ is read from the RT structure set,
@@ -278,6 +287,7 @@ int main(int argc, char* argv[])
   }
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
   planner.bone->ShallowCopy(surface->GetOutput());
+  planner.scanIsLabelMap = !mesh && organNote.empty() && bone->GetTreatedAsLabelMap();
   planner.input = vtksys::SystemTools::CollapseFullPath(input);
   if (!mesh)
     planner.referenceImage = reader->GetReferenceImageFileName();

@@ -52,6 +52,7 @@
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkMatrix4x4.h>
+#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -142,7 +143,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 }
 } // namespace
 
-const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line\n"
+const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT on a cut\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: distance, a: angle | o: mirror image, O: set its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
@@ -675,6 +676,16 @@ void Planner::setup()
   overlay->SetActiveCamera(renderer->GetActiveCamera());
   window->SetNumberOfLayers(2);
   window->AddRenderer(overlay);
+  // The scan on a cut line's plane: the lower left, above the status lines,
+  // over the measurements' layer, opaque (a layer above the first keeps the
+  // picture beneath it unless told otherwise).
+  scanRenderer->SetLayer(1);
+  scanRenderer->PreserveColorBufferOff();
+  scanRenderer->PreserveDepthBufferOff();
+  scanRenderer->SetViewport(0.005, 0.24, 0.375, 0.735);
+  scanRenderer->InteractiveOff();
+  scanRenderer->DrawOff();
+  window->AddRenderer(scanRenderer);
   window->SetSize(1000, 750);
   window->SetWindowName("latticekit planner");
   renderer->SetBackground(1, 1, 1);
@@ -1237,9 +1248,107 @@ void Planner::rebuild()
       addLine(message, "no mirror image: " + mirror.error);
   }
   showNames();
+  showScan();
   placeSegment(session.segmentMatrix); // and the measurements and the fit to the mirror
   keepChanges();
   updateStatus();
+}
+
+std::vector<int> Planner::closedCutLines() const
+{
+  std::vector<int> numbers;
+  const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(cut.loops);
+  for (std::size_t k = 0; k < facts.size(); ++k)
+    if (facts[k].closed)
+      numbers.push_back(static_cast<int>(k) + 1);
+  return numbers;
+}
+
+bool Planner::scanPictureOf(int number, ScanPicture& picture, std::string& why) const
+{
+  const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(cut.loops);
+  if (number < 1 || number > static_cast<int>(facts.size()) || !facts[static_cast<std::size_t>(number - 1)].closed)
+  {
+    why = "the plan has no closed cut line " + std::to_string(number) +
+      (facts.empty() ? " (the plan is not cut: x)" : "");
+    return false;
+  }
+  const lkapp::LineFacts& f = facts[static_cast<std::size_t>(number - 1)];
+  std::vector<std::array<double, 3>> points;
+  auto it = vtk::TakeSmartPointer(cut.loops->GetLines()->NewIterator());
+  int k = 1;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
+    if (k == number)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType i = 0; i < n; ++i)
+        cut.loops->GetPoint(ids[i], points.emplace_back().data());
+    }
+  if (!makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, points, { f.centre[0], f.centre[1], f.centre[2] },
+        { f.normal[0], f.normal[1], f.normal[2] }, picture, why))
+    return false;
+  picture.title = std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(number) +
+    "'s plane" + (scanIsLabelMap ? "" : " (bone window: W 2000, L 500)");
+  picture.directions = lkapp::coordinateSpace(bone) == "LPS";
+  return true;
+}
+
+std::string Planner::scanShown() const
+{
+  return std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(session.scanOnLine) + "'s plane";
+}
+
+void Planner::showScan()
+{
+  if (session.scanOnLine <= 0)
+  {
+    scanRenderer->DrawOff();
+    renderer->GetActiveCamera()->SetUserTransform(nullptr);
+    return;
+  }
+  const std::string key = cut.key + "|" + std::to_string(session.scanOnLine);
+  if (key != scanShownKey)
+  {
+    scanShownKey = key;
+    ScanPicture picture;
+    scanWhy.clear();
+    if (!scanPictureOf(session.scanOnLine, picture, scanWhy))
+      picture = ScanPicture();
+    showScanPicture(scanRenderer, picture, 12);
+  }
+  if (!scanWhy.empty())
+    addLine(message, "no CT on cut line " + std::to_string(session.scanOnLine) + "'s plane: " + scanWhy);
+  scanRenderer->SetDraw(scanWhy.empty());
+  // The bone drawn smaller, right of the view (after the projection: picks
+  // and drags go through the same transform).
+  roomForScan->Identity();
+  roomForScan->Translate(0.37, 0.0, 0.0);
+  roomForScan->Scale(0.62, 0.62, 1.0);
+  renderer->GetActiveCamera()->SetUserTransform(scanWhy.empty() ? roomForScan.Get() : nullptr);
+}
+
+bool Planner::writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error)
+{
+  written.clear();
+  if (!scan)
+    return true;
+  for (int number : closedCutLines())
+  {
+    ScanPicture picture;
+    std::string why;
+    if (!scanPictureOf(number, picture, why))
+    {
+      error = "the CT on cut line " + std::to_string(number) + "'s plane: " + why;
+      return false;
+    }
+    const std::string name = "cut_line" + std::to_string(number) + "_ct.png";
+    if (!writeScanPicture(picture, 600, folder + "/" + name, error, window))
+      return false;
+    written.push_back(name);
+  }
+  return true;
 }
 
 void Planner::keepChanges()
@@ -1759,7 +1868,8 @@ void Planner::updateStatus()
   s << (sawing ? "SAW (drag across the bone)" : drawing ? "DRAW" : "view") << " | mode: " << modeName(mode) << " | strokes: " << session.strokes.size()
     << " | pieces: " << pieces.size() << (cut.innerWallLines > 0 ? " (cut through the marrow cavity too)" : "")
     << (session.lattice ? " | lattice" : "")
-    << (session.metro ? (session.lattice ? " | Metro colours" : " | Metro colours (on the lattice: press l)") : "");
+    << (session.metro ? (session.lattice ? " | Metro colours" : " | Metro colours (on the lattice: press l)") : "")
+    << (scanRenderer->GetDraw() ? " | " + scanShown() : "");
   if (session.mirror && mirror.surface)
   {
     char text[120];
@@ -1980,6 +2090,8 @@ void Planner::report()
   }
   if (latticeFits + latticesReused > 0)
     std::printf("lattice fits: %zu (%zu kept from an earlier fit of the same piece)\n", latticeFits, latticesReused);
+  if (scanRenderer->GetDraw())
+    std::printf("view: %s\n", scanShown().c_str());
 }
 
 namespace
@@ -2076,6 +2188,20 @@ std::string Planner::exportStructureSet(
   return std::string();
 }
 
+namespace
+{
+/// "cut_line<number>_ct.png", the export's picture of the CT on a cut line's plane.
+bool isScanPictureName(const std::string& name)
+{
+  const std::string head = "cut_line", tail = "_ct.png";
+  if (name.size() <= head.size() + tail.size() || name.compare(0, head.size(), head) != 0 ||
+    name.compare(name.size() - tail.size(), tail.size(), tail) != 0)
+    return false;
+  const std::string digits = name.substr(head.size(), name.size() - head.size() - tail.size());
+  return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+} // namespace
+
 bool Planner::exportPieces(const std::string& folder, std::string& error)
 {
   // The bone's own file among what the export writes or removes (a plan
@@ -2130,6 +2256,11 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     for (const char* name : { "mirror.stl", "mirror.vtp" })
       if (!lkapp::writeMesh(mirror.surface, folder + "/" + name, error, space))
         return false;
+  // The CT on each cut line's plane: what the saw passes through, for the
+  // surgeon's notes.
+  std::vector<std::string> scanPictures;
+  if (!writeScanPictures(folder, scanPictures, error))
+    return false;
   // What the plan is, and the session that replays it beside the files.
   // Which scan, and which coordinates every position in the plan is in: a
   // plan file read later (or beside another patient's) must say so itself.
@@ -2139,6 +2270,13 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     header += "input: " + input + "\n";
   if (!exportNote.empty())
     header += "structure set: " + exportNote + "\n";
+  if (!scanPictures.empty())
+  {
+    header += std::string("the ") + (scanIsLabelMap ? "label map" : "CT") + " on the cut lines' planes:";
+    for (const auto& name : scanPictures)
+      header += " " + name;
+    header += "\n";
+  }
   header += "coordinates: " +
     (space.empty() ? std::string("the input's own (its patient orientation is unknown)") : space + ", mm") + "\n";
   std::vector<std::pair<std::string, std::string>> texts{ { "plan.txt", header + planText() } };
@@ -2170,6 +2308,15 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     others.push_back("mirror.stl");
     others.push_back("mirror.vtp");
   }
+  // The CT pictures of cut lines this plan does not have.
+  vtksys::Directory listing;
+  if (listing.Load(folder))
+    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+    {
+      const std::string name = listing.GetFile(i);
+      if (isScanPictureName(name) && std::find(scanPictures.begin(), scanPictures.end(), name) == scanPictures.end())
+        others.push_back(name);
+    }
   if (!lkapp::removeStaleExports(folder, stems, others, error))
     return false;
   if (!structureSetError.empty())

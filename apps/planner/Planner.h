@@ -11,6 +11,7 @@
 #include "common/KeyComposer.h"
 #include "common/PieceContact.h"
 #include "planner/PlannerSession.h"
+#include "planner/ScanView.h"
 
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
@@ -29,6 +30,7 @@
 #include <vtkScalarBarActor.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
+#include <vtkTransform.h>
 
 #include <array>
 #include <memory>
@@ -228,6 +230,32 @@ public:
   static double degreesFromX(const std::array<double, 3>& normal);
   /// The plan's lines on the mirror image (empty when it is not shown).
   std::string mirrorText() const;
+
+  /// The scan the bone surface was made from, in its data coordinates, and
+  /// the matrix to the bone's (patient) coordinates; null for a mesh file.
+  /// A CT whose organ came from an RT structure set is the CT itself.
+  vtkSmartPointer<vtkImageData> scan;
+  vtkNew<vtkMatrix4x4> scanToPatient;
+  bool scanIsLabelMap = false;
+  /// The scan on a cut line's plane (c, the session's scanOnLine), in the
+  /// window's lower left corner, above the status lines.
+  vtkNew<vtkRenderer> scanRenderer;
+  /// The numbers of the closed cut lines (from 1, the plan's numbering).
+  std::vector<int> closedCutLines() const;
+  /// The picture of the scan on cut line `number`'s plane; false with why.
+  bool scanPictureOf(int number, ScanPicture& picture, std::string& why) const;
+  /// Shows (or hides) the scan as the session asks; a line that cannot be
+  /// shown gets a message.
+  void showScan();
+  /// "CT on cut line 1's plane": what the view shows, for the status line and the report.
+  std::string scanShown() const;
+  std::string scanShownKey, scanWhy; ///< what the view shows (cut key and line), why it shows nothing
+  /// While the view is shown, the main view's camera draws the bone in the
+  /// rest of the window (its user transform, after the projection).
+  vtkNew<vtkTransform> roomForScan;
+  /// The export's pictures of the scan, one per closed cut line
+  /// (cut_line1_ct.png, ...): their names, or false with `error`.
+  bool writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error);
 
   /// Call before a change: the session as it was goes on the undo stack.
   void remember() { remember(session); }

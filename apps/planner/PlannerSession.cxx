@@ -99,6 +99,8 @@ std::string sessionText(const Session& s)
   root["latticeVertices"] = static_cast<Json::Int64>(s.latticeVertices);
   root["metro"] = s.metro;
   root["mirror"] = s.mirror;
+  if (s.scanOnLine > 0)
+    root["scanOnLine"] = s.scanOnLine;
   for (const auto& p : s.mirrorPlane)
     root["mirrorPlane"].append(triple(p));
   if (s.segment >= 0)
@@ -297,7 +299,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "segment",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "segment",
       "deformations", "names",
       "measurements",
       "surface", "input" },
@@ -373,6 +375,12 @@ bool readSession(
     !jsonMember(root, "latticeVertices", vertices, count, session, "a whole number from 4 to 100,000,000", error))
     return false;
   s.latticeVertices = static_cast<long>(vertices);
+  long long scanLine = 0;
+  if (!jsonMember(
+        root, "scanOnLine", scanLine, [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 1000000, out); },
+        session, "a cut line's number (0: none)", error))
+    return false;
+  s.scanOnLine = static_cast<int>(scanLine);
   if (root.isMember("mirrorPlane"))
   {
     const Json::Value& plane = root["mirrorPlane"];

@@ -19,6 +19,8 @@
 //   "mirrorPlane": [[x, y, z], [x, y, z], [x, y, z]]  the plane to mirror across, set by
 //                                                     three points (midline landmarks;
 //                                                     none: the fitted plane)
+//   "scanOnLine": k                                   the scan (CT) on cut line k's plane
+//                                                     (the plan's numbering; 0: none)
 //   "segment": {"piece": i, "matrix": [16 numbers],   the moved piece, row-major 4x4,
 //               "at": [x, y, z]}                      and a point of it (see below)
 //   "deformations": [{"tool": "bump" | "box" | "smooth", "piece": i,
@@ -165,6 +167,9 @@ struct Session
   /// The bone's mirror image across its plane of symmetry, shown as the
   /// template of mirror-image planning (o).
   bool mirror = false;
+  /// The scan on cut line k's plane (c), k from 1 (the plan's numbering of
+  /// the cut lines); 0: not shown.
+  int scanOnLine = 0;
   /// Three points of the bone (midline landmarks, in its frame before any
   /// move) that set the plane to mirror across (O, three clicks); empty: the
   /// bone's fitted plane of symmetry.

@@ -464,6 +464,17 @@ void PlannerStyle::measureClick()
 
 void PlannerStyle::OnLeftButtonDown()
 {
+  // The CT view hides the bone behind it: a click there picks nothing.
+  const int* at = this->Interactor->GetEventPosition();
+  if (planner->scanRenderer->GetDraw() && planner->scanRenderer->IsInViewport(at[0], at[1]) &&
+    (planner->naming == 1 || planner->measuring || planner->tool != NO_TOOL || planner->moving || planner->sawing ||
+      planner->drawing))
+  {
+    planner->message = "that is the CT view, not the bone: press on the bone (c hides the view)";
+    planner->updateStatus();
+    this->Interactor->Render();
+    return;
+  }
   if (planner->naming == 1)
     return pickPieceToName();
   if (planner->measuring)
@@ -797,6 +808,27 @@ void PlannerStyle::OnChar()
     planner->remember();
     bool& flag = key == "x" ? s.cut : key == "l" ? s.lattice : key == "m" ? s.metro : s.mirror;
     flag = !flag;
+  }
+  else if (key == "c")
+  {
+    // c: the CT on the first cut line's plane, the next line's, ... none.
+    const std::vector<int> lines = planner->closedCutLines();
+    if (!planner->scan)
+    {
+      rebuild = false;
+      planner->message = "c shows the CT on a cut line's plane: this plan is on a mesh file, which has no CT";
+    }
+    else if (lines.empty() && s.scanOnLine == 0)
+    {
+      rebuild = false;
+      planner->message = "c shows the CT on a cut line's plane: there is no closed cut line yet (draw one, then x)";
+    }
+    else
+    {
+      planner->remember();
+      const auto next = std::upper_bound(lines.begin(), lines.end(), s.scanOnLine);
+      s.scanOnLine = next == lines.end() ? 0 : *next;
+    }
   }
   else if (key == "n")
   {
