@@ -8,6 +8,7 @@
 #include "common/AtomicFile.h"
 #include "common/CutReport.h"
 #include "common/PlaneSection.h"
+#include "common/ScanPicture.h"
 #include "common/JsonFields.h"
 #include "common/DistanceColourBar.h"
 
@@ -32,6 +33,7 @@
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkMath.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -75,7 +77,8 @@ void usage(std::ostream& os)
         "like the paper's Table 2 (no cut / cut / cut with quads). Writes to FOLDER (default\n"
         "latticekit-output): mandible.vtp/.stl (with the cut line split in), cut_line.vtp (its\n"
         "MeshPointId name mandible.vtp's points), piece0/1 (.stl .vtp .obj), the lattices and\n"
-        "their surfaces, report.md and plan.png, pieces.png, error.png.\n"
+        "their surfaces, report.md and plan.png, pieces.png, error.png, cut_line_ct.png (the CT on\n"
+        "the cut line's plane).\n"
         "INPUT defaults to the bundled CT head and PLAN to its plan\n"
         "(sample_data/cthead/mandible_plan.json: crop box, seed, iso value, cut plane, lattice\n"
         "size, view; see that file).\n"
@@ -800,12 +803,36 @@ int main(int argc, char* argv[])
     vtkNew<vtkActor> coloured;
     coloured->SetMapper(mapper);
     ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png", display, error);
+    // The CT on the cut line's plane: what the saw passes through.
+    const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(line);
+    lkapp::ScanPicture scanPicture;
+    std::string why;
+    if (ok && !facts.empty())
+    {
+      vtkNew<vtkIdList> ids;
+      line->GetCellPoints(0, ids);
+      std::vector<std::array<double, 3>> points(static_cast<std::size_t>(ids->GetNumberOfIds()));
+      for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+        line->GetPoint(ids->GetId(i), points[static_cast<std::size_t>(i)].data());
+      const lkapp::LineFacts& f = facts.front();
+      if (!lkapp::makeScanPicture(reader->GetOutput(), reader->GetPatientMatrix(), bone->GetTreatedAsLabelMap(),
+            mandible, points, { f.centre[0], f.centre[1], f.centre[2] }, { f.normal[0], f.normal[1], f.normal[2] },
+            scanPicture, why))
+      {
+        std::cerr << "error: the CT on the cut line's plane: " << why << "\n";
+        return 1;
+      }
+      scanPicture.title = std::string(bone->GetTreatedAsLabelMap() ? "label map" : "CT") +
+        " on the cut line's plane" + (bone->GetTreatedAsLabelMap() ? "" : " (bone window: W 2000, L 500)");
+      scanPicture.directions = lkapp::coordinateSpace(mandible) == "LPS";
+      ok = lkapp::writeScanPicture(scanPicture, 600, folder + "/cut_line_ct.png", error, display);
+    }
     if (!ok)
     {
       std::cerr << "error: " << error << "\n";
       return 1;
     }
-    report << ", `plan.png`, `pieces.png`, `error.png`";
+    report << ", `plan.png`, `pieces.png`, `error.png`, `cut_line_ct.png` (the CT on the cut line's plane)";
   }
   report << ".\n\nTotal time: " << std::fixed;
   report.precision(1);

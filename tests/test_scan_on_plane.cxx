@@ -184,3 +184,36 @@ TEST(ScanOnPlane, GreyWindows)
   v->Modified();
   EXPECT_EQ(lkapp::greyWindowOf(labels, true).width, 1.0); // one value: not a zero width
 }
+
+TEST(ScanOnPlane, BorderIsWhereThePlaneMeetsTheScansBox)
+{
+  // Voxel centres from (0, 0, 0) to (10, 20, 30) mm, moved by the matrix to
+  // x from -10 to 0 and y from -20 to 0 (turned), z from 100 to 130.
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(11, 21, 31);
+  volume->AllocateScalars(VTK_SHORT, 1);
+  vtkNew<vtkMatrix4x4> toPatient;
+  toPatient->SetElement(0, 0, -1.0);
+  toPatient->SetElement(1, 1, -1.0);
+  toPatient->SetElement(2, 3, 100.0);
+  // An axial plane at z = 105: the box's 10 by 20 mm rectangle, closed.
+  auto border = lkapp::scanBorder(volume, toPatient, lkapp::viewFrame({ -5, -10, 105 }, { 0, 0, 1 }));
+  ASSERT_EQ(border.size(), 5u);
+  EXPECT_EQ(border.front(), border.back());
+  double area = 0.0;
+  for (std::size_t k = 0; k + 1 < border.size(); ++k)
+  {
+    EXPECT_NEAR(border[k][2], 105.0, 1e-12);
+    EXPECT_TRUE(std::abs(border[k][0]) < 1e-12 || std::abs(border[k][0] + 10) < 1e-12);
+    EXPECT_TRUE(std::abs(border[k][1]) < 1e-12 || std::abs(border[k][1] + 20) < 1e-12);
+    area += border[k][0] * border[k + 1][1] - border[k + 1][0] * border[k][1];
+  }
+  EXPECT_NEAR(std::abs(area) / 2, 200.0, 1e-9); // in order around it: no crossed edges
+  // A plane that misses the box; one through a corner only.
+  EXPECT_TRUE(lkapp::scanBorder(volume, toPatient, lkapp::viewFrame({ 0, 0, 140 }, { 0, 0, 1 })).empty());
+  EXPECT_TRUE(lkapp::scanBorder(volume, toPatient, lkapp::viewFrame({ 0, 0, 100 }, { 1, 1, -1 })).empty());
+  // A plane that cuts a corner off: a triangle.
+  border = lkapp::scanBorder(volume, toPatient, lkapp::viewFrame({ -1, 0, 100 }, { 1, 1, -1 }));
+  EXPECT_EQ(border.size(), 4u);
+  EXPECT_TRUE(lkapp::scanBorder(nullptr, toPatient, lkapp::viewFrame({ 0, 0, 0 }, { 0, 0, 1 })).empty());
+}

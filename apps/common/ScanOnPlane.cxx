@@ -97,6 +97,65 @@ vtkSmartPointer<vtkImageData> scanOnPlane(vtkImageData* volume, vtkMatrix4x4* da
   return out;
 }
 
+std::vector<std::array<double, 3>> scanBorder(vtkImageData* volume, vtkMatrix4x4* dataToPatient, const ViewFrame& frame)
+{
+  std::vector<std::array<double, 3>> corners;
+  if (!volume || volume->GetNumberOfPoints() == 0 || !dataToPatient)
+    return corners;
+  double bounds[6];
+  volume->GetBounds(bounds);
+  // The box's corners in the patient's coordinates, and their heights above the plane.
+  std::array<double, 3> box[8];
+  double height[8];
+  for (int c = 0; c < 8; ++c)
+  {
+    const double data[4] = { bounds[c & 1], bounds[2 + ((c >> 1) & 1)], bounds[4 + ((c >> 2) & 1)], 1.0 };
+    double patient[4];
+    dataToPatient->MultiplyPoint(data, patient);
+    box[c] = { patient[0], patient[1], patient[2] };
+    height[c] = inFrame(frame, box[c])[2];
+  }
+  double size = 0.0;
+  for (int c = 1; c < 8; ++c)
+    size = std::max(size, std::sqrt(vtkMath::Distance2BetweenPoints(box[0].data(), box[c].data())));
+  const auto add = [&](const std::array<double, 3>& p) {
+    for (const auto& q : corners)
+      if (vtkMath::Distance2BetweenPoints(p.data(), q.data()) <= 1e-18 * size * size)
+        return;
+    corners.push_back(p);
+  };
+  for (int a = 0; a < 8; ++a)
+  {
+    if (height[a] == 0.0)
+      add(box[a]);
+    for (int bit = 0; bit < 3; ++bit)
+    {
+      const int b = a | (1 << bit);
+      if (b == a || !((height[a] < 0.0 && height[b] > 0.0) || (height[a] > 0.0 && height[b] < 0.0)))
+        continue;
+      const double t = height[a] / (height[a] - height[b]);
+      std::array<double, 3> p;
+      for (std::size_t i = 0; i < 3; ++i)
+        p[i] = box[a][i] + t * (box[b][i] - box[a][i]);
+      add(p);
+    }
+  }
+  if (corners.size() < 3)
+    return {};
+  // In order around their middle, as the frame shows them.
+  std::array<double, 3> middle{ 0, 0, 0 };
+  for (const auto& p : corners)
+    for (std::size_t i = 0; i < 3; ++i)
+      middle[i] += p[i] / static_cast<double>(corners.size());
+  const auto angle = [&](const std::array<double, 3>& p) {
+    const auto q = inFrame(frame, p), m = inFrame(frame, middle);
+    return std::atan2(q[1] - m[1], q[0] - m[0]);
+  };
+  std::sort(corners.begin(), corners.end(), [&](const auto& p, const auto& q) { return angle(p) < angle(q); });
+  corners.push_back(corners.front());
+  return corners;
+}
+
 GreyWindow greyWindowOf(vtkImageData* volume, bool labelMap)
 {
   GreyWindow w;

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace lkapp
 {
@@ -49,6 +50,12 @@ const char* directionLetter(const std::array<double, 3>& v);
 /// Null for an empty volume, a singular matrix, side <= 0 or pixels < 2.
 vtkSmartPointer<vtkImageData> scanOnPlane(vtkImageData* volume, vtkMatrix4x4* dataToPatient, const ViewFrame& frame,
   double side, int pixels, double background);
+
+/// Where the frame's plane meets the volume's box (from its first to its
+/// last voxel centres, taken to patient coordinates): the corners of that
+/// polygon in order around it, the first repeated at the end; empty where
+/// the plane misses the box. Beyond it the picture shows no scan.
+std::vector<std::array<double, 3>> scanBorder(vtkImageData* volume, vtkMatrix4x4* dataToPatient, const ViewFrame& frame);
 
 /// The window and level a volume is shown with: a CT's bone window (width
 /// 2000, level 500 HU; the cortex white, marrow and soft tissue grey), or a

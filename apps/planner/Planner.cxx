@@ -1264,7 +1264,7 @@ std::vector<int> Planner::closedCutLines() const
   return numbers;
 }
 
-bool Planner::scanPictureOf(int number, ScanPicture& picture, std::string& why) const
+bool Planner::scanPictureOf(int number, lkapp::ScanPicture& picture, std::string& why) const
 {
   const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(cut.loops);
   if (number < 1 || number > static_cast<int>(facts.size()) || !facts[static_cast<std::size_t>(number - 1)].closed)
@@ -1286,7 +1286,7 @@ bool Planner::scanPictureOf(int number, ScanPicture& picture, std::string& why) 
       for (vtkIdType i = 0; i < n; ++i)
         cut.loops->GetPoint(ids[i], points.emplace_back().data());
     }
-  if (!makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, points, { f.centre[0], f.centre[1], f.centre[2] },
+  if (!lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, points, { f.centre[0], f.centre[1], f.centre[2] },
         { f.normal[0], f.normal[1], f.normal[2] }, picture, why))
     return false;
   picture.title = std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(number) +
@@ -1312,11 +1312,11 @@ void Planner::showScan()
   if (key != scanShownKey)
   {
     scanShownKey = key;
-    ScanPicture picture;
+    lkapp::ScanPicture picture;
     scanWhy.clear();
     if (!scanPictureOf(session.scanOnLine, picture, scanWhy))
-      picture = ScanPicture();
-    showScanPicture(scanRenderer, picture, 12);
+      picture = lkapp::ScanPicture();
+    lkapp::showScanPicture(scanRenderer, picture, 12);
   }
   if (!scanWhy.empty())
     addLine(message, "no CT on cut line " + std::to_string(session.scanOnLine) + "'s plane: " + scanWhy);
@@ -1336,7 +1336,7 @@ bool Planner::writeScanPictures(const std::string& folder, std::vector<std::stri
     return true;
   for (int number : closedCutLines())
   {
-    ScanPicture picture;
+    lkapp::ScanPicture picture;
     std::string why;
     if (!scanPictureOf(number, picture, why))
     {
@@ -1344,7 +1344,7 @@ bool Planner::writeScanPictures(const std::string& folder, std::vector<std::stri
       return false;
     }
     const std::string name = "cut_line" + std::to_string(number) + "_ct.png";
-    if (!writeScanPicture(picture, 600, folder + "/" + name, error, window))
+    if (!lkapp::writeScanPicture(picture, 600, folder + "/" + name, error, window->GetGenericDisplayId()))
       return false;
     written.push_back(name);
   }

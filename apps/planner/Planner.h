@@ -10,8 +10,8 @@
 #include "common/CutReport.h"
 #include "common/KeyComposer.h"
 #include "common/PieceContact.h"
+#include "common/ScanPicture.h"
 #include "planner/PlannerSession.h"
-#include "planner/ScanView.h"
 
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
@@ -243,7 +243,7 @@ public:
   /// The numbers of the closed cut lines (from 1, the plan's numbering).
   std::vector<int> closedCutLines() const;
   /// The picture of the scan on cut line `number`'s plane; false with why.
-  bool scanPictureOf(int number, ScanPicture& picture, std::string& why) const;
+  bool scanPictureOf(int number, lkapp::ScanPicture& picture, std::string& why) const;
   /// Shows (or hides) the scan as the session asks; a line that cannot be
   /// shown gets a message.
   void showScan();

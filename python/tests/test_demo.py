@@ -29,7 +29,7 @@ class DemoTest(unittest.TestCase):
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             names = ["mandible.vtp", "mandible.stl", "stroke.vtp", "cut_line.vtp", "lattice_whole.vtp",
                      "lattice_surface_cut.vtp", "lattice_surface_quads.vtp", "report.md",
-                     "plan.png", "pieces.png", "error.png"]
+                     "plan.png", "pieces.png", "error.png", "cut_line_ct.png"]
             for p in range(2):
                 names += ["piece%d.stl" % p, "piece%d.vtp" % p, "piece%d.obj" % p,
                           "lattice_piece%d.vtp" % p, "lattice_quads_piece%d.vtp" % p]
@@ -109,6 +109,28 @@ class DemoTest(unittest.TestCase):
             # out (red), and the few points beyond it are magenta.
             self.assertGreater(warm, 30, "no large-error (yellow to red) surface is visible")
             self.assertGreater(magenta, 10, "the points above the scale are not marked")
+
+            # The CT on the cut line's plane: the bone's cortex white in the
+            # bone window, air and marrow dark, the cut line (orange) over it.
+            png.SetFileName(os.path.join(out, "cut_line_ct.png"))
+            png.Update()
+            image = png.GetOutput()
+            width, height, _ = image.GetDimensions()
+            self.assertEqual((width, height), (600, 600))
+            scalars = image.GetPointData().GetScalars()
+            white = dark = orange = 0
+            for i in range(0, width * height, 3):
+                r, g, b = (scalars.GetComponent(i, c) for c in range(3))
+                if r > 200 and g > 200 and b > 200:
+                    white += 1
+                if r < 60 and g < 60 and b < 60:
+                    dark += 1
+                if r > 200 and 60 < g < 140 and b < 60:
+                    orange += 1
+            total = width * height / 3
+            self.assertGreater(white / total, 0.03, "no bone in the CT's picture")
+            self.assertGreater(dark / total, 0.05, "no air or marrow in the CT's picture")
+            self.assertGreater(orange, 300, "the cut line is not drawn over the CT")
 
     def test_label_map_plan_in_patient_coordinates(self):
         """A plan for another volume: the TCIA mandible label map (NRRD, LPS

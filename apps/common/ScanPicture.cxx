@@ -1,4 +1,4 @@
-#include "planner/ScanView.h"
+#include "common/ScanPicture.h"
 
 #include "common/AppSupport.h"
 #include "common/PlaneSection.h"
@@ -21,7 +21,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace lkplanner
+namespace lkapp
 {
 
 bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, vtkPolyData* bone,
@@ -39,14 +39,14 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
     why = "the cut line has no plane";
     return false;
   }
-  picture.frame = lkapp::viewFrame(centre, normal);
+  picture.frame = viewFrame(centre, normal);
   // The square: 1.5 times the line's extent in the plane, 40 mm at least
   // (a mandible's section is 10 by 30 mm; its surroundings show), 400 mm
   // at most.
   double reach = 0.0;
   for (const auto& p : line)
   {
-    const auto q = lkapp::inFrame(picture.frame, p);
+    const auto q = inFrame(picture.frame, p);
     reach = std::max({ reach, std::abs(q[0]), std::abs(q[1]) });
   }
   picture.side = std::clamp(3.0 * reach, 40.0, 400.0);
@@ -56,15 +56,16 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
   const int pixels = static_cast<int>(std::clamp(std::ceil(picture.side / (0.5 * finest)), 64.0, 512.0));
   double range[2] = { 0, 0 };
   scan->GetPointData()->GetScalars()->GetRange(range);
-  picture.image = lkapp::scanOnPlane(scan, scanToPatient, picture.frame, picture.side, pixels, range[0]);
+  picture.image = scanOnPlane(scan, scanToPatient, picture.frame, picture.side, pixels, range[0]);
   if (!picture.image)
   {
     why = "the scan cannot be resliced (its matrix to patient coordinates is singular)";
     return false;
   }
-  picture.grey = lkapp::greyWindowOf(scan, labelMap);
+  picture.grey = greyWindowOf(scan, labelMap);
   picture.line = { line };
-  picture.section = lkapp::planeSectionLoops(bone, centre, normal);
+  picture.section = planeSectionLoops(bone, centre, normal);
+  picture.border = scanBorder(scan, scanToPatient, picture.frame);
   return true;
 }
 
@@ -81,7 +82,7 @@ vtkSmartPointer<vtkActor> polylines(const ScanPicture& picture, const std::vecto
     cells->InsertNextCell(static_cast<vtkIdType>(l.size()));
     for (const auto& p : l)
     {
-      const auto q = lkapp::inFrame(picture.frame, p);
+      const auto q = inFrame(picture.frame, p);
       cells->InsertCellPoint(points->InsertNextPoint(q[0], q[1], height));
     }
   }
@@ -129,13 +130,30 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   renderer->AddViewProp(image);
   // The bone surface's section, then the cut line over it (for a saw cut
   // they are the same).
+  renderer->AddViewProp(polylines(picture, { picture.border }, 0.25, { 0.35, 0.55, 1.0 }, 1.5f));
   renderer->AddViewProp(polylines(picture, picture.section, 0.5, { 1.0, 0.85, 0.2 }, 1.5f));
   renderer->AddViewProp(polylines(picture, picture.line, 1.0, { 1.0, 0.4, 0.1 }, 2.5f));
+  // What the colours are, under the title; the scan's edge only where the
+  // picture shows it.
+  bool edgeShown = false;
+  for (std::size_t k = 0; k + 1 < picture.border.size() && !edgeShown; ++k)
+  {
+    const auto a = inFrame(picture.frame, picture.border[k]), b = inFrame(picture.frame, picture.border[k + 1]);
+    for (int step = 0; step <= 64 && !edgeShown; ++step)
+    {
+      const double t = step / 64.0, x = a[0] + t * (b[0] - a[0]), y = a[1] + t * (b[1] - a[1]);
+      edgeShown = std::abs(x) < 0.5 * picture.side && std::abs(y) < 0.5 * picture.side;
+    }
+  }
+  auto legend = label(std::string("orange: cut line, yellow: bone surface") + (edgeShown ? ", blue: edge of the scan" : ""),
+    0.02, 0.935, std::max(9, fontSize - 2), { 0.85, 0.85, 0.85 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
+  legend->GetTextProperty()->BoldOff();
+  renderer->AddViewProp(legend);
   // A 10 mm bar at the bottom left.
   const double half = 0.5 * picture.side;
   const double x0 = -half + 0.05 * picture.side, y0 = -half + 0.06 * picture.side;
   ScanPicture flat;
-  flat.frame = lkapp::ViewFrame(); // the bar is in the view's own coordinates already
+  flat.frame = ViewFrame(); // the bar is in the view's own coordinates already
   renderer->AddViewProp(polylines(flat, { { { x0, y0, 0 }, { x0 + 10.0, y0, 0 } } }, 1.0, { 1, 1, 1 }, 3.0f));
   auto bar = label("10 mm", 0.05 + 5.0 / picture.side, 0.075, fontSize, { 1, 1, 1 }, VTK_TEXT_CENTERED, VTK_TEXT_BOTTOM);
   bar->GetTextProperty()->BoldOff();
@@ -147,14 +165,14 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
     const std::array<double, 3> left{ -f.right[0], -f.right[1], -f.right[2] },
       down{ -f.up[0], -f.up[1], -f.up[2] };
     const std::array<double, 3> letterColour{ 1.0, 0.85, 0.2 };
-    renderer->AddViewProp(label(lkapp::directionLetter(f.right), 0.985, 0.5, fontSize + 2, letterColour, VTK_TEXT_RIGHT,
+    renderer->AddViewProp(label(directionLetter(f.right), 0.985, 0.5, fontSize + 2, letterColour, VTK_TEXT_RIGHT,
       VTK_TEXT_CENTERED));
     renderer->AddViewProp(
-      label(lkapp::directionLetter(left), 0.015, 0.5, fontSize + 2, letterColour, VTK_TEXT_LEFT, VTK_TEXT_CENTERED));
+      label(directionLetter(left), 0.015, 0.5, fontSize + 2, letterColour, VTK_TEXT_LEFT, VTK_TEXT_CENTERED));
     renderer->AddViewProp(
-      label(lkapp::directionLetter(f.up), 0.5, 0.9, fontSize + 2, letterColour, VTK_TEXT_CENTERED, VTK_TEXT_TOP));
+      label(directionLetter(f.up), 0.5, 0.87, fontSize + 2, letterColour, VTK_TEXT_CENTERED, VTK_TEXT_TOP));
     renderer->AddViewProp(
-      label(lkapp::directionLetter(down), 0.5, 0.015, fontSize + 2, letterColour, VTK_TEXT_CENTERED, VTK_TEXT_BOTTOM));
+      label(directionLetter(down), 0.5, 0.015, fontSize + 2, letterColour, VTK_TEXT_CENTERED, VTK_TEXT_BOTTOM));
   }
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOn();
@@ -166,17 +184,17 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
 }
 
 bool writeScanPicture(const ScanPicture& picture, int pixels, const std::string& path, std::string& error,
-  vtkRenderWindow* like)
+  void* display)
 {
   vtkNew<vtkRenderer> renderer;
   showScanPicture(renderer, picture, std::max(12, pixels / 40));
   vtkNew<vtkRenderWindow> window;
-  if (like)
-    window->SetDisplayId(like->GetGenericDisplayId());
+  if (display)
+    window->SetDisplayId(display);
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
   window->SetSize(pixels, pixels);
-  return lkapp::writeScreenshot(window, path, error);
+  return writeScreenshot(window, path, error);
 }
 
-} // namespace lkplanner
+} // namespace lkapp

@@ -1,17 +1,16 @@
 #pragma once
-/// \file ScanView.h
-/// The planner's view of the scan on a cut line's plane (c): the CT
-/// resliced there (lkapp::scanOnPlane), the cut line and the bone surface's
-/// section over it, the patient's directions on its edges and a 10 mm bar.
-/// Drawn in a corner of the window, and by the export as a picture of its
-/// own for each cut line (cut_line1_ct.png, ...).
+/// \file ScanPicture.h
+/// The picture of the scan on a cut line's plane: the CT resliced there
+/// (scanOnPlane), the cut line and the bone surface's section over it, the
+/// patient's directions on its edges and a 10 mm bar. The planner draws it
+/// in a corner of its window (c) and its export writes one per cut line
+/// (cut_line1_ct.png, ...); the main job writes its cut's (cut_line_ct.png).
 
 #include "common/ScanOnPlane.h"
 
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPolyData.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
@@ -19,19 +18,22 @@
 #include <string>
 #include <vector>
 
-namespace lkplanner
+namespace lkapp
 {
 
 /// What the view shows.
 struct ScanPicture
 {
   vtkSmartPointer<vtkImageData> image; ///< lkapp::scanOnPlane's, in the frame's 2D coordinates
-  lkapp::ViewFrame frame;
+  ViewFrame frame;
   double side = 0.0; ///< mm across
-  lkapp::GreyWindow grey;
+  GreyWindow grey;
   /// Polylines in patient coordinates, drawn over the image: the cut line
   /// (orange) and the bone surface's section by the plane (yellow).
   std::vector<std::vector<std::array<double, 3>>> line, section;
+  /// Where the scan ends (scanBorder; blue): beyond it the picture is black
+  /// for want of a scan, not for air.
+  std::vector<std::array<double, 3>> border;
   std::string title;
   bool directions = false; ///< the patient's directions are known: letters on the edges
 };
@@ -50,8 +52,8 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
 void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int fontSize);
 
 /// The picture alone, `pixels` square, as a PNG file (whole or not at all),
-/// rendered off screen on the X connection of `like` (the planner's window).
+/// rendered off screen on the X connection `display` (openDisplay's).
 bool writeScanPicture(const ScanPicture& picture, int pixels, const std::string& path, std::string& error,
-  vtkRenderWindow* like);
+  void* display);
 
-} // namespace lkplanner
+} // namespace lkapp
