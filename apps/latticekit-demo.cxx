@@ -815,15 +815,15 @@ int main(int argc, char* argv[])
       for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
         line->GetPoint(ids->GetId(i), points[static_cast<std::size_t>(i)].data());
       const lkapp::LineFacts& f = facts.front();
-      if (!lkapp::makeScanPicture(reader->GetOutput(), reader->GetPatientMatrix(), bone->GetTreatedAsLabelMap(),
+      if (!lkapp::makeScanPicture(reader->GetOutput(), reader->GetPatientMatrix(), bone->GetTreatedAsLabelMap(), false,
             mandible, points, { f.centre[0], f.centre[1], f.centre[2] }, { f.normal[0], f.normal[1], f.normal[2] },
             scanPicture, why))
       {
         std::cerr << "error: the CT on the cut line's plane: " << why << "\n";
         return 1;
       }
-      scanPicture.title = std::string(bone->GetTreatedAsLabelMap() ? "label map" : "CT") +
-        " on the cut line's plane" + (bone->GetTreatedAsLabelMap() ? "" : " (bone window: W 2000, L 500)");
+      scanPicture.title = std::string(bone->GetTreatedAsLabelMap() ? "label map" : "CT") + " on the cut line's plane" +
+        lkapp::greyWindowText(scanPicture.grey);
       scanPicture.directions = lkapp::coordinateSpace(mandible) == "LPS";
       ok = lkapp::writeScanPicture(scanPicture, 600, folder + "/cut_line_ct.png", error, display);
     }

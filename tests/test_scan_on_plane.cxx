@@ -176,9 +176,14 @@ TEST(ScanOnPlane, GreyWindows)
   const lkapp::GreyWindow label = lkapp::greyWindowOf(labels, true);
   EXPECT_EQ(label.width, 4.0);
   EXPECT_EQ(label.level, 2.0);
+  EXPECT_EQ(lkapp::greyWindowText(label), "");
   const lkapp::GreyWindow ct = lkapp::greyWindowOf(labels, false);
   EXPECT_EQ(ct.width, 2000.0);
   EXPECT_EQ(ct.level, 500.0);
+  EXPECT_EQ(lkapp::greyWindowText(ct), " (bone window: W 2000, L 500)");
+  const lkapp::GreyWindow soft = lkapp::greyWindowOf(labels, false, true);
+  EXPECT_EQ(lkapp::greyWindowText(soft), " (soft-tissue window: W 400, L 40)");
+  EXPECT_EQ(lkapp::greyWindowText(lkapp::greyWindowOf(labels, true, true)), ""); // a label map has no soft tissue
   v->SetValue(2, 0);
   v->SetValue(1, 0);
   v->Modified();

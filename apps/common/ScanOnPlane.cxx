@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace lkapp
 {
@@ -156,16 +157,32 @@ std::vector<std::array<double, 3>> scanBorder(vtkImageData* volume, vtkMatrix4x4
   return corners;
 }
 
-GreyWindow greyWindowOf(vtkImageData* volume, bool labelMap)
+GreyWindow greyWindowOf(vtkImageData* volume, bool labelMap, bool softTissue)
 {
   GreyWindow w;
-  if (!labelMap || !volume || !volume->GetPointData()->GetScalars())
+  if (!labelMap)
+  {
+    if (softTissue)
+      w = { 400.0, 40.0, "soft-tissue window" };
+    return w;
+  }
+  w.name.clear();
+  if (!volume || !volume->GetPointData()->GetScalars())
     return w;
   double range[2];
   volume->GetPointData()->GetScalars()->GetRange(range);
   w.width = std::max(range[1] - range[0], 1.0);
   w.level = 0.5 * (range[0] + range[1]);
   return w;
+}
+
+std::string greyWindowText(const GreyWindow& window)
+{
+  if (window.name.empty())
+    return "";
+  char text[120];
+  std::snprintf(text, sizeof text, " (%s: W %g, L %g)", window.name.c_str(), window.width, window.level);
+  return text;
 }
 
 } // namespace lkapp

@@ -58,12 +58,17 @@ vtkSmartPointer<vtkImageData> scanOnPlane(vtkImageData* volume, vtkMatrix4x4* da
 std::vector<std::array<double, 3>> scanBorder(vtkImageData* volume, vtkMatrix4x4* dataToPatient, const ViewFrame& frame);
 
 /// The window and level a volume is shown with: a CT's bone window (width
-/// 2000, level 500 HU; the cortex white, marrow and soft tissue grey), or a
-/// label map's values from its lowest to its highest.
+/// 2000, level 500 HU: the cortex white, marrow and soft tissue grey) or
+/// soft-tissue window (width 400, level 40 HU: muscle, fat and a tumour's
+/// mass told apart, bone white), or a label map's values from its lowest to
+/// its highest (no name).
 struct GreyWindow
 {
   double width = 2000.0, level = 500.0;
+  std::string name = "bone window";
 };
-GreyWindow greyWindowOf(vtkImageData* volume, bool labelMap);
+GreyWindow greyWindowOf(vtkImageData* volume, bool labelMap, bool softTissue = false);
+/// " (bone window: W 2000, L 500)"; empty for a label map's.
+std::string greyWindowText(const GreyWindow& window);
 
 } // namespace lkapp

@@ -24,7 +24,7 @@
 namespace lkapp
 {
 
-bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, vtkPolyData* bone,
+bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, bool softTissue, vtkPolyData* bone,
   const std::vector<std::array<double, 3>>& line, const std::array<double, 3>& centre,
   const std::array<double, 3>& normal, ScanPicture& picture, std::string& why)
 {
@@ -62,7 +62,7 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
     why = "the scan cannot be resliced (its matrix to patient coordinates is singular)";
     return false;
   }
-  picture.grey = greyWindowOf(scan, labelMap);
+  picture.grey = greyWindowOf(scan, labelMap, softTissue);
   picture.line = { line };
   picture.section = planeSectionLoops(bone, centre, normal);
   picture.border = scanBorder(scan, scanToPatient, picture.frame);

@@ -43,7 +43,9 @@ struct ScanPicture
 /// extent and at least 40 mm across, in pixels of half the scan's finest
 /// spacing (at most 512 across); the bone surface's section by that plane.
 /// False, with `why`, when the scan cannot be resliced.
-bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, vtkPolyData* bone,
+/// A CT is shown in the bone window, or with `softTissue` the soft-tissue
+/// window (greyWindowOf).
+bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, bool softTissue, vtkPolyData* bone,
   const std::vector<std::array<double, 3>>& line, const std::array<double, 3>& centre,
   const std::array<double, 3>& normal, ScanPicture& picture, std::string& why);
 

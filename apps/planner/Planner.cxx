@@ -143,7 +143,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 }
 } // namespace
 
-const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT on a cut\n"
+const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT on a cut, C: its window\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: distance, a: angle | o: mirror image, O: set its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
@@ -1286,18 +1286,19 @@ bool Planner::scanPictureOf(int number, lkapp::ScanPicture& picture, std::string
       for (vtkIdType i = 0; i < n; ++i)
         cut.loops->GetPoint(ids[i], points.emplace_back().data());
     }
-  if (!lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, points, { f.centre[0], f.centre[1], f.centre[2] },
+  if (!lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, session.softTissueWindow, bone, points, { f.centre[0], f.centre[1], f.centre[2] },
         { f.normal[0], f.normal[1], f.normal[2] }, picture, why))
     return false;
   picture.title = std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(number) +
-    "'s plane" + (scanIsLabelMap ? "" : " (bone window: W 2000, L 500)");
+    "'s plane" + lkapp::greyWindowText(picture.grey);
   picture.directions = lkapp::coordinateSpace(bone) == "LPS";
   return true;
 }
 
 std::string Planner::scanShown() const
 {
-  return std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(session.scanOnLine) + "'s plane";
+  return std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(session.scanOnLine) +
+    "'s plane" + (session.softTissueWindow && !scanIsLabelMap ? " (soft-tissue window)" : "");
 }
 
 void Planner::showScan()
@@ -1308,7 +1309,7 @@ void Planner::showScan()
     renderer->GetActiveCamera()->SetUserTransform(nullptr);
     return;
   }
-  const std::string key = cut.key + "|" + std::to_string(session.scanOnLine);
+  const std::string key = cut.key + "|" + std::to_string(session.scanOnLine) + (session.softTissueWindow ? "|soft" : "");
   if (key != scanShownKey)
   {
     scanShownKey = key;

@@ -101,6 +101,8 @@ std::string sessionText(const Session& s)
   root["mirror"] = s.mirror;
   if (s.scanOnLine > 0)
     root["scanOnLine"] = s.scanOnLine;
+  if (s.softTissueWindow)
+    root["scanWindow"] = "soft tissue";
   for (const auto& p : s.mirrorPlane)
     root["mirrorPlane"].append(triple(p));
   if (s.segment >= 0)
@@ -299,7 +301,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "segment",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanWindow", "segment",
       "deformations", "names",
       "measurements",
       "surface", "input" },
@@ -381,6 +383,15 @@ bool readSession(
         session, "a cut line's number (0: none)", error))
     return false;
   s.scanOnLine = static_cast<int>(scanLine);
+  std::string window = "bone";
+  if (!jsonMember(root, "scanWindow", window, jsonString, session, "\"bone\" or \"soft tissue\"", error))
+    return false;
+  if (window != "bone" && window != "soft tissue")
+  {
+    error = session + ": \"scanWindow\" is '" + window + "' (\"bone\" or \"soft tissue\")";
+    return false;
+  }
+  s.softTissueWindow = window == "soft tissue";
   if (root.isMember("mirrorPlane"))
   {
     const Json::Value& plane = root["mirrorPlane"];

@@ -830,6 +830,25 @@ void PlannerStyle::OnChar()
       s.scanOnLine = next == lines.end() ? 0 : *next;
     }
   }
+  else if (key == "C")
+  {
+    // C: the CT view's window, bone or soft tissue.
+    if (!planner->scanRenderer->GetDraw())
+    {
+      rebuild = false;
+      planner->message = "C turns the CT view from the bone window to the soft-tissue one and back: show it first (c)";
+    }
+    else if (planner->scanIsLabelMap)
+    {
+      rebuild = false;
+      planner->message = "C: the view shows a label map, which has no soft tissue to window";
+    }
+    else
+    {
+      planner->remember();
+      s.softTissueWindow = !s.softTissueWindow;
+    }
+  }
   else if (key == "n")
   {
     // The next segment, smallest piece first (the part a surgeon moves).
