@@ -163,7 +163,9 @@ int main(int argc, char* argv[])
       ? (", also through the inner walls (" + std::to_string(cut->GetNumberOfInnerWallLines()) + " lines)").c_str()
       : "",
     seconds);
-  std::printf("%s", lkapp::lineFactsText(lkapp::lineFacts(lines ? lines.Get() : mesh.Get())).c_str());
+  std::printf("%s",
+    lkapp::lineFactsText(lkapp::lineFacts(lines ? lines.Get() : mesh.Get()), space == "LPS")
+      .c_str());
   std::vector<std::string> pieceStems; // the files' names, piece0, piece1, ...
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
   {

@@ -199,11 +199,12 @@ std::string lineAgainstPlan(vtkPolyData* line, const Plan& plan)
   vtkMath::Normalize(n);
   const double angle = vtkMath::DegreesFromRadians(std::acos(std::min(1.0, std::abs(vtkMath::Dot(n, f.normal)))));
   const double offset = std::abs(vtkMath::Dot(n, f.centre) - vtkMath::Dot(n, plan.origin.data()));
-  char text[300];
+  char text[500];
   std::snprintf(text, sizeof text,
     "The line is %.1f mm long; its best-fitting plane is %.2f deg from the plan's cut plane, its centre %.2f mm "
-    "from it, and every vertex within %.2f mm of its own plane.",
-    f.length, angle, offset, f.flatness);
+    "from it, and every vertex within %.2f mm of its own plane. It encloses %.1f mm² of bone (what the saw crosses), "
+    "%.2f by %.2f mm across in that plane.",
+    f.length, angle, offset, f.flatness, f.area, f.extentUp, f.extentRight);
   return text;
 }
 

@@ -1,4 +1,5 @@
 #include "CutReport.h"
+#include "ScanOnPlane.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -131,6 +132,34 @@ std::vector<LineFacts> lineFacts(vtkPolyData* lines)
       f.flatness = std::max(f.flatness,
         std::abs(vtkMath::Dot(f.normal, p) - vtkMath::Dot(f.normal, f.centre)));
     }
+    if (f.closed)
+    {
+      // The vector area of the loop along the normal, and its extent in the
+      // plane as the CT picture of it shows the plane.
+      const ViewFrame frame = viewFrame({ f.centre[0], f.centre[1], f.centre[2] }, { f.normal[0], f.normal[1], f.normal[2] });
+      double lowest[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, highest[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+      double twice = 0.0;
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        double p[3], q[3];
+        pts->GetPoint(k, p);
+        pts->GetPoint((k + 1) % m, q);
+        const auto a = inFrame(frame, { p[0], p[1], p[2] }), b = inFrame(frame, { q[0], q[1], q[2] });
+        twice += a[0] * b[1] - b[0] * a[1];
+        for (int i = 0; i < 2; ++i)
+        {
+          lowest[i] = std::min(lowest[i], a[static_cast<std::size_t>(i)]);
+          highest[i] = std::max(highest[i], a[static_cast<std::size_t>(i)]);
+        }
+      }
+      f.area = 0.5 * std::abs(twice);
+      f.extentRight = highest[0] - lowest[0];
+      f.extentUp = highest[1] - lowest[1];
+      const std::array<double, 3> down{ -frame.up[0], -frame.up[1], -frame.up[2] },
+        left{ -frame.right[0], -frame.right[1], -frame.right[2] };
+      f.upAxis = std::string(directionLetter(frame.up)) + "-" + directionLetter(down);
+      f.rightAxis = std::string(directionLetter(left)) + "-" + directionLetter(frame.right);
+    }
     out.push_back(f);
   }
   return out;
@@ -145,7 +174,7 @@ LinesApart linesApart(const LineFacts& a, const LineFacts& b)
   return apart;
 }
 
-std::string lineFactsText(const std::vector<LineFacts>& facts)
+std::string lineFactsText(const std::vector<LineFacts>& facts, bool patientAxes)
 {
   std::string text;
   char line[400];
@@ -156,9 +185,16 @@ std::string lineFactsText(const std::vector<LineFacts>& facts)
       continue;
     std::snprintf(line, sizeof line,
       "cut line %zu: %lld vertices, %.2f mm long, centre (%.2f, %.2f, %.2f), plane normal (%.3f, %.3f, %.3f), "
-      "every vertex within %.2f mm of that plane\n",
+      "every vertex within %.2f mm of that plane",
       k + 1, static_cast<long long>(f.vertices), f.length, f.centre[0], f.centre[1], f.centre[2], f.normal[0],
       f.normal[1], f.normal[2], f.flatness);
+    text += line;
+    if (patientAxes)
+      std::snprintf(line, sizeof line, "; it encloses %.1f mm² and spans %.2f mm (%s) by %.2f mm (%s) in that plane\n", f.area,
+        f.extentUp, f.upAxis.c_str(), f.extentRight, f.rightAxis.c_str());
+    else
+      std::snprintf(line, sizeof line, "; it encloses %.1f mm² and spans %.2f by %.2f mm in that plane\n", f.area, f.extentUp,
+        f.extentRight);
     text += line;
   }
   for (std::size_t j = 0; j < facts.size(); ++j)

@@ -46,6 +46,13 @@ struct LineFacts
   double centre[3] = { 0, 0, 0 };
   double normal[3] = { 0, 0, 1 };
   double flatness = 0.0;
+  /// A closed line's area, projected into its plane (for a line around a
+  /// bone, the bone's section: what the saw crosses), and its extent there
+  /// along the plane's up and right directions as lkapp::viewFrame shows the
+  /// plane (up: the patient's head, or front for a plane nearest axial).
+  double area = 0.0;
+  double extentUp = 0.0, extentRight = 0.0;
+  std::string upAxis, rightAxis; ///< "S-I", "R-L", ...: the patient axes those directions are nearest
 };
 /// How two cut lines stand to each other: the distance between their centres
 /// and the angle between their planes (0-90 degrees).
@@ -56,10 +63,12 @@ struct LinesApart
 LinesApart linesApart(const LineFacts& a, const LineFacts& b);
 /// One per line cell of `lines`, in order.
 std::vector<LineFacts> lineFacts(vtkPolyData* lines);
-/// The report's lines for them: "cut line k: ..." for each closed line, then
+/// The report's lines for them: "cut line k: ..." for each closed line (with
+/// the area it encloses and its extent in its plane, along the patient's
+/// axes where `patientAxes`: the coordinates are a scan's known LPS), then
 /// for each pair "cut lines j and k: centres D mm apart, planes A deg apart"
 /// (the planes' angle in 0-90 degrees: the length and the wedge of a segment
 /// cut out between two lines). Open lines are left out.
-std::string lineFactsText(const std::vector<LineFacts>& facts);
+std::string lineFactsText(const std::vector<LineFacts>& facts, bool patientAxes = false);
 
 } // namespace lkapp

@@ -2015,7 +2015,7 @@ std::string Planner::planText()
     text += "\n";
   }
   if (cut.loops)
-    text += lkapp::lineFactsText(lkapp::lineFacts(cut.loops));
+    text += lkapp::lineFactsText(lkapp::lineFacts(cut.loops), lkapp::coordinateSpace(bone) == "LPS");
   for (std::size_t i = 0; i < session.strokes.size(); ++i)
   {
     const Stroke& st = session.strokes[i];
