@@ -77,8 +77,8 @@ void usage(std::ostream& os)
         "like the paper's Table 2 (no cut / cut / cut with quads). Writes to FOLDER (default\n"
         "latticekit-output): mandible.vtp/.stl (with the cut line split in), cut_line.vtp (its\n"
         "MeshPointId name mandible.vtp's points), piece0/1 (.stl .vtp .obj), the lattices and\n"
-        "their surfaces, report.md and plan.png, pieces.png, error.png, cut_line_ct.png (the CT on\n"
-        "the cut line's plane).\n"
+        "their surfaces, report.md and plan.png, pieces.png, error.png, cut_line_ct.png and\n"
+        "cut_line_across_ct.png (the CT on the cut line's plane and across it).\n"
         "INPUT defaults to the bundled CT head and PLAN to its plan\n"
         "(sample_data/cthead/mandible_plan.json: crop box, seed, iso value, cut plane, lattice\n"
         "size, view; see that file).\n"
@@ -804,36 +804,47 @@ int main(int argc, char* argv[])
     vtkNew<vtkActor> coloured;
     coloured->SetMapper(mapper);
     ok = ok && renderPng({ coloured }, bar, "Metro distance of the quad lattices to the pieces", plan, folder + "/error.png", display, error);
-    // The CT on the cut line's plane: what the saw passes through.
+    // The CT on the cut line's plane (what the saw passes through) and
+    // across it (the bone along its length, the cut as a line).
     const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(line);
-    lkapp::ScanPicture scanPicture;
-    std::string why;
     if (ok && !facts.empty())
     {
+      lkapp::ScanPictureRequest request;
       vtkNew<vtkIdList> ids;
       line->GetCellPoints(0, ids);
-      std::vector<std::array<double, 3>> points(static_cast<std::size_t>(ids->GetNumberOfIds()));
+      request.line.resize(static_cast<std::size_t>(ids->GetNumberOfIds()));
       for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
-        line->GetPoint(ids->GetId(i), points[static_cast<std::size_t>(i)].data());
+        line->GetPoint(ids->GetId(i), request.line[static_cast<std::size_t>(i)].data());
       const lkapp::LineFacts& f = facts.front();
-      if (!lkapp::makeScanPicture(reader->GetOutput(), reader->GetPatientMatrix(), bone->GetTreatedAsLabelMap(), false,
-            mandible, points, { f.centre[0], f.centre[1], f.centre[2] }, { f.normal[0], f.normal[1], f.normal[2] },
-            scanPicture, why))
+      request.centre = { f.centre[0], f.centre[1], f.centre[2] };
+      request.normal = { f.normal[0], f.normal[1], f.normal[2] };
+      const bool labelMap = bone->GetTreatedAsLabelMap();
+      for (const bool across : { false, true })
       {
-        std::cerr << "error: the CT on the cut line's plane: " << why << "\n";
-        return 1;
+        request.across = across;
+        lkapp::ScanPicture scanPicture;
+        std::string why;
+        if (!lkapp::makeScanPicture(reader->GetOutput(), reader->GetPatientMatrix(), labelMap, mandible, request,
+              scanPicture, why))
+        {
+          std::cerr << "error: the CT " << (across ? "across" : "on") << " the cut line: " << why << "\n";
+          return 1;
+        }
+        scanPicture.title = std::string(labelMap ? "label map" : "CT") +
+          (across ? " across the cut line" : " on the cut line's plane") + lkapp::greyWindowText(scanPicture.grey);
+        scanPicture.directions = lkapp::coordinateSpace(mandible) == "LPS";
+        ok = ok &&
+          lkapp::writeScanPicture(scanPicture, 600,
+            folder + (across ? "/cut_line_across_ct.png" : "/cut_line_ct.png"), error, display);
       }
-      scanPicture.title = std::string(bone->GetTreatedAsLabelMap() ? "label map" : "CT") + " on the cut line's plane" +
-        lkapp::greyWindowText(scanPicture.grey);
-      scanPicture.directions = lkapp::coordinateSpace(mandible) == "LPS";
-      ok = lkapp::writeScanPicture(scanPicture, 600, folder + "/cut_line_ct.png", error, display);
     }
     if (!ok)
     {
       std::cerr << "error: " << error << "\n";
       return 1;
     }
-    report << ", `plan.png`, `pieces.png`, `error.png`, `cut_line_ct.png` (the CT on the cut line's plane)";
+    report << ", `plan.png`, `pieces.png`, `error.png`, `cut_line_ct.png` and `cut_line_across_ct.png` (the CT on the "
+              "cut line's plane and across it)";
   }
   report << ".\n\nTotal time: " << std::fixed;
   report.precision(1);

@@ -2,6 +2,7 @@
 // nearest standard plane, and a volume resliced on it exactly where its
 // data-to-patient matrix puts it.
 #include "common/ScanOnPlane.h"
+#include "common/ScanPicture.h"
 
 #include <gtest/gtest.h>
 
@@ -221,4 +222,26 @@ TEST(ScanOnPlane, BorderIsWhereThePlaneMeetsTheScansBox)
   border = lkapp::scanBorder(volume, toPatient, lkapp::viewFrame({ -1, 0, 100 }, { 1, 1, -1 }));
   EXPECT_EQ(border.size(), 4u);
   EXPECT_TRUE(lkapp::scanBorder(nullptr, toPatient, lkapp::viewFrame({ 0, 0, 0 }, { 0, 0, 1 })).empty());
+}
+
+TEST(ScanOnPlane, PlaneTracesAcrossThePicture)
+{
+  // An axial picture 40 mm across at z = 0: right is +x, up is -y (the front).
+  const lkapp::ViewFrame frame = lkapp::viewFrame({ 0, 0, 0 }, { 0, 0, 1 });
+  auto trace = lkapp::planeTrace(frame, 40.0, { { 5, 0, 0 }, { 1, 0, 0 } });
+  ASSERT_EQ(trace.size(), 2u);
+  for (const auto& p : trace)
+  {
+    EXPECT_NEAR(p[0], 5.0, 1e-12);
+    EXPECT_NEAR(std::abs(p[1]), 20.0, 1e-12);
+    EXPECT_NEAR(p[2], 0.0, 1e-12);
+  }
+  EXPECT_NEAR(std::abs(trace[0][1] - trace[1][1]), 40.0, 1e-12);
+  // A diagonal plane through the middle runs corner to corner.
+  trace = lkapp::planeTrace(frame, 40.0, { { 0, 0, 0 }, { 1, 1, 0 } });
+  ASSERT_EQ(trace.size(), 2u);
+  EXPECT_NEAR(std::sqrt(vtkMath::Distance2BetweenPoints(trace[0].data(), trace[1].data())), 40.0 * std::sqrt(2.0), 1e-9);
+  // Beyond the square, or parallel to the picture: nothing.
+  EXPECT_TRUE(lkapp::planeTrace(frame, 40.0, { { 30, 0, 0 }, { 1, 0, 0 } }).empty());
+  EXPECT_TRUE(lkapp::planeTrace(frame, 40.0, { { 0, 0, 1 }, { 0, 0, 1 } }).empty());
 }

@@ -9,6 +9,7 @@
 #include <vtkCoordinate.h>
 #include <vtkImageActor.h>
 #include <vtkImageProperty.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -20,13 +21,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace lkapp
 {
 
-bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, bool softTissue, vtkPolyData* bone,
-  const std::vector<std::array<double, 3>>& line, const std::array<double, 3>& centre,
-  const std::array<double, 3>& normal, ScanPicture& picture, std::string& why)
+bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, vtkPolyData* bone,
+  const ScanPictureRequest& request, ScanPicture& picture, std::string& why)
 {
   picture = ScanPicture();
   if (!scan || scan->GetNumberOfPoints() == 0)
@@ -34,21 +35,28 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
     why = "the plan is on a mesh file, not a scan: there is no CT to show";
     return false;
   }
-  if (line.size() < 3 || !(std::hypot(normal[0], normal[1], normal[2]) > 0.0))
+  const auto& normal = request.normal;
+  if (request.line.size() < 3 || !(std::hypot(normal[0], normal[1], normal[2]) > 0.0))
   {
     why = "the cut line has no plane";
     return false;
   }
-  picture.frame = viewFrame(centre, normal);
-  // The square: 1.5 times the line's extent in the plane, 40 mm at least
-  // (a mandible's section is 10 by 30 mm; its surroundings show), 400 mm
-  // at most.
+  const ViewFrame on = viewFrame(request.centre, normal);
+  // Across: the plane that holds the cut's normal and its up direction.
+  picture.frame = request.across ? viewFrame(request.centre, on.right) : on;
+  // The square: three times the line's reach from its centre, 40 mm at
+  // least (a mandible's section is 10 by 30 mm; its surroundings show).
   double reach = 0.0;
-  for (const auto& p : line)
-  {
+  const auto reachTo = [&](const std::array<double, 3>& p) {
     const auto q = inFrame(picture.frame, p);
     reach = std::max({ reach, std::abs(q[0]), std::abs(q[1]) });
-  }
+  };
+  for (const auto& p : request.line)
+    reachTo(p);
+  if (request.across)
+    for (const auto& [origin, n] : request.otherPlanes)
+      if (vtkMath::Distance2BetweenPoints(origin.data(), request.centre.data()) < 100.0 * 100.0)
+        reachTo(origin);
   picture.side = std::clamp(3.0 * reach, 40.0, 400.0);
   double spacing[3];
   scan->GetSpacing(spacing);
@@ -62,11 +70,57 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
     why = "the scan cannot be resliced (its matrix to patient coordinates is singular)";
     return false;
   }
-  picture.grey = greyWindowOf(scan, labelMap, softTissue);
-  picture.line = { line };
-  picture.section = planeSectionLoops(bone, centre, normal);
+  picture.grey = greyWindowOf(scan, labelMap, request.softTissue);
+  picture.line = { request.line };
+  picture.section = planeSectionLoops(bone, picture.frame.centre, picture.frame.towardViewer);
   picture.border = scanBorder(scan, scanToPatient, picture.frame);
+  if (request.across)
+  {
+    picture.cutTrace = { planeTrace(picture.frame, picture.side, { request.centre, normal }) };
+    for (const auto& plane : request.otherPlanes)
+      if (auto trace = planeTrace(picture.frame, picture.side, plane); !trace.empty())
+        picture.otherTraces.push_back(trace);
+  }
   return true;
+}
+
+std::vector<std::array<double, 3>> planeTrace(const ViewFrame& frame, double side, const Plane& plane)
+{
+  // The plane in the frame's coordinates: a x + b y + d = 0.
+  const auto& [origin, normal] = plane;
+  const double a = vtkMath::Dot(frame.right.data(), normal.data()), b = vtkMath::Dot(frame.up.data(), normal.data());
+  std::array<double, 3> offset;
+  vtkMath::Subtract(frame.centre.data(), origin.data(), offset.data());
+  const double d = vtkMath::Dot(offset.data(), normal.data());
+  const double length = std::hypot(a, b);
+  if (!(length > 1e-9 * std::max(1.0, vtkMath::Norm(normal.data()))))
+    return {};
+  // Its point nearest the centre and its direction, clipped to the square.
+  const double x0 = -d * a / (length * length), y0 = -d * b / (length * length);
+  const double dx = -b / length, dy = a / length, half = 0.5 * side;
+  double lowest = -VTK_DOUBLE_MAX, highest = VTK_DOUBLE_MAX;
+  for (const auto& [p, q] : { std::make_pair(x0, dx), std::make_pair(y0, dy) })
+  {
+    if (std::abs(q) < 1e-12)
+    {
+      if (std::abs(p) > half)
+        return {};
+      continue;
+    }
+    const double t1 = (-half - p) / q, t2 = (half - p) / q;
+    lowest = std::max(lowest, std::min(t1, t2));
+    highest = std::min(highest, std::max(t1, t2));
+  }
+  if (!(highest > lowest))
+    return {};
+  std::vector<std::array<double, 3>> ends;
+  for (const double t : { lowest, highest })
+  {
+    std::array<double, 3>& p = ends.emplace_back();
+    for (std::size_t i = 0; i < 3; ++i)
+      p[i] = frame.centre[i] + (x0 + t * dx) * frame.right[i] + (y0 + t * dy) * frame.up[i];
+  }
+  return ends;
 }
 
 namespace
@@ -109,6 +163,9 @@ vtkSmartPointer<vtkTextActor> label(const std::string& text, double x, double y,
   actor->GetTextProperty()->SetJustification(horizontal);
   actor->GetTextProperty()->SetVerticalJustification(vertical);
   actor->GetTextProperty()->BoldOn();
+  // Readable over bone and over the lines.
+  actor->GetTextProperty()->SetBackgroundColor(0, 0, 0);
+  actor->GetTextProperty()->SetBackgroundOpacity(0.55);
   actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   actor->GetPositionCoordinate()->SetValue(x, y);
   return actor;
@@ -132,6 +189,8 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   // they are the same).
   renderer->AddViewProp(polylines(picture, { picture.border }, 0.25, { 0.35, 0.55, 1.0 }, 1.5f));
   renderer->AddViewProp(polylines(picture, picture.section, 0.5, { 1.0, 0.85, 0.2 }, 1.5f));
+  renderer->AddViewProp(polylines(picture, picture.otherTraces, 0.75, { 1.0, 0.7, 0.45 }, 1.5f));
+  renderer->AddViewProp(polylines(picture, picture.cutTrace, 0.75, { 1.0, 0.4, 0.1 }, 1.5f));
   renderer->AddViewProp(polylines(picture, picture.line, 1.0, { 1.0, 0.4, 0.1 }, 2.5f));
   // What the colours are, under the title; the scan's edge only where the
   // picture shows it.
@@ -145,7 +204,10 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
       edgeShown = std::abs(x) < 0.5 * picture.side && std::abs(y) < 0.5 * picture.side;
     }
   }
-  auto legend = label(std::string("orange: cut line, yellow: bone surface") + (edgeShown ? ", blue: edge of the scan" : ""),
+  const bool across = !picture.cutTrace.empty();
+  auto legend = label(std::string(across ? "orange: the cut's plane" : "orange: cut line") +
+      (picture.otherTraces.empty() ? "" : ", light: other cuts'") + ", yellow: bone surface" +
+      (edgeShown ? ", blue: edge of the scan" : ""),
     0.02, 0.935, std::max(9, fontSize - 2), { 0.85, 0.85, 0.85 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
   legend->GetTextProperty()->BoldOff();
   renderer->AddViewProp(legend);

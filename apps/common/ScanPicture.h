@@ -16,6 +16,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lkapp
@@ -31,6 +32,9 @@ struct ScanPicture
   /// Polylines in patient coordinates, drawn over the image: the cut line
   /// (orange) and the bone surface's section by the plane (yellow).
   std::vector<std::vector<std::array<double, 3>>> line, section;
+  /// Across a cut: where its plane (orange) and the other cuts' planes
+  /// (light orange) cross the picture, as segments in patient coordinates.
+  std::vector<std::vector<std::array<double, 3>>> cutTrace, otherTraces;
   /// Where the scan ends (scanBorder; blue): beyond it the picture is black
   /// for want of a scan, not for air.
   std::vector<std::array<double, 3>> border;
@@ -38,16 +42,37 @@ struct ScanPicture
   bool directions = false; ///< the patient's directions are known: letters on the edges
 };
 
-/// The scan on the plane of `line` (a closed polyline, patient coordinates,
-/// with its best-fitting plane's normal), over a square 1.5 times the line's
-/// extent and at least 40 mm across, in pixels of half the scan's finest
-/// spacing (at most 512 across); the bone surface's section by that plane.
-/// False, with `why`, when the scan cannot be resliced.
-/// A CT is shown in the bone window, or with `softTissue` the soft-tissue
-/// window (greyWindowOf).
-bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, bool softTissue, vtkPolyData* bone,
-  const std::vector<std::array<double, 3>>& line, const std::array<double, 3>& centre,
-  const std::array<double, 3>& normal, ScanPicture& picture, std::string& why);
+/// A plane: a point of it and its normal.
+using Plane = std::pair<std::array<double, 3>, std::array<double, 3>>;
+
+/// What to picture: a cut line and its plane, seen on that plane or across
+/// it.
+struct ScanPictureRequest
+{
+  std::vector<std::array<double, 3>> line; ///< closed, in patient coordinates
+  std::array<double, 3> centre{ 0, 0, 0 }, normal{ 0, 0, 1 }; ///< its plane (best-fitting)
+  /// Across the cut: the plane through its centre that holds its normal
+  /// and its plane's up direction (viewFrame's: the head, or the front), so
+  /// the bone runs along the picture and the cut crosses it as a line, with
+  /// the other cuts' planes (a segment between two cuts, and what lies
+  /// between them). Else on the cut's plane: the bone's section.
+  bool across = false;
+  std::vector<Plane> otherPlanes;
+  bool softTissue = false; ///< a CT in the soft-tissue window, not the bone window (greyWindowOf)
+};
+
+/// The scan as the request asks, over a square three times the line's reach
+/// from its centre (on an across view, the other cuts' within 100 mm too),
+/// at least 40 and at most 400 mm across, in pixels of half the scan's
+/// finest spacing (at most 512 across); the bone surface's section by the
+/// picture's plane. False, with `why`, when the scan cannot be resliced.
+bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool labelMap, vtkPolyData* bone,
+  const ScanPictureRequest& request, ScanPicture& picture, std::string& why);
+
+/// Where the plane crosses the frame's square of `side` mm: its segment
+/// (two points in patient coordinates), or nothing when it misses the square
+/// or is parallel to the frame's plane.
+std::vector<std::array<double, 3>> planeTrace(const ViewFrame& frame, double side, const Plane& plane);
 
 /// Puts the picture into `renderer` (whose props it replaces) with its own
 /// camera; `fontSize` for the title, the letters and the bar's label.

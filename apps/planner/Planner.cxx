@@ -143,7 +143,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 }
 } // namespace
 
-const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT on a cut, C: its window\n"
+const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: distance, a: angle | o: mirror image, O: set its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
@@ -1264,7 +1264,7 @@ std::vector<int> Planner::closedCutLines() const
   return numbers;
 }
 
-bool Planner::scanPictureOf(int number, lkapp::ScanPicture& picture, std::string& why) const
+bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why) const
 {
   const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(cut.loops);
   if (number < 1 || number > static_cast<int>(facts.size()) || !facts[static_cast<std::size_t>(number - 1)].closed)
@@ -1273,8 +1273,16 @@ bool Planner::scanPictureOf(int number, lkapp::ScanPicture& picture, std::string
       (facts.empty() ? " (the plan is not cut: x)" : "");
     return false;
   }
+  lkapp::ScanPictureRequest request;
   const lkapp::LineFacts& f = facts[static_cast<std::size_t>(number - 1)];
-  std::vector<std::array<double, 3>> points;
+  request.centre = { f.centre[0], f.centre[1], f.centre[2] };
+  request.normal = { f.normal[0], f.normal[1], f.normal[2] };
+  request.across = across;
+  request.softTissue = session.softTissueWindow;
+  for (std::size_t k = 0; k < facts.size(); ++k)
+    if (facts[k].closed && static_cast<int>(k) + 1 != number)
+      request.otherPlanes.push_back({ { facts[k].centre[0], facts[k].centre[1], facts[k].centre[2] },
+        { facts[k].normal[0], facts[k].normal[1], facts[k].normal[2] } });
   auto it = vtk::TakeSmartPointer(cut.loops->GetLines()->NewIterator());
   int k = 1;
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
@@ -1284,21 +1292,25 @@ bool Planner::scanPictureOf(int number, lkapp::ScanPicture& picture, std::string
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
       for (vtkIdType i = 0; i < n; ++i)
-        cut.loops->GetPoint(ids[i], points.emplace_back().data());
+        cut.loops->GetPoint(ids[i], request.line.emplace_back().data());
     }
-  if (!lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, session.softTissueWindow, bone, points, { f.centre[0], f.centre[1], f.centre[2] },
-        { f.normal[0], f.normal[1], f.normal[2] }, picture, why))
+  if (!lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, request, picture, why))
     return false;
-  picture.title = std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(number) +
-    "'s plane" + lkapp::greyWindowText(picture.grey);
+  picture.title = scanText(number, across) + lkapp::greyWindowText(picture.grey);
   picture.directions = lkapp::coordinateSpace(bone) == "LPS";
   return true;
 }
 
+std::string Planner::scanText(int number, bool across) const
+{
+  return std::string(scanIsLabelMap ? "label map" : "CT") + (across ? " across cut line " : " on cut line ") +
+    std::to_string(number) + (across ? "" : "'s plane");
+}
+
 std::string Planner::scanShown() const
 {
-  return std::string(scanIsLabelMap ? "label map" : "CT") + " on cut line " + std::to_string(session.scanOnLine) +
-    "'s plane" + (session.softTissueWindow && !scanIsLabelMap ? " (soft-tissue window)" : "");
+  return scanText(session.scanOnLine, session.scanAcross) +
+    (session.softTissueWindow && !scanIsLabelMap ? " (soft-tissue window)" : "");
 }
 
 void Planner::showScan()
@@ -1309,18 +1321,19 @@ void Planner::showScan()
     renderer->GetActiveCamera()->SetUserTransform(nullptr);
     return;
   }
-  const std::string key = cut.key + "|" + std::to_string(session.scanOnLine) + (session.softTissueWindow ? "|soft" : "");
+  const std::string key = cut.key + "|" + std::to_string(session.scanOnLine) + (session.scanAcross ? "|across" : "") +
+    (session.softTissueWindow ? "|soft" : "");
   if (key != scanShownKey)
   {
     scanShownKey = key;
     lkapp::ScanPicture picture;
     scanWhy.clear();
-    if (!scanPictureOf(session.scanOnLine, picture, scanWhy))
+    if (!scanPictureOf(session.scanOnLine, session.scanAcross, picture, scanWhy))
       picture = lkapp::ScanPicture();
     lkapp::showScanPicture(scanRenderer, picture, 12);
   }
   if (!scanWhy.empty())
-    addLine(message, "no CT on cut line " + std::to_string(session.scanOnLine) + "'s plane: " + scanWhy);
+    addLine(message, "no " + scanText(session.scanOnLine, session.scanAcross) + ": " + scanWhy);
   scanRenderer->SetDraw(scanWhy.empty());
   // The bone drawn smaller, right of the view (after the projection: picks
   // and drags go through the same transform).
@@ -1336,19 +1349,20 @@ bool Planner::writeScanPictures(const std::string& folder, std::vector<std::stri
   if (!scan)
     return true;
   for (int number : closedCutLines())
-  {
-    lkapp::ScanPicture picture;
-    std::string why;
-    if (!scanPictureOf(number, picture, why))
+    for (const bool across : { false, true })
     {
-      error = "the CT on cut line " + std::to_string(number) + "'s plane: " + why;
-      return false;
+      lkapp::ScanPicture picture;
+      std::string why;
+      if (!scanPictureOf(number, across, picture, why))
+      {
+        error = "the " + scanText(number, across) + ": " + why;
+        return false;
+      }
+      const std::string name = "cut_line" + std::to_string(number) + (across ? "_across" : "") + "_ct.png";
+      if (!lkapp::writeScanPicture(picture, 600, folder + "/" + name, error, window->GetGenericDisplayId()))
+        return false;
+      written.push_back(name);
     }
-    const std::string name = "cut_line" + std::to_string(number) + "_ct.png";
-    if (!lkapp::writeScanPicture(picture, 600, folder + "/" + name, error, window->GetGenericDisplayId()))
-      return false;
-    written.push_back(name);
-  }
   return true;
 }
 
@@ -2191,15 +2205,18 @@ std::string Planner::exportStructureSet(
 
 namespace
 {
-/// "cut_line<number>_ct.png", the export's picture of the CT on a cut line's plane.
-bool isScanPictureName(const std::string& name)
+/// "cut_line<number>_ct.png" or "cut_line<number>_across_ct.png", the
+/// export's pictures of the CT on a cut line's plane and across it.
+bool isScanPictureName(std::string name)
 {
-  const std::string head = "cut_line", tail = "_ct.png";
+  const std::string head = "cut_line", tail = "_ct.png", across = "_across";
   if (name.size() <= head.size() + tail.size() || name.compare(0, head.size(), head) != 0 ||
     name.compare(name.size() - tail.size(), tail.size(), tail) != 0)
     return false;
-  const std::string digits = name.substr(head.size(), name.size() - head.size() - tail.size());
-  return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  std::string digits = name.substr(head.size(), name.size() - head.size() - tail.size());
+  if (digits.size() > across.size() && digits.compare(digits.size() - across.size(), across.size(), across) == 0)
+    digits.resize(digits.size() - across.size());
+  return !digits.empty() && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 } // namespace
 
@@ -2273,7 +2290,7 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     header += "structure set: " + exportNote + "\n";
   if (!scanPictures.empty())
   {
-    header += std::string("the ") + (scanIsLabelMap ? "label map" : "CT") + " on the cut lines' planes:";
+    header += std::string("the ") + (scanIsLabelMap ? "label map" : "CT") + " on and across the cut lines:";
     for (const auto& name : scanPictures)
       header += " " + name;
     header += "\n";

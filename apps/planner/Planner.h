@@ -242,8 +242,11 @@ public:
   vtkNew<vtkRenderer> scanRenderer;
   /// The numbers of the closed cut lines (from 1, the plan's numbering).
   std::vector<int> closedCutLines() const;
-  /// The picture of the scan on cut line `number`'s plane; false with why.
-  bool scanPictureOf(int number, lkapp::ScanPicture& picture, std::string& why) const;
+  /// The picture of the scan on cut line `number`'s plane, or across it
+  /// (the other lines' planes drawn where they cross it); false with why.
+  bool scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why) const;
+  /// "CT on cut line 1's plane", "label map across cut line 2".
+  std::string scanText(int number, bool across) const;
   /// Shows (or hides) the scan as the session asks; a line that cannot be
   /// shown gets a message.
   void showScan();
@@ -253,8 +256,9 @@ public:
   /// While the view is shown, the main view's camera draws the bone in the
   /// rest of the window (its user transform, after the projection).
   vtkNew<vtkTransform> roomForScan;
-  /// The export's pictures of the scan, one per closed cut line
-  /// (cut_line1_ct.png, ...): their names, or false with `error`.
+  /// The export's pictures of the scan, two per closed cut line, on its
+  /// plane and across it (cut_line1_ct.png, cut_line1_across_ct.png, ...):
+  /// their names, or false with `error`.
   bool writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error);
 
   /// Call before a change: the session as it was goes on the undo stack.

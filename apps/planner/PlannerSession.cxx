@@ -101,6 +101,8 @@ std::string sessionText(const Session& s)
   root["mirror"] = s.mirror;
   if (s.scanOnLine > 0)
     root["scanOnLine"] = s.scanOnLine;
+  if (s.scanAcross)
+    root["scanAcross"] = true;
   if (s.softTissueWindow)
     root["scanWindow"] = "soft tissue";
   for (const auto& p : s.mirrorPlane)
@@ -301,7 +303,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanWindow", "segment",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "segment",
       "deformations", "names",
       "measurements",
       "surface", "input" },
@@ -374,6 +376,7 @@ bool readSession(
     !jsonMember(root, "lattice", s.lattice, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "metro", s.metro, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "mirror", s.mirror, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "scanAcross", s.scanAcross, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "latticeVertices", vertices, count, session, "a whole number from 4 to 100,000,000", error))
     return false;
   s.latticeVertices = static_cast<long>(vertices);

@@ -21,6 +21,7 @@
 //                                                     none: the fitted plane)
 //   "scanOnLine": k                                   the scan (CT) on cut line k's plane
 //                                                     (the plan's numbering; 0: none)
+//   "scanAcross": bool                                across the line, not on its plane
 //   "scanWindow": "bone" | "soft tissue"              its window (bone)
 //   "segment": {"piece": i, "matrix": [16 numbers],   the moved piece, row-major 4x4,
 //               "at": [x, y, z]}                      and a point of it (see below)
@@ -171,6 +172,9 @@ struct Session
   /// The scan on cut line k's plane (c), k from 1 (the plan's numbering of
   /// the cut lines); 0: not shown.
   int scanOnLine = 0;
+  /// Across that line (the bone along its length, the cut planes as lines),
+  /// not on its plane.
+  bool scanAcross = false;
   /// The CT shown in the soft-tissue window (C), not the bone window.
   bool softTissueWindow = false;
   /// Three points of the bone (midline landmarks, in its frame before any

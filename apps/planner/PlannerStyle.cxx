@@ -811,7 +811,8 @@ void PlannerStyle::OnChar()
   }
   else if (key == "c")
   {
-    // c: the CT on the first cut line's plane, the next line's, ... none.
+    // c: the CT on the first cut line's plane, across it, on the next
+    // line's, ... none.
     const std::vector<int> lines = planner->closedCutLines();
     if (!planner->scan)
     {
@@ -825,9 +826,16 @@ void PlannerStyle::OnChar()
     }
     else
     {
+      // On a line's plane, across it, the next line's plane, ..., none.
       planner->remember();
-      const auto next = std::upper_bound(lines.begin(), lines.end(), s.scanOnLine);
-      s.scanOnLine = next == lines.end() ? 0 : *next;
+      if (s.scanOnLine > 0 && !s.scanAcross && std::find(lines.begin(), lines.end(), s.scanOnLine) != lines.end())
+        s.scanAcross = true;
+      else
+      {
+        const auto next = std::upper_bound(lines.begin(), lines.end(), s.scanOnLine);
+        s.scanOnLine = next == lines.end() ? 0 : *next;
+        s.scanAcross = false;
+      }
     }
   }
   else if (key == "C")

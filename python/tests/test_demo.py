@@ -29,7 +29,7 @@ class DemoTest(unittest.TestCase):
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             names = ["mandible.vtp", "mandible.stl", "stroke.vtp", "cut_line.vtp", "lattice_whole.vtp",
                      "lattice_surface_cut.vtp", "lattice_surface_quads.vtp", "report.md",
-                     "plan.png", "pieces.png", "error.png", "cut_line_ct.png"]
+                     "plan.png", "pieces.png", "error.png", "cut_line_ct.png", "cut_line_across_ct.png"]
             for p in range(2):
                 names += ["piece%d.stl" % p, "piece%d.vtp" % p, "piece%d.obj" % p,
                           "lattice_piece%d.vtp" % p, "lattice_quads_piece%d.vtp" % p]
