@@ -202,7 +202,7 @@ std::string lineAgainstPlan(vtkPolyData* line, const Plan& plan)
   char text[500];
   std::snprintf(text, sizeof text,
     "The line is %.1f mm long; its best-fitting plane is %.2f deg from the plan's cut plane, its centre %.2f mm "
-    "from it, and every vertex within %.2f mm of its own plane. It encloses %.1f mm² of bone (what the saw crosses), "
+    "from it, and every vertex within %.2f mm of its own plane. It encloses %.1f mm^2 of bone (what the saw crosses), "
     "%.2f by %.2f mm across in that plane.",
     f.length, angle, offset, f.flatness, f.area, f.extentUp, f.extentRight);
   return text;

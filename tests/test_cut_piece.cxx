@@ -121,10 +121,10 @@ TEST(CutLineFacts, AreaAndExtentInTheLinesPlane)
   EXPECT_EQ(facts[1].area, 0.0);
   const std::string withAxes = lkapp::lineFactsText(facts, true), without = lkapp::lineFactsText(facts);
   EXPECT_NE(withAxes.find("cut line 1: 4 vertices, 80.00 mm long"), std::string::npos) << withAxes;
-  EXPECT_NE(withAxes.find("; it encloses 300.0 mm² and spans 30.00 mm (S-I) by 10.00 mm (A-P) in that plane\n"),
+  EXPECT_NE(withAxes.find("; it encloses 300.0 mm^2 and spans 30.00 mm (S-I) by 10.00 mm (A-P) in that plane\n"),
     std::string::npos)
     << withAxes;
-  EXPECT_NE(without.find("; it encloses 300.0 mm² and spans 30.00 by 10.00 mm in that plane\n"), std::string::npos)
+  EXPECT_NE(without.find("; it encloses 300.0 mm^2 and spans 30.00 by 10.00 mm in that plane\n"), std::string::npos)
     << without;
   EXPECT_EQ(withAxes.find("cut line 2"), std::string::npos); // open lines are left out
 }

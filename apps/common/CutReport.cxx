@@ -190,10 +190,10 @@ std::string lineFactsText(const std::vector<LineFacts>& facts, bool patientAxes)
       f.normal[1], f.normal[2], f.flatness);
     text += line;
     if (patientAxes)
-      std::snprintf(line, sizeof line, "; it encloses %.1f mm² and spans %.2f mm (%s) by %.2f mm (%s) in that plane\n", f.area,
+      std::snprintf(line, sizeof line, "; it encloses %.1f mm^2 and spans %.2f mm (%s) by %.2f mm (%s) in that plane\n", f.area,
         f.extentUp, f.upAxis.c_str(), f.extentRight, f.rightAxis.c_str());
     else
-      std::snprintf(line, sizeof line, "; it encloses %.1f mm² and spans %.2f by %.2f mm in that plane\n", f.area, f.extentUp,
+      std::snprintf(line, sizeof line, "; it encloses %.1f mm^2 and spans %.2f by %.2f mm in that plane\n", f.area, f.extentUp,
         f.extentRight);
     text += line;
   }

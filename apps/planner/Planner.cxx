@@ -1353,17 +1353,17 @@ bool Planner::writeScanPictures(const std::string& folder, std::vector<std::stri
     {
       lkapp::ScanPicture picture;
       std::string why;
-      if (!scanPictureOf(number, across, picture, why))
-      {
-        error = "the " + scanText(number, across) + ": " + why;
-        return false;
-      }
       const std::string name = "cut_line" + std::to_string(number) + (across ? "_across" : "") + "_ct.png";
-      if (!lkapp::writeScanPicture(picture, 600, folder + "/" + name, error, window->GetGenericDisplayId()))
-        return false;
+      if (!scanPictureOf(number, across, picture, why) ||
+        !lkapp::writeScanPicture(picture, 600, folder + "/" + name, why, window->GetGenericDisplayId()))
+      {
+        // The others are still written.
+        error += (error.empty() ? "" : "; ") + ("no " + name + ", the " + scanText(number, across) + ": " + why);
+        continue;
+      }
       written.push_back(name);
     }
-  return true;
+  return error.empty();
 }
 
 void Planner::keepChanges()
@@ -2274,11 +2274,11 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     for (const char* name : { "mirror.stl", "mirror.vtp" })
       if (!lkapp::writeMesh(mirror.surface, folder + "/" + name, error, space))
         return false;
-  // The CT on each cut line's plane: what the saw passes through, for the
-  // surgeon's notes.
+  // The CT on each cut line's plane and across it, for the surgeon's notes.
+  // A failure here is said at the end too.
   std::vector<std::string> scanPictures;
-  if (!writeScanPictures(folder, scanPictures, error))
-    return false;
+  std::string scanPicturesError;
+  writeScanPictures(folder, scanPictures, scanPicturesError);
   // What the plan is, and the session that replays it beside the files.
   // Which scan, and which coordinates every position in the plan is in: a
   // plan file read later (or beside another patient's) must say so itself.
@@ -2337,6 +2337,11 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     }
   if (!lkapp::removeStaleExports(folder, stems, others, error))
     return false;
+  if (!scanPicturesError.empty())
+  {
+    error = scanPicturesError + " (the rest of the export was written)";
+    return false;
+  }
   if (!structureSetError.empty())
   {
     error = "the RT structure set '" + folder + "/pieces.dcm' was not written (the rest of the export was): " +

@@ -258,7 +258,8 @@ public:
   vtkNew<vtkTransform> roomForScan;
   /// The export's pictures of the scan, two per closed cut line, on its
   /// plane and across it (cut_line1_ct.png, cut_line1_across_ct.png, ...):
-  /// their names, or false with `error`.
+  /// their names; false with `error` when one could not be made or written
+  /// (the others are).
   bool writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error);
 
   /// Call before a change: the session as it was goes on the undo stack.
