@@ -25,6 +25,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <cstring>
 #include <string>
 
 #include <unistd.h>
@@ -291,6 +292,11 @@ int main(int argc, char* argv[])
   planner.input = vtksys::SystemTools::CollapseFullPath(input);
   if (!mesh)
     planner.referenceImage = reader->GetReferenceImageFileName();
+  // A segmentation file (a DICOM SEG, an RT structure set) drawn on a CT
+  // that lies beside it: the view shows that CT, read when first shown.
+  if (!mesh && organNote.empty() && planner.scanIsLabelMap && !planner.referenceImage.empty() &&
+    (std::strcmp(reader->GetFileFormat(), "DICOM SEG") == 0 || std::strcmp(reader->GetFileFormat(), "DICOM RTSTRUCT") == 0))
+    planner.scanFile = planner.referenceImage;
   planner.checkReplayedInput(!replay.empty());
   if (!ignoredFields.empty())
     planner.inputWarnings += (planner.inputWarnings.empty() ? "" : "\n") + ignoredFields;

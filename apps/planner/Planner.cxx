@@ -11,6 +11,7 @@
 #include "vtkLKClosedLineCutFilter.h"
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
 #include "vtkLKMetroFilter.h"
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKPolyDataConversion.h"
@@ -23,6 +24,7 @@
 
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
@@ -1264,7 +1266,7 @@ std::vector<int> Planner::closedCutLines() const
   return numbers;
 }
 
-bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why) const
+bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why)
 {
   const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(cut.loops);
   if (number < 1 || number > static_cast<int>(facts.size()) || !facts[static_cast<std::size_t>(number - 1)].closed)
@@ -1294,10 +1296,43 @@ bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture
       for (vtkIdType i = 0; i < n; ++i)
         cut.loops->GetPoint(ids[i], request.line.emplace_back().data());
     }
-  if (!lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, request, picture, why))
+  if (!readScanFile(why) || !lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, request, picture, why))
     return false;
   picture.title = scanText(number, across) + lkapp::greyWindowText(picture.grey);
   picture.directions = lkapp::coordinateSpace(bone) == "LPS";
+  return true;
+}
+
+bool Planner::readScanFile(std::string& why)
+{
+  if (scanFile.empty())
+    return true;
+  const std::string file = scanFile;
+  scanFile.clear(); // read once, whatever comes of it
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(file.c_str());
+  // What the reader says goes into `why`, not the terminal: its warnings
+  // (the folder's other series and sets) were said when the plan was read.
+  std::string said;
+  vtkNew<vtkCallbackCommand> listen;
+  listen->SetClientData(&said);
+  listen->SetCallback([](vtkObject*, unsigned long event, void* client, void* text) {
+    if (event == vtkCommand::ErrorEvent && text)
+      *static_cast<std::string*>(client) += (static_cast<std::string*>(client)->empty() ? "" : "; ") +
+        std::string(static_cast<const char*>(text));
+  });
+  reader->AddObserver(vtkCommand::ErrorEvent, listen);
+  reader->AddObserver(vtkCommand::WarningEvent, listen);
+  reader->Update();
+  if (!said.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    why = "the CT the segmentation was drawn on ('" + file + "') could not be read" + (said.empty() ? "" : ": " + said);
+    return false;
+  }
+  scan = vtkSmartPointer<vtkImageData>::New();
+  scan->ShallowCopy(reader->GetOutput());
+  scanToPatient->DeepCopy(reader->GetPatientMatrix());
+  scanIsLabelMap = false;
   return true;
 }
 
@@ -1346,7 +1381,7 @@ void Planner::showScan()
 bool Planner::writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error)
 {
   written.clear();
-  if (!scan)
+  if (!hasScan())
     return true;
   for (int number : closedCutLines())
     for (const bool across : { false, true })

@@ -237,6 +237,14 @@ public:
   vtkSmartPointer<vtkImageData> scan;
   vtkNew<vtkMatrix4x4> scanToPatient;
   bool scanIsLabelMap = false;
+  /// A file of the CT a segmentation input (a DICOM SEG, an RT structure
+  /// set) was drawn on, when it lies beside it: read in place of `scan` the
+  /// first time the view needs it (readScanFile).
+  std::string scanFile;
+  /// Reads scanFile into scan (once); false, with why, when it cannot.
+  bool readScanFile(std::string& why);
+  /// Whether there is a scan to show (or one to read).
+  bool hasScan() const { return scan || !scanFile.empty(); }
   /// The scan on a cut line's plane (c, the session's scanOnLine), in the
   /// window's lower left corner, above the status lines.
   vtkNew<vtkRenderer> scanRenderer;
@@ -244,7 +252,7 @@ public:
   std::vector<int> closedCutLines() const;
   /// The picture of the scan on cut line `number`'s plane, or across it
   /// (the other lines' planes drawn where they cross it); false with why.
-  bool scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why) const;
+  bool scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why);
   /// "CT on cut line 1's plane", "label map across cut line 2".
   std::string scanText(int number, bool across) const;
   /// Shows (or hides) the scan as the session asks; a line that cannot be

@@ -814,7 +814,7 @@ void PlannerStyle::OnChar()
     // c: the CT on the first cut line's plane, across it, on the next
     // line's, ... none.
     const std::vector<int> lines = planner->closedCutLines();
-    if (!planner->scan)
+    if (!planner->hasScan())
     {
       rebuild = false;
       planner->message = "c shows the CT on a cut line's plane: this plan is on a mesh file, which has no CT";
