@@ -133,6 +133,8 @@ vtkSmartPointer<vtkActor> polylines(const ScanPicture& picture, const std::vecto
   vtkNew<vtkCellArray> cells;
   for (const auto& l : lines)
   {
+    if (l.size() < 2)
+      continue; // a trace or a border the picture does not have
     cells->InsertNextCell(static_cast<vtkIdType>(l.size()));
     for (const auto& p : l)
     {
