@@ -194,6 +194,7 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   renderer->AddViewProp(polylines(picture, picture.otherTraces, 0.75, { 1.0, 0.7, 0.45 }, 1.5f));
   renderer->AddViewProp(polylines(picture, picture.cutTrace, 0.75, { 1.0, 0.4, 0.1 }, 1.5f));
   renderer->AddViewProp(polylines(picture, picture.line, 1.0, { 1.0, 0.4, 0.1 }, 2.5f));
+  renderer->AddViewProp(polylines(picture, picture.moved, 1.25, { 0.2, 0.9, 1.0 }, 2.0f));
   // What the colours are, under the title; the scan's edge only where the
   // picture shows it.
   bool edgeShown = false;
@@ -207,9 +208,12 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
     }
   }
   const bool across = !picture.cutTrace.empty();
-  auto legend = label(std::string(across ? "orange: the cut's plane" : "orange: cut line") +
-      (picture.otherTraces.empty() ? "" : ", light: other cuts'") + ", yellow: bone surface" +
-      (edgeShown ? ", blue: edge of the scan" : ""),
+  std::string legendText = std::string(across ? "orange: the cut's plane" : "orange: cut line") +
+    (picture.otherTraces.empty() ? "" : ", light: other cuts'") + ", yellow: bone surface" +
+    (edgeShown ? ", blue: edge of the scan" : "");
+  if (!picture.moved.empty())
+    legendText += "\ncyan: the segment where the plan moves it";
+  auto legend = label(legendText,
     0.02, 0.935, std::max(9, fontSize - 2), { 0.85, 0.85, 0.85 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
   legend->GetTextProperty()->BoldOff();
   renderer->AddViewProp(legend);

@@ -38,6 +38,9 @@ struct ScanPicture
   /// Where the scan ends (scanBorder; blue): beyond it the picture is black
   /// for want of a scan, not for air.
   std::vector<std::array<double, 3>> border;
+  /// The moved segment's section by the picture's plane, where the plan
+  /// moves it (cyan): the CT is the scan before the move.
+  std::vector<std::vector<std::array<double, 3>>> moved;
   std::string title;
   bool directions = false; ///< the patient's directions are known: letters on the edges
 };

@@ -288,6 +288,7 @@ void Planner::placeSegment(const std::array<double, 16>& matrix)
   showMeasurements(); // an end on the segment moves with it
   updateContacts(matrix);
   updateMirrorFit(matrix);
+  showScanMoved(matrix);
 }
 
 const Planner::MirrorImage& Planner::mirrorImage()
@@ -1299,6 +1300,7 @@ bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture
   if (!readScanFile(why) || !lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, request, picture, why))
     return false;
   picture.title = scanText(number, across) + lkapp::greyWindowText(picture.grey);
+  picture.moved = movedSection(picture.frame, session.segmentMatrix); // the view's follows a drag
   picture.directions = lkapp::coordinateSpace(bone) == "LPS";
   return true;
 }
@@ -1361,11 +1363,11 @@ void Planner::showScan()
   if (key != scanShownKey)
   {
     scanShownKey = key;
-    lkapp::ScanPicture picture;
+    scanMovedKey.clear();
     scanWhy.clear();
-    if (!scanPictureOf(session.scanOnLine, session.scanAcross, picture, scanWhy))
-      picture = lkapp::ScanPicture();
-    lkapp::showScanPicture(scanRenderer, picture, 12);
+    if (!scanPictureOf(session.scanOnLine, session.scanAcross, scanPicture, scanWhy))
+      scanPicture = lkapp::ScanPicture();
+    lkapp::showScanPicture(scanRenderer, scanPicture, 12);
   }
   if (!scanWhy.empty())
     addLine(message, "no " + scanText(session.scanOnLine, session.scanAcross) + ": " + scanWhy);
@@ -1376,6 +1378,36 @@ void Planner::showScan()
   roomForScan->Translate(0.37, 0.0, 0.0);
   roomForScan->Scale(0.62, 0.62, 1.0);
   renderer->GetActiveCamera()->SetUserTransform(scanWhy.empty() ? roomForScan.Get() : nullptr);
+}
+
+std::vector<std::vector<std::array<double, 3>>> Planner::movedSection(
+  const lkapp::ViewFrame& frame, const std::array<double, 16>& matrix) const
+{
+  if (!hasSegment() || isIdentity(matrix))
+    return {};
+  vtkNew<vtkTransform> move;
+  move->SetMatrix(matrix.data());
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetInputData(pieces[static_cast<std::size_t>(movedPiece())]);
+  moved->SetTransform(move);
+  moved->Update();
+  return lkapp::planeSectionLoops(moved->GetOutput(), frame.centre, frame.towardViewer);
+}
+
+void Planner::showScanMoved(const std::array<double, 16>& matrix)
+{
+  if (!scanRenderer->GetDraw() || !scanPicture.image)
+    return;
+  std::string key = std::to_string(movedPiece()) +
+    (hasSegment() ? " " + std::to_string(pieces[static_cast<std::size_t>(movedPiece())]->GetMTime()) : "");
+  if (hasSegment() && !isIdentity(matrix))
+    for (double v : matrix)
+      key += " " + std::to_string(v);
+  if (key == scanMovedKey)
+    return;
+  scanMovedKey = key;
+  scanPicture.moved = movedSection(scanPicture.frame, matrix);
+  lkapp::showScanPicture(scanRenderer, scanPicture, 12);
 }
 
 bool Planner::writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error)

@@ -261,6 +261,17 @@ public:
   /// "CT on cut line 1's plane": what the view shows, for the status line and the report.
   std::string scanShown() const;
   std::string scanShownKey, scanWhy; ///< what the view shows (cut key and line), why it shows nothing
+  /// What the view shows, and the segment's move its cyan section is drawn
+  /// for (piece and matrix).
+  lkapp::ScanPicture scanPicture;
+  std::string scanMovedKey;
+  /// The moved segment's section by the frame's plane where `matrix` puts
+  /// it; none when no segment is moved.
+  std::vector<std::vector<std::array<double, 3>>> movedSection(
+    const lkapp::ViewFrame& frame, const std::array<double, 16>& matrix) const;
+  /// Draws the view again when the segment's move changed (placeSegment,
+  /// during a drag too).
+  void showScanMoved(const std::array<double, 16>& matrix);
   /// While the view is shown, the main view's camera draws the bone in the
   /// rest of the window (its user transform, after the projection).
   vtkNew<vtkTransform> roomForScan;
