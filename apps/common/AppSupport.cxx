@@ -131,7 +131,8 @@ std::string lower(std::string s)
   return s;
 }
 
-/// "ERROR: In file, line N\nvtkClass (0x..): message\n\n" -> "message".
+} // namespace
+
 std::string cleanMessage(const std::string& text)
 {
   std::string m = text;
@@ -152,6 +153,9 @@ std::string cleanMessage(const std::string& text)
   }
   return m;
 }
+
+namespace
+{
 
 class AppOutputWindow : public vtkOutputWindow
 {

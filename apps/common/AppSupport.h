@@ -38,6 +38,9 @@ void setCrashNote(const std::string& note);
 /// warnings as "warning: ..." (quiet or not), pipeline noise is dropped;
 /// quiet drops VTK's plain text output. Call once in main.
 void installMessageHandler(bool quiet = false);
+/// A VTK message as a user reads it: "ERROR: In file, line N\nvtkClass
+/// (0x..): message\n\n" gives "message".
+std::string cleanMessage(const std::string& text);
 /// Number of VTK errors since the last call to clearErrors().
 int errorCount();
 /// Messages of those errors, joined by newlines.

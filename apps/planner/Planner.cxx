@@ -689,6 +689,10 @@ void Planner::setup()
   scanRenderer->InteractiveOff();
   scanRenderer->DrawOff();
   window->AddRenderer(scanRenderer);
+  // While it is shown, the bone is drawn smaller, right of it (after the
+  // projection: picks and drags go through the same transform).
+  roomForScan->Translate(0.37, 0.0, 0.0);
+  roomForScan->Scale(0.62, 0.62, 1.0);
   window->SetSize(1000, 750);
   window->SetWindowName("latticekit planner");
   renderer->SetBackground(1, 1, 1);
@@ -1296,11 +1300,11 @@ bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture
       it->GetCurrentCell(n, ids);
       for (vtkIdType i = 0; i < n; ++i)
         cut.loops->GetPoint(ids[i], request.line.emplace_back().data());
+      break;
     }
   if (!readScanFile(why) || !lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, request, picture, why))
     return false;
   picture.title = scanText(number, across) + lkapp::greyWindowText(picture.grey);
-  picture.moved = movedSection(picture.frame, session.segmentMatrix); // the view's follows a drag
   picture.directions = lkapp::coordinateSpace(bone) == "LPS";
   return true;
 }
@@ -1321,7 +1325,7 @@ bool Planner::readScanFile(std::string& why)
   listen->SetCallback([](vtkObject*, unsigned long event, void* client, void* text) {
     if (event == vtkCommand::ErrorEvent && text)
       *static_cast<std::string*>(client) += (static_cast<std::string*>(client)->empty() ? "" : "; ") +
-        std::string(static_cast<const char*>(text));
+        lkapp::cleanMessage(static_cast<const char*>(text));
   });
   reader->AddObserver(vtkCommand::ErrorEvent, listen);
   reader->AddObserver(vtkCommand::WarningEvent, listen);
@@ -1363,20 +1367,14 @@ void Planner::showScan()
   if (key != scanShownKey)
   {
     scanShownKey = key;
-    scanMovedKey.clear();
+    scanMovedKey.clear(); // placeSegment, which rebuild calls next, draws it (showScanMoved)
     scanWhy.clear();
     if (!scanPictureOf(session.scanOnLine, session.scanAcross, scanPicture, scanWhy))
       scanPicture = lkapp::ScanPicture();
-    lkapp::showScanPicture(scanRenderer, scanPicture, 12);
   }
   if (!scanWhy.empty())
     addLine(message, "no " + scanText(session.scanOnLine, session.scanAcross) + ": " + scanWhy);
   scanRenderer->SetDraw(scanWhy.empty());
-  // The bone drawn smaller, right of the view (after the projection: picks
-  // and drags go through the same transform).
-  roomForScan->Identity();
-  roomForScan->Translate(0.37, 0.0, 0.0);
-  roomForScan->Scale(0.62, 0.62, 1.0);
   renderer->GetActiveCamera()->SetUserTransform(scanWhy.empty() ? roomForScan.Get() : nullptr);
 }
 
@@ -1421,7 +1419,10 @@ bool Planner::writeScanPictures(const std::string& folder, std::vector<std::stri
       lkapp::ScanPicture picture;
       std::string why;
       const std::string name = "cut_line" + std::to_string(number) + (across ? "_across" : "") + "_ct.png";
-      if (!scanPictureOf(number, across, picture, why) ||
+      const bool made = scanPictureOf(number, across, picture, why);
+      if (made)
+        picture.moved = movedSection(picture.frame, session.segmentMatrix);
+      if (!made ||
         !lkapp::writeScanPicture(picture, 600, folder + "/" + name, why, window->GetGenericDisplayId()))
       {
         // The others are still written.

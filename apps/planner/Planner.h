@@ -251,7 +251,8 @@ public:
   /// The numbers of the closed cut lines (from 1, the plan's numbering).
   std::vector<int> closedCutLines() const;
   /// The picture of the scan on cut line `number`'s plane, or across it
-  /// (the other lines' planes drawn where they cross it); false with why.
+  /// (the other lines' planes drawn where they cross it), without the moved
+  /// segment (movedSection); false with why.
   bool scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why);
   /// "CT on cut line 1's plane", "label map across cut line 2".
   std::string scanText(int number, bool across) const;
@@ -269,8 +270,9 @@ public:
   /// it; none when no segment is moved.
   std::vector<std::vector<std::array<double, 3>>> movedSection(
     const lkapp::ViewFrame& frame, const std::array<double, 16>& matrix) const;
-  /// Draws the view again when the segment's move changed (placeSegment,
-  /// during a drag too).
+  /// Draws the view, with the moved segment's section where `matrix` puts
+  /// it, when the picture (showScan) or the move changed: placeSegment calls
+  /// it, during a drag too.
   void showScanMoved(const std::array<double, 16>& matrix);
   /// While the view is shown, the main view's camera draws the bone in the
   /// rest of the window (its user transform, after the projection).
