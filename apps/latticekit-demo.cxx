@@ -831,7 +831,7 @@ int main(int argc, char* argv[])
           return 1;
         }
         scanPicture.title = std::string(labelMap ? "label map" : "CT") +
-          (across ? " across the cut line" : " on the cut line's plane") + lkapp::greyWindowText(scanPicture.grey);
+          (across ? " across the cut line" : " on the cut line's plane");
         scanPicture.directions = lkapp::coordinateSpace(mandible) == "LPS";
         ok = ok &&
           lkapp::writeScanPicture(scanPicture, 600,

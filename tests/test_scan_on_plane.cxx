@@ -11,6 +11,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkShortArray.h>
+#include <vtkSphereSource.h>
 
 #include <cmath>
 #include <string>
@@ -244,4 +245,79 @@ TEST(ScanOnPlane, PlaneTracesAcrossThePicture)
   // Beyond the square, or parallel to the picture: nothing.
   EXPECT_TRUE(lkapp::planeTrace(frame, 40.0, { { 30, 0, 0 }, { 1, 0, 0 } }).empty());
   EXPECT_TRUE(lkapp::planeTrace(frame, 40.0, { { 0, 0, 1 }, { 0, 0, 1 } }).empty());
+}
+
+TEST(ScanOnPlane, PlanesBesideTheCut)
+{
+  // A CT whose value is 10 x (patient z) + 3 x (patient y), 1 mm voxels, and a
+  // bone ball of radius 5 mm at (0, 0, 0); the cut line a circle of radius 5
+  // in the axial plane z = 0.
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(41, 41, 41);
+  volume->SetOrigin(-20, -20, -20);
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(41 * 41 * 41);
+  for (int k = 0; k < 41; ++k)
+    for (int j = 0; j < 41; ++j)
+      for (int i = 0; i < 41; ++i)
+        values->SetValue(i + 41 * (j + 41 * k), 10.0 * (k - 20) + 3.0 * (j - 20));
+  volume->GetPointData()->SetScalars(values);
+  vtkNew<vtkMatrix4x4> identity;
+  vtkNew<vtkSphereSource> ball;
+  ball->SetRadius(5.0);
+  ball->SetThetaResolution(180);
+  ball->SetPhiResolution(180);
+  ball->Update();
+  lkapp::ScanPictureRequest request;
+  for (int k = 0; k < 36; ++k)
+    request.line.push_back({ 5 * std::cos(k * vtkMath::Pi() / 18), 5 * std::sin(k * vtkMath::Pi() / 18), 0 });
+  request.normal = { 0, 0, 1 };
+  // 3 mm toward the viewer: an axial plane is seen from the feet, so z = -3.
+  request.offset = 3.0;
+  lkapp::ScanPicture picture;
+  std::string why;
+  ASSERT_TRUE(lkapp::makeScanPicture(volume, identity, false, ball->GetOutput(), request, picture, why)) << why;
+  EXPECT_NEAR(picture.frame.centre[2], -3.0, 1e-12);
+  EXPECT_EQ(lkapp::planeOffsetText(picture.frame, 3.0, true), ", 3 mm toward the feet");
+  EXPECT_EQ(lkapp::planeOffsetText(picture.frame, -1.5, true), ", 1.5 mm toward the head");
+  EXPECT_EQ(lkapp::planeOffsetText(picture.frame, 3.0, false), ", 3 mm toward the viewer");
+  EXPECT_EQ(lkapp::planeOffsetText(picture.frame, -3.0, false), ", 3 mm away from the viewer");
+  EXPECT_EQ(lkapp::planeOffsetText(picture.frame, 0.0, true), "");
+  // The image is the CT at z = -3: -30 + 3 y at every pixel.
+  vtkDataArray* scalars = picture.image->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < picture.image->GetNumberOfPoints(); p += 37)
+  {
+    double xy[3];
+    picture.image->GetPoint(p, xy);
+    const double y = picture.frame.centre[1] + xy[0] * picture.frame.right[1] + xy[1] * picture.frame.up[1];
+    if (std::abs(xy[0]) < 19.0 && std::abs(y) < 19.0)
+      EXPECT_NEAR(scalars->GetTuple1(p), -30.0 + 3.0 * y, 1e-3) << "pixel " << p;
+  }
+  // The ball's section there: a circle of radius 4; the cut line stays on
+  // its own plane (radius 5, z = 0).
+  ASSERT_FALSE(picture.section.empty());
+  for (const auto& loop : picture.section)
+    for (const auto& q : loop)
+    {
+      EXPECT_NEAR(q[2], -3.0, 1e-9);
+      EXPECT_NEAR(std::hypot(q[0], q[1]), 4.0, 0.02);
+    }
+  ASSERT_EQ(picture.line.size(), 1u);
+  EXPECT_NEAR(picture.line[0][0][0], 5.0, 1e-12);
+  EXPECT_EQ(picture.line[0][0][2], 0.0);
+  // A window set by hand replaces the preset, rounded; a label map keeps its own.
+  EXPECT_EQ(picture.grey.name, "bone window");
+  request.windowWidth = 1234.4;
+  request.windowLevel = -56.6;
+  ASSERT_TRUE(lkapp::makeScanPicture(volume, identity, false, ball->GetOutput(), request, picture, why)) << why;
+  EXPECT_EQ(lkapp::greyWindowLabel(picture.grey), "window set by hand: W 1234, L -57");
+  EXPECT_EQ(lkapp::handWindow(0.2, 3).width, 1.0); // never a zero width
+  // A window dragged far stays one a session reads back.
+  EXPECT_EQ(lkapp::greyWindowLabel(lkapp::handWindow(8.04e6, -4.27e6)), "window set by hand: W 100000, L -100000");
+  ASSERT_TRUE(lkapp::makeScanPicture(volume, identity, true, ball->GetOutput(), request, picture, why)) << why;
+  EXPECT_EQ(lkapp::greyWindowLabel(picture.grey), "");
+  // A plane moved by no number is refused.
+  request.offset = std::nan("");
+  EXPECT_FALSE(lkapp::makeScanPicture(volume, identity, false, ball->GetOutput(), request, picture, why));
+  EXPECT_EQ(why, "the plane's offset or the window is not a number");
 }

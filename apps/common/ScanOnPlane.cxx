@@ -176,13 +176,19 @@ GreyWindow greyWindowOf(vtkImageData* volume, bool labelMap, bool softTissue)
   return w;
 }
 
-std::string greyWindowText(const GreyWindow& window)
+std::string greyWindowLabel(const GreyWindow& window)
 {
   if (window.name.empty())
     return "";
   char text[120];
-  std::snprintf(text, sizeof text, " (%s: W %g, L %g)", window.name.c_str(), window.width, window.level);
+  std::snprintf(text, sizeof text, "%s: W %g, L %g", window.name.c_str(), window.width, window.level);
   return text;
+}
+
+std::string greyWindowText(const GreyWindow& window)
+{
+  const std::string label = greyWindowLabel(window);
+  return label.empty() ? "" : " (" + label + ")";
 }
 
 } // namespace lkapp

@@ -68,6 +68,8 @@ struct GreyWindow
   std::string name = "bone window";
 };
 GreyWindow greyWindowOf(vtkImageData* volume, bool labelMap, bool softTissue = false);
+/// "bone window: W 2000, L 500"; empty for a label map's.
+std::string greyWindowLabel(const GreyWindow& window);
 /// " (bone window: W 2000, L 500)"; empty for a label map's.
 std::string greyWindowText(const GreyWindow& window);
 

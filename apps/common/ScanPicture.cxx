@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace lkapp
@@ -58,6 +59,13 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
       if (vtkMath::Distance2BetweenPoints(origin.data(), request.centre.data()) < 100.0 * 100.0)
         reachTo(origin);
   picture.side = std::clamp(3.0 * reach, 40.0, 400.0);
+  if (!std::isfinite(request.offset) || !std::isfinite(request.windowWidth) || !std::isfinite(request.windowLevel))
+  {
+    why = "the plane's offset or the window is not a number";
+    return false;
+  }
+  for (std::size_t i = 0; i < 3; ++i)
+    picture.frame.centre[i] += request.offset * picture.frame.towardViewer[i];
   double spacing[3];
   scan->GetSpacing(spacing);
   const double finest = std::max(std::min({ spacing[0], spacing[1], spacing[2] }), 1e-3);
@@ -71,6 +79,8 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
     return false;
   }
   picture.grey = greyWindowOf(scan, labelMap, request.softTissue);
+  if (!labelMap && request.windowWidth > 0.0)
+    picture.grey = handWindow(request.windowWidth, request.windowLevel);
   picture.line = { request.line };
   picture.section = planeSectionLoops(bone, picture.frame.centre, picture.frame.towardViewer);
   picture.border = scanBorder(scan, scanToPatient, picture.frame);
@@ -82,6 +92,30 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
         picture.otherTraces.push_back(trace);
   }
   return true;
+}
+
+std::string planeOffsetText(const ViewFrame& frame, double offset, bool directions)
+{
+  if (offset == 0.0)
+    return "";
+  char mm[40];
+  std::snprintf(mm, sizeof mm, ", %g mm ", std::abs(offset));
+  if (!directions)
+    return mm + std::string(offset > 0.0 ? "toward the viewer" : "away from the viewer");
+  const std::array<double, 3> way{ offset * frame.towardViewer[0], offset * frame.towardViewer[1],
+    offset * frame.towardViewer[2] };
+  const std::string letter = directionLetter(way);
+  const char* word = letter == "L" ? "the patient's left" : letter == "R" ? "the patient's right" :
+    letter == "A" ? "the front" : letter == "P" ? "the back" : letter == "S" ? "the head" : "the feet";
+  return mm + std::string("toward ") + word;
+}
+
+GreyWindow handWindow(double width, double level)
+{
+  // Within what any scan's values need (a 16-bit range and more), so that a
+  // window dragged far stays one a session can be read back with.
+  return { std::clamp(std::round(width), 1.0, kLargestHandWindow),
+    std::clamp(std::round(level), -kLargestHandWindow, kLargestHandWindow), "window set by hand" };
 }
 
 std::vector<std::array<double, 3>> planeTrace(const ViewFrame& frame, double side, const Plane& plane)
@@ -213,6 +247,8 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
     (edgeShown ? ", blue: edge of the scan" : "");
   if (!picture.moved.empty())
     legendText += "\ncyan: the segment where the plan moves it";
+  if (!picture.hint.empty())
+    legendText += "\n" + picture.hint;
   auto legend = label(legendText,
     0.02, 0.935, std::max(9, fontSize - 2), { 0.85, 0.85, 0.85 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
   legend->GetTextProperty()->BoldOff();
@@ -227,6 +263,12 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   bar->GetTextProperty()->BoldOff();
   renderer->AddViewProp(bar);
   renderer->AddViewProp(label(picture.title, 0.02, 0.98, fontSize, { 1, 1, 1 }, VTK_TEXT_LEFT, VTK_TEXT_TOP));
+  if (const std::string window = greyWindowLabel(picture.grey); !window.empty())
+  {
+    auto shown = label(window, 0.98, 0.075, std::max(9, fontSize - 2), { 1, 1, 1 }, VTK_TEXT_RIGHT, VTK_TEXT_BOTTOM);
+    shown->GetTextProperty()->BoldOff();
+    renderer->AddViewProp(shown);
+  }
   if (picture.directions)
   {
     const auto& f = picture.frame;

@@ -41,7 +41,12 @@ struct ScanPicture
   /// The moved segment's section by the picture's plane, where the plan
   /// moves it (cyan): the CT is the scan before the move.
   std::vector<std::vector<std::array<double, 3>>> moved;
+  /// The top line; the window (greyWindowLabel) is written at the bottom
+  /// right, as radiology viewers write it.
   std::string title;
+  /// A last line of the legend (the planner's: what the mouse does there);
+  /// none in the exported pictures.
+  std::string hint;
   bool directions = false; ///< the patient's directions are known: letters on the edges
 };
 
@@ -62,7 +67,25 @@ struct ScanPictureRequest
   bool across = false;
   std::vector<Plane> otherPlanes;
   bool softTissue = false; ///< a CT in the soft-tissue window, not the bone window (greyWindowOf)
+  /// The picture's plane moved along its normal, in mm toward the viewer:
+  /// the planes beside the cut (the saw's kerf, a root or the canal a few mm
+  /// off it). The cut line and the cut planes' traces stay where they are.
+  double offset = 0.0;
+  /// A window set by hand (width > 0: the view dragged), in place of the
+  /// preset's; a label map keeps its own.
+  double windowWidth = 0.0, windowLevel = 0.0;
 };
+
+/// Where the picture's plane lies against the cut's: "" at 0, else
+/// ", 2 mm toward the feet" (the patient's direction when `directions`,
+/// else toward or away from the viewer). `offset` as ScanPictureRequest's.
+std::string planeOffsetText(const ViewFrame& frame, double offset, bool directions);
+
+/// A window set by hand: its name and values rounded as the text gives them,
+/// the width from 1 to kLargestHandWindow, the level within
+/// +-kLargestHandWindow.
+GreyWindow handWindow(double width, double level);
+constexpr double kLargestHandWindow = 100000.0;
 
 /// The scan as the request asks, over a square three times the line's reach
 /// from its centre (on an across view, the other cuts' within 100 mm too),

@@ -1271,7 +1271,7 @@ std::vector<int> Planner::closedCutLines() const
   return numbers;
 }
 
-bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why)
+bool Planner::scanPictureOf(int number, bool across, double offset, lkapp::ScanPicture& picture, std::string& why)
 {
   const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(cut.loops);
   if (number < 1 || number > static_cast<int>(facts.size()) || !facts[static_cast<std::size_t>(number - 1)].closed)
@@ -1286,6 +1286,9 @@ bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture
   request.normal = { f.normal[0], f.normal[1], f.normal[2] };
   request.across = across;
   request.softTissue = session.softTissueWindow;
+  request.offset = offset;
+  request.windowWidth = session.scanWindowWidth;
+  request.windowLevel = session.scanWindowLevel;
   for (std::size_t k = 0; k < facts.size(); ++k)
     if (facts[k].closed && static_cast<int>(k) + 1 != number)
       request.otherPlanes.push_back({ { facts[k].centre[0], facts[k].centre[1], facts[k].centre[2] },
@@ -1304,9 +1307,22 @@ bool Planner::scanPictureOf(int number, bool across, lkapp::ScanPicture& picture
     }
   if (!readScanFile(why) || !lkapp::makeScanPicture(scan, scanToPatient, scanIsLabelMap, bone, request, picture, why))
     return false;
-  picture.title = scanText(number, across) + lkapp::greyWindowText(picture.grey);
   picture.directions = lkapp::coordinateSpace(bone) == "LPS";
+  picture.title = scanTitle(picture, number, across, offset);
   return true;
+}
+
+std::string Planner::scanTitle(const lkapp::ScanPicture& picture, int number, bool across, double offset) const
+{
+  return scanText(number, across) + lkapp::planeOffsetText(picture.frame, offset, picture.directions);
+}
+
+void Planner::previewScanWindow(double width, double level)
+{
+  if (!scanRenderer->GetDraw() || !scanPicture.image)
+    return;
+  scanPicture.grey = lkapp::handWindow(width, level);
+  lkapp::showScanPicture(scanRenderer, scanPicture, 12);
 }
 
 bool Planner::readScanFile(std::string& why)
@@ -1350,8 +1366,11 @@ std::string Planner::scanText(int number, bool across) const
 
 std::string Planner::scanShown() const
 {
+  const std::string window = scanIsLabelMap ? "" :
+    session.scanWindowWidth > 0.0 ? lkapp::greyWindowText(lkapp::handWindow(session.scanWindowWidth, session.scanWindowLevel)) :
+    session.softTissueWindow      ? " (soft-tissue window)" : "";
   return scanText(session.scanOnLine, session.scanAcross) +
-    (session.softTissueWindow && !scanIsLabelMap ? " (soft-tissue window)" : "");
+    lkapp::planeOffsetText(scanPicture.frame, session.scanOffset, scanPicture.directions) + window;
 }
 
 void Planner::showScan()
@@ -1363,14 +1382,17 @@ void Planner::showScan()
     return;
   }
   const std::string key = cut.key + "|" + std::to_string(session.scanOnLine) + (session.scanAcross ? "|across" : "") +
-    (session.softTissueWindow ? "|soft" : "");
+    (session.softTissueWindow ? "|soft" : "") + "|" + std::to_string(session.scanOffset) + "|" +
+    std::to_string(session.scanWindowWidth) + "|" + std::to_string(session.scanWindowLevel);
   if (key != scanShownKey)
   {
     scanShownKey = key;
     scanMovedKey.clear(); // placeSegment, which rebuild calls next, draws it (showScanMoved)
     scanWhy.clear();
-    if (!scanPictureOf(session.scanOnLine, session.scanAcross, scanPicture, scanWhy))
+    if (!scanPictureOf(session.scanOnLine, session.scanAcross, session.scanOffset, scanPicture, scanWhy))
       scanPicture = lkapp::ScanPicture();
+    // What the mouse does there (the exported pictures have no hint).
+    scanPicture.hint = scanIsLabelMap ? "wheel: move the plane" : "drag: window | wheel: move the plane";
   }
   if (!scanWhy.empty())
     addLine(message, "no " + scanText(session.scanOnLine, session.scanAcross) + ": " + scanWhy);
@@ -1419,7 +1441,7 @@ bool Planner::writeScanPictures(const std::string& folder, std::vector<std::stri
       lkapp::ScanPicture picture;
       std::string why;
       const std::string name = "cut_line" + std::to_string(number) + (across ? "_across" : "") + "_ct.png";
-      const bool made = scanPictureOf(number, across, picture, why);
+      const bool made = scanPictureOf(number, across, 0.0, picture, why);
       if (made)
         picture.moved = movedSection(picture.frame, session.segmentMatrix);
       if (!made ||

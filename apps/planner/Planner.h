@@ -253,9 +253,17 @@ public:
   /// The picture of the scan on cut line `number`'s plane, or across it
   /// (the other lines' planes drawn where they cross it), without the moved
   /// segment (movedSection); false with why.
-  bool scanPictureOf(int number, bool across, lkapp::ScanPicture& picture, std::string& why);
+  /// `offset`: the plane moved along its normal, mm toward the viewer (the
+  /// session's scanOffset; the export's pictures are on the cut's own plane).
+  bool scanPictureOf(int number, bool across, double offset, lkapp::ScanPicture& picture, std::string& why);
   /// "CT on cut line 1's plane", "label map across cut line 2".
   std::string scanText(int number, bool across) const;
+  /// The picture's title: scanText and where its plane lies against the
+  /// cut's (the picture writes its window itself).
+  std::string scanTitle(const lkapp::ScanPicture& picture, int number, bool across, double offset) const;
+  /// The view in a window set by hand, while the view is dragged (the
+  /// session takes it when the button is let go).
+  void previewScanWindow(double width, double level);
   /// Shows (or hides) the scan as the session asks; a line that cannot be
   /// shown gets a message.
   void showScan();

@@ -3,6 +3,7 @@
 #include "common/AppSupport.h"
 #include "common/AtomicFile.h"
 #include "common/JsonFields.h"
+#include "common/ScanPicture.h"
 #include "vtkLKText.h"
 
 #include <vtkMath.h>
@@ -105,6 +106,13 @@ std::string sessionText(const Session& s)
     root["scanAcross"] = true;
   if (s.softTissueWindow)
     root["scanWindow"] = "soft tissue";
+  if (s.scanWindowWidth > 0.0)
+  {
+    root["scanWindowLevel"].append(s.scanWindowWidth);
+    root["scanWindowLevel"].append(s.scanWindowLevel);
+  }
+  if (s.scanOffset != 0.0)
+    root["scanOffset"] = s.scanOffset;
   for (const auto& p : s.mirrorPlane)
     root["mirrorPlane"].append(triple(p));
   if (s.segment >= 0)
@@ -303,7 +311,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "segment",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "segment",
       "deformations", "names",
       "measurements",
       "surface", "input" },
@@ -395,6 +403,23 @@ bool readSession(
     return false;
   }
   s.softTissueWindow = window == "soft tissue";
+  if (root.isMember("scanWindowLevel") && !root["scanWindowLevel"].isNull())
+  {
+    std::array<double, 2> wl{ 0, 0 };
+    if (!jsonNumbers(root["scanWindowLevel"], wl) || !(wl[0] > 0.0) || wl[0] > lkapp::kLargestHandWindow ||
+      std::abs(wl[1]) > lkapp::kLargestHandWindow)
+    {
+      error = session + ": \"scanWindowLevel\" must be [width, level]: a width above 0 and both at most 100,000";
+      return false;
+    }
+    s.scanWindowWidth = wl[0];
+    s.scanWindowLevel = wl[1];
+  }
+  if (!jsonMember(
+        root, "scanOffset", s.scanOffset,
+        [](const Json::Value& v, double& out) { return jsonNumber(v, out) && std::abs(out) <= 200.0; }, session,
+        "a number of mm from -200 to 200", error))
+    return false;
   if (root.isMember("mirrorPlane"))
   {
     const Json::Value& plane = root["mirrorPlane"];

@@ -23,6 +23,12 @@
 //                                                     (the plan's numbering; 0: none)
 //   "scanAcross": bool                                across the line, not on its plane
 //   "scanWindow": "bone" | "soft tissue"              its window (bone)
+//   "scanWindowLevel": [width > 0, level]             a window set by hand (the
+//                                                     view dragged), in place of
+//                                                     scanWindow's (none)
+//   "scanOffset": -200 to 200                         the view's plane moved along
+//                                                     its normal, mm toward the
+//                                                     viewer (the wheel; 0)
 //   "segment": {"piece": i, "matrix": [16 numbers],   the moved piece, row-major 4x4,
 //               "at": [x, y, z]}                      and a point of it (see below)
 //   "deformations": [{"tool": "bump" | "box" | "smooth", "piece": i,
@@ -177,6 +183,12 @@ struct Session
   bool scanAcross = false;
   /// The CT shown in the soft-tissue window (C), not the bone window.
   bool softTissueWindow = false;
+  /// A window set by hand (the view dragged; width > 0), in place of the
+  /// preset's; width 0: none.
+  double scanWindowWidth = 0.0, scanWindowLevel = 0.0;
+  /// The view's plane moved along its normal, mm toward the viewer (the
+  /// mouse wheel over the view): the planes beside the cut.
+  double scanOffset = 0.0;
   /// Three points of the bone (midline landmarks, in its frame before any
   /// move) that set the plane to mirror across (O, three clicks); empty: the
   /// bone's fitted plane of symmetry.

@@ -462,17 +462,109 @@ void PlannerStyle::measureClick()
   this->Interactor->Render();
 }
 
-void PlannerStyle::OnLeftButtonDown()
+bool PlannerStyle::picksOnTheBone() const
 {
-  // The CT view hides the bone behind it: a click there picks nothing.
+  return planner->naming == 1 || planner->measuring || planner->tool != NO_TOOL || planner->moving ||
+    planner->sawing || planner->drawing;
+}
+
+bool PlannerStyle::onScanView(int x, int y) const
+{
+  return planner->scanRenderer->GetDraw() && planner->scanRenderer->IsInViewport(x, y);
+}
+
+void PlannerStyle::dragWindow()
+{
   const int* at = this->Interactor->GetEventPosition();
-  if (planner->scanRenderer->GetDraw() && planner->scanRenderer->IsInViewport(at[0], at[1]) &&
-    (planner->naming == 1 || planner->measuring || planner->tool != NO_TOOL || planner->moving || planner->sawing ||
-      planner->drawing))
+  const int* size = planner->scanRenderer->GetSize();
+  const double dx = at[0] - windowStart[0], dy = at[1] - windowStart[1];
+  if (std::abs(dx) + std::abs(dy) < 3 && !windowDragged)
+    return; // a click's tremor
+  windowDragged = true;
+  // The view's width to the right: four times the window; its height up:
+  // the level one window lower.
+  windowTo[0] = windowFrom[0] * std::pow(4.0, dx / std::max(1, size[0]));
+  windowTo[1] = windowFrom[1] - windowFrom[0] * dy / std::max(1, size[1]);
+  planner->previewScanWindow(windowTo[0], windowTo[1]);
+  this->Interactor->Render();
+}
+
+void PlannerStyle::endWindow()
+{
+  windowing = false;
+  if (!windowDragged)
   {
-    planner->message = "that is the CT view, not the bone: press on the bone (c hides the view)";
+    // A click on the view: in a mode that picks, it is not the bone.
+    if (picksOnTheBone())
+      planner->message = "that is the CT view, not the bone: press on the bone (c hides the view)";
     planner->updateStatus();
     this->Interactor->Render();
+    return;
+  }
+  planner->remember();
+  const lkapp::GreyWindow grey = lkapp::handWindow(windowTo[0], windowTo[1]);
+  planner->session.scanWindowWidth = grey.width;
+  planner->session.scanWindowLevel = grey.level;
+  char text[120];
+  std::snprintf(text, sizeof text, "the CT view's window set by hand: W %g, L %g (C: back to the preset)", grey.width,
+    grey.level);
+  planner->notice = text;
+  planner->rebuild();
+  planner->updateStatus();
+  this->Interactor->Render();
+}
+
+void PlannerStyle::moveScanPlane(double mm)
+{
+  Session& s = planner->session;
+  const double offset = std::clamp(s.scanOffset + mm, -200.0, 200.0);
+  if (offset == s.scanOffset)
+    return;
+  planner->remember();
+  s.scanOffset = std::abs(offset) < 1e-9 ? 0.0 : offset;
+  planner->notice.clear();
+  planner->rebuild();
+  planner->updateStatus();
+  this->Interactor->Render();
+}
+
+void PlannerStyle::OnMouseWheelForward()
+{
+  const int* at = this->Interactor->GetEventPosition();
+  if (onScanView(at[0], at[1]))
+    return moveScanPlane(1.0);
+  vtkInteractorStyleTrackballCamera::OnMouseWheelForward();
+}
+
+void PlannerStyle::OnMouseWheelBackward()
+{
+  const int* at = this->Interactor->GetEventPosition();
+  if (onScanView(at[0], at[1]))
+    return moveScanPlane(-1.0);
+  vtkInteractorStyleTrackballCamera::OnMouseWheelBackward();
+}
+
+void PlannerStyle::OnLeftButtonDown()
+{
+  // The CT view hides the bone behind it: a press there sets the view's
+  // window (a CT's), a click picks nothing.
+  const int* at = this->Interactor->GetEventPosition();
+  if (onScanView(at[0], at[1]))
+  {
+    if (planner->scanIsLabelMap || !planner->scanPicture.image)
+    {
+      planner->message = picksOnTheBone() ? "that is the CT view, not the bone: press on the bone (c hides the view)" :
+                                 "the view shows a label map, which has no window to drag (the wheel moves its plane)";
+      planner->updateStatus();
+      this->Interactor->Render();
+      return;
+    }
+    windowing = true;
+    windowDragged = false;
+    windowStart[0] = at[0];
+    windowStart[1] = at[1];
+    windowFrom[0] = windowTo[0] = planner->scanPicture.grey.width;
+    windowFrom[1] = windowTo[1] = planner->scanPicture.grey.level;
     return;
   }
   if (planner->naming == 1)
@@ -500,6 +592,8 @@ void PlannerStyle::OnLeftButtonDown()
 
 void PlannerStyle::OnMouseMove()
 {
+  if (windowing)
+    return dragWindow();
   if (planner->tool != NO_TOOL && pressed)
     return dragDeform();
   if (planner->moving && pressed)
@@ -513,6 +607,8 @@ void PlannerStyle::OnMouseMove()
 
 void PlannerStyle::OnLeftButtonUp()
 {
+  if (windowing)
+    return endWindow();
   if (planner->tool != NO_TOOL && pressed)
     return endDeform();
   if (planner->moving && pressed)
@@ -828,6 +924,7 @@ void PlannerStyle::OnChar()
     {
       // On a line's plane, across it, the next line's plane, ..., none.
       planner->remember();
+      s.scanOffset = 0.0; // another plane: the cut's own
       if (s.scanOnLine > 0 && !s.scanAcross && std::find(lines.begin(), lines.end(), s.scanOnLine) != lines.end())
         s.scanAcross = true;
       else
@@ -850,6 +947,12 @@ void PlannerStyle::OnChar()
     {
       rebuild = false;
       planner->message = "C: the view shows a label map, which has no soft tissue to window";
+    }
+    else if (s.scanWindowWidth > 0.0)
+    {
+      // The window set by hand goes: the preset it was set from.
+      planner->remember();
+      s.scanWindowWidth = s.scanWindowLevel = 0.0;
     }
     else
     {

@@ -96,9 +96,29 @@ public:
 
   void endDeform();
 
+  /// The CT view (c) is dragged as radiology viewers are: to the right a
+  /// wider window, up a lower level (brighter); the session takes the
+  /// window when the button is let go. A press without a drag in a mode
+  /// that picks says that the view is not the bone.
+  bool windowing = false, windowDragged = false;
+  int windowStart[2] = { 0, 0 };
+  double windowFrom[2] = { 0, 0 }, windowTo[2] = { 0, 0 }; ///< width and level, at the press and now
+  /// Whether a left press picks a point of the bone (naming, measuring,
+  /// deforming, moving, sawing, drawing) rather than turning the view.
+  bool picksOnTheBone() const;
+  /// Whether display (x, y) is on the CT view.
+  bool onScanView(int x, int y) const;
+  void dragWindow();
+  void endWindow();
+  /// The mouse wheel over the CT view moves its plane along its normal,
+  /// 1 mm a step (forward: toward the viewer); elsewhere it zooms.
+  void moveScanPlane(double mm);
+
   void OnLeftButtonDown() override;
   void OnMouseMove() override;
   void OnLeftButtonUp() override;
+  void OnMouseWheelForward() override;
+  void OnMouseWheelBackward() override;
   /// The view turns with the right button while the left one has a tool
   /// (draw, move, deform); otherwise the trackball's (zoom).
   void OnRightButtonDown() override;
