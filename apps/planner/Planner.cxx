@@ -773,6 +773,18 @@ void Planner::setup()
   }
   mirrorPlaneActor->GetProperty()->SetOpacity(0.12);
   mirrorPlaneOutline->GetProperty()->SetLineWidth(2.0);
+  for (vtkActor* actor : { scanPlaneSheet.Get(), scanPlaneOutline.Get() })
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(kScanPlaneColour[0], kScanPlaneColour[1], kScanPlaneColour[2]);
+    actor->GetProperty()->LightingOff();
+    actor->SetVisibility(false);
+    actor->PickableOff(); // strokes and picks land on the bone
+    renderer->AddActor(actor);
+  }
+  scanPlaneSheet->GetProperty()->SetOpacity(0.15);
+  scanPlaneOutline->GetProperty()->SetLineWidth(2.0);
   // The patient's sides, as medical viewers show them: a mandible is nearly
   // symmetric, and a cut planned on the wrong side is the error to prevent.
   // Patient x, y, z point to the left, back and up in LPS; to the right,
@@ -1398,6 +1410,33 @@ void Planner::showScan()
     addLine(message, "no " + scanText(session.scanOnLine, session.scanAcross) + ": " + scanWhy);
   scanRenderer->SetDraw(scanWhy.empty());
   renderer->GetActiveCamera()->SetUserTransform(scanWhy.empty() ? roomForScan.Get() : nullptr);
+  showScanPlane();
+}
+
+void Planner::showScanPlane()
+{
+  const bool shown = scanRenderer->GetDraw() && scanPicture.image;
+  for (vtkActor* actor : { scanPlaneSheet.Get(), scanPlaneOutline.Get() })
+    actor->SetVisibility(shown);
+  if (!shown)
+    return;
+  // The picture's square, corner by corner around it.
+  const lkapp::ViewFrame& f = scanPicture.frame;
+  const double half = 0.5 * scanPicture.side;
+  vtkNew<vtkPoints> corners;
+  for (const auto& [x, y] : { std::make_pair(-half, -half), { half, -half }, { half, half }, { -half, half } })
+    corners->InsertNextPoint(f.centre[0] + x * f.right[0] + y * f.up[0], f.centre[1] + x * f.right[1] + y * f.up[1],
+      f.centre[2] + x * f.right[2] + y * f.up[2]);
+  const vtkIdType quad[4] = { 0, 1, 2, 3 }, loop[5] = { 0, 1, 2, 3, 0 };
+  vtkNew<vtkPolyData> sheet, outline;
+  sheet->SetPoints(corners);
+  sheet->Allocate(1);
+  sheet->InsertNextCell(VTK_QUAD, 4, quad);
+  outline->SetPoints(corners);
+  outline->Allocate(1);
+  outline->InsertNextCell(VTK_POLY_LINE, 5, loop);
+  vtkPolyDataMapper::SafeDownCast(scanPlaneSheet->GetMapper())->SetInputData(sheet);
+  vtkPolyDataMapper::SafeDownCast(scanPlaneOutline->GetMapper())->SetInputData(outline);
 }
 
 std::vector<std::vector<std::array<double, 3>>> Planner::movedSection(

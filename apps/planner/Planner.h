@@ -267,6 +267,10 @@ public:
   /// Shows (or hides) the scan as the session asks; a line that cannot be
   /// shown gets a message.
   void showScan();
+  /// The view's square in the 3D view (scanPlaneSheet, scanPlaneOutline).
+  void showScanPlane();
+  /// Its colour, unlit: a pale blue.
+  static constexpr std::array<double, 3> kScanPlaneColour{ 0.6, 0.75, 0.95 };
   /// "CT on cut line 1's plane": what the view shows, for the status line and the report.
   std::string scanShown() const;
   std::string scanShownKey, scanWhy; ///< what the view shows (cut key and line), why it shows nothing
@@ -282,6 +286,9 @@ public:
   /// it, when the picture (showScan) or the move changed: placeSegment calls
   /// it, during a drag too.
   void showScanMoved(const std::array<double, 16>& matrix);
+  /// Where the view's picture lies on the bone: its square, a faint sheet
+  /// and its outline in the 3D view (it follows the wheel's moves).
+  vtkNew<vtkActor> scanPlaneSheet, scanPlaneOutline;
   /// While the view is shown, the main view's camera draws the bone in the
   /// rest of the window (its user transform, after the projection).
   vtkNew<vtkTransform> roomForScan;
