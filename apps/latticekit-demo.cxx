@@ -112,6 +112,10 @@ struct Plan
   double penStep = 1.0;             ///< mm between stroke points
   long vertices = 1500;
   std::array<double, 3> viewFrom{ 0, 0, 1 }, viewUp{ 0, -1, 0 };
+  /// The patient's head and front in the scan's coordinates, for a scan
+  /// whose file gives no orientation: the CT pictures stand head up.
+  bool patientGiven = false;
+  lkapp::HeadAndFront patient;
 };
 
 /// Reads the plan, every field's kind checked (a wrong one is refused with a
@@ -126,9 +130,10 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
     if (const std::string unknown = unknownMembers(object, known); !unknown.empty())
       std::cerr << "warning: " << name << " has fields latticekit-demo does not know, ignored: " << unknown << "\n";
   };
-  warnUnknown(root, { "description", "iso", "smoothing", "crop", "seed", "cut", "latticeVertices", "view" }, "the plan");
+  warnUnknown(root, { "description", "iso", "smoothing", "crop", "seed", "cut", "latticeVertices", "view", "patient" }, "the plan");
   warnUnknown(root["cut"], { "origin", "normal", "penOffset", "penStep" }, "the plan's cut");
   warnUnknown(root["view"], { "from", "up" }, "the plan's view");
+  warnUnknown(root["patient"], { "head", "front" }, "the plan's patient");
   long long smoothing = plan.smoothing, vertices = plan.vertices;
   const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 10000, out); };
   const auto count = [](const Json::Value& v, long long& out) { return jsonInteger(v, 8, 100000000, out); };
@@ -176,6 +181,16 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
   {
     error = "the plan's view needs \"from\" and \"up\" as [x, y, z]";
     return false;
+  }
+  if (root.isMember("patient"))
+  {
+    if (!root["patient"].isObject() || !jsonNumbers(root["patient"]["head"], plan.patient.head) ||
+      !jsonNumbers(root["patient"]["front"], plan.patient.front) || !lkapp::isValid(plan.patient))
+    {
+      error = "the plan's patient needs \"head\" and \"front\" as [x, y, z]: non-zero and not parallel";
+      return false;
+    }
+    plan.patientGiven = true;
   }
   const double n = std::sqrt(plan.normal[0] * plan.normal[0] + plan.normal[1] * plan.normal[1] + plan.normal[2] * plan.normal[2]);
   if (!(n > 0) || !(plan.penStep > 0) || plan.penOffset < 0)
@@ -819,6 +834,10 @@ int main(int argc, char* argv[])
       request.centre = { f.centre[0], f.centre[1], f.centre[2] };
       request.normal = { f.normal[0], f.normal[1], f.normal[2] };
       const bool labelMap = bone->GetTreatedAsLabelMap();
+      const bool oriented = lkapp::coordinateSpace(mandible) == "LPS";
+      // A scan without orientation stands as the plan says its patient lies.
+      request.patientGiven = plan.patientGiven && !oriented;
+      request.patient = plan.patient;
       for (const bool across : { false, true })
       {
         request.across = across;
@@ -831,8 +850,9 @@ int main(int argc, char* argv[])
           return 1;
         }
         scanPicture.title = std::string(labelMap ? "label map" : "CT") +
-          (across ? " across the cut line" : " on the cut line's plane");
-        scanPicture.directions = lkapp::coordinateSpace(mandible) == "LPS";
+          (across ? " across the cut line" : " on the cut line's plane") +
+          (request.patientGiven ? ", head up as the plan states" : "");
+        scanPicture.directions = oriented;
         ok = ok &&
           lkapp::writeScanPicture(scanPicture, 600,
             folder + (across ? "/cut_line_across_ct.png" : "/cut_line_ct.png"), error, display);
@@ -844,7 +864,10 @@ int main(int argc, char* argv[])
       return 1;
     }
     report << ", `plan.png`, `pieces.png`, `error.png`, `cut_line_ct.png` and `cut_line_across_ct.png` (the CT on the "
-              "cut line's plane and across it)";
+              "cut line's plane and across it"
+           << (plan.patientGiven && lkapp::coordinateSpace(mandible) != "LPS" ?
+                  ", head up as the plan's \"patient\" states: the scan gives no orientation" : "")
+           << ")";
   }
   report << ".\n\nTotal time: " << std::fixed;
   report.precision(1);

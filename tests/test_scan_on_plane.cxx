@@ -59,6 +59,46 @@ TEST(ScanOnPlane, ShowsPlanesAsRadiologistsDo)
   EXPECT_NEAR(p[2], -3.0, 1e-12);
 }
 
+TEST(ScanOnPlane, StandsAsThePlanSaysThePatientLies)
+{
+  // The bundled CT head: no orientation in its file, its +z to the feet
+  // and -y to the face (sample_data/cthead/mandible_plan.json's "patient").
+  const lkapp::HeadAndFront headDown{ { 0, 0, -1 }, { 0, -1, 0 } };
+  ASSERT_TRUE(lkapp::isValid(headDown));
+  const auto expectVector = [](const std::array<double, 3>& v, const std::array<double, 3>& expected) {
+    for (std::size_t i = 0; i < 3; ++i)
+      EXPECT_NEAR(v[i], expected[i], 1e-12) << "component " << i;
+  };
+  // Axial: from the feet (+z here), the front (-y) up.
+  lkapp::ViewFrame f = lkapp::viewFrame({ 1, 2, 3 }, { 0, 0, 1 }, headDown);
+  expectVector(f.towardViewer, { 0, 0, 1 });
+  expectVector(f.up, { 0, -1, 0 });
+  expectVector(f.centre, { 1, 2, 3 });
+  // Coronal: from the front, the head (-z here) up; sagittal: the head up.
+  f = lkapp::viewFrame({ 0, 0, 0 }, { 0, 1, 0.2 }, headDown);
+  EXPECT_NEAR(f.towardViewer[1], -std::cos(std::atan(0.2)), 1e-12);
+  EXPECT_LT(f.up[2], -0.9);
+  f = lkapp::viewFrame({ 0, 0, 0 }, { 1, 0, 0 }, headDown);
+  expectVector(f.up, { 0, 0, -1 });
+  // Right-handed and orthonormal, as the plain frame.
+  std::array<double, 3> cross;
+  vtkMath::Cross(f.right.data(), f.up.data(), cross.data());
+  expectVector(cross, f.towardViewer);
+  // The default (an LPS scan's head and front) is the plain frame.
+  const lkapp::ViewFrame plain = lkapp::viewFrame({ 0, 0, 0 }, { 0.3, -0.8, 0.4 });
+  const lkapp::ViewFrame lps = lkapp::viewFrame({ 0, 0, 0 }, { 0.3, -0.8, 0.4 }, lkapp::HeadAndFront());
+  expectVector(lps.right, plain.right);
+  expectVector(lps.up, plain.up);
+  expectVector(lps.towardViewer, plain.towardViewer);
+  // What states no patient: a zero, a NaN, a head along the front.
+  EXPECT_FALSE(lkapp::isValid({ { 0, 0, 0 }, { 0, 1, 0 } }));
+  EXPECT_FALSE(lkapp::isValid({ { 0, 0, std::nan("") }, { 0, 1, 0 } }));
+  EXPECT_FALSE(lkapp::isValid({ { 0, 0, 1 }, { 0, 0.1, -2 } }));
+  // ... and falls back to the plain frame.
+  const lkapp::ViewFrame fallback = lkapp::viewFrame({ 0, 0, 0 }, { 0.3, -0.8, 0.4 }, { { 0, 0, 1 }, { 0, 0, 1 } });
+  expectVector(fallback.up, plain.up);
+}
+
 TEST(ScanOnPlane, ReslicesWhereThePatientMatrixPutsTheVolume)
 {
   // A volume whose value is a linear function of the patient position

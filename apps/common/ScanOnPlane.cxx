@@ -40,6 +40,46 @@ ViewFrame viewFrame(const std::array<double, 3>& centre, const std::array<double
   return f;
 }
 
+bool isValid(const HeadAndFront& patient)
+{
+  const double head = vtkMath::Norm(patient.head.data()), front = vtkMath::Norm(patient.front.data());
+  if (!std::isfinite(head) || !std::isfinite(front) || !(head > 0.0) || !(front > 0.0))
+    return false;
+  std::array<double, 3> cross;
+  vtkMath::Cross(patient.head.data(), patient.front.data(), cross.data());
+  return vtkMath::Norm(cross.data()) > std::sin(vtkMath::RadiansFromDegrees(10.0)) * head * front;
+}
+
+ViewFrame viewFrame(const std::array<double, 3>& centre, const std::array<double, 3>& normal,
+  const HeadAndFront& patient)
+{
+  if (!isValid(patient))
+    return viewFrame(centre, normal);
+  // The patient's L, P and S axes in the scan's coordinates.
+  std::array<double, 3> s = patient.head, p = patient.front, l;
+  vtkMath::Normalize(s.data());
+  const double along = vtkMath::Dot(p.data(), s.data());
+  for (std::size_t i = 0; i < 3; ++i)
+    p[i] = -(p[i] - along * s[i]); // the back: the front made square to the head, turned
+  vtkMath::Normalize(p.data());
+  vtkMath::Cross(p.data(), s.data(), l.data());
+  const auto toPatient = [&](const std::array<double, 3>& v) {
+    return std::array<double, 3>{ vtkMath::Dot(v.data(), l.data()), vtkMath::Dot(v.data(), p.data()),
+      vtkMath::Dot(v.data(), s.data()) };
+  };
+  const auto toScan = [&](const std::array<double, 3>& w) {
+    std::array<double, 3> v;
+    for (std::size_t i = 0; i < 3; ++i)
+      v[i] = w[0] * l[i] + w[1] * p[i] + w[2] * s[i];
+    return v;
+  };
+  ViewFrame f = viewFrame(centre, toPatient(normal));
+  f.right = toScan(f.right);
+  f.up = toScan(f.up);
+  f.towardViewer = toScan(f.towardViewer);
+  return f;
+}
+
 std::array<double, 3> inFrame(const ViewFrame& frame, const std::array<double, 3>& point)
 {
   std::array<double, 3> d;

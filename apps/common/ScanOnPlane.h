@@ -33,6 +33,24 @@ struct ViewFrame
 /// front's for a plane nearest axial) within the plane.
 ViewFrame viewFrame(const std::array<double, 3>& centre, const std::array<double, 3>& normal);
 
+/// Where a scan's file gives no orientation (a NIfTI without qform or
+/// sform), the patient's head and face directions in its coordinates, as a
+/// plan states them. The patient's left is taken as an LPS scan would have
+/// it (left = back x head), which such a file cannot confirm.
+struct HeadAndFront
+{
+  std::array<double, 3> head{ 0, 0, 1 }, front{ 0, -1, 0 };
+};
+/// Whether both are non-zero, finite and not parallel (10 degrees apart at
+/// least).
+bool isValid(const HeadAndFront& patient);
+
+/// viewFrame in a scan whose patient directions are `patient`'s: the plane
+/// shown as the nearest standard one of that patient, head (or front) up.
+/// The frame is in the scan's coordinates. Not valid: viewFrame's.
+ViewFrame viewFrame(const std::array<double, 3>& centre, const std::array<double, 3>& normal,
+  const HeadAndFront& patient);
+
 /// A point in the frame: {mm to the right of the centre, mm up, mm toward the viewer}.
 std::array<double, 3> inFrame(const ViewFrame& frame, const std::array<double, 3>& point);
 

@@ -42,9 +42,12 @@ bool makeScanPicture(vtkImageData* scan, vtkMatrix4x4* scanToPatient, bool label
     why = "the cut line has no plane";
     return false;
   }
-  const ViewFrame on = viewFrame(request.centre, normal);
+  const auto frameOf = [&](const std::array<double, 3>& n) {
+    return request.patientGiven ? viewFrame(request.centre, n, request.patient) : viewFrame(request.centre, n);
+  };
+  const ViewFrame on = frameOf(normal);
   // Across: the plane that holds the cut's normal and its up direction.
-  picture.frame = request.across ? viewFrame(request.centre, on.right) : on;
+  picture.frame = request.across ? frameOf(on.right) : on;
   // The square: three times the line's reach from its centre, 40 mm at
   // least (a mandible's section is 10 by 30 mm; its surroundings show).
   double reach = 0.0;

@@ -74,6 +74,11 @@ struct ScanPictureRequest
   /// A window set by hand (width > 0: the view dragged), in place of the
   /// preset's; a label map keeps its own.
   double windowWidth = 0.0, windowLevel = 0.0;
+  /// For a scan whose file gives no orientation: the patient's head and
+  /// front as a plan states them, so that the picture stands as a
+  /// patient's would (viewFrame's); not given: the scan's own axes.
+  bool patientGiven = false;
+  HeadAndFront patient;
 };
 
 /// Where the picture's plane lies against the cut's: "" at 0, else

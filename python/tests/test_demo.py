@@ -40,6 +40,9 @@ class DemoTest(unittest.TestCase):
                 self.assertNotIn(b"SPACE=", f.read(80))
             report = read_text(os.path.join(out, "report.md"))
             self.assertIn("Capped cut: 2 pieces", report)
+            # The bundled NIfTI gives no orientation; the plan states where
+            # the head and the face are, so the CT pictures stand head up.
+            self.assertIn("head up as the plan's \"patient\" states: the scan gives no orientation", report)
             # The cut line lies in the plan's cut plane (the section it was drawn along, 0.3 mm off).
             m = re.search(r"best-fitting plane is ([0-9.]+) deg from the plan's cut plane, its centre ([0-9.]+) mm", report)
             self.assertIsNotNone(m, report)
@@ -207,6 +210,8 @@ class DemoTest(unittest.TestCase):
                     # aborted the demo: a negative return code, from the signal).
                     ('{%s, "latticeVertices": "many"}' % cut, '"latticeVertices" must be a whole number'),
                     ('{%s, "crop": [10, 0, 0, 1, 0, 1]}' % cut, "each min below its max"),
+                    ('{%s, "patient": {"head": [0, 0, 1], "front": [0, 0, -2]}}' % cut,
+                     "the plan's patient needs \"head\" and \"front\" as [x, y, z]: non-zero and not parallel"),
                     # A box far outside the volume (its voxel indices overflow an int).
                     ('{%s, "crop": [1e300, 2e300, 0, 1, 0, 1]}' % cut, "the crop box misses the volume")]:
                 result = run_plan(text)
