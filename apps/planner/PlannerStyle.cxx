@@ -520,8 +520,13 @@ void PlannerStyle::moveScanPlane(double mm)
   const double offset = std::clamp(s.scanOffset + mm, -200.0, 200.0);
   if (offset == s.scanOffset)
     return;
-  planner->remember();
+  // The notches of one turn of the wheel are one undo step: a step right
+  // after the last one (nothing done between) adds none.
+  if (!(planner->undoStack.size() == wheelUndoSize && planner->redoStack.empty() && s.scanOffset == wheelOffset))
+    planner->remember();
   s.scanOffset = std::abs(offset) < 1e-9 ? 0.0 : offset;
+  wheelUndoSize = planner->undoStack.size();
+  wheelOffset = s.scanOffset;
   planner->notice.clear();
   planner->rebuild();
   planner->updateStatus();

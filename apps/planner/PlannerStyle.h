@@ -18,6 +18,7 @@
 #include <vtkNew.h>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,10 @@ public:
   /// The mouse wheel over the CT view moves its plane along its normal,
   /// 1 mm a step (forward: toward the viewer); elsewhere it zooms.
   void moveScanPlane(double mm);
+  /// Where the last wheel step left the undo stack and the offset: the next
+  /// step, with nothing done between, is part of the same undo step.
+  std::size_t wheelUndoSize = 0;
+  double wheelOffset = std::numeric_limits<double>::quiet_NaN();
 
   void OnLeftButtonDown() override;
   void OnMouseMove() override;
