@@ -247,6 +247,22 @@ vtkSmartPointer<vtkPoints> planeCorners(
   }
   return corners;
 }
+
+/// A plane's square drawn by two actors: a faint sheet and its outline,
+/// through its four corners in order around it.
+void showSquare(vtkPoints* corners, vtkActor* sheetActor, vtkActor* outlineActor)
+{
+  const vtkIdType quad[4] = { 0, 1, 2, 3 }, loop[5] = { 0, 1, 2, 3, 0 };
+  vtkNew<vtkPolyData> sheet, outline;
+  sheet->SetPoints(corners);
+  sheet->Allocate(1);
+  sheet->InsertNextCell(VTK_QUAD, 4, quad);
+  outline->SetPoints(corners);
+  outline->Allocate(1);
+  outline->InsertNextCell(VTK_POLY_LINE, 5, loop);
+  vtkPolyDataMapper::SafeDownCast(sheetActor->GetMapper())->SetInputData(sheet);
+  vtkPolyDataMapper::SafeDownCast(outlineActor->GetMapper())->SetInputData(outline);
+}
 } // namespace
 
 std::array<double, 3> pieceColour(std::size_t p)
@@ -356,17 +372,7 @@ const Planner::MirrorImage& Planner::mirrorImage()
   // The plane over the bone's extent: a faint sheet and its outline.
   double bounds[6];
   bone->GetBounds(bounds);
-  vtkSmartPointer<vtkPoints> corners = planeCorners(mirror.origin, mirror.normal, bounds);
-  const vtkIdType quad[4] = { 0, 1, 2, 3 }, loop[5] = { 0, 1, 2, 3, 0 };
-  vtkNew<vtkPolyData> sheet, outline;
-  sheet->SetPoints(corners);
-  sheet->Allocate(1);
-  sheet->InsertNextCell(VTK_QUAD, 4, quad);
-  outline->SetPoints(corners);
-  outline->Allocate(1);
-  outline->InsertNextCell(VTK_POLY_LINE, 5, loop);
-  vtkPolyDataMapper::SafeDownCast(mirrorPlaneActor->GetMapper())->SetInputData(sheet);
-  vtkPolyDataMapper::SafeDownCast(mirrorPlaneOutline->GetMapper())->SetInputData(outline);
+  showSquare(planeCorners(mirror.origin, mirror.normal, bounds), mirrorPlaneActor, mirrorPlaneOutline);
   return mirror;
 }
 
@@ -1427,16 +1433,7 @@ void Planner::showScanPlane()
   for (const auto& [x, y] : { std::make_pair(-half, -half), { half, -half }, { half, half }, { -half, half } })
     corners->InsertNextPoint(f.centre[0] + x * f.right[0] + y * f.up[0], f.centre[1] + x * f.right[1] + y * f.up[1],
       f.centre[2] + x * f.right[2] + y * f.up[2]);
-  const vtkIdType quad[4] = { 0, 1, 2, 3 }, loop[5] = { 0, 1, 2, 3, 0 };
-  vtkNew<vtkPolyData> sheet, outline;
-  sheet->SetPoints(corners);
-  sheet->Allocate(1);
-  sheet->InsertNextCell(VTK_QUAD, 4, quad);
-  outline->SetPoints(corners);
-  outline->Allocate(1);
-  outline->InsertNextCell(VTK_POLY_LINE, 5, loop);
-  vtkPolyDataMapper::SafeDownCast(scanPlaneSheet->GetMapper())->SetInputData(sheet);
-  vtkPolyDataMapper::SafeDownCast(scanPlaneOutline->GetMapper())->SetInputData(outline);
+  showSquare(corners, scanPlaneSheet, scanPlaneOutline);
 }
 
 std::vector<std::vector<std::array<double, 3>>> Planner::movedSection(
