@@ -1273,6 +1273,7 @@ void Planner::rebuild()
       addLine(message, "no mirror image: " + mirror.error);
   }
   showNames();
+  sceneMessage = message;
   showScan();
   placeSegment(session.segmentMatrix); // and the measurements and the fit to the mirror
   keepChanges();
@@ -1417,6 +1418,15 @@ void Planner::showScan()
   scanRenderer->SetDraw(scanWhy.empty());
   renderer->GetActiveCamera()->SetUserTransform(scanWhy.empty() ? roomForScan.Get() : nullptr);
   showScanPlane();
+}
+
+void Planner::refreshScan()
+{
+  message = sceneMessage; // what the scene said, not the last key's answer
+  showScan();
+  showScanMoved(session.segmentMatrix);
+  keepChanges();
+  updateStatus();
 }
 
 void Planner::showScanPlane()

@@ -267,6 +267,12 @@ public:
   /// Shows (or hides) the scan as the session asks; a line that cannot be
   /// shown gets a message.
   void showScan();
+  /// After a change of the view alone (its plane's offset, its window): the
+  /// view and the status, without rebuilding the scene.
+  void refreshScan();
+  /// The message as the scene's rebuild left it, before the view's line:
+  /// refreshScan starts from it.
+  std::string sceneMessage;
   /// The view's square in the 3D view (scanPlaneSheet, scanPlaneOutline).
   void showScanPlane();
   /// Its colour, unlit: a pale blue.

@@ -509,8 +509,7 @@ void PlannerStyle::endWindow()
   std::snprintf(text, sizeof text, "the CT view's window set by hand: W %g, L %g (C: back to the preset)", grey.width,
     grey.level);
   planner->notice = text;
-  planner->rebuild();
-  planner->updateStatus();
+  planner->refreshScan();
   this->Interactor->Render();
 }
 
@@ -528,8 +527,7 @@ void PlannerStyle::moveScanPlane(double mm)
   wheelUndoSize = planner->undoStack.size();
   wheelOffset = s.scanOffset;
   planner->notice.clear();
-  planner->rebuild();
-  planner->updateStatus();
+  planner->refreshScan();
   this->Interactor->Render();
 }
 
