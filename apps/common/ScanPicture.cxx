@@ -232,6 +232,14 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   renderer->AddViewProp(polylines(picture, picture.cutTrace, 0.75, { 1.0, 0.4, 0.1 }, 1.5f));
   renderer->AddViewProp(polylines(picture, picture.line, 1.0, { 1.0, 0.4, 0.1 }, 2.5f));
   renderer->AddViewProp(polylines(picture, picture.moved, 1.25, { 0.2, 0.9, 1.0 }, 2.0f));
+  renderer->AddViewProp(polylines(picture, picture.measured, 1.5, kMeasuredColour, 2.5f));
+  for (const auto& [at, text] : picture.measuredValues)
+  {
+    const auto q = inFrame(picture.frame, at);
+    auto value = label(text, 0.5 + q[0] / picture.side + 0.02, 0.5 + q[1] / picture.side + 0.02, fontSize,
+      kMeasuredColour, VTK_TEXT_LEFT, VTK_TEXT_BOTTOM);
+    renderer->AddViewProp(value);
+  }
   // What the colours are, under the title; the scan's edge only where the
   // picture shows it.
   bool edgeShown = false;
@@ -250,6 +258,8 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
     (edgeShown ? ", blue: edge of the scan" : "");
   if (!picture.moved.empty())
     legendText += "\ncyan: the segment where the plan moves it";
+  if (!picture.measured.empty())
+    legendText += "\nmagenta: measured on this plane";
   if (!picture.hint.empty())
     legendText += "\n" + picture.hint;
   auto legend = label(legendText,

@@ -43,12 +43,20 @@ struct ScanPicture
   std::vector<std::vector<std::array<double, 3>>> moved;
   /// The top line; the window (greyWindowLabel) is written at the bottom
   /// right, as radiology viewers write it.
+  /// Measurements on the picture's plane (magenta): their lines (a point
+  /// still waiting for its other end as a small cross) and their values at
+  /// the points given, in patient coordinates.
+  std::vector<std::vector<std::array<double, 3>>> measured;
+  std::vector<std::pair<std::array<double, 3>, std::string>> measuredValues;
   std::string title;
   /// A last line of the legend (the planner's: what the mouse does there);
   /// none in the exported pictures.
   std::string hint;
   bool directions = false; ///< the patient's directions are known: letters on the edges
 };
+
+/// The measurements' colour in the picture (magenta).
+constexpr std::array<double, 3> kMeasuredColour{ 0.95, 0.35, 0.85 };
 
 /// A plane: a point of it and its normal.
 using Plane = std::pair<std::array<double, 3>, std::array<double, 3>>;

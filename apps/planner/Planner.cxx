@@ -1469,11 +1469,74 @@ void Planner::showScanMoved(const std::array<double, 16>& matrix)
   if (hasSegment() && !isIdentity(matrix))
     for (double v : matrix)
       key += " " + std::to_string(v);
-  if (key == scanMovedKey)
+  lkapp::ScanPicture marks;
+  marks.frame = scanPicture.frame;
+  measuredOnPlane(marks, true);
+  std::string measuredKey;
+  for (const auto& line : marks.measured)
+    for (const auto& q : line)
+      measuredKey += std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]) + ";";
+  for (const auto& [at, text] : marks.measuredValues)
+    measuredKey += text + ";";
+  if (key == scanMovedKey && measuredKey == scanMeasuredKey)
     return;
+  if (key != scanMovedKey)
+    scanPicture.moved = movedSection(scanPicture.frame, matrix);
   scanMovedKey = key;
-  scanPicture.moved = movedSection(scanPicture.frame, matrix);
+  scanMeasuredKey = measuredKey;
+  scanPicture.measured = marks.measured;
+  scanPicture.measuredValues = marks.measuredValues;
   lkapp::showScanPicture(scanRenderer, scanPicture, 12);
+}
+
+void Planner::measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const
+{
+  picture.measured.clear();
+  picture.measuredValues.clear();
+  // As picked: the CT is the scan before the segment's move.
+  const auto onPlane = [&](const std::array<double, 3>& q) {
+    return std::abs(lkapp::inFrame(picture.frame, q)[2]) <= kOnScanPlane;
+  };
+  for (const Measurement& m : session.measurements)
+  {
+    const std::vector<std::array<double, 3>> points = m.points();
+    if (!std::all_of(points.begin(), points.end(), onPlane))
+      continue;
+    if (m.angle)
+    {
+      picture.measured.push_back({ m.from, m.at, m.to });
+      picture.measuredValues.emplace_back(m.at, valueText(m));
+    }
+    else
+    {
+      picture.measured.push_back({ m.from, m.to });
+      picture.measuredValues.emplace_back(
+        std::array<double, 3>{ 0.5 * (m.from[0] + m.to[0]), 0.5 * (m.from[1] + m.to[1]), 0.5 * (m.from[2] + m.to[2]) },
+        valueText(m));
+    }
+  }
+  // The points of a measurement under way: small crosses, joined.
+  if (!picking || measuring == 0 || settingPlane)
+    return;
+  std::vector<std::array<double, 3>> waiting;
+  for (const auto& q : measurePicked)
+    if (onPlane(q))
+    {
+      waiting.push_back(q);
+      const double arm = 0.015 * picture.side;
+      for (const auto& [x, y] : { std::make_pair(1.0, 1.0), std::make_pair(1.0, -1.0) })
+      {
+        std::array<double, 3> a = q, b = q;
+        for (std::size_t i = 0; i < 3; ++i)
+        {
+          a[i] -= arm * (x * picture.frame.right[i] + y * picture.frame.up[i]);
+          b[i] += arm * (x * picture.frame.right[i] + y * picture.frame.up[i]);
+        }
+        picture.measured.push_back({ a, b });
+      }
+    }
+  if (waiting.size() >= 2)
+    picture.measured.push_back(waiting);
 }
 
 bool Planner::writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error)
@@ -1489,7 +1552,10 @@ bool Planner::writeScanPictures(const std::string& folder, std::vector<std::stri
       const std::string name = "cut_line" + std::to_string(number) + (across ? "_across" : "") + "_ct.png";
       const bool made = scanPictureOf(number, across, 0.0, picture, why);
       if (made)
+      {
         picture.moved = movedSection(picture.frame, session.segmentMatrix);
+        measuredOnPlane(picture, false);
+      }
       if (!made ||
         !lkapp::writeScanPicture(picture, 600, folder + "/" + name, why, window->GetGenericDisplayId()))
       {
@@ -1686,6 +1752,7 @@ void Planner::showMeasurements()
     balls->Update();
     vtkPolyDataMapper::SafeDownCast(measureMarker->GetMapper())->SetInputData(balls->GetOutput());
   }
+  showScanMoved(shownMatrix); // and on the CT view, what lies on its plane
   if (session.measurements.empty())
     return;
   vtkNew<vtkPoints> points;
@@ -2044,15 +2111,18 @@ void Planner::updateStatus()
   else if (naming == 2)
     s << " | NAME " << pieceLabel(static_cast<std::size_t>(namingPiece)) << ": " << namingText << composer.pending()
       << "_ (Return keeps it, an empty name takes it away; Escape: stop)";
+  // With the CT view shown, its plane's points can be measured too.
+  const std::string where = scanRenderer->GetDraw() && measuring && !settingPlane ? " on the bone or the CT" : "";
   if (measuring == 2)
-    s << (measurePicked.empty() ? " | MEASURE: click the first point (u: stop)" : " | MEASURE: click the second point (u: stop)");
+    s << " | MEASURE: click the " << (measurePicked.empty() ? "first" : "second") << " point" << where << " (u: stop)";
   else if (measuring == 3 && settingPlane)
     s << " | MIRROR PLANE: click a point of the bone's midline, " << measurePicked.size() + 1
       << " of 3 (O again: the fitted plane; Escape: stop)";
   else if (measuring == 3)
-    s << (measurePicked.empty()       ? " | ANGLE: click an arm's end (a: stop)"
-            : measurePicked.size() == 1 ? " | ANGLE: click the vertex (a: stop)"
-                                        : " | ANGLE: click the other arm's end (a: stop)");
+    s << (measurePicked.empty()       ? " | ANGLE: click an arm's end"
+            : measurePicked.size() == 1 ? " | ANGLE: click the vertex"
+                                        : " | ANGLE: click the other arm's end")
+      << where << " (a: stop)";
   else if (!session.measurements.empty())
     s << " | measured: " << measuredText(session.measurements.back())
       << (session.measurements.size() > 1 ? " (last of " + std::to_string(session.measurements.size()) + ")" : "");

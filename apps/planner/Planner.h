@@ -283,7 +283,12 @@ public:
   /// What the view shows, and the segment's move its cyan section is drawn
   /// for (piece and matrix).
   lkapp::ScanPicture scanPicture;
-  std::string scanMovedKey;
+  std::string scanMovedKey, scanMeasuredKey;
+  /// The measurements whose points lie on the picture's plane (within
+  /// kOnScanPlane mm), as picked, into its `measured` and `measuredValues`;
+  /// `picking`: with the points of one under way.
+  void measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const;
+  static constexpr double kOnScanPlane = 1.0;
   /// The moved segment's section by the frame's plane where `matrix` puts
   /// it; none when no segment is moved.
   std::vector<std::vector<std::array<double, 3>>> movedSection(

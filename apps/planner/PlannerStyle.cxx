@@ -388,6 +388,44 @@ void PlannerStyle::measureClick()
     this->Interactor->Render();
     return;
   }
+  addMeasuredPoint(point, piece);
+}
+
+void PlannerStyle::measureOnScan()
+{
+  // The point of the CT view's plane under the click, in the scan's (the
+  // bone's unmoved) coordinates; it goes with the piece nearest it (a point
+  // of the mandibular canal, inside the bone, with the bone around it).
+  Planner& p = *planner;
+  const int* pos = this->Interactor->GetEventPosition();
+  vtkRenderer* view = p.scanRenderer;
+  view->SetDisplayPoint(pos[0], pos[1], 0.0);
+  view->DisplayToWorld();
+  double world[4];
+  view->GetWorldPoint(world);
+  const double half = 0.5 * p.scanPicture.side;
+  const double x = world[3] != 0.0 ? world[0] / world[3] : world[0], y = world[3] != 0.0 ? world[1] / world[3] : world[1];
+  if (!(std::abs(x) <= half && std::abs(y) <= half))
+  {
+    p.message = "that is beside the CT's picture: click in it (or on the bone)";
+    p.updateStatus();
+    this->Interactor->Render();
+    return;
+  }
+  const lkapp::ViewFrame& f = p.scanPicture.frame;
+  std::array<double, 3> point;
+  for (std::size_t i = 0; i < 3; ++i)
+    point[i] = f.centre[i] + x * f.right[i] + y * f.up[i];
+  const std::vector<double> distance = p.pieceDistances({ point }).front();
+  const auto nearest = std::min_element(distance.begin(), distance.end());
+  const int piece = nearest != distance.end() && *nearest < VTK_DOUBLE_MAX ? static_cast<int>(nearest - distance.begin()) : -1;
+  addMeasuredPoint(point, piece);
+}
+
+void PlannerStyle::addMeasuredPoint(const std::array<double, 3>& point, int piece)
+{
+  Planner& p = *planner;
+  const bool angle = p.measuring == 3 && !p.settingPlane;
   p.message.clear();
   // An angle's arm needs a length: its end apart from the vertex, as shown
   // (and a plane three points apart).
@@ -554,6 +592,10 @@ void PlannerStyle::OnLeftButtonDown()
   const int* at = this->Interactor->GetEventPosition();
   if (onScanView(at[0], at[1]))
   {
+    // A distance or an angle measured on the CT: what the surface does not
+    // have (from the cut to the canal, a root's length).
+    if (planner->measuring && !planner->settingPlane && planner->scanPicture.image)
+      return measureOnScan();
     if (planner->scanIsLabelMap || !planner->scanPicture.image)
     {
       planner->message = picksOnTheBone() ? "that is the CT view, not the bone: press on the bone (c hides the view)" :

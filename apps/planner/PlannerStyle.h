@@ -84,6 +84,12 @@ public:
   /// Measuring (u): a click's point on the bone, the first or the second of
   /// a distance; stopMeasuring ends it (another mode's key does too).
   void measureClick();
+  /// Measuring on the CT view: the click's point on the view's plane (a
+  /// point inside the bone, the canal's or a root's, that the bone's surface
+  /// does not have).
+  void measureOnScan();
+  /// A measured point picked (on the bone or the view), of `piece` (-1: none).
+  void addMeasuredPoint(const std::array<double, 3>& point, int piece);
   void stopMeasuring();
   /// A key while naming: every key is the naming's (Escape stops it).
   void typeName(const std::string& key);
