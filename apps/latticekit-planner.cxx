@@ -44,6 +44,9 @@ void usage(std::ostream& os)
         "Keys: "
      << kHelp
      << "\n"
+        "The CT view (c): drag on it for its window (right: wider, up: brighter; C: the presets),\n"
+        "the wheel over it moves its plane 1 mm a step, and while measuring (u, a) a click on it\n"
+        "picks a point of its plane (the canal's, a root's).\n"
         "\n"
         "  --iso V              a CT's bone threshold (default 300 HU; a 0/1 label map is found\n"
         "                       and taken at 0.5)\n"
