@@ -11,13 +11,16 @@
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKMeshRepairFilter.h"
 
+#include <vtkCamera.h>
 #include <vtkCommand.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -65,6 +68,11 @@ void usage(std::ostream& os)
         "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 0;\n"
         "                       20 takes a label map's slice staircase out, moving the surface\n"
         "                       by about 0.07 mm on average, up to about 1 mm)\n"
+        "  --head X,Y,Z --front X,Y,Z\n"
+        "                       for a scan whose file gives no orientation (a NIfTI without qform\n"
+        "                       or sform): where the patient's head and face point in its\n"
+        "                       coordinates; the CT view stands head up, the first view is from\n"
+        "                       the front (the bundled head: --head 0,0,-1 --front 0,-1,0)\n"
         "  --replay SESSION     apply a saved session (JSON: strokes, cut, lattice, metro, moved segment,\n"
         "                       deformations)\n"
         "  --screenshot PNG     render once to PNG and exit (no window needed: use xvfb-run)\n"
@@ -115,6 +123,8 @@ int main(int argc, char* argv[])
   bool isoGiven = false, seeded = false, cropped = false, closed = false;
   long series = -1, smoothing = -1, label = 0;
   std::string labelName;
+  double head[3] = { 0, 0, 0 }, front[3] = { 0, 0, 0 };
+  bool headGiven = false, frontGiven = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -142,6 +152,16 @@ int main(int argc, char* argv[])
       smoothing = args.integer(a, 0, 1000, "an integer from 0 to 1000");
     else if (a == "--label")
       args.labelOrName(a, label, labelName);
+    else if (a == "--head")
+    {
+      args.triple(a, head);
+      headGiven = true;
+    }
+    else if (a == "--front")
+    {
+      args.triple(a, front);
+      frontGiven = true;
+    }
     else if (a == "--replay")
       replay = args.value(a);
     else if (a == "--screenshot")
@@ -161,6 +181,18 @@ int main(int argc, char* argv[])
   {
     std::cerr << "error: an INPUT is required\n";
     usage(std::cerr);
+    return 2;
+  }
+  if (headGiven != frontGiven)
+  {
+    std::cerr << "error: --head and --front go together: where the patient's head and face point in the scan's "
+                 "coordinates\n";
+    return 2;
+  }
+  const lkapp::HeadAndFront patient{ { head[0], head[1], head[2] }, { front[0], front[1], front[2] } };
+  if (headGiven && !lkapp::isValid(patient))
+  {
+    std::cerr << "error: --head and --front must be non-zero and not parallel (10 degrees apart at least)\n";
     return 2;
   }
   lkapp::installMessageHandler(true);
@@ -185,9 +217,10 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0 || label > 0 || !labelName.empty())
+    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0 || label > 0 || !labelName.empty() ||
+      headGiven)
     {
-      std::cerr << "error: --iso, --seed, --crop, --close, --series, --smooth and --label are for a CT or label map; '"
+      std::cerr << "error: --iso, --seed, --crop, --close, --series, --smooth, --label, --head and --front are for a CT or label map; '"
                 << input << "' is a mesh\n";
       return 2;
     }
@@ -229,6 +262,11 @@ int main(int argc, char* argv[])
       used.labelName = labelName;
     }
     used.given = true;
+    if (headGiven)
+    {
+      planner.session.patientGiven = true;
+      planner.session.patient = patient;
+    }
     reader->SetFileName(input.c_str());
     reader->SetSeriesIndex(static_cast<int>(used.series));
     bone->SetInputConnection(reader->GetOutputPort());
@@ -379,6 +417,24 @@ int main(int argc, char* argv[])
   planner.setup();
   planner.rebuild();
   planner.renderer->ResetCamera();
+  if (planner.patientStated())
+  {
+    // The first view from the patient's front, the head up, as stated.
+    vtkCamera* camera = planner.renderer->GetActiveCamera();
+    std::array<double, 3> towardFront = planner.session.patient.front;
+    vtkMath::Normalize(towardFront.data());
+    double focal[3];
+    camera->GetFocalPoint(focal);
+    const double distance = camera->GetDistance();
+    camera->SetPosition(focal[0] + distance * towardFront[0], focal[1] + distance * towardFront[1],
+      focal[2] + distance * towardFront[2]);
+    camera->SetViewUp(planner.session.patient.head.data());
+    camera->OrthogonalizeViewUp();
+    planner.renderer->ResetCamera();
+  }
+  else if (planner.session.patientGiven && !mesh)
+    std::cerr << "warning: the scan gives its own orientation: the stated head and front (--head, --front, the "
+                 "session's \"patient\") are not used\n";
   const bool batch = !shot.empty() || !exportFolder.empty() || !events.empty();
   planner.savedSession = sessionText(planner.session);
   if (!batch || !events.empty()) // a user's session, live or played

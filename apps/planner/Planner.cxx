@@ -1306,6 +1306,8 @@ bool Planner::scanPictureOf(int number, bool across, double offset, lkapp::ScanP
   request.across = across;
   request.softTissue = session.softTissueWindow;
   request.offset = offset;
+  request.patientGiven = patientStated();
+  request.patient = session.patient;
   request.windowWidth = session.scanWindowWidth;
   request.windowLevel = session.scanWindowLevel;
   for (std::size_t k = 0; k < facts.size(); ++k)
@@ -1333,7 +1335,13 @@ bool Planner::scanPictureOf(int number, bool across, double offset, lkapp::ScanP
 
 std::string Planner::scanTitle(const lkapp::ScanPicture& picture, int number, bool across, double offset) const
 {
-  return scanText(number, across) + lkapp::planeOffsetText(picture.frame, offset, picture.directions);
+  return scanText(number, across) + (patientStated() ? ", head up as stated" : "") +
+    lkapp::planeOffsetText(picture.frame, offset, picture.directions);
+}
+
+bool Planner::patientStated() const
+{
+  return session.patientGiven && bone && lkapp::coordinateSpace(bone) != "LPS";
 }
 
 void Planner::previewScanWindow(double width, double level)
@@ -1388,7 +1396,7 @@ std::string Planner::scanShown() const
   const std::string window = scanIsLabelMap ? "" :
     session.scanWindowWidth > 0.0 ? lkapp::greyWindowText(lkapp::handWindow(session.scanWindowWidth, session.scanWindowLevel)) :
     session.softTissueWindow      ? " (soft-tissue window)" : "";
-  return scanText(session.scanOnLine, session.scanAcross) +
+  return scanText(session.scanOnLine, session.scanAcross) + (patientStated() ? ", head up as stated" : "") +
     lkapp::planeOffsetText(scanPicture.frame, session.scanOffset, scanPicture.directions) + window;
 }
 

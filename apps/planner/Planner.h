@@ -261,6 +261,10 @@ public:
   /// The picture's title: scanText and where its plane lies against the
   /// cut's (the picture writes its window itself).
   std::string scanTitle(const lkapp::ScanPicture& picture, int number, bool across, double offset) const;
+  /// Whether the session states the patient's head and front (--head,
+  /// --front) for a scan whose file gives no orientation: the CT view stands
+  /// as they say.
+  bool patientStated() const;
   /// The view in a window set by hand, while the view is dragged (the
   /// session takes it when the button is let go).
   void previewScanWindow(double width, double level);

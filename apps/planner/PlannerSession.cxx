@@ -113,6 +113,11 @@ std::string sessionText(const Session& s)
   }
   if (s.scanOffset != 0.0)
     root["scanOffset"] = s.scanOffset;
+  if (s.patientGiven)
+  {
+    root["patient"]["head"] = triple(s.patient.head);
+    root["patient"]["front"] = triple(s.patient.front);
+  }
   for (const auto& p : s.mirrorPlane)
     root["mirrorPlane"].append(triple(p));
   if (s.segment >= 0)
@@ -311,7 +316,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "segment",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "patient", "segment",
       "deformations", "names",
       "measurements",
       "surface", "input" },
@@ -414,6 +419,17 @@ bool readSession(
     }
     s.scanWindowWidth = wl[0];
     s.scanWindowLevel = wl[1];
+  }
+  if (root.isMember("patient") && !root["patient"].isNull())
+  {
+    const Json::Value& patient = root["patient"];
+    if (!patient.isObject() || !jsonNumbers(patient["head"], s.patient.head) ||
+      !jsonNumbers(patient["front"], s.patient.front) || !lkapp::isValid(s.patient))
+    {
+      error = session + ": \"patient\" must be {\"head\": [x, y, z], \"front\": [x, y, z]}, non-zero and not parallel";
+      return false;
+    }
+    s.patientGiven = true;
   }
   if (!jsonMember(
         root, "scanOffset", s.scanOffset,

@@ -50,6 +50,11 @@
 //               "smooth": 0 to 1000,                windowed-sinc iterations (0)
 //               "label": 1 or more | "name"}        one label of a label map, or a
 //                                                   segment by name (none)
+//   "patient": {"head": [x, y, z],                  for a scan whose file gives no
+//               "front": [x, y, z]}                 orientation: where the patient's head
+//                                                   and face point in its coordinates (the
+//                                                   CT view stands head up, the first view
+//                                                   from the front; none)
 //   "input": {"file": name,                       what the session was drawn on: the
 //             "bounds": [6 numbers]}              file (no folders) and the bone's
 //                                                 bounds; a replay on another says so
@@ -64,6 +69,7 @@
 #ifndef latticekit_apps_PlannerSession_h
 #define latticekit_apps_PlannerSession_h
 
+#include "common/ScanOnPlane.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
 #include "vtkLKText.h"
 
@@ -223,6 +229,10 @@ struct Session
     long label = 0; ///< one label of a label map with several (0: none)
     std::string labelName; ///< or a 3D Slicer segmentation's segment by name
   } surface;
+  /// For a scan whose file gives no orientation: the patient's head and
+  /// front in its coordinates (--head, --front).
+  bool patientGiven = false;
+  lkapp::HeadAndFront patient;
   /// What the strokes were drawn on: the input's file name (no folders) and
   /// the bone's bounds, so that a replay on another scan (another patient's,
   /// or the same file made into another surface) can say so.
