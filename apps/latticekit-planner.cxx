@@ -30,6 +30,7 @@
 #include <sstream>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -217,11 +218,21 @@ int main(int argc, char* argv[])
   vtkPolyDataAlgorithm* surface = bone;
   if (ext == ".vtp" || ext == ".vtk" || ext == ".stl" || ext == ".ply" || ext == ".obj")
   {
-    if (isoGiven || seeded || cropped || closed || series >= 0 || smoothing >= 0 || label > 0 || !labelName.empty() ||
-      headGiven)
+    // The options given that only a scan has use for, named.
+    std::vector<std::string> given;
+    for (const auto& [on, name] : { std::make_pair(isoGiven, "--iso"), std::make_pair(seeded, "--seed"),
+           std::make_pair(cropped, "--crop"), std::make_pair(closed, "--close"), std::make_pair(series >= 0, "--series"),
+           std::make_pair(smoothing >= 0, "--smooth"), std::make_pair(label > 0 || !labelName.empty(), "--label"),
+           std::make_pair(headGiven, "--head"), std::make_pair(frontGiven, "--front") })
+      if (on)
+        given.emplace_back(name);
+    if (!given.empty())
     {
-      std::cerr << "error: --iso, --seed, --crop, --close, --series, --smooth, --label, --head and --front are for a CT or label map; '"
-                << input << "' is a mesh\n";
+      std::string names;
+      for (std::size_t k = 0; k < given.size(); ++k)
+        names += (k == 0 ? "" : k + 1 == given.size() ? " and " : ", ") + given[k];
+      std::cerr << "error: " << names << (given.size() == 1 ? " is" : " are") << " for a CT or label map (--iso, --seed, "
+                << "--crop, --close, --series, --smooth, --label, --head, --front); '" << input << "' is a mesh\n";
       return 2;
     }
     mesh = lkapp::readMesh(input, error);
