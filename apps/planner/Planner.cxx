@@ -1477,8 +1477,9 @@ void Planner::showScanMoved(const std::array<double, 16>& matrix)
   if (hasSegment() && !isIdentity(matrix))
     for (double v : matrix)
       key += " " + std::to_string(v);
-  lkapp::ScanPicture marks;
+  lkapp::ScanPicture marks; // the picture's plane and size: a waiting point's cross is sized by it
   marks.frame = scanPicture.frame;
+  marks.side = scanPicture.side;
   measuredOnPlane(marks, true);
   std::string measuredKey;
   for (const auto& line : marks.measured)
