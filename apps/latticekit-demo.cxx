@@ -822,6 +822,9 @@ int main(int argc, char* argv[])
     // The CT on the cut line's plane (what the saw passes through) and
     // across it (the bone along its length, the cut as a line).
     const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(line);
+    const bool oriented = lkapp::coordinateSpace(mandible) == "LPS";
+    // A scan without orientation stands as the plan says its patient lies.
+    const bool headUpAsPlanned = plan.patientGiven && !oriented;
     if (ok && !facts.empty())
     {
       lkapp::ScanPictureRequest request;
@@ -834,9 +837,7 @@ int main(int argc, char* argv[])
       request.centre = { f.centre[0], f.centre[1], f.centre[2] };
       request.normal = { f.normal[0], f.normal[1], f.normal[2] };
       const bool labelMap = bone->GetTreatedAsLabelMap();
-      const bool oriented = lkapp::coordinateSpace(mandible) == "LPS";
-      // A scan without orientation stands as the plan says its patient lies.
-      request.patientGiven = plan.patientGiven && !oriented;
+      request.patientGiven = headUpAsPlanned;
       request.patient = plan.patient;
       for (const bool across : { false, true })
       {
@@ -865,8 +866,7 @@ int main(int argc, char* argv[])
     }
     report << ", `plan.png`, `pieces.png`, `error.png`, `cut_line_ct.png` and `cut_line_across_ct.png` (the CT on the "
               "cut line's plane and across it"
-           << (plan.patientGiven && lkapp::coordinateSpace(mandible) != "LPS" ?
-                  ", head up as the plan's \"patient\" states: the scan gives no orientation" : "")
+           << (headUpAsPlanned ? ", head up as the plan's \"patient\" states: the scan gives no orientation" : "")
            << ")";
   }
   report << ".\n\nTotal time: " << std::fixed;

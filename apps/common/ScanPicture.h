@@ -41,13 +41,13 @@ struct ScanPicture
   /// The moved segment's section by the picture's plane, where the plan
   /// moves it (cyan): the CT is the scan before the move.
   std::vector<std::vector<std::array<double, 3>>> moved;
-  /// The top line; the window (greyWindowLabel) is written at the bottom
-  /// right, as radiology viewers write it.
   /// Measurements on the picture's plane (magenta): their lines (a point
   /// still waiting for its other end as a small cross) and their values at
   /// the points given, in patient coordinates.
   std::vector<std::vector<std::array<double, 3>>> measured;
   std::vector<std::pair<std::array<double, 3>, std::string>> measuredValues;
+  /// The top line; the window (greyWindowLabel) is written at the bottom
+  /// right, as radiology viewers write it.
   std::string title;
   /// A last line of the legend (the planner's: what the mouse does there);
   /// none in the exported pictures.

@@ -1396,8 +1396,7 @@ std::string Planner::scanShown() const
   const std::string window = scanIsLabelMap ? "" :
     session.scanWindowWidth > 0.0 ? lkapp::greyWindowText(lkapp::handWindow(session.scanWindowWidth, session.scanWindowLevel)) :
     session.softTissueWindow      ? " (soft-tissue window)" : "";
-  return scanText(session.scanOnLine, session.scanAcross) + (patientStated() ? ", head up as stated" : "") +
-    lkapp::planeOffsetText(scanPicture.frame, session.scanOffset, scanPicture.directions) + window;
+  return scanTitle(scanPicture, session.scanOnLine, session.scanAcross, session.scanOffset) + window;
 }
 
 void Planner::showScan()

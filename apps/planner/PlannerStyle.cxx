@@ -543,10 +543,7 @@ void PlannerStyle::endWindow()
   const lkapp::GreyWindow grey = lkapp::handWindow(windowTo[0], windowTo[1]);
   planner->session.scanWindowWidth = grey.width;
   planner->session.scanWindowLevel = grey.level;
-  char text[120];
-  std::snprintf(text, sizeof text, "the CT view's window set by hand: W %g, L %g (C: back to the preset)", grey.width,
-    grey.level);
-  planner->notice = text;
+  planner->notice = "the CT view's " + lkapp::greyWindowLabel(grey) + " (C: back to the preset)";
   planner->refreshScan();
   this->Interactor->Render();
 }
