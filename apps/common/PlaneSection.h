@@ -22,13 +22,23 @@ using Point3 = std::array<double, 3>;
 /// first. Open sections and loops of fewer than 7 points are left out.
 std::vector<std::vector<Point3>> sectionLoops(vtkPolyData* surface, vtkImplicitFunction* function);
 
-/// sectionLoops for the plane (origin, normal). A plane leaves an open
-/// surface's section open at its border: such sections are not loops.
-std::vector<std::vector<Point3>> planeSectionLoops(vtkPolyData* surface, const Point3& origin, const Point3& normal);
+/// sectionLoops for the plane (origin, normal), moved `beside` along the
+/// normal: a plane through a flat cap's corners has no defined section
+/// there, and a cut along a drawn line leaves its cap flat only to a few
+/// hundredths of a millimetre, so a plane that can lie in a piece's cap
+/// needs `beside` 0.05 mm. A plane leaves an open surface's section open at
+/// its border: such sections are not loops.
+std::vector<std::vector<Point3>> planeSectionLoops(
+  vtkPolyData* surface, const Point3& origin, const Point3& normal, double beside = 0.0);
 
 /// The loop with the point nearest p; -1 when there is none. `distance`, if
 /// given, gets how far that point is from p.
 int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p, double* distance = nullptr);
+
+/// Whether a loop of a plane's section (its points in that plane, the last
+/// repeating the first) encloses p, a point of the same plane (its normal
+/// `normal`): the even-odd rule in the plane's coordinates.
+bool loopEncloses(const std::vector<Point3>& loop, const Point3& p, const Point3& normal);
 
 /// A stroke along a loop (its last point repeating the first): a point at
 /// least `step` from the one before, each moved `offset` away from the

@@ -63,6 +63,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <regex>
+#include <tuple>
 #include <cstring>
 #include <map>
 #include <set>
@@ -1464,7 +1466,7 @@ std::vector<std::vector<std::array<double, 3>>> Planner::movedSection(
   moved->SetInputData(pieces[static_cast<std::size_t>(movedPiece())]);
   moved->SetTransform(move);
   moved->Update();
-  return lkapp::planeSectionLoops(moved->GetOutput(), frame.centre, frame.towardViewer);
+  return lkapp::planeSectionLoops(moved->GetOutput(), frame.centre, frame.towardViewer, kBesideACap);
 }
 
 void Planner::showScanMoved(const std::array<double, 16>& matrix)
@@ -1547,32 +1549,61 @@ void Planner::measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const
     picture.measured.push_back(waiting);
 }
 
-bool Planner::writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error)
+std::string Planner::scanPictureName(int number, bool across, double offset)
+{
+  std::string name = "cut_line" + std::to_string(number) + (across ? "_across" : "") + "_ct";
+  if (offset != 0.0)
+  {
+    char mm[32];
+    std::snprintf(mm, sizeof mm, "_%+gmm", offset);
+    name += mm;
+  }
+  return name + ".png";
+}
+
+bool Planner::writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& shown,
+  std::string& shownTitle, std::string& error)
 {
   written.clear();
+  shown.clear();
+  shownTitle.clear();
   if (!hasScan())
     return true;
-  for (int number : closedCutLines())
+  // Two pictures a closed line, on its plane and across it; and the view as
+  // it was shown, where its plane was moved off the cut's (the wheel): the
+  // canal beside the cut the surgeon looked at.
+  const std::vector<int> lines = closedCutLines();
+  std::vector<std::tuple<int, bool, double>> views;
+  for (int number : lines)
     for (const bool across : { false, true })
+      views.emplace_back(number, across, 0.0);
+  if (session.scanOffset != 0.0 && std::find(lines.begin(), lines.end(), session.scanOnLine) != lines.end())
+    views.emplace_back(session.scanOnLine, session.scanAcross, session.scanOffset);
+  for (const auto& [number, across, offset] : views)
+  {
+    lkapp::ScanPicture picture;
+    std::string why;
+    const std::string name = scanPictureName(number, across, offset);
+    const bool made = scanPictureOf(number, across, offset, picture, why);
+    if (made)
     {
-      lkapp::ScanPicture picture;
-      std::string why;
-      const std::string name = "cut_line" + std::to_string(number) + (across ? "_across" : "") + "_ct.png";
-      const bool made = scanPictureOf(number, across, 0.0, picture, why);
-      if (made)
-      {
-        picture.moved = movedSection(picture.frame, session.segmentMatrix);
-        measuredOnPlane(picture, false);
-      }
-      if (!made ||
-        !lkapp::writeScanPicture(picture, 600, folder + "/" + name, why, window->GetGenericDisplayId()))
-      {
-        // The others are still written.
-        error += (error.empty() ? "" : "; ") + ("no " + name + ", the " + scanText(number, across) + ": " + why);
-        continue;
-      }
-      written.push_back(name);
+      picture.moved = movedSection(picture.frame, session.segmentMatrix);
+      measuredOnPlane(picture, false);
     }
+    if (!made ||
+      !lkapp::writeScanPicture(picture, 600, folder + "/" + name, why, window->GetGenericDisplayId()))
+    {
+      // The others are still written.
+      error += (error.empty() ? "" : "; ") + ("no " + name + ", the " + scanText(number, across) + ": " + why);
+      continue;
+    }
+    written.push_back(name);
+    if (offset != 0.0)
+    {
+      shown = name;
+      shownTitle = picture.title;
+    }
+  }
   return error.empty();
 }
 
@@ -1671,6 +1702,33 @@ std::vector<std::vector<double>> Planner::pieceDistances(const std::vector<std::
     }
   }
   return distances;
+}
+
+int Planner::pieceOnScan(const std::array<double, 3>& point, double& nearest) const
+{
+  const std::vector<double> distance = pieceDistances({ point }).front();
+  const auto best = std::min_element(distance.begin(), distance.end());
+  nearest = best == distance.end() ? VTK_DOUBLE_MAX : *best;
+  if (nearest == VTK_DOUBLE_MAX)
+    return -1;
+  const int piece = static_cast<int>(best - distance.begin());
+  if (nearest <= kBesideTheBone)
+    return piece;
+  // Inside a piece's outline on the plane (any loop counts, so that the
+  // marrow inside the cortex's inner wall is bone too); on a cut's own
+  // plane, where a piece's cap lies and its section is not defined, inside
+  // the uncut bone's.
+  const std::array<double, 3>& normal = scanPicture.frame.towardViewer;
+  auto encloses = [&](const std::vector<std::vector<std::array<double, 3>>>& loops) {
+    for (const auto& loop : loops)
+      if (lkapp::loopEncloses(loop, point, normal))
+        return true;
+    return false;
+  };
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p)
+    if (encloses(lkapp::planeSectionLoops(cut.pieces[p], point, normal, kBesideACap)))
+      return static_cast<int>(p);
+  return encloses(lkapp::planeSectionLoops(bone, point, normal)) ? piece : -1;
 }
 
 void Planner::resolveNames()
@@ -1918,12 +1976,14 @@ void Planner::followPieces()
   }
   if (!moved.empty())
     notice += (notice.empty() ? "" : "; ") + std::string("the deformations follow their pieces: ") + moved;
-  // Each measured point goes with its piece, as the segment's move shows it.
+  // Each measured point goes with its piece, as the segment's move shows it;
+  // a point of the soft tissue (measured on the CT) with none, as measured.
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
   {
     Measurement& m = session.measurements[i];
     for (std::size_t k = 0; k < m.points().size(); ++k)
-      m.pieces[k] = nearest(distances[firstPoint[i] + k], m.pieces[k]);
+      if (m.pieces[k] != -1)
+        m.pieces[k] = nearest(distances[firstPoint[i] + k], m.pieces[k]);
   }
 }
 
@@ -2285,6 +2345,15 @@ std::string Planner::planText()
     const std::string picked = valueText(m);
     if (picked != value)
       text += ", " + picked + " before the segment's move";
+    // Points of the soft tissue, measured on the CT: the plan moves bone only.
+    const char* ends[2][3] = { { "its first point", "its second point", "" },
+      { "arm 1's end", "arm 2's end", "the vertex" } };
+    std::string outside;
+    for (std::size_t k = 0; k < m.points().size(); ++k)
+      if (m.pieces[k] == -1)
+        outside += (outside.empty() ? "" : " and ") + std::string(ends[m.angle ? 1 : 0][k]);
+    if (!outside.empty())
+      text += ", " + outside + " in the soft tissue (not moved)";
     text += "\n";
   }
   text += segmentText();
@@ -2420,17 +2489,12 @@ std::string Planner::exportStructureSet(
 namespace
 {
 /// "cut_line<number>_ct.png" or "cut_line<number>_across_ct.png", the
-/// export's pictures of the CT on a cut line's plane and across it.
-bool isScanPictureName(std::string name)
+/// export's pictures of the CT on a cut line's plane and across it, and
+/// "cut_line<number>[_across]_ct_<+-mm>mm.png", the view off that plane.
+bool isScanPictureName(const std::string& name)
 {
-  const std::string head = "cut_line", tail = "_ct.png", across = "_across";
-  if (name.size() <= head.size() + tail.size() || name.compare(0, head.size(), head) != 0 ||
-    name.compare(name.size() - tail.size(), tail.size(), tail) != 0)
-    return false;
-  std::string digits = name.substr(head.size(), name.size() - head.size() - tail.size());
-  if (digits.size() > across.size() && digits.compare(digits.size() - across.size(), across.size(), across) == 0)
-    digits.resize(digits.size() - across.size());
-  return !digits.empty() && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  static const std::regex picture("cut_line[0-9]+(_across)?_ct(_[-+][0-9.e+-]+mm)?[.]png");
+  return std::regex_match(name, picture);
 }
 } // namespace
 
@@ -2491,8 +2555,8 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   // The CT on each cut line's plane and across it, for the surgeon's notes.
   // A failure here is said at the end too.
   std::vector<std::string> scanPictures;
-  std::string scanPicturesError;
-  writeScanPictures(folder, scanPictures, scanPicturesError);
+  std::string scanShownPicture, scanShownTitle, scanPicturesError;
+  writeScanPictures(folder, scanPictures, scanShownPicture, scanShownTitle, scanPicturesError);
   // What the plan is, and the session that replays it beside the files.
   // Which scan, and which coordinates every position in the plan is in: a
   // plan file read later (or beside another patient's) must say so itself.
@@ -2506,8 +2570,11 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   {
     header += std::string("the ") + (scanIsLabelMap ? "label map" : "CT") + " on and across the cut lines:";
     for (const auto& name : scanPictures)
-      header += " " + name;
+      if (name != scanShownPicture)
+        header += " " + name;
     header += "\n";
+    if (!scanShownPicture.empty())
+      header += "the view as shown: " + scanShownPicture + " (" + scanShownTitle + ")\n";
   }
   header += "coordinates: " +
     (space.empty() ? std::string("the input's own (its patient orientation is unknown)") : space + ", mm") + "\n";

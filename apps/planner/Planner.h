@@ -297,6 +297,11 @@ public:
   /// it; none when no segment is moved.
   std::vector<std::vector<std::array<double, 3>>> movedSection(
     const lkapp::ViewFrame& frame, const std::array<double, 16>& matrix) const;
+  /// How far beside a plane a piece's section is taken (mm): a cut along a
+  /// drawn line leaves a cap flat only to a few hundredths of a millimetre,
+  /// and the view's plane can lie in it (the segment moved a whole number of
+  /// mm along its cut's normal, the view wheeled as far).
+  static constexpr double kBesideACap = 0.05;
   /// Draws the view, with the moved segment's section where `matrix` puts
   /// it, when the picture (showScan) or the move changed: placeSegment calls
   /// it, during a drag too.
@@ -308,10 +313,16 @@ public:
   /// rest of the window (its user transform, after the projection).
   vtkNew<vtkTransform> roomForScan;
   /// The export's pictures of the scan, two per closed cut line, on its
-  /// plane and across it (cut_line1_ct.png, cut_line1_across_ct.png, ...):
-  /// their names; false with `error` when one could not be made or written
-  /// (the others are).
-  bool writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& error);
+  /// plane and across it (cut_line1_ct.png, cut_line1_across_ct.png, ...),
+  /// and, with the view's plane moved off its cut's (the session's
+  /// scanOffset), the view as shown (`shown`, cut_line1_ct_+3mm.png, and its
+  /// title): their names; false with `error` when one could not be made or
+  /// written (the others are).
+  bool writeScanPictures(const std::string& folder, std::vector<std::string>& written, std::string& shown,
+    std::string& shownTitle, std::string& error);
+  /// cut_line1_ct.png, cut_line1_across_ct.png; off the cut's plane by
+  /// `offset` mm toward the viewer, cut_line1_ct_+3mm.png.
+  static std::string scanPictureName(int number, bool across, double offset);
 
   /// Call before a change: the session as it was goes on the undo stack.
   void remember() { remember(session); }
@@ -334,6 +345,17 @@ public:
   /// The distance from each point to each piece's surface (VTK_DOUBLE_MAX
   /// for an empty piece), one cell locator per piece.
   std::vector<std::vector<double>> pieceDistances(const std::vector<std::array<double, 3>>& points) const;
+
+  /// How near a point measured on the CT must lie to a piece's surface to go
+  /// with it, in mm, when the bone's outline on the view's plane does not
+  /// enclose it.
+  static constexpr double kBesideTheBone = 3.0;
+  /// The piece a point of the CT view's plane goes with: the nearest, when
+  /// the point lies within kBesideTheBone of its surface or inside the bone's
+  /// outline on that plane (the cortex, the marrow, the canal, a root); -1
+  /// for the soft tissue, which the plan does not move. `nearest` gets the
+  /// distance to the nearest piece.
+  int pieceOnScan(const std::array<double, 3>& point, double& nearest) const;
 
   /// After a cut made anew (computeCut), as the pieces can be numbered anew
   /// when a line is added or taken away: the segment becomes the piece

@@ -160,8 +160,12 @@ std::string sessionText(const Session& s)
     jm["to"] = triple(m.to);
     if (m.angle)
       jm["at"] = triple(m.at);
-    for (std::size_t k = 0; k < m.points().size(); ++k)
-      jm["pieces"].append(m.pieces[k]);
+    // (Ends not resolved yet are left for the replay to resolve.)
+    const auto ends = m.points().size();
+    if (std::all_of(m.pieces.begin(), m.pieces.begin() + static_cast<long>(ends),
+          [](int p) { return p != Measurement::kUnresolved; }))
+      for (std::size_t k = 0; k < ends; ++k)
+        jm["pieces"].append(m.pieces[k]);
     root["measurements"].append(jm);
   }
   if (s.surface.given)

@@ -123,13 +123,15 @@ struct PieceName
 };
 
 /// A distance the surgeon measured (u, two clicks): two points picked on
-/// the bone, patient mm, each in its piece's own frame (before the
-/// segment's move, as a name's point and a deformation's centre), and the
-/// piece each was picked on. An end on the moved segment moves with it, so
-/// a distance from the segment to the bone beside it follows the move. Each
-/// end goes with the piece nearest it when the cut numbers the pieces anew
-/// (its own when that is as near: a point on a cut line lies on both); an
-/// end without a piece (-1, an older session) takes the nearest.
+/// the bone or on the CT view's plane, patient mm, each in its piece's own
+/// frame (before the segment's move, as a name's point and a deformation's
+/// centre), and the piece each was picked on. An end on the moved segment
+/// moves with it, so a distance from the segment to the bone beside it
+/// follows the move. Each end goes with the piece nearest it when the cut
+/// numbers the pieces anew (its own when that is as near: a point on a cut
+/// line lies on both); an end of the soft tissue (-1) goes with none; an
+/// end not resolved yet (no "pieces" in an older session) takes the
+/// nearest.
 ///
 /// An angle (a, three clicks: an arm's end, the vertex, the other arm's
 /// end) is the angle at `at` between the arms to `from` and `to`; its
@@ -145,8 +147,12 @@ struct Measurement
   std::array<double, 3> from{ 0, 0, 0 }, to{ 0, 0, 0 };
   bool angle = false;
   std::array<double, 3> at{ 0, 0, 0 };
-  /// The pieces of from, to and at (-1: none yet).
-  std::array<int, 3> pieces{ -1, -1, -1 };
+  /// An end's piece not known yet (a session without "pieces"): the
+  /// nearest piece takes it.
+  static constexpr int kUnresolved = -2;
+  /// The pieces of from, to and at; -1: none (a point of the soft tissue,
+  /// measured on the CT, which the plan does not move).
+  std::array<int, 3> pieces{ kUnresolved, kUnresolved, kUnresolved };
   /// Its points (from, to; at for an angle) as picked.
   std::vector<std::array<double, 3>> points() const;
   /// The distance between the points as picked (the segment not moved).

@@ -395,7 +395,9 @@ void PlannerStyle::measureOnScan()
 {
   // The point of the CT view's plane under the click, in the scan's (the
   // bone's unmoved) coordinates; it goes with the piece nearest it (a point
-  // of the mandibular canal, inside the bone, with the bone around it).
+  // of the mandibular canal, inside the bone, with the bone around it), or,
+  // in the soft tissue away from the bone, with none: the plan moves bone
+  // only.
   Planner& p = *planner;
   const int* pos = this->Interactor->GetEventPosition();
   vtkRenderer* view = p.scanRenderer;
@@ -416,10 +418,19 @@ void PlannerStyle::measureOnScan()
   std::array<double, 3> point;
   for (std::size_t i = 0; i < 3; ++i)
     point[i] = f.centre[i] + x * f.right[i] + y * f.up[i];
-  const std::vector<double> distance = p.pieceDistances({ point }).front();
-  const auto nearest = std::min_element(distance.begin(), distance.end());
-  const int piece = nearest != distance.end() && *nearest < VTK_DOUBLE_MAX ? static_cast<int>(nearest - distance.begin()) : -1;
+  double away = 0.0;
+  const int piece = p.pieceOnScan(point, away);
   addMeasuredPoint(point, piece);
+  if (piece < 0 && away < VTK_DOUBLE_MAX)
+  {
+    char text[160];
+    std::snprintf(text, sizeof text,
+      "that point lies in the soft tissue, %.1f mm from the bone: it stays where it is when the segment moves", away);
+    // After the measurement's last point, beside what it measured.
+    p.notice = p.measurePicked.empty() ? p.notice + "; " + text : std::string(text);
+    p.updateStatus();
+    this->Interactor->Render();
+  }
 }
 
 void PlannerStyle::addMeasuredPoint(const std::array<double, 3>& point, int piece)
