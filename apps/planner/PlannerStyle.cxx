@@ -975,7 +975,8 @@ void PlannerStyle::OnChar()
     }
     else
     {
-      // On a line's plane, across it, the next line's plane, ..., none.
+      // On a line's plane, across it, the next line's plane, ..., none: the
+      // view alone is drawn anew.
       planner->remember();
       s.scanOffset = 0.0; // another plane: the cut's own
       if (s.scanOnLine > 0 && !s.scanAcross && std::find(lines.begin(), lines.end(), s.scanOnLine) != lines.end())
@@ -986,6 +987,8 @@ void PlannerStyle::OnChar()
         s.scanOnLine = next == lines.end() ? 0 : *next;
         s.scanAcross = false;
       }
+      rebuild = false;
+      planner->refreshScan();
     }
   }
   else if (key == "C")
@@ -1001,16 +1004,17 @@ void PlannerStyle::OnChar()
       rebuild = false;
       planner->message = "C: the view shows a label map, which has no soft tissue to window";
     }
-    else if (s.scanWindowWidth > 0.0)
-    {
-      // The window set by hand goes: the preset it was set from.
-      planner->remember();
-      s.scanWindowWidth = s.scanWindowLevel = 0.0;
-    }
     else
     {
+      // The window set by hand goes (the preset it was set from), or the
+      // other preset comes: the view alone is drawn anew.
       planner->remember();
-      s.softTissueWindow = !s.softTissueWindow;
+      if (s.scanWindowWidth > 0.0)
+        s.scanWindowWidth = s.scanWindowLevel = 0.0;
+      else
+        s.softTissueWindow = !s.softTissueWindow;
+      rebuild = false;
+      planner->refreshScan();
     }
   }
   else if (key == "n")
