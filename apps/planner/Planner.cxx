@@ -149,7 +149,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
-                    "f: deform tool (bump, box, smooth, off: pick and drag up/down) | [ ]: tool radius | u: distance, a: angle | o: mirror image, O: set its plane\n"
+                    "f: deform (bump, box, smooth, off; pick, drag up/down) | [ ]: tool radius | u: distance, a: angle, Delete: the one pointed at | o: mirror image, O: its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
@@ -1798,6 +1798,40 @@ std::string Planner::lengthText(double length)
   char text[32];
   std::snprintf(text, sizeof text, "%.2f mm", length);
   return text;
+}
+
+int Planner::measurementAt(int x, int y, double pixels) const
+{
+  // The lines as drawn, in the view's pixels (the camera's room for the CT
+  // view included).
+  auto onScreen = [&](const std::array<double, 3>& p) {
+    renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+    renderer->WorldToDisplay();
+    double d[3];
+    renderer->GetDisplayPoint(d);
+    return std::array<double, 2>{ d[0], d[1] };
+  };
+  auto distanceTo = [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    const double ux = b[0] - a[0], uy = b[1] - a[1], vx = x - a[0], vy = y - a[1];
+    const double length2 = ux * ux + uy * uy;
+    const double t = length2 > 0.0 ? std::clamp((ux * vx + uy * vy) / length2, 0.0, 1.0) : 0.0;
+    return std::hypot(vx - t * ux, vy - t * uy);
+  };
+  int best = -1;
+  double nearest = pixels;
+  for (std::size_t i = 0; i < session.measurements.size(); ++i)
+  {
+    const Measurement shown = placed(session.measurements[i], shownMatrix);
+    const auto from = onScreen(shown.from), to = onScreen(shown.to);
+    const double d = shown.angle ? std::min(distanceTo(from, onScreen(shown.at)), distanceTo(onScreen(shown.at), to))
+                                 : distanceTo(from, to);
+    if (d <= nearest)
+    {
+      nearest = d;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
 }
 
 void Planner::showMeasurements()

@@ -535,6 +535,9 @@ public:
   vtkNew<vtkActor> measureMarker;
   vtkSmartPointer<vtkActor> measureActor;
   void showMeasurements();
+  /// The measurement drawn nearest the display point (x, y) of the bone's
+  /// view, its line or its arms within `pixels`; -1 for none.
+  int measurementAt(int x, int y, double pixels) const;
   /// The segment's transform as the view shows it (placeSegment's).
   std::array<double, 16> shownMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   /// Where a point of piece `piece` (in its own frame) is shown: moved by

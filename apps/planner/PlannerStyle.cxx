@@ -1116,6 +1116,34 @@ void PlannerStyle::OnChar()
       planner->message = error;
     rebuild = false;
   }
+  else if (key == "Delete" || key == "BackSpace")
+  {
+    // While measuring, the last point clicked goes; otherwise the
+    // measurement under the mouse (undone with z).
+    Planner& p = *planner;
+    rebuild = false;
+    const int* pos = this->Interactor->GetEventPosition();
+    const int at = p.measurementAt(pos[0], pos[1], 12.0);
+    if (p.measuring && !p.measurePicked.empty())
+    {
+      p.measurePicked.pop_back();
+      p.measurePickedPieces.pop_back();
+      p.notice = "the last point clicked is taken back";
+      p.showMeasurements();
+    }
+    else if (p.session.measurements.empty())
+      p.message = key + ": no measurement to remove (u: measure a distance, a: an angle)";
+    else if (at < 0)
+      p.message = key + " removes the measurement under the mouse: point at its line in the bone's view";
+    else
+    {
+      p.remember();
+      const std::string what = p.measuredText(p.session.measurements[static_cast<std::size_t>(at)]);
+      p.session.measurements.erase(p.session.measurements.begin() + at);
+      p.notice = "measurement " + std::to_string(at + 1) + " (" + what + ") removed (z: back)";
+      rebuild = true;
+    }
+  }
   else if (key == "Escape" && planner->measuring)
   {
     rebuild = false; // Escape ends measuring, as it ends naming; it quits only from the view
