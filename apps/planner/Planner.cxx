@@ -149,7 +149,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
                     "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
-                    "f: deform (bump, box, smooth, off; pick, drag up/down) | [ ]: tool radius | u: distance, a: angle, Delete: the one pointed at | o: mirror image, O: its plane\n"
+                    "f: deform (bump, box, smooth; drag up/down) | [ ]: tool radius | u: distance, a: angle | Delete: the line pointed at | o: mirror image, O: its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
@@ -1032,6 +1032,7 @@ void Planner::computeCut()
     auto line = vtkSmartPointer<vtkPolyData>::New();
     line->DeepCopy(f->GetFeatureLineOutput());
     cut.lines.emplace_back(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);
+    cut.lineStrokes.push_back(i);
     const bool closed = line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5;
     if (st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
     {
@@ -1800,10 +1801,8 @@ std::string Planner::lengthText(double length)
   return text;
 }
 
-int Planner::measurementAt(int x, int y, double pixels) const
+double Planner::pixelsFrom(int x, int y, const std::array<double, 3>& a, const std::array<double, 3>& b) const
 {
-  // The lines as drawn, in the view's pixels (the camera's room for the CT
-  // view included).
   auto onScreen = [&](const std::array<double, 3>& p) {
     renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
     renderer->WorldToDisplay();
@@ -1811,24 +1810,58 @@ int Planner::measurementAt(int x, int y, double pixels) const
     renderer->GetDisplayPoint(d);
     return std::array<double, 2>{ d[0], d[1] };
   };
-  auto distanceTo = [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
-    const double ux = b[0] - a[0], uy = b[1] - a[1], vx = x - a[0], vy = y - a[1];
-    const double length2 = ux * ux + uy * uy;
-    const double t = length2 > 0.0 ? std::clamp((ux * vx + uy * vy) / length2, 0.0, 1.0) : 0.0;
-    return std::hypot(vx - t * ux, vy - t * uy);
-  };
+  const auto from = onScreen(a), to = onScreen(b);
+  const double ux = to[0] - from[0], uy = to[1] - from[1], vx = x - from[0], vy = y - from[1];
+  const double length2 = ux * ux + uy * uy;
+  const double t = length2 > 0.0 ? std::clamp((ux * vx + uy * vy) / length2, 0.0, 1.0) : 0.0;
+  return std::hypot(vx - t * ux, vy - t * uy);
+}
+
+int Planner::measurementAt(int x, int y, double pixels, double& distance) const
+{
   int best = -1;
-  double nearest = pixels;
+  distance = pixels;
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
   {
     const Measurement shown = placed(session.measurements[i], shownMatrix);
-    const auto from = onScreen(shown.from), to = onScreen(shown.to);
-    const double d = shown.angle ? std::min(distanceTo(from, onScreen(shown.at)), distanceTo(onScreen(shown.at), to))
-                                 : distanceTo(from, to);
-    if (d <= nearest)
+    const double d = shown.angle ? std::min(pixelsFrom(x, y, shown.from, shown.at), pixelsFrom(x, y, shown.at, shown.to))
+                                 : pixelsFrom(x, y, shown.from, shown.to);
+    if (d <= distance)
     {
-      nearest = d;
+      distance = d;
       best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
+int Planner::strokeAt(int x, int y, double pixels, double& distance) const
+{
+  int best = -1;
+  distance = pixels;
+  for (std::size_t l = 0; l < cut.lines.size() && l < cut.lineStrokes.size(); ++l)
+  {
+    vtkPolyData* line = cut.lines[l].first;
+    if (!line || !line->GetLines())
+      continue;
+    auto it = vtk::TakeSmartPointer(line->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType k = 0; k + 1 < n; ++k)
+      {
+        std::array<double, 3> a, b;
+        line->GetPoint(ids[k], a.data());
+        line->GetPoint(ids[k + 1], b.data());
+        const double d = pixelsFrom(x, y, a, b);
+        if (d <= distance)
+        {
+          distance = d;
+          best = static_cast<int>(cut.lineStrokes[l]);
+        }
+      }
     }
   }
   return best;

@@ -426,6 +426,7 @@ public:
   {
     std::string key;
     std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>> lines; ///< feature lines, shade
+    std::vector<std::size_t> lineStrokes; ///< the stroke each line came from (a failed stroke has none)
     std::vector<vtkSmartPointer<vtkPolyData>> pieces;
     /// The bone with the strokes' lines split in, and the closed lines the
     /// cut took (MeshPointId into it): exported, so that the CLI tools can
@@ -536,8 +537,15 @@ public:
   vtkSmartPointer<vtkActor> measureActor;
   void showMeasurements();
   /// The measurement drawn nearest the display point (x, y) of the bone's
-  /// view, its line or its arms within `pixels`; -1 for none.
-  int measurementAt(int x, int y, double pixels) const;
+  /// view, its line or its arms within `pixels`; -1 for none. `distance`
+  /// gets how many pixels away it is.
+  int measurementAt(int x, int y, double pixels, double& distance) const;
+  /// The stroke whose line on the bone is drawn nearest the display point
+  /// (x, y), within `pixels`; -1 for none. `distance` as above.
+  int strokeAt(int x, int y, double pixels, double& distance) const;
+  /// (x, y)'s distance in pixels from the segment a-b drawn in the bone's
+  /// view (the camera's room for the CT view included).
+  double pixelsFrom(int x, int y, const std::array<double, 3>& a, const std::array<double, 3>& b) const;
   /// The segment's transform as the view shows it (placeSegment's).
   std::array<double, 16> shownMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   /// Where a point of piece `piece` (in its own frame) is shown: moved by

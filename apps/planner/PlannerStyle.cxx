@@ -1119,11 +1119,14 @@ void PlannerStyle::OnChar()
   else if (key == "Delete" || key == "BackSpace")
   {
     // While measuring, the last point clicked goes; otherwise the
-    // measurement under the mouse (undone with z).
+    // measurement or the stroke whose line is under the mouse (undone
+    // with z).
     Planner& p = *planner;
     rebuild = false;
     const int* pos = this->Interactor->GetEventPosition();
-    const int at = p.measurementAt(pos[0], pos[1], 12.0);
+    double toMeasurement = 0.0, toStroke = 0.0;
+    const int measurement = p.measurementAt(pos[0], pos[1], 12.0, toMeasurement);
+    const int stroke = p.strokeAt(pos[0], pos[1], 12.0, toStroke);
     if (p.measuring && !p.measurePicked.empty())
     {
       p.measurePicked.pop_back();
@@ -1131,18 +1134,25 @@ void PlannerStyle::OnChar()
       p.notice = "the last point clicked is taken back";
       p.showMeasurements();
     }
-    else if (p.session.measurements.empty())
-      p.message = key + ": no measurement to remove (u: measure a distance, a: an angle)";
-    else if (at < 0)
-      p.message = key + " removes the measurement under the mouse: point at its line in the bone's view";
-    else
+    else if (measurement >= 0 && (stroke < 0 || toMeasurement <= toStroke))
     {
       p.remember();
-      const std::string what = p.measuredText(p.session.measurements[static_cast<std::size_t>(at)]);
-      p.session.measurements.erase(p.session.measurements.begin() + at);
-      p.notice = "measurement " + std::to_string(at + 1) + " (" + what + ") removed (z: back)";
+      const std::string what = p.measuredText(p.session.measurements[static_cast<std::size_t>(measurement)]);
+      p.session.measurements.erase(p.session.measurements.begin() + measurement);
+      p.notice = "measurement " + std::to_string(measurement + 1) + " (" + what + ") removed (z: back)";
       rebuild = true;
     }
+    else if (stroke >= 0)
+    {
+      p.remember();
+      p.session.strokes.erase(p.session.strokes.begin() + stroke);
+      p.notice = "stroke " + std::to_string(stroke + 1) + " removed (z: back)";
+      rebuild = true;
+    }
+    else if (p.session.measurements.empty() && p.session.strokes.empty())
+      p.message = key + ": nothing to remove (no stroke, no measurement)";
+    else
+      p.message = key + " removes the stroke or the measurement under the mouse: point at its line in the bone's view";
   }
   else if (key == "Escape" && planner->measuring)
   {
