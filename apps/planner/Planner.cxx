@@ -1801,13 +1801,14 @@ std::string Planner::lengthText(double length)
   return text;
 }
 
-double Planner::pixelsFrom(int x, int y, const std::array<double, 3>& a, const std::array<double, 3>& b) const
+double Planner::pixelsFrom(
+  vtkRenderer* view, int x, int y, const std::array<double, 3>& a, const std::array<double, 3>& b)
 {
   auto onScreen = [&](const std::array<double, 3>& p) {
-    renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
-    renderer->WorldToDisplay();
+    view->SetWorldPoint(p[0], p[1], p[2], 1.0);
+    view->WorldToDisplay();
     double d[3];
-    renderer->GetDisplayPoint(d);
+    view->GetDisplayPoint(d);
     return std::array<double, 2>{ d[0], d[1] };
   };
   const auto from = onScreen(a), to = onScreen(b);
@@ -1821,11 +1822,34 @@ int Planner::measurementAt(int x, int y, double pixels, double& distance) const
 {
   int best = -1;
   distance = pixels;
+  // On the CT view: the measurements drawn there, on its plane as picked,
+  // in the picture's coordinates (mm along its right and up).
+  const bool onScan = onScanView(x, y);
+  const lkapp::ViewFrame& frame = scanPicture.frame;
+  auto inPicture = [&](const std::array<double, 3>& q) {
+    const std::array<double, 3> f = lkapp::inFrame(frame, q);
+    return std::array<double, 3>{ f[0], f[1], 0.0 };
+  };
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
   {
-    const Measurement shown = placed(session.measurements[i], shownMatrix);
-    const double d = shown.angle ? std::min(pixelsFrom(x, y, shown.from, shown.at), pixelsFrom(x, y, shown.at, shown.to))
-                                 : pixelsFrom(x, y, shown.from, shown.to);
+    Measurement shown = placed(session.measurements[i], shownMatrix);
+    vtkRenderer* view = renderer;
+    if (onScan)
+    {
+      const std::vector<std::array<double, 3>> points = session.measurements[i].points();
+      if (!scanPicture.image || !std::all_of(points.begin(), points.end(), [&](const std::array<double, 3>& q) {
+            return std::abs(lkapp::inFrame(frame, q)[2]) <= kOnScanPlane;
+          }))
+        continue;
+      shown = session.measurements[i];
+      shown.from = inPicture(shown.from);
+      shown.to = inPicture(shown.to);
+      shown.at = inPicture(shown.at);
+      view = scanRenderer;
+    }
+    const double d = shown.angle
+      ? std::min(pixelsFrom(view, x, y, shown.from, shown.at), pixelsFrom(view, x, y, shown.at, shown.to))
+      : pixelsFrom(view, x, y, shown.from, shown.to);
     if (d <= distance)
     {
       distance = d;
@@ -1839,6 +1863,8 @@ int Planner::strokeAt(int x, int y, double pixels, double& distance) const
 {
   int best = -1;
   distance = pixels;
+  if (onScanView(x, y))
+    return best;
   for (std::size_t l = 0; l < cut.lines.size() && l < cut.lineStrokes.size(); ++l)
   {
     vtkPolyData* line = cut.lines[l].first;
@@ -1855,7 +1881,7 @@ int Planner::strokeAt(int x, int y, double pixels, double& distance) const
         std::array<double, 3> a, b;
         line->GetPoint(ids[k], a.data());
         line->GetPoint(ids[k + 1], b.data());
-        const double d = pixelsFrom(x, y, a, b);
+        const double d = pixelsFrom(renderer, x, y, a, b);
         if (d <= distance)
         {
           distance = d;

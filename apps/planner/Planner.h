@@ -536,16 +536,21 @@ public:
   vtkNew<vtkActor> measureMarker;
   vtkSmartPointer<vtkActor> measureActor;
   void showMeasurements();
-  /// The measurement drawn nearest the display point (x, y) of the bone's
-  /// view, its line or its arms within `pixels`; -1 for none. `distance`
-  /// gets how many pixels away it is.
+  /// The measurement drawn nearest the display point (x, y), its line or
+  /// its arms within `pixels`: in the bone's view, or, where (x, y) lies on
+  /// the CT view, one drawn there (on its plane, as picked); -1 for none.
+  /// `distance` gets how many pixels away it is.
   int measurementAt(int x, int y, double pixels, double& distance) const;
   /// The stroke whose line on the bone is drawn nearest the display point
-  /// (x, y), within `pixels`; -1 for none. `distance` as above.
+  /// (x, y) of the bone's view, within `pixels`; -1 for none (and on the CT
+  /// view). `distance` as above.
   int strokeAt(int x, int y, double pixels, double& distance) const;
-  /// (x, y)'s distance in pixels from the segment a-b drawn in the bone's
-  /// view (the camera's room for the CT view included).
-  double pixelsFrom(int x, int y, const std::array<double, 3>& a, const std::array<double, 3>& b) const;
+  /// Whether (x, y) lies on the CT view, drawn.
+  bool onScanView(int x, int y) const { return scanRenderer->GetDraw() && scanRenderer->IsInViewport(x, y); }
+  /// (x, y)'s distance in pixels from the segment a-b drawn by `view` (its
+  /// world coordinates; the camera's room for the CT view included).
+  static double pixelsFrom(
+    vtkRenderer* view, int x, int y, const std::array<double, 3>& a, const std::array<double, 3>& b);
   /// The segment's transform as the view shows it (placeSegment's).
   std::array<double, 16> shownMatrix{ 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   /// Where a point of piece `piece` (in its own frame) is shown: moved by

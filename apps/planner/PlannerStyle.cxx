@@ -519,7 +519,7 @@ bool PlannerStyle::picksOnTheBone() const
 
 bool PlannerStyle::onScanView(int x, int y) const
 {
-  return planner->scanRenderer->GetDraw() && planner->scanRenderer->IsInViewport(x, y);
+  return planner->onScanView(x, y);
 }
 
 void PlannerStyle::dragWindow()
