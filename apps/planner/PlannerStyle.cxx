@@ -420,8 +420,10 @@ void PlannerStyle::measureOnScan()
     point[i] = f.centre[i] + x * f.right[i] + y * f.up[i];
   double away = 0.0;
   const int piece = p.pieceOnScan(point, away);
+  const std::size_t picked = p.measurePicked.size(), measured = p.session.measurements.size();
   addMeasuredPoint(point, piece);
-  if (piece < 0 && away < VTK_DOUBLE_MAX)
+  const bool taken = p.measurePicked.size() > picked || p.session.measurements.size() > measured;
+  if (taken && piece < 0 && away < VTK_DOUBLE_MAX)
   {
     char text[160];
     std::snprintf(text, sizeof text,
