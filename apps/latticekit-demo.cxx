@@ -184,8 +184,7 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
   }
   if (root.isMember("patient"))
   {
-    if (!root["patient"].isObject() || !jsonNumbers(root["patient"]["head"], plan.patient.head) ||
-      !jsonNumbers(root["patient"]["front"], plan.patient.front) || !lkapp::isValid(plan.patient))
+    if (!lkapp::jsonHeadAndFront(root["patient"], plan.patient))
     {
       error = "the plan's patient needs \"head\" and \"front\" as [x, y, z]: non-zero and not parallel";
       return false;

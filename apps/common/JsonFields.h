@@ -5,7 +5,8 @@
 #ifndef latticekit_apps_JsonFields_h
 #define latticekit_apps_JsonFields_h
 
-#include "AppSupport.h" // specialFileKind
+#include "AppSupport.h"  // specialFileKind
+#include "ScanOnPlane.h" // HeadAndFront
 
 #include <vtk_jsoncpp.h>
 
@@ -79,6 +80,17 @@ bool jsonNumbers(const Json::Value& v, std::array<double, N>& out)
   for (Json::ArrayIndex i = 0; i < N; ++i)
     if (!jsonNumber(v[i], read[i]))
       return false;
+  out = read;
+  return true;
+}
+
+/// Where a patient's head and face point, {"head": [x, y, z], "front": [x,
+/// y, z]}: both non-zero and not parallel (isValid); `out` is kept if not.
+inline bool jsonHeadAndFront(const Json::Value& v, HeadAndFront& out)
+{
+  HeadAndFront read;
+  if (!v.isObject() || !jsonNumbers(v["head"], read.head) || !jsonNumbers(v["front"], read.front) || !isValid(read))
+    return false;
   out = read;
   return true;
 }

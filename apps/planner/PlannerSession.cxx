@@ -426,9 +426,7 @@ bool readSession(
   }
   if (root.isMember("patient") && !root["patient"].isNull())
   {
-    const Json::Value& patient = root["patient"];
-    if (!patient.isObject() || !jsonNumbers(patient["head"], s.patient.head) ||
-      !jsonNumbers(patient["front"], s.patient.front) || !lkapp::isValid(s.patient))
+    if (!lkapp::jsonHeadAndFront(root["patient"], s.patient))
     {
       error = session + ": \"patient\" must be {\"head\": [x, y, z], \"front\": [x, y, z]}, non-zero and not parallel";
       return false;
