@@ -259,7 +259,8 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   if (!picture.moved.empty())
     legendText += "\ncyan: the segment where the plan moves it";
   if (!picture.measured.empty())
-    legendText += "\nmagenta: measured on this plane";
+    legendText += picture.measuredBeforeMove ? "\nmagenta: measured on this plane\n  (before the segment's move)"
+                                             : "\nmagenta: measured on this plane";
   if (!picture.hint.empty())
     legendText += "\n" + picture.hint;
   auto legend = label(legendText,

@@ -46,6 +46,9 @@ struct ScanPicture
   /// the points given, in patient coordinates.
   std::vector<std::vector<std::array<double, 3>>> measured;
   std::vector<std::pair<std::array<double, 3>, std::string>> measuredValues;
+  /// A value drawn is the one before the segment's move (the picture is the
+  /// scan, unmoved; the bone's view shows the moved value): the legend says so.
+  bool measuredBeforeMove = false;
   /// The top line; the window (greyWindowLabel) is written at the bottom
   /// right, as radiology viewers write it.
   std::string title;

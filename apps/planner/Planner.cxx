@@ -1497,6 +1497,7 @@ void Planner::showScanMoved(const std::array<double, 16>& matrix)
   scanMeasuredKey = measuredKey;
   scanPicture.measured = marks.measured;
   scanPicture.measuredValues = marks.measuredValues;
+  scanPicture.measuredBeforeMove = marks.measuredBeforeMove;
   lkapp::showScanPicture(scanRenderer, scanPicture, 12);
 }
 
@@ -1504,6 +1505,7 @@ void Planner::measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const
 {
   picture.measured.clear();
   picture.measuredValues.clear();
+  picture.measuredBeforeMove = false;
   // As picked: the CT is the scan before the segment's move.
   const auto onPlane = [&](const std::array<double, 3>& q) {
     return std::abs(lkapp::inFrame(picture.frame, q)[2]) <= kOnScanPlane;
@@ -1513,17 +1515,21 @@ void Planner::measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const
     const std::vector<std::array<double, 3>> points = m.points();
     if (!std::all_of(points.begin(), points.end(), onPlane))
       continue;
+    // The value as picked, on the scan; where the segment's move changes
+    // it (the bone's view shows the moved value), the legend says so.
+    const std::string text = valueText(m);
+    picture.measuredBeforeMove = picture.measuredBeforeMove || text != measuredText(m);
     if (m.angle)
     {
       picture.measured.push_back({ m.from, m.at, m.to });
-      picture.measuredValues.emplace_back(m.at, valueText(m));
+      picture.measuredValues.emplace_back(m.at, text);
     }
     else
     {
       picture.measured.push_back({ m.from, m.to });
       picture.measuredValues.emplace_back(
         std::array<double, 3>{ 0.5 * (m.from[0] + m.to[0]), 0.5 * (m.from[1] + m.to[1]), 0.5 * (m.from[2] + m.to[2]) },
-        valueText(m));
+        text);
     }
   }
   // The points of a measurement under way: small crosses, joined.
