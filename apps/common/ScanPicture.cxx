@@ -235,9 +235,13 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   renderer->AddViewProp(polylines(picture, picture.measured, 1.5, kMeasuredColour, 2.5f));
   for (const auto& [at, text] : picture.measuredValues)
   {
+    // Beside its point, toward the picture's middle: a value near the right
+    // edge ends at its point instead of running out of the picture.
     const auto q = inFrame(picture.frame, at);
-    auto value = label(text, 0.5 + q[0] / picture.side + 0.02, 0.5 + q[1] / picture.side + 0.02, fontSize,
-      kMeasuredColour, VTK_TEXT_LEFT, VTK_TEXT_BOTTOM);
+    const double x = 0.5 + q[0] / picture.side, y = 0.5 + q[1] / picture.side;
+    const bool right = x > 0.65;
+    auto value = label(text, right ? x - 0.02 : x + 0.02, y + 0.02, fontSize, kMeasuredColour,
+      right ? VTK_TEXT_RIGHT : VTK_TEXT_LEFT, VTK_TEXT_BOTTOM);
     renderer->AddViewProp(value);
   }
   // What the colours are, under the title; the scan's edge only where the
