@@ -2553,16 +2553,20 @@ std::string Planner::exportStructureSet(
     const Measurement& m = session.measurements[i];
     const Measurement shown = placed(m, session.segmentMatrix);
     const std::string what = "measurement " + std::to_string(i + 1) + ", " + measuredText(m) + ": ";
+    // A point of the soft tissue (measured on the CT, not moved) says so.
+    auto name = [&](const char* end, Measurement::End k) {
+      return what + end + (m.pieces[k] == -1 ? " (soft tissue)" : "");
+    };
     if (m.angle)
     {
-      structureSet->AddMarker((what + "vertex").c_str(), shown.at[0], shown.at[1], shown.at[2]);
-      structureSet->AddMarker((what + "arm 1").c_str(), shown.from[0], shown.from[1], shown.from[2]);
-      structureSet->AddMarker((what + "arm 2").c_str(), shown.to[0], shown.to[1], shown.to[2]);
+      structureSet->AddMarker(name("vertex", Measurement::AT).c_str(), shown.at[0], shown.at[1], shown.at[2]);
+      structureSet->AddMarker(name("arm 1", Measurement::FROM).c_str(), shown.from[0], shown.from[1], shown.from[2]);
+      structureSet->AddMarker(name("arm 2", Measurement::TO).c_str(), shown.to[0], shown.to[1], shown.to[2]);
     }
     else
     {
-      structureSet->AddMarker((what + "from").c_str(), shown.from[0], shown.from[1], shown.from[2]);
-      structureSet->AddMarker((what + "to").c_str(), shown.to[0], shown.to[1], shown.to[2]);
+      structureSet->AddMarker(name("from", Measurement::FROM).c_str(), shown.from[0], shown.from[1], shown.from[2]);
+      structureSet->AddMarker(name("to", Measurement::TO).c_str(), shown.to[0], shown.to[1], shown.to[2]);
     }
   }
   structureSet->SetReferenceFileName(referenceImage.c_str());
