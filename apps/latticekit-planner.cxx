@@ -52,6 +52,8 @@ void usage(std::ostream& os)
         "the wheel over it moves its plane 1 mm a step, and while measuring (u, a) a click on it\n"
         "picks a point of its plane (the canal's, a root's); a point of the soft tissue, more\n"
         "than 3 mm outside the bone, stays where it is when the segment moves.\n"
+        "Delete (or BackSpace) with the mouse on a stroke's or a measurement's line removes it\n"
+        "(z brings it back); while measuring it takes back the last point clicked.\n"
         "\n"
         "  --iso V              a CT's bone threshold (default 300 HU; a 0/1 label map is found\n"
         "                       and taken at 0.5)\n"
