@@ -36,6 +36,7 @@
 #include <vtkExtractEdges.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
+#include <vtkInteractorObserver.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -1501,19 +1502,21 @@ void Planner::showScanMoved(const std::array<double, 16>& matrix)
   lkapp::showScanPicture(scanRenderer, scanPicture, 12);
 }
 
+bool Planner::onScanPlane(const std::vector<std::array<double, 3>>& points, const lkapp::ViewFrame& frame)
+{
+  return std::all_of(points.begin(), points.end(),
+    [&](const std::array<double, 3>& q) { return std::abs(lkapp::inFrame(frame, q)[2]) <= kOnScanPlane; });
+}
+
 void Planner::measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const
 {
   picture.measured.clear();
   picture.measuredValues.clear();
   picture.measuredBeforeMove = false;
   // As picked: the CT is the scan before the segment's move.
-  const auto onPlane = [&](const std::array<double, 3>& q) {
-    return std::abs(lkapp::inFrame(picture.frame, q)[2]) <= kOnScanPlane;
-  };
   for (const Measurement& m : session.measurements)
   {
-    const std::vector<std::array<double, 3>> points = m.points();
-    if (!std::all_of(points.begin(), points.end(), onPlane))
+    if (!onScanPlane(m.points(), picture.frame))
       continue;
     // The value as picked, on the scan; where the segment's move changes
     // it (the bone's view shows the moved value), the legend says so.
@@ -1537,7 +1540,7 @@ void Planner::measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const
     return;
   std::vector<std::array<double, 3>> waiting;
   for (const auto& q : measurePicked)
-    if (onPlane(q))
+    if (onScanPlane({ q }, picture.frame))
     {
       waiting.push_back(q);
       const double arm = 0.015 * picture.side;
@@ -1717,7 +1720,7 @@ int Planner::pieceOnScan(const std::array<double, 3>& point, double& nearest) co
   const auto best = std::min_element(distance.begin(), distance.end());
   nearest = best == distance.end() ? VTK_DOUBLE_MAX : *best;
   if (nearest == VTK_DOUBLE_MAX)
-    return -1;
+    return Measurement::kSoftTissue;
   const int piece = static_cast<int>(best - distance.begin());
   if (nearest <= kBesideTheBone)
     return piece;
@@ -1735,7 +1738,7 @@ int Planner::pieceOnScan(const std::array<double, 3>& point, double& nearest) co
   for (std::size_t p = 0; p < cut.pieces.size(); ++p)
     if (encloses(lkapp::planeSectionLoops(cut.pieces[p], point, normal, kBesideACap)))
       return static_cast<int>(p);
-  return encloses(lkapp::planeSectionLoops(bone, point, normal)) ? piece : -1;
+  return encloses(lkapp::planeSectionLoops(bone, point, normal)) ? piece : Measurement::kSoftTissue;
 }
 
 void Planner::resolveNames()
@@ -1811,10 +1814,8 @@ double Planner::pixelsFrom(
   vtkRenderer* view, int x, int y, const std::array<double, 3>& a, const std::array<double, 3>& b)
 {
   auto onScreen = [&](const std::array<double, 3>& p) {
-    view->SetWorldPoint(p[0], p[1], p[2], 1.0);
-    view->WorldToDisplay();
     double d[3];
-    view->GetDisplayPoint(d);
+    vtkInteractorObserver::ComputeWorldToDisplay(view, p[0], p[1], p[2], d);
     return std::array<double, 2>{ d[0], d[1] };
   };
   const auto from = onScreen(a), to = onScreen(b);
@@ -1838,21 +1839,17 @@ int Planner::measurementAt(int x, int y, double pixels, double& distance) const
   };
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
   {
-    Measurement shown = placed(session.measurements[i], shownMatrix);
-    vtkRenderer* view = renderer;
+    const Measurement& m = session.measurements[i];
+    if (onScan && (!scanPicture.image || !onScanPlane(m.points(), frame)))
+      continue; // not drawn on the view (measuredOnPlane's rule)
+    Measurement shown = onScan ? m : placed(m, shownMatrix);
     if (onScan)
     {
-      const std::vector<std::array<double, 3>> points = session.measurements[i].points();
-      if (!scanPicture.image || !std::all_of(points.begin(), points.end(), [&](const std::array<double, 3>& q) {
-            return std::abs(lkapp::inFrame(frame, q)[2]) <= kOnScanPlane;
-          }))
-        continue;
-      shown = session.measurements[i];
       shown.from = inPicture(shown.from);
       shown.to = inPicture(shown.to);
       shown.at = inPicture(shown.at);
-      view = scanRenderer;
     }
+    vtkRenderer* view = onScan ? scanRenderer.Get() : renderer.Get();
     const double d = shown.angle
       ? std::min(pixelsFrom(view, x, y, shown.from, shown.at), pixelsFrom(view, x, y, shown.at, shown.to))
       : pixelsFrom(view, x, y, shown.from, shown.to);
@@ -2081,7 +2078,7 @@ void Planner::followPieces()
   {
     Measurement& m = session.measurements[i];
     for (std::size_t k = 0; k < m.points().size(); ++k)
-      if (m.pieces[k] != -1)
+      if (m.pieces[k] != Measurement::kSoftTissue)
         m.pieces[k] = nearest(distances[firstPoint[i] + k], m.pieces[k]);
   }
 }
@@ -2449,7 +2446,7 @@ std::string Planner::planText()
       { "arm 1's end", "arm 2's end", "the vertex" } };
     std::string outside;
     for (std::size_t k = 0; k < m.points().size(); ++k)
-      if (m.pieces[k] == -1)
+      if (m.pieces[k] == Measurement::kSoftTissue)
         outside += (outside.empty() ? "" : " and ") + std::string(ends[m.angle ? 1 : 0][k]);
     if (!outside.empty())
       text += ", " + outside + " in the soft tissue (not moved)";
@@ -2555,7 +2552,7 @@ std::string Planner::exportStructureSet(
     const std::string what = "measurement " + std::to_string(i + 1) + ", " + measuredText(m) + ": ";
     // A point of the soft tissue (measured on the CT, not moved) says so.
     auto name = [&](const char* end, Measurement::End k) {
-      return what + end + (m.pieces[k] == -1 ? " (soft tissue)" : "");
+      return what + end + (m.pieces[k] == Measurement::kSoftTissue ? " (soft tissue)" : "");
     };
     if (m.angle)
     {

@@ -293,6 +293,9 @@ public:
   /// `picking`: with the points of one under way.
   void measuredOnPlane(lkapp::ScanPicture& picture, bool picking) const;
   static constexpr double kOnScanPlane = 1.0;
+  /// Whether all the points lie within kOnScanPlane of the frame's plane: a
+  /// measurement drawn on the view (and removed there with Delete).
+  static bool onScanPlane(const std::vector<std::array<double, 3>>& points, const lkapp::ViewFrame& frame);
   /// The moved segment's section by the frame's plane where `matrix` puts
   /// it; none when no segment is moved.
   std::vector<std::vector<std::array<double, 3>>> movedSection(

@@ -150,8 +150,10 @@ struct Measurement
   /// An end's piece not known yet (a session without "pieces"): the
   /// nearest piece takes it.
   static constexpr int kUnresolved = -2;
-  /// The pieces of from, to and at; -1: none (a point of the soft tissue,
-  /// measured on the CT, which the plan does not move).
+  /// An end with no piece: a point of the soft tissue, measured on the CT,
+  /// which the plan does not move.
+  static constexpr int kSoftTissue = -1;
+  /// The pieces of from, to and at (kSoftTissue: none).
   std::array<int, 3> pieces{ kUnresolved, kUnresolved, kUnresolved };
   /// Its points (from, to; at for an angle) as picked.
   std::vector<std::array<double, 3>> points() const;
