@@ -4,6 +4,7 @@
 #include "common/CutReport.h"
 
 #include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKExtractCutPieceFilter.h"
 #include "vtkLKMeshPointIds.h"
 
 #include <vtkCellData.h>
@@ -167,9 +168,14 @@ int main(int argc, char* argv[])
     lkapp::lineFactsText(lkapp::lineFacts(lines ? lines.Get() : mesh.Get()), space == "LPS")
       .c_str());
   std::vector<std::string> pieceStems; // the files' names, piece0, piece1, ...
+  vtkNew<vtkLKExtractCutPieceFilter> extract;
+  extract->SetInputConnection(cut->GetOutputPort());
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
   {
-    vtkSmartPointer<vtkPolyData> piece = lkapp::cutPiece(cut->GetOutput(), p, true);
+    extract->SetPiece(p);
+    extract->Update();
+    vtkNew<vtkPolyData> piece;
+    piece->ShallowCopy(extract->GetOutput());
     const lkapp::PieceFacts facts = lkapp::pieceFacts(piece);
     std::printf("piece %-11d %lld points, %lld faces (%lld cap)%s\n", p,
       static_cast<long long>(piece->GetNumberOfPoints()), static_cast<long long>(facts.faces),

@@ -14,6 +14,7 @@
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKExtractCutPieceFilter.h"
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
@@ -272,60 +273,11 @@ vtkSmartPointer<vtkPolyData> scriptedStroke(vtkPolyData* surface, const Plan& pl
   return stroke;
 }
 
-/// The piece `r` of the cut (cells with RegionId r), points compacted; the
-/// cap border (edges between cap and bone triangles) as feature lines with
-/// MeshPointId, the form vtkLKLatticeFitFilter takes.
-void extractPiece(vtkPolyData* cut, int r, vtkPolyData* piece, vtkPolyData* border)
+/// The edges of a piece's cut lines (vtkLKExtractCutPieceFilter's count).
+vtkIdType cutLineEdges(vtkPolyData* border)
 {
-  vtkDataArray* region = cut->GetCellData()->GetArray("RegionId");
-  vtkDataArray* cap = cut->GetCellData()->GetArray("Cap");
-  std::vector<vtkIdType> newId(static_cast<std::size_t>(cut->GetNumberOfPoints()), -1);
-  vtkNew<vtkPoints> pts;
-  pts->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
-  std::map<std::pair<vtkIdType, vtkIdType>, int> edgeSides; // bit 1: bone, bit 2: cap
-  auto it = vtk::TakeSmartPointer(cut->GetPolys()->NewIterator());
-  vtkIdType cellId = cut->GetNumberOfVerts() + cut->GetNumberOfLines();
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
-  {
-    if (static_cast<int>(region->GetTuple1(cellId)) != r)
-      continue;
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    polys->InsertNextCell(n);
-    const int side = cap && cap->GetTuple1(cellId) > 0.5 ? 2 : 1;
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      vtkIdType& id = newId[static_cast<std::size_t>(ids[k])];
-      if (id < 0)
-        id = pts->InsertNextPoint(cut->GetPoint(ids[k]));
-      polys->InsertCellPoint(id);
-      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
-      edgeSides[{ std::min(a, b), std::max(a, b) }] |= side;
-    }
-  }
-  piece->SetPoints(pts);
-  piece->SetPolys(polys);
-  vtkNew<vtkPoints> bp;
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIdTypeArray> meshIds;
-  meshIds->SetName("MeshPointId");
-  for (const auto& [e, sides] : edgeSides)
-  {
-    if (sides != 3)
-      continue;
-    lines->InsertNextCell(2);
-    for (vtkIdType v : { e.first, e.second })
-    {
-      const vtkIdType id = newId[static_cast<std::size_t>(v)];
-      lines->InsertCellPoint(bp->InsertNextPoint(pts->GetPoint(id)));
-      meshIds->InsertNextValue(id);
-    }
-  }
-  border->SetPoints(bp);
-  border->SetLines(lines);
-  border->GetPointData()->AddArray(meshIds);
+  vtkDataArray* count = border ? border->GetFieldData()->GetArray("CutLineEdges") : nullptr;
+  return count ? static_cast<vtkIdType>(count->GetTuple1(0)) : 0;
 }
 
 struct Row
@@ -357,8 +309,8 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
   for (std::size_t i = 0; i < meshes.size(); ++i)
   {
     faces += static_cast<double>(meshes[i]->GetNumberOfPolys());
-    if (i < borders.size() && borders[i] && borders[i]->GetNumberOfLines() > 0)
-      locked[i] = borders[i]->GetNumberOfLines(); // closed lines: as many vertices as edges
+    if (i < borders.size())
+      locked[i] = cutLineEdges(borders[i]); // closed lines: as many vertices as edges
     allLocked += locked[i];
   }
   const vtkIdType free = std::max<vtkIdType>(0, static_cast<vtkIdType>(vertices) - allLocked);
@@ -656,12 +608,20 @@ int main(int argc, char* argv[])
   cut->Update();
   if (lkapp::errorCount() > 0)
     return 1;
+  // Each piece, and its cut line as the feature lines its lattice keeps.
   std::vector<vtkSmartPointer<vtkPolyData>> pieces, borders;
+  vtkNew<vtkLKExtractCutPieceFilter> extract;
+  extract->SetInputConnection(cut->GetOutputPort());
+  extract->PassAttributesOff();
   for (int r = 0; r < cut->GetNumberOfPieces(); ++r)
   {
+    extract->SetPiece(r);
+    extract->Update();
     auto piece = vtkSmartPointer<vtkPolyData>::New();
     auto border = vtkSmartPointer<vtkPolyData>::New();
-    extractPiece(cut->GetOutput(), r, piece, border);
+    piece->ShallowCopy(extract->GetOutput());
+    border->ShallowCopy(extract->GetCutLinesOutput());
+    piece->GetFieldData()->Initialize(); // the cut's counts are not the piece's, nor its lattice's
     lkapp::setCoordinateSpace(piece, space);
     pieces.push_back(piece);
     borders.push_back(border);
@@ -692,7 +652,7 @@ int main(int argc, char* argv[])
   //    (or cannot reach their share at all), so such a plan is refused.
   vtkIdType lockedVertices = 0;
   for (const auto& border : borders)
-    lockedVertices += border ? border->GetNumberOfLines() : 0; // closed lines: as many vertices as edges
+    lockedVertices += cutLineEdges(border); // closed lines: as many vertices as edges
   if (plan.vertices < 2 * lockedVertices)
   {
     std::cerr << "error: the plan's latticeVertices (" << plan.vertices << ") is too few for the cut: the "

@@ -552,6 +552,13 @@ bool isPieceFileName(const std::string& name)
   return end > 5 && (end == std::string::npos || stem[end] == '-');
 }
 
+bool isLatticeFileName(const std::string& name)
+{
+  static const std::string prefix = "lattice_";
+  return name.rfind(prefix, 0) == 0 && lower(vtksys::SystemTools::GetFilenameLastExtension(name)) == ".vtp" &&
+    isPieceFileName(name.substr(prefix.size()));
+}
+
 bool isExportedFile(const std::string& path, const std::string& folder, std::initializer_list<const char*> others)
 {
   if (path.empty() || folder.empty())

@@ -121,6 +121,9 @@ std::string pieceFileStem(std::size_t p, const std::string& name = std::string()
 /// Whether a file's name (no folder) is one an export writes for a piece:
 /// "piece", digits, optionally '-' and more, then .stl, .vtp or .obj.
 bool isPieceFileName(const std::string& name);
+/// Whether a file's name (no folder) is one the planner's export writes for
+/// a piece's lattice: "lattice_", a piece's stem (isPieceFileName), ".vtp".
+bool isLatticeFileName(const std::string& name);
 /// Whether `path` names a file that an export into `folder` writes or
 /// removes: a piece's file (isPieceFileName), or one of `others` (names in
 /// the folder). An input among them would be lost to the export.

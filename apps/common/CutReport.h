@@ -1,8 +1,8 @@
 #pragma once
 /// \file CutReport.h
 /// What the command-line tools report about a cut (latticekit-cut, the
-/// planner, the main job): its pieces, taken out of a
-/// vtkLKClosedLineCutFilter output, whether each is closed and its volume,
+/// planner, the main job): its pieces (vtkLKExtractCutPieceFilter takes them
+/// out of a vtkLKClosedLineCutFilter output), whether each is closed and its volume,
 /// and where each cut line lies (length, centre, plane), with the distance
 /// and angle between two lines.
 
@@ -14,12 +14,6 @@
 
 namespace lkapp
 {
-
-/// Piece `region` of a vtkLKClosedLineCutFilter output: its cells (cell data
-/// RegionId == region), with only the points they use. Without
-/// `attributes`, point and cell data are dropped (a piece to show or print);
-/// with them, the cut's InputPointId, InputCellId, RegionId and Cap stay.
-vtkSmartPointer<vtkPolyData> cutPiece(vtkPolyData* cut, int region, bool attributes = false);
 
 /// What a surgeon asks of a cut piece before printing it: its faces (and
 /// how many are cap faces: cell data Cap), whether it is closed (no edge

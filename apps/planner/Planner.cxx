@@ -9,6 +9,7 @@
 #include "common/TextFont.h"
 
 #include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKExtractCutPieceFilter.h"
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
@@ -67,6 +68,7 @@
 #include <regex>
 #include <tuple>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <set>
 #include <cstdlib>
@@ -975,6 +977,137 @@ std::string closedLinesMeeting(const std::vector<vtkSmartPointer<vtkPolyData>>& 
   }
   return {};
 }
+
+using FeatureEdges = std::vector<std::array<vtkIdType, 2>>;
+
+/// The edges of `piece`'s faces (smaller id first), sorted.
+FeatureEdges faceEdgesOf(vtkPolyData* piece)
+{
+  FeatureEdges edges;
+  auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+      edges.push_back({ std::min(ids[k], ids[(k + 1) % n]), std::max(ids[k], ids[(k + 1) % n]) });
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+/// `edges` of a cut piece on `deformed`, that piece after the patch
+/// deformation, which keeps the cut piece's `kept` points first, in order,
+/// and splits edges at new points (its adaptive refinement): an edge still
+/// there stays; a split one becomes its parts, through the new point joined
+/// to both ends that lies nearest the straight path, as often as it was
+/// split. `lost` counts the edges for which no such path was found.
+FeatureEdges onDeformed(const FeatureEdges& edges, vtkPolyData* deformed, vtkIdType kept, std::size_t& lost)
+{
+  const FeatureEdges all = faceEdgesOf(deformed);
+  std::vector<std::vector<vtkIdType>> around(static_cast<std::size_t>(deformed->GetNumberOfPoints()));
+  for (const auto& e : all)
+  {
+    around[static_cast<std::size_t>(e[0])].push_back(e[1]);
+    around[static_cast<std::size_t>(e[1])].push_back(e[0]);
+  }
+  auto has = [&](vtkIdType a, vtkIdType b) {
+    return std::binary_search(all.begin(), all.end(), std::array<vtkIdType, 2>{ std::min(a, b), std::max(a, b) });
+  };
+  auto length = [&](vtkIdType a, vtkIdType b) {
+    double x[3], y[3];
+    deformed->GetPoint(a, x);
+    deformed->GetPoint(b, y);
+    return std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+  };
+  std::set<std::array<vtkIdType, 2>> out;
+  std::function<bool(vtkIdType, vtkIdType, int)> path = [&](vtkIdType a, vtkIdType b, int depth) {
+    if (has(a, b))
+    {
+      out.insert({ std::min(a, b), std::max(a, b) });
+      return true;
+    }
+    vtkIdType middle = -1;
+    double shortest = VTK_DOUBLE_MAX;
+    for (const vtkIdType m : around[static_cast<std::size_t>(a)])
+      if (m >= kept && has(m, b) && length(a, m) + length(m, b) < shortest)
+      {
+        middle = m;
+        shortest = length(a, m) + length(m, b);
+      }
+    return depth > 0 && middle >= 0 && path(a, middle, depth - 1) && path(middle, b, depth - 1);
+  };
+  lost = 0;
+  for (const auto& e : edges)
+    if (e[1] >= deformed->GetNumberOfPoints() || !path(e[0], e[1], 16))
+      ++lost;
+  return FeatureEdges(out.begin(), out.end());
+}
+
+/// The feature edges of `piece` (its point ids, smaller first): the edges of
+/// its cut lines (MeshPointId naming its points; may be null) and of the
+/// strokes' `lines` (MeshPointId naming the points of the surface the cut was
+/// made on, which the piece's point data "InputPointId" maps; without it the
+/// piece is that surface) that are edges of its faces.
+FeatureEdges featureEdgesOf(
+  vtkPolyData* piece, vtkPolyData* cutLines, const std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>>& lines)
+{
+  const FeatureEdges faceEdges = faceEdgesOf(piece);
+  std::set<std::array<vtkIdType, 2>> kept;
+  auto add = [&](vtkIdType a, vtkIdType b) {
+    const std::array<vtkIdType, 2> e{ std::min(a, b), std::max(a, b) };
+    if (e[0] >= 0 && e[0] != e[1] && std::binary_search(faceEdges.begin(), faceEdges.end(), e))
+      kept.insert(e);
+  };
+  vtkDataArray* input = piece->GetPointData()->GetArray("InputPointId");
+  std::map<vtkIdType, vtkIdType> toPiece;
+  for (vtkIdType i = 0; input && i < input->GetNumberOfTuples(); ++i)
+    toPiece.emplace(static_cast<vtkIdType>(input->GetTuple1(i)), i);
+  const vtkIdType count = piece->GetNumberOfPoints();
+  auto inPiece = [&](vtkIdType v) -> vtkIdType {
+    if (!input)
+      return v >= 0 && v < count ? v : -1;
+    const auto found = toPiece.find(v);
+    return v >= 0 && found != toPiece.end() ? found->second : -1;
+  };
+  auto addLines = [&](vtkPolyData* pd, bool mapped) {
+    vtkDataArray* ids = pd ? pd->GetPointData()->GetArray("MeshPointId") : nullptr;
+    if (!ids)
+      return;
+    auto cell = vtk::TakeSmartPointer(pd->GetLines()->NewIterator());
+    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* points;
+      cell->GetCurrentCell(n, points);
+      for (vtkIdType k = 0; k + 1 < n; ++k)
+      {
+        const auto a = static_cast<vtkIdType>(ids->GetTuple1(points[k]));
+        const auto b = static_cast<vtkIdType>(ids->GetTuple1(points[k + 1]));
+        add(mapped ? inPiece(a) : a, mapped ? inPiece(b) : b);
+      }
+    }
+  };
+  addLines(cutLines, false);
+  for (const auto& line : lines)
+    addLines(line.first, true);
+  return FeatureEdges(kept.begin(), kept.end());
+}
+
+/// A piece as the planner keeps it: its cells and points, its field data and
+/// the cell data "Cap" alone.
+vtkSmartPointer<vtkPolyData> withCapOnly(vtkPolyData* piece)
+{
+  auto kept = vtkSmartPointer<vtkPolyData>::New();
+  kept->ShallowCopy(piece);
+  kept->GetPointData()->Initialize();
+  kept->GetCellData()->Initialize();
+  if (vtkDataArray* cap = piece->GetCellData()->GetArray("Cap"))
+    kept->GetCellData()->AddArray(cap);
+  return kept;
+}
 } // namespace
 
 void Planner::computeCut()
@@ -1090,8 +1223,15 @@ void Planner::computeCut()
     if (lkapp::errorCount() == before)
     {
       cut.loops = loops;
+      vtkNew<vtkLKExtractCutPieceFilter> extract;
+      extract->SetInputConnection(cutter->GetOutputPort());
       for (int r = 0; r < cutter->GetNumberOfPieces(); ++r)
-        cut.pieces.push_back(lkapp::cutPiece(cutter->GetOutput(), r));
+      {
+        extract->SetPiece(r);
+        extract->Update();
+        cut.featureEdges.push_back(featureEdgesOf(extract->GetOutput(), extract->GetCutLinesOutput(), cut.lines));
+        cut.pieces.push_back(withCapOnly(extract->GetOutput()));
+      }
       cut.innerWallLines = cutter->GetNumberOfInnerWallLines();
     }
     else
@@ -1106,6 +1246,7 @@ void Planner::computeCut()
   {
     auto whole = vtkSmartPointer<vtkPolyData>::New();
     whole->ShallowCopy(faces);
+    cut.featureEdges.assign(1, featureEdgesOf(whole, nullptr, cut.lines));
     cut.pieces.push_back(whole);
   }
   followPieces(); // the pieces may be numbered anew
@@ -2135,7 +2276,16 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
 {
   vtkPolyData* piece = pieces[p];
   const vtkIdType vertices = std::min<vtkIdType>(session.latticeVertices, piece->GetNumberOfPoints() / 2);
-  const std::uint64_t key = geometryKey(piece, vertices);
+  // The cut piece's feature edges, on the piece as its deformations left it.
+  FeatureEdges features;
+  std::size_t refined = 0;
+  if (p < cut.featureEdges.size())
+  {
+    features = cut.featureEdges[p];
+    if (piece != cut.pieces[p].Get())
+      features = onDeformed(features, piece, cut.pieces[p]->GetNumberOfPoints(), refined);
+  }
+  const std::uint64_t key = geometryKey(piece, vertices, features);
   if (lattices.size() <= p)
     lattices.resize(p + 1);
   FittedLattice& fitted = lattices[p];
@@ -2148,6 +2298,28 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
   vtkNew<vtkLKLatticeFitFilter> fit;
   fit->SetInputData(piece);
   fit->SetTargetNumberOfVertices(vertices);
+  if (!features.empty())
+  {
+    vtkNew<vtkPolyData> lines;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> cells;
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetName("MeshPointId");
+    for (const auto& e : features)
+    {
+      cells->InsertNextCell(2);
+      for (const vtkIdType v : e)
+      {
+        cells->InsertCellPoint(points->InsertNextPoint(piece->GetPoint(v)));
+        ids->InsertNextValue(v);
+      }
+    }
+    lines->SetPoints(points);
+    lines->SetLines(cells);
+    lines->GetPointData()->AddArray(ids);
+    fit->SetFeatureLinesData(lines);
+    fit->LockFeaturesOn();
+  }
   fit->QuadPairingOn();
   fit->ComputeErrorOff();
   vtkNew<vtkLKLatticeSurfaceFilter> smooth;
@@ -2157,6 +2329,8 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
   smooth->Update();
   fitted.key = key;
   fitted.errors = lkapp::errorCount() > before ? lkapp::errorsSince(before) : "";
+  fitted.featureEdges = features.size();
+  fitted.featureEdgesRefined = refined;
   fitted.lattice = vtkSmartPointer<vtkPolyData>::New();
   fitted.lattice->ShallowCopy(fit->GetOutput());
   fitted.surface = vtkSmartPointer<vtkPolyData>::New();
@@ -2165,7 +2339,7 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
   return fitted;
 }
 
-std::uint64_t Planner::geometryKey(vtkPolyData* pd, vtkIdType count)
+std::uint64_t Planner::geometryKey(vtkPolyData* pd, vtkIdType count, const FeatureEdges& edges)
 {
   std::uint64_t h = 1469598103934665603ULL;
   auto mix = [&h](const void* data, std::size_t bytes) {
@@ -2198,6 +2372,10 @@ std::uint64_t Planner::geometryKey(vtkPolyData* pd, vtkIdType count)
     mix(&size, sizeof size);
     mix(ids, sizeof(vtkIdType) * static_cast<std::size_t>(size));
   }
+  const std::size_t edgeCount = edges.size();
+  mix(&edgeCount, sizeof edgeCount);
+  if (!edges.empty())
+    mix(edges.data(), sizeof(edges[0]) * edges.size());
   return h;
 }
 
@@ -2423,6 +2601,37 @@ std::string Planner::planText()
       std::snprintf(line, sizeof line, ", amount %.3f\n", d.amount);
     text += line;
   }
+  // The lattices shown (l): their size, what they keep exactly, how close.
+  for (std::size_t p = 0; session.lattice && p < pieces.size() && p < lattices.size(); ++p)
+  {
+    const FittedLattice& fitted = lattices[p];
+    if (!fitted.lattice || !fitted.surface || fitted.surface->GetNumberOfPoints() == 0)
+      continue; // a failed fit: its message says why
+    std::snprintf(line, sizeof line, "lattice of %s: %.0f control vertices, %.0f triangles, %.0f quads",
+      pieceLabel(p).c_str(), lkapp::fieldValue(fitted.lattice, "ControlVertices"),
+      lkapp::fieldValue(fitted.lattice, "Triangles"), lkapp::fieldValue(fitted.lattice, "Quads"));
+    text += line;
+    if (fitted.featureEdges > 0)
+    {
+      std::snprintf(line, sizeof line, "; its cut and stroke lines kept exactly as lattice edges (%zu edge%s)",
+        fitted.featureEdges, fitted.featureEdges == 1 ? "" : "s");
+      text += line;
+    }
+    if (fitted.featureEdgesRefined > 0)
+    {
+      std::snprintf(line, sizeof line, "; %zu edge%s of those lines that a deformation changed %s not kept",
+        fitted.featureEdgesRefined, fitted.featureEdgesRefined == 1 ? "" : "s",
+        fitted.featureEdgesRefined == 1 ? "is" : "are");
+      text += line;
+    }
+    if (fitted.metro)
+    {
+      std::snprintf(line, sizeof line, "; Metro distance to the piece: %.3f mm at most, %.3f mm on average",
+        lkapp::fieldValue(fitted.metro, "Hausdorff_Max"), lkapp::fieldValue(fitted.metro, "Hausdorff_Mean"));
+      text += line;
+    }
+    text += "\n";
+  }
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
   {
     const Measurement& m = session.measurements[i];
@@ -2611,24 +2820,35 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       "': export to another folder";
     return false;
   }
+  if (!input.empty() && lkapp::isLatticeFileName(vtksys::SystemTools::GetFilenameName(input)) &&
+    vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(input)) ==
+      vtksys::SystemTools::CollapseFullPath(folder))
+  {
+    error = "the input '" + input + "' is a lattice file the export writes or removes in '" + folder +
+      "': export to another folder";
+    return false;
+  }
   vtksys::SystemTools::MakeDirectory(folder);
   const std::string space = lkapp::coordinateSpace(bone); // "LPS" from an oriented CT; a mesh file's own tag
   std::vector<vtkSmartPointer<vtkPolyData>> exported; // as written: the segment where the plan moves it
   std::vector<std::string> stems;                     // the files' names: piece1, piece1-Strut_fragment
+  std::vector<std::string> latticeFiles;              // lattice_piece1.vtp, ...
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
-    // The segment goes where the plan moves it.
-    vtkSmartPointer<vtkPolyData> piece = pieces[p];
-    if (static_cast<int>(p) == movedPiece() && !isIdentity(session.segmentMatrix))
-    {
+    // The segment goes where the plan moves it, and so does its lattice.
+    const bool moved = static_cast<int>(p) == movedPiece() && !isIdentity(session.segmentMatrix);
+    auto placed = [&](vtkPolyData* mesh) -> vtkSmartPointer<vtkPolyData> {
+      if (!moved)
+        return mesh;
       vtkNew<vtkTransform> t;
       t->SetMatrix(session.segmentMatrix.data());
       vtkNew<vtkTransformPolyDataFilter> move;
-      move->SetInputData(pieces[p]);
+      move->SetInputData(mesh);
       move->SetTransform(t);
       move->Update();
-      piece = move->GetOutput();
-    }
+      return move->GetOutput();
+    };
+    vtkSmartPointer<vtkPolyData> piece = placed(pieces[p]);
     stems.push_back(lkapp::pieceFileStem(p, pieceName(p)));
     for (const char* ext : lkapp::pieceExtensions)
     {
@@ -2637,6 +2857,15 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
         return false;
     }
     exported.push_back(piece);
+    // The lattice shown (l), its kept lines as line cells: what
+    // latticekit-lattice makes its smooth surface from.
+    if (session.lattice && p < lattices.size() && lattices[p].lattice && lattices[p].surface &&
+      lattices[p].surface->GetNumberOfPoints() > 0)
+    {
+      latticeFiles.push_back("lattice_" + stems.back() + ".vtp");
+      if (!lkapp::writeMesh(placed(lattices[p].lattice), folder + "/" + latticeFiles.back(), error, space))
+        return false;
+    }
   }
   // A failure here is said at the end, after the plan and its session.
   const std::string structureSetError = exportStructureSet(folder, exported);
@@ -2676,6 +2905,13 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     if (!scanShownPicture.empty())
       header += "the view as shown: " + scanShownPicture + " (" + scanShownTitle + ")\n";
   }
+  if (!latticeFiles.empty())
+  {
+    header += "the lattices shown, their kept lines as line cells:";
+    for (const auto& name : latticeFiles)
+      header += " " + name;
+    header += "\n";
+  }
   header += "coordinates: " +
     (space.empty() ? std::string("the input's own (its patient orientation is unknown)") : space + ", mm") + "\n";
   std::vector<std::pair<std::string, std::string>> texts{ { "plan.txt", header + planText() } };
@@ -2714,6 +2950,8 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     {
       const std::string name = listing.GetFile(i);
       if (isScanPictureName(name) && std::find(scanPictures.begin(), scanPictures.end(), name) == scanPictures.end())
+        others.push_back(name);
+      if (lkapp::isLatticeFileName(name) && std::find(latticeFiles.begin(), latticeFiles.end(), name) == latticeFiles.end())
         others.push_back(name);
     }
   if (!lkapp::removeStaleExports(folder, stems, others, error))

@@ -161,6 +161,9 @@ public:
     std::uint64_t key = 0;
     vtkSmartPointer<vtkPolyData> lattice, surface; ///< empty surface: the fit failed
     std::string errors;
+    /// The feature edges the lattice keeps exactly, and those a deformation
+    /// refined (no longer edges of the piece: not kept).
+    std::size_t featureEdges = 0, featureEdgesRefined = 0;
     /// The surface with its Metro distance to the piece, once asked for.
     vtkSmartPointer<vtkPolyData> metro;
     double colourMaximum = 0.0, hausdorff = 0.0;
@@ -430,7 +433,13 @@ public:
     std::string key;
     std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>> lines; ///< feature lines, shade
     std::vector<std::size_t> lineStrokes; ///< the stroke each line came from (a failed stroke has none)
+    /// The cut's pieces (vtkLKExtractCutPieceFilter), each with cell data
+    /// "Cap" only (a deformation drag carries what a piece has, every frame).
     std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+    /// Each piece's feature edges (its point ids, smaller first): where the
+    /// cut went through it, and the strokes' lines on it. Its lattice keeps
+    /// them exactly.
+    std::vector<std::vector<std::array<vtkIdType, 2>>> featureEdges;
     /// The bone with the strokes' lines split in, and the closed lines the
     /// cut took (MeshPointId into it): exported, so that the CLI tools can
     /// cut again (latticekit-cut) or fit with the lines kept.
@@ -577,15 +586,17 @@ public:
   void rebuild();
 
   /// Piece p's lattice (600 vertices or the session's, at most half the
-  /// piece's) and its smooth surface: fitted again only when the piece's
-  /// points or faces, or the count, changed since the last fit.
+  /// piece's) and its smooth surface, with the piece's feature edges (its
+  /// cut lines, the strokes' lines) kept exactly: fitted again only when the
+  /// piece's points or faces, the count or those edges changed since the
+  /// last fit.
   FittedLattice& latticeOf(std::size_t p);
 
-  /// A 64-bit digest of a mesh's points and polygons and a count: FNV-1a
+  /// A 64-bit digest of a mesh's points and polygons, a count and edges: FNV-1a
   /// over 8-byte words, each scrambled first (splitmix64's finaliser, so that
   /// every bit of a word reaches every bit of the digest); the skull's 40 MB
   /// in a few milliseconds.
-  static std::uint64_t geometryKey(vtkPolyData* pd, vtkIdType count);
+  static std::uint64_t geometryKey(vtkPolyData* pd, vtkIdType count, const std::vector<std::array<vtkIdType, 2>>& edges);
 
   /// The surface without its line cells (the feature lines a stroke left on it).
   static vtkSmartPointer<vtkPolyData> facesOnly(vtkPolyData* surface);

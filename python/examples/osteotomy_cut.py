@@ -7,7 +7,9 @@ The bone surface is cut by the closed line where the plane through the middle of
 its bounding box (x) meets it: the line's points are picked on the surface and
 joined along mesh edges (vtkDijkstraGraphGeodesicPath), the cut filter
 duplicates the line's vertices and caps both pieces with one shared smooth
-surface. The pieces are drawn apart, in two colours, the caps darker.
+surface. Each piece is taken out with its cut line (vtkLKExtractCutPieceFilter,
+whose second output is what a lattice fit keeps). The pieces are drawn apart,
+in two colours, the caps darker, each piece's cut line in orange.
 """
 import sys
 
@@ -91,25 +93,25 @@ def main(argv):
     renderer = vtkRenderer()
     renderer.SetBackground(1, 1, 1)
     colours = [(0.9, 0.8, 0.6), (0.6, 0.75, 0.9)]
+    cut_lines = 0
     for region in range(cut.GetNumberOfPieces()):
+        # One piece, in the cut's order every run (vtkThreshold on RegionId
+        # lists the faces in another order from run to run), and its cut line.
+        piece = latticekit.vtkLKExtractCutPieceFilter()
+        piece.SetInputConnection(cut.GetOutputPort())
+        piece.SetPiece(region)
+        piece.Update()
+        shift = (12.0 * (region - 0.5), 0, 0)  # drawn apart
         for cap in (0, 1):
-            threshold = vtkThreshold()
-            threshold.SetInputConnection(cut.GetOutputPort())
-            threshold.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_CELLS, "RegionId")
-            threshold.SetLowerThreshold(region - 0.5)
-            threshold.SetUpperThreshold(region + 0.5)
-            threshold.Update()
+            caps_only = vtkThreshold()
+            caps_only.SetInputConnection(piece.GetOutputPort())
+            caps_only.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_CELLS, "Cap")
+            caps_only.SetLowerThreshold(cap - 0.5)
+            caps_only.SetUpperThreshold(cap + 0.5)
             geometry = vtkGeometryFilter()
-            geometry.SetInputConnection(threshold.GetOutputPort())
-            capsOnly = vtkThreshold()
-            capsOnly.SetInputConnection(geometry.GetOutputPort())
-            capsOnly.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_CELLS, "Cap")
-            capsOnly.SetLowerThreshold(cap - 0.5)
-            capsOnly.SetUpperThreshold(cap + 0.5)
-            g2 = vtkGeometryFilter()
-            g2.SetInputConnection(capsOnly.GetOutputPort())
+            geometry.SetInputConnection(caps_only.GetOutputPort())
             normals = vtkPolyDataNormals()
-            normals.SetInputConnection(g2.GetOutputPort())
+            normals.SetInputConnection(geometry.GetOutputPort())
             mapper = vtkPolyDataMapper()
             mapper.SetInputConnection(normals.GetOutputPort())
             mapper.ScalarVisibilityOff()
@@ -117,8 +119,21 @@ def main(argv):
             actor.SetMapper(mapper)
             c = colours[region % 2]
             actor.GetProperty().SetColor(*(x * (0.55 if cap else 1.0) for x in c))
-            actor.SetPosition(12.0 * (region - 0.5), 0, 0)  # drawn apart
+            actor.SetPosition(*shift)
             renderer.AddActor(actor)
+        # Where the saw went through this piece: the feature lines a lattice
+        # fit keeps (vtkLKLatticeFitFilter's second input, LockFeaturesOn).
+        line_mapper = vtkPolyDataMapper()
+        line_mapper.SetInputConnection(piece.GetOutputPort(1))
+        line_mapper.ScalarVisibilityOff()
+        line_actor = vtkActor()
+        line_actor.SetMapper(line_mapper)
+        line_actor.GetProperty().SetColor(0.95, 0.55, 0.1)
+        line_actor.GetProperty().SetLineWidth(3)
+        line_actor.SetPosition(*shift)
+        renderer.AddActor(line_actor)
+        cut_lines += piece.GetOutput(1).GetFieldData().GetArray("CutLineEdges").GetValue(0)
+    print("cut line edges, both pieces:", int(cut_lines))
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(900, 600)

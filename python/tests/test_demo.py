@@ -283,6 +283,10 @@ class LatticeExampleTest(unittest.TestCase):
                                     capture_output=True, text=True, check=False, timeout=300)
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             self.assertIn("pieces: 2", result.stdout)
+            # Both pieces' cut lines, each the loop's edges.
+            edges = int(result.stdout.split("cut line edges, both pieces:")[1].split()[0])
+            self.assertGreater(edges, 40)
+            self.assertEqual(edges % 2, 0)
             self.assertTrue(os.path.getsize(png) > 10000)
 
 

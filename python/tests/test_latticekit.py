@@ -20,7 +20,8 @@ class ImportTest(unittest.TestCase):
                      "vtkLKMeshRepairFilter", "vtkLKMetroFilter", "vtkLKLatticeSurfaceFilter",
                      "vtkLKLatticeFitFilter", "vtkLKQuadPairingFilter",
                      "vtkLKHomogenizedLoopFilter", "vtkLKBezierIFSFilter",
-                     "vtkLKClosedLineCutFilter", "vtkLKStrokeFeatureLineFilter",
+                     "vtkLKClosedLineCutFilter", "vtkLKExtractCutPieceFilter",
+                     "vtkLKStrokeFeatureLineFilter",
                      "vtkLKWrinklySurfaceFilter", "vtkLKWrinklyNetSource",
                      "vtkLKPatchDeformationFilter", "vtkLKStructureSetWriter"):
             cls = getattr(latticekit, name)
@@ -339,6 +340,61 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(vmap.GetArray("LatticeFaceId").GetNumberOfTuples(), mesh.GetNumberOfPoints())
         # The surface of the lattice comes out of the same pipeline.
         self.assertGreater(surface.GetOutput().GetNumberOfPolys(), 10 * lattice.GetNumberOfPolys())
+
+    def test_cut_pieces_fitted_with_their_cut_lines_kept(self):
+        """Cut, extract each piece, fit it with its cut line locked: one
+        pipeline, the piece's cells in the cut's order every time."""
+        import math
+
+        import latticekit
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+        from vtkmodules.vtkFiltersSources import vtkSphereSource
+
+        sphere = vtkSphereSource()
+        sphere.SetThetaResolution(48)
+        sphere.SetPhiResolution(48)
+        circle = vtkPoints()
+        for k in range(41):
+            a = 2 * math.pi * k / 40
+            circle.InsertNextPoint(0.48 * math.cos(a), 0.48 * math.sin(a), 0.14)
+        stroke = vtkPolyData()
+        stroke.SetPoints(circle)
+        split = latticekit.vtkLKStrokeFeatureLineFilter()
+        split.SetInputConnection(sphere.GetOutputPort())
+        split.SetStrokeData(stroke)
+        split.SetModeToSplit()
+        cut = latticekit.vtkLKClosedLineCutFilter()
+        cut.SetInputConnection(split.GetOutputPort())
+        cut.CappingOn()
+        extract = latticekit.vtkLKExtractCutPieceFilter()
+        extract.SetInputConnection(cut.GetOutputPort())
+        fit = latticekit.vtkLKLatticeFitFilter()
+        fit.SetInputConnection(extract.GetOutputPort(0))
+        fit.SetFeatureLinesConnection(extract.GetOutputPort(1))
+        fit.LockFeaturesOn()
+        fit.SetTargetReduction(0.7)
+        faces = 0
+        for piece in range(2):
+            extract.SetPiece(piece)
+            fit.Update()
+            self.assertEqual(cut.GetNumberOfPieces(), 2)
+            lines = extract.GetOutput(1)
+            edges = lines.GetFieldData().GetArray("CutLineEdges").GetValue(0)
+            self.assertGreater(edges, 20)
+            self.assertEqual(lines.GetNumberOfLines(), 1)  # one closed loop
+            self.assertEqual(fit.GetOutput().GetFieldData().GetArray("FeatureEdges").GetValue(0), edges)
+            faces += extract.GetOutput().GetNumberOfPolys()
+            # The same piece again, point for point.
+            again = latticekit.vtkLKExtractCutPieceFilter()
+            again.SetInputConnection(cut.GetOutputPort())
+            again.SetPiece(piece)
+            again.Update()
+            first, second = extract.GetOutput(), again.GetOutput()
+            self.assertEqual(first.GetNumberOfPoints(), second.GetNumberOfPoints())
+            for i in range(0, first.GetNumberOfPoints(), 37):
+                self.assertEqual(first.GetPoint(i), second.GetPoint(i))
+        self.assertEqual(faces, cut.GetOutput().GetNumberOfPolys())
 
     def test_lattice_fit_with_refinement(self):
         import latticekit
@@ -911,6 +967,12 @@ class AbortTest(unittest.TestCase):
             f.CappingOn()
             return f
 
+        def extract():
+            pieces = cut()  # held by the connection once made, not before
+            f = latticekit.vtkLKExtractCutPieceFilter()
+            f.SetInputConnection(pieces.GetOutputPort())
+            return f
+
         def made(cls, **settings):
             def make():
                 f = cls()
@@ -929,6 +991,7 @@ class AbortTest(unittest.TestCase):
             "homogenized Loop": made(latticekit.vtkLKHomogenizedLoopFilter, InputData=ball, NumberOfSubdivisions=2),
             "stroke (split)": split,
             "closed-line cut": cut,
+            "extract a cut piece": extract,
             "Bezier IFS": made(latticekit.vtkLKBezierIFSFilter, InputData=control),
             "wrinkly surface": made(latticekit.vtkLKWrinklySurfaceFilter, InputConnection=net.GetOutputPort()),
             "patch deformation": made(latticekit.vtkLKPatchDeformationFilter, InputConnection=flat.GetOutputPort()),
