@@ -11,8 +11,10 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -39,10 +41,22 @@ void usage(std::ostream& os)
         "                     (latticekit-demo writes mandible.vtp and cut_line.vtp so)\n"
         "  --open             no caps: the pieces keep open borders along the lines\n"
         "  --no-inner-walls   only the lines themselves are cut, never the inner walls\n"
-        "  --pieces FOLDER    also write each piece as FOLDER/pieceN.stl, .vtp and .obj (and\n"
-        "                     remove pieceN files an earlier run left there beyond this cut's)\n"
+        "  --pieces FOLDER    also write each piece as FOLDER/pieceN.stl, .vtp and .obj, and\n"
+        "                     its cut lines as pieceN_cut_lines.vtp (MeshPointId naming\n"
+        "                     pieceN.vtp's points: latticekit-fit pieceN.vtp --features\n"
+        "                     pieceN_cut_lines.vtp --lock-features keeps them); files an\n"
+        "                     earlier run left there beyond this cut's pieces are removed\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
+}
+
+/// The file --pieces writes for a piece's cut lines: "pieceN_cut_lines.vtp".
+const std::string cutLinesSuffix = "_cut_lines.vtp";
+bool isCutLinesFileName(const std::string& name)
+{
+  return name.size() > cutLinesSuffix.size() &&
+    name.compare(name.size() - cutLinesSuffix.size(), cutLinesSuffix.size(), cutLinesSuffix) == 0 &&
+    lkapp::isPieceFileName(name.substr(0, name.size() - cutLinesSuffix.size()) + ".vtp");
 }
 
 } // namespace
@@ -89,7 +103,9 @@ int main(int argc, char* argv[])
     // among them (a piece cut again into its own folder) would be lost.
     for (const std::string& in : { input, linesPath })
     {
-      if (lkapp::isExportedFile(in, piecesFolder, {}))
+      const std::string name = vtksys::SystemTools::GetFilenameName(in);
+      if (lkapp::isExportedFile(in, piecesFolder, {}) ||
+        (isCutLinesFileName(name) && lkapp::isExportedFile(in, piecesFolder, { name.c_str() })))
       {
         std::cerr << "error: '" << in << "' is one of the files --pieces writes or removes in '" << piecesFolder
                   << "': give the pieces another folder\n";
@@ -195,8 +211,26 @@ int main(int argc, char* argv[])
         std::cerr << "error: " << error << "\n";
         return 1;
       }
+    if (!lkapp::writeMesh(
+          extract->GetCutLinesOutput(), piecesFolder + "/" + pieceStems.back() + cutLinesSuffix, error, space))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
   }
-  if (!piecesFolder.empty() && !lkapp::removeStaleExports(piecesFolder, pieceStems, {}, error))
+  // The cut lines of pieces this cut does not make.
+  std::vector<std::string> staleLines;
+  vtksys::Directory listing;
+  if (!piecesFolder.empty() && listing.Load(piecesFolder))
+    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+    {
+      const std::string name = listing.GetFile(i);
+      if (isCutLinesFileName(name) &&
+        std::find(pieceStems.begin(), pieceStems.end(), name.substr(0, name.size() - cutLinesSuffix.size())) ==
+          pieceStems.end())
+        staleLines.push_back(name);
+    }
+  if (!piecesFolder.empty() && !lkapp::removeStaleExports(piecesFolder, pieceStems, staleLines, error))
   {
     std::cerr << "error: " << error << "\n";
     return 1;
