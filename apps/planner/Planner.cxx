@@ -2275,7 +2275,6 @@ const lkapp::PieceFacts& Planner::factsOf(std::size_t p)
 Planner::FittedLattice& Planner::latticeOf(std::size_t p)
 {
   vtkPolyData* piece = pieces[p];
-  const vtkIdType vertices = std::min<vtkIdType>(session.latticeVertices, piece->GetNumberOfPoints() / 2);
   // The cut piece's feature edges, on the piece as its deformations left it.
   FeatureEdges features;
   std::size_t refined = 0;
@@ -2285,6 +2284,14 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
     if (piece != cut.pieces[p].Get())
       features = onDeformed(features, piece, cut.pieces[p]->GetNumberOfPoints(), refined);
   }
+  // Every vertex of those lines is a lattice vertex: the rest of the bone
+  // keeps at least as many (as the main job asks of its plan), or a long
+  // split line would leave it a few coarse faces.
+  std::set<vtkIdType> onLines;
+  for (const auto& e : features)
+    onLines.insert(e.begin(), e.end());
+  const vtkIdType wanted = std::max<vtkIdType>(session.latticeVertices, 2 * static_cast<vtkIdType>(onLines.size()));
+  const vtkIdType vertices = std::min<vtkIdType>(wanted, piece->GetNumberOfPoints() / 2);
   const std::uint64_t key = geometryKey(piece, vertices, features);
   if (lattices.size() <= p)
     lattices.resize(p + 1);
@@ -2331,6 +2338,8 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
   fitted.errors = lkapp::errorCount() > before ? lkapp::errorsSince(before) : "";
   fitted.featureEdges = features.size();
   fitted.featureEdgesRefined = refined;
+  fitted.lineVertices = onLines.size();
+  fitted.raised = wanted > session.latticeVertices;
   fitted.lattice = vtkSmartPointer<vtkPolyData>::New();
   fitted.lattice->ShallowCopy(fit->GetOutput());
   fitted.surface = vtkSmartPointer<vtkPolyData>::New();
@@ -2607,9 +2616,17 @@ std::string Planner::planText()
     const FittedLattice& fitted = lattices[p];
     if (!fitted.lattice || !fitted.surface || fitted.surface->GetNumberOfPoints() == 0)
       continue; // a failed fit: its message says why
-    std::snprintf(line, sizeof line, "lattice of %s: %.0f control vertices, %.0f triangles, %.0f quads",
-      pieceLabel(p).c_str(), lkapp::fieldValue(fitted.lattice, "ControlVertices"),
-      lkapp::fieldValue(fitted.lattice, "Triangles"), lkapp::fieldValue(fitted.lattice, "Quads"));
+    std::snprintf(line, sizeof line, "lattice of %s: %.0f control vertices", pieceLabel(p).c_str(),
+      lkapp::fieldValue(fitted.lattice, "ControlVertices"));
+    text += line;
+    if (fitted.raised)
+    {
+      std::snprintf(line, sizeof line, " (above the session's %ld: its lines take %zu, and the rest of the bone as many)",
+        session.latticeVertices, fitted.lineVertices);
+      text += line;
+    }
+    std::snprintf(line, sizeof line, ", %.0f triangles, %.0f quads", lkapp::fieldValue(fitted.lattice, "Triangles"),
+      lkapp::fieldValue(fitted.lattice, "Quads"));
     text += line;
     if (fitted.featureEdges > 0)
     {

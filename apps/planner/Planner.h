@@ -164,6 +164,10 @@ public:
     /// The feature edges the lattice keeps exactly, and those a deformation
     /// refined (no longer edges of the piece: not kept).
     std::size_t featureEdges = 0, featureEdgesRefined = 0;
+    /// The vertices of those lines; whether they raised the count above the
+    /// session's (to twice theirs, so the rest of the bone keeps as many).
+    std::size_t lineVertices = 0;
+    bool raised = false;
     /// The surface with its Metro distance to the piece, once asked for.
     vtkSmartPointer<vtkPolyData> metro;
     double colourMaximum = 0.0, hausdorff = 0.0;
@@ -585,11 +589,11 @@ public:
   /// deformations, lattices, colours.
   void rebuild();
 
-  /// Piece p's lattice (600 vertices or the session's, at most half the
-  /// piece's) and its smooth surface, with the piece's feature edges (its
-  /// cut lines, the strokes' lines) kept exactly: fitted again only when the
-  /// piece's points or faces, the count or those edges changed since the
-  /// last fit.
+  /// Piece p's lattice (600 vertices or the session's, at least twice its
+  /// lines' vertices, at most half the piece's) and its smooth surface, with
+  /// the piece's feature edges (its cut lines, the strokes' lines) kept
+  /// exactly: fitted again only when the piece's points or faces, the count
+  /// or those edges changed since the last fit.
   FittedLattice& latticeOf(std::size_t p);
 
   /// A 64-bit digest of a mesh's points and polygons, a count and edges: FNV-1a
