@@ -2,6 +2,7 @@
 #include "vtkLKAbort.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -43,31 +44,41 @@ Edge edgeOf(vtkIdType a, vtkIdType b)
   return a < b ? Edge{ a, b } : Edge{ b, a };
 }
 
+/// Calls f(cell id, kind, point count, point ids) for every cell of `pd`, in
+/// id order: a polydata's cells go vertices, lines, polygons, strips (kind 0
+/// to 3), each kind in its own order.
+template <typename F>
+void forEachCell(vtkPolyData* pd, F f)
+{
+  vtkCellArray* arrays[4] = { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() };
+  vtkIdType id = 0;
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    if (!arrays[kind])
+      continue;
+    auto it = vtk::TakeSmartPointer(arrays[kind]->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++id)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      f(id, kind, n, ids);
+    }
+  }
+}
+
 /// The cells of `region` and the points they use, both in the cut's order;
 /// `newId` gets each cut point's id in the piece (-1: not in it).
-void extractRegion(vtkPolyData* cut, vtkDataArray* regions, int region, bool attributes, vtkPolyData* out,
+void extractRegion(vtkPolyData* cut, const std::vector<int>& regions, int region, bool attributes, vtkPolyData* out,
   std::vector<vtkIdType>& newId)
 {
-  const vtkIdType cellCount = cut->GetNumberOfCells(), pointCount = cut->GetNumberOfPoints();
+  const vtkIdType pointCount = cut->GetNumberOfPoints();
   newId.assign(static_cast<std::size_t>(pointCount), -1);
-  // A polydata's cells go vertices, lines, polygons, strips, whatever the
-  // order in the cut; cell data follows that order.
-  std::vector<vtkIdType> order[4];
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < cellCount; ++c)
-  {
-    if (std::lround(regions->GetTuple1(c)) != region)
-      continue;
-    const int type = cut->GetCellType(c);
-    const int kind = type == VTK_VERTEX || type == VTK_POLY_VERTEX ? 0
-      : type == VTK_LINE || type == VTK_POLY_LINE                 ? 1
-      : type == VTK_TRIANGLE_STRIP                                ? 3
-                                                                  : 2;
-    order[kind].push_back(c);
-    cut->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      newId[static_cast<std::size_t>(ids->GetId(k))] = 0;
-  }
+  forEachCell(cut, [&](vtkIdType c, int, vtkIdType n, const vtkIdType* ids) {
+    if (regions[static_cast<std::size_t>(c)] == region)
+      for (vtkIdType k = 0; k < n; ++k)
+        newId[static_cast<std::size_t>(ids[k])] = 0;
+  });
   vtkNew<vtkPoints> points;
   points->SetDataType(cut->GetPoints()->GetDataType());
   vtkPointData* pointData = out->GetPointData();
@@ -87,17 +98,18 @@ void extractRegion(vtkPolyData* cut, vtkDataArray* regions, int region, bool att
   if (attributes)
     cellData->CopyAllocate(cut->GetCellData());
   vtkIdType next = 0;
-  for (int kind = 0; kind < 4; ++kind)
-    for (const vtkIdType c : order[kind])
-    {
-      cut->GetCellPoints(c, ids);
-      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-        ids->SetId(k, newId[static_cast<std::size_t>(ids->GetId(k))]);
-      arrays[kind]->InsertNextCell(ids);
-      if (attributes)
-        cellData->CopyData(cut->GetCellData(), c, next);
-      ++next;
-    }
+  std::vector<vtkIdType> renumbered;
+  forEachCell(cut, [&](vtkIdType c, int kind, vtkIdType n, const vtkIdType* ids) {
+    if (regions[static_cast<std::size_t>(c)] != region)
+      return;
+    renumbered.resize(static_cast<std::size_t>(n));
+    for (vtkIdType k = 0; k < n; ++k)
+      renumbered[static_cast<std::size_t>(k)] = newId[static_cast<std::size_t>(ids[k])];
+    arrays[kind]->InsertNextCell(n, renumbered.data());
+    if (attributes)
+      cellData->CopyData(cut->GetCellData(), c, next);
+    ++next;
+  });
   out->SetVerts(verts);
   out->SetLines(lines);
   out->SetPolys(polys);
@@ -106,9 +118,42 @@ void extractRegion(vtkPolyData* cut, vtkDataArray* regions, int region, bool att
 
 /// The edges of `region` where the cut went through the surface, as cut
 /// point ids (see the class comment): edges of one non-cap face of a piece
-/// whose two end points are also those of another such edge.
-std::vector<Edge> cutEdges(vtkPolyData* cut, vtkDataArray* regions, int region)
+/// whose two end points are also those of another such edge. Only edges
+/// between points the cut made twice are looked at: points whose
+/// InputPointId another point has too, or none (-1: a cap's or an inner
+/// wall's), or without that array points that share their place.
+std::vector<Edge> cutEdges(vtkPolyData* cut, const std::vector<int>& regions, int region)
 {
+  const auto pointCount = static_cast<std::size_t>(cut->GetNumberOfPoints());
+  std::vector<char> twin(pointCount, 0);
+  if (vtkDataArray* input = cut->GetPointData()->GetArray("InputPointId"))
+  {
+    std::unordered_map<vtkIdType, vtkIdType> first;
+    for (std::size_t i = 0; i < pointCount; ++i)
+    {
+      const auto id = static_cast<vtkIdType>(input->GetTuple1(static_cast<vtkIdType>(i)));
+      if (id < 0)
+      {
+        twin[i] = 1;
+        continue;
+      }
+      const auto [it, added] = first.emplace(id, static_cast<vtkIdType>(i));
+      if (!added)
+        twin[i] = twin[static_cast<std::size_t>(it->second)] = 1;
+    }
+  }
+  else
+  {
+    std::map<std::array<double, 3>, std::size_t> first;
+    for (std::size_t i = 0; i < pointCount; ++i)
+    {
+      std::array<double, 3> p;
+      cut->GetPoint(static_cast<vtkIdType>(i), p.data());
+      const auto [it, added] = first.emplace(p, i);
+      if (!added)
+        twin[i] = twin[it->second] = 1;
+    }
+  }
   vtkDataArray* cap = cut->GetCellData()->GetArray("Cap");
   struct Use
   {
@@ -116,21 +161,19 @@ std::vector<Edge> cutEdges(vtkPolyData* cut, vtkDataArray* regions, int region)
     int region = 0;
   };
   std::unordered_map<Edge, Use, EdgeHash> uses;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < cut->GetNumberOfCells(); ++c)
-  {
-    const int type = cut->GetCellType(c);
-    if ((type != VTK_TRIANGLE && type != VTK_QUAD && type != VTK_POLYGON) || (cap && cap->GetTuple1(c) != 0.0))
-      continue;
-    cut->GetCellPoints(c, ids);
-    const vtkIdType n = ids->GetNumberOfIds();
+  forEachCell(cut, [&](vtkIdType c, int kind, vtkIdType n, const vtkIdType* ids) {
+    if (kind != 2 || (cap && cap->GetTuple1(c) != 0.0))
+      return;
     for (vtkIdType k = 0; k < n; ++k)
     {
-      Use& use = uses[edgeOf(ids->GetId(k), ids->GetId((k + 1) % n))];
+      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
+      if (!twin[static_cast<std::size_t>(a)] || !twin[static_cast<std::size_t>(b)])
+        continue;
+      Use& use = uses[edgeOf(a, b)];
       ++use.faces;
-      use.region = static_cast<int>(std::lround(regions->GetTuple1(c)));
+      use.region = regions[static_cast<std::size_t>(c)];
     }
-  }
+  });
   // The edges with one face, by where their ends lie: a cut edge's other
   // side has the same two points (the cut duplicated them).
   using Place = std::array<double, 6>;
@@ -226,8 +269,11 @@ int vtkLKExtractCutPieceFilter::RequestData(
     vtkErrorMacro("the input has no cell data 'RegionId': give it a cut (vtkLKClosedLineCutFilter's output)");
     return 1;
   }
+  std::vector<int> region(static_cast<std::size_t>(cut->GetNumberOfCells()));
+  for (vtkIdType c = 0; c < cut->GetNumberOfCells(); ++c)
+    region[static_cast<std::size_t>(c)] = static_cast<int>(std::lround(regions->GetTuple1(c)));
   std::vector<vtkIdType> newId;
-  extractRegion(cut, regions, this->Piece, this->PassAttributes, piece, newId);
+  extractRegion(cut, region, this->Piece, this->PassAttributes, piece, newId);
   piece->GetFieldData()->ShallowCopy(cut->GetFieldData()); // SPACE, as the filters pass it
   this->UpdateProgress(0.5);
   if (lkvtk::stopRequested(this, { piece, lines }))
@@ -238,7 +284,7 @@ int vtkLKExtractCutPieceFilter::RequestData(
   vtkNew<vtkCellArray> cells;
   vtkNew<vtkIdTypeArray> meshIds;
   meshIds->SetName("MeshPointId");
-  const std::vector<Edge> edges = cutEdges(cut, regions, this->Piece);
+  const std::vector<Edge> edges = cutEdges(cut, region, this->Piece);
   std::map<vtkIdType, vtkIdType> lineId; // piece point -> its point in the lines
   for (const std::vector<vtkIdType>& chained : chain(edges))
   {

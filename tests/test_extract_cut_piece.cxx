@@ -264,6 +264,18 @@ TEST(ExtractCutPiece, TheCutLinesOfAnOpenSheetLeaveItsOwnBorderOut)
       inner += b[1] - b[0] < 0.5;
     }
     EXPECT_EQ(inner, 1u); // one of the two is the inner square
+    // A cut without InputPointId (written by another tool): the points the
+    // cut made twice are found by their places instead.
+    vtkNew<vtkPolyData> bare;
+    bare->DeepCopy(cut->GetOutput());
+    bare->GetPointData()->RemoveArray("InputPointId");
+    extract->SetInputData(bare);
+    for (int r = 0; r < 2; ++r)
+    {
+      extract->SetPiece(r);
+      extract->Update();
+      EXPECT_EQ(cutLinesOf(extract->GetCutLinesOutput()).edges.size(), 16u) << "piece " << r << ", no InputPointId";
+    }
   }
 }
 
