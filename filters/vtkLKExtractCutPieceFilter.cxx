@@ -261,8 +261,17 @@ int vtkLKExtractCutPieceFilter::RequestData(
   vtkPolyData* lines = vtkPolyData::GetData(outputVector, 1);
   if (!cut || !piece || !lines)
     return 0;
+  auto countEdges = [lines](vtkIdType edges) {
+    vtkNew<vtkIdTypeArray> count;
+    count->SetName("CutLineEdges");
+    count->InsertNextValue(edges);
+    lines->GetFieldData()->AddArray(count);
+  };
   if (cut->GetNumberOfCells() == 0 || !cut->GetPoints())
-    return 1; // nothing cut, nothing to extract
+  {
+    countEdges(0); // nothing cut, nothing to extract
+    return 1;
+  }
   vtkDataArray* regions = cut->GetCellData()->GetArray("RegionId");
   if (!regions)
   {
@@ -304,10 +313,7 @@ int vtkLKExtractCutPieceFilter::RequestData(
   lines->SetPoints(linePoints);
   lines->SetLines(cells);
   lines->GetPointData()->AddArray(meshIds);
-  vtkNew<vtkIdTypeArray> count;
-  count->SetName("CutLineEdges");
-  count->InsertNextValue(static_cast<vtkIdType>(edges.size()));
-  lines->GetFieldData()->AddArray(count);
+  countEdges(static_cast<vtkIdType>(edges.size()));
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -28,8 +28,9 @@
  * "cut, extract a piece, fit it with its cut lines locked" is one pipeline.
  * Field data "CutLineEdges" counts the edges.
  *
- * A Piece the cut does not have gives empty outputs; a cut without
- * "RegionId" gives a VTK error and empty outputs.
+ * A Piece the cut does not have, or an empty input, gives empty outputs
+ * (CutLineEdges 0); a cut without "RegionId" gives a VTK error and empty
+ * outputs.
  */
 #ifndef vtkLKExtractCutPieceFilter_h
 #define vtkLKExtractCutPieceFilter_h

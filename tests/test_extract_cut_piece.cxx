@@ -176,6 +176,18 @@ TEST(ExtractCutPiece, KeepsTheCutsOrderAndItsData)
     EXPECT_EQ(errors.errors, 0);
     EXPECT_EQ(extract->GetOutput()->GetNumberOfCells(), 0);
     EXPECT_EQ(extract->GetCutLinesOutput()->GetNumberOfCells(), 0);
+    EXPECT_EQ(extract->GetCutLinesOutput()->GetFieldData()->GetArray("CutLineEdges")->GetTuple1(0), 0.0);
+  }
+  // An empty input: empty outputs, no error, no cut-line edges.
+  {
+    vtkNew<vtkPolyData> empty;
+    vtkNew<vtkLKExtractCutPieceFilter> none;
+    none->SetInputData(empty);
+    lktest::ErrorRecorder errors(none);
+    none->Update();
+    EXPECT_EQ(errors.errors, 0);
+    EXPECT_EQ(none->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(none->GetCutLinesOutput()->GetFieldData()->GetArray("CutLineEdges")->GetTuple1(0), 0.0);
   }
   // Not a cut: a clear error.
   {
