@@ -151,7 +151,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 } // namespace
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
-                    "x: cut (capped) | l: lattice | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
+                    "x: cut (capped) | l: lattice, L: size | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform (bump, box, smooth; drag up/down) | [ ]: tool radius | u: distance, a: angle | Delete: the line pointed at | o: mirror image, O: its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
@@ -2477,7 +2477,10 @@ void Planner::updateStatus()
   else if (!session.measurements.empty())
     s << " | measured: " << measuredText(session.measurements.back())
       << (session.measurements.size() > 1 ? " (last of " + std::to_string(session.measurements.size()) + ")" : "");
-  if (typingMove)
+  if (typingLattice)
+    s << " | LATTICE: " << latticeText << "_ vertices per piece (now " << session.latticeVertices
+      << "; Escape: stop)";
+  else if (typingMove)
     s << " | MOVE segment " << session.segment << " BY: " << moveText << "_ (x y z mm, then rx ry rz deg to turn"
       << (axesText.empty() ? "" : "; " + axesText) << "; Return; Escape: stop)";
   else if (moving)

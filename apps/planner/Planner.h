@@ -511,6 +511,9 @@ public:
   /// `typingMove`.
   bool typingMove = false;
   std::string moveText;
+  /// The lattice's vertices per piece typed (L), while `typingLattice`.
+  bool typingLattice = false;
+  std::string latticeText;
   /// Where the patient's axes point, for the prompt ("x to the left, y
   /// back, z up" in LPS), empty when the bone's coordinate system is not
   /// known.

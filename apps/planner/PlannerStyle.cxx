@@ -858,6 +858,56 @@ void PlannerStyle::typeMove(const std::string& key)
   this->Interactor->Render();
 }
 
+void PlannerStyle::typeLatticeVertices(const std::string& key)
+{
+  Planner& p = *planner;
+  if (key == "Escape")
+  {
+    p.typingLattice = false;
+    p.message.clear();
+  }
+  else if (key == "Return" || key == "KP_Enter")
+  {
+    const long count = p.latticeText.empty() ? 0 : std::stol(p.latticeText);
+    if (count < 4 || count > 100000000)
+      p.message = "type the lattice's vertices per piece, a whole number from 4 to 100,000,000";
+    else
+    {
+      p.typingLattice = false;
+      p.message.clear();
+      if (count != p.session.latticeVertices || !p.session.lattice)
+      {
+        p.remember();
+        p.session.latticeVertices = count;
+        p.session.lattice = true;
+        p.notice = "lattices of " + std::to_string(count) + " vertices per piece";
+        p.rebuild();
+      }
+    }
+  }
+  else if (key == "BackSpace")
+  {
+    if (!p.latticeText.empty())
+      p.latticeText.pop_back();
+    p.message.clear();
+  }
+  else
+  {
+    const char32_t typed =
+      lkapp::keyCharacter(key, this->Interactor->GetKeyCode(), this->Interactor->GetControlKey() != 0);
+    if (typed >= U'0' && typed <= U'9')
+    {
+      if (p.latticeText.size() < 9)
+        p.latticeText += static_cast<char>(typed);
+      p.message.clear();
+    }
+    else if (typed != 0 && !lkvtk::isControl(typed))
+      p.message = "'" + lkvtk::encodeUTF8(typed) + "' is not a digit: type the lattice's vertices per piece";
+  }
+  p.updateStatus();
+  this->Interactor->Render();
+}
+
 void PlannerStyle::OnChar()
 {
   const std::string key = this->Interactor->GetKeySym() ? this->Interactor->GetKeySym() : "";
@@ -866,6 +916,8 @@ void PlannerStyle::OnChar()
     return typeName(key);
   if (planner->typingMove)
     return typeMove(key);
+  if (planner->typingLattice)
+    return typeLatticeVertices(key);
   Session& s = planner->session;
   std::string error;
   bool rebuild = true;
@@ -1056,6 +1108,18 @@ void PlannerStyle::OnChar()
       planner->tool = NO_TOOL;
       stopMeasuring();
     }
+  }
+  else if (key == "L")
+  {
+    rebuild = false;
+    planner->typingLattice = true;
+    planner->latticeText.clear();
+    planner->typingMove = false;
+    planner->drawing = false;
+    planner->sawing = false;
+    planner->moving = false;
+    planner->tool = NO_TOOL;
+    stopMeasuring();
   }
   else if (key == "v")
   {

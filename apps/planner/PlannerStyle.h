@@ -96,6 +96,9 @@ public:
   /// A key while the segment's move is typed (v): digits, sign, point,
   /// spaces and commas; Return moves it, BackSpace, Escape.
   void typeMove(const std::string& key);
+  /// Typing the lattice's vertices per piece (L): digits, Return sets the
+  /// count (and shows the lattices), Escape stops.
+  void typeLatticeVertices(const std::string& key);
 
   void startDeform();
 
