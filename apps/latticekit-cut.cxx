@@ -11,10 +11,8 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -184,6 +182,7 @@ int main(int argc, char* argv[])
     lkapp::lineFactsText(lkapp::lineFacts(lines ? lines.Get() : mesh.Get()), space == "LPS")
       .c_str());
   std::vector<std::string> pieceStems; // the files' names, piece0, piece1, ...
+  std::vector<std::string> cutLinesFiles; // piece0_cut_lines.vtp, ...
   vtkNew<vtkLKExtractCutPieceFilter> extract;
   extract->SetInputConnection(cut->GetOutputPort());
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
@@ -211,26 +210,17 @@ int main(int argc, char* argv[])
         std::cerr << "error: " << error << "\n";
         return 1;
       }
-    if (!lkapp::writeMesh(
-          extract->GetCutLinesOutput(), piecesFolder + "/" + pieceStems.back() + cutLinesSuffix, error, space))
+    cutLinesFiles.push_back(pieceStems.back() + cutLinesSuffix);
+    if (!lkapp::writeMesh(extract->GetCutLinesOutput(), piecesFolder + "/" + cutLinesFiles.back(), error, space))
     {
       std::cerr << "error: " << error << "\n";
       return 1;
     }
   }
-  // The cut lines of pieces this cut does not make.
-  std::vector<std::string> staleLines;
-  vtksys::Directory listing;
-  if (!piecesFolder.empty() && listing.Load(piecesFolder))
-    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
-    {
-      const std::string name = listing.GetFile(i);
-      if (isCutLinesFileName(name) &&
-        std::find(pieceStems.begin(), pieceStems.end(), name.substr(0, name.size() - cutLinesSuffix.size())) ==
-          pieceStems.end())
-        staleLines.push_back(name);
-    }
-  if (!piecesFolder.empty() && !lkapp::removeStaleExports(piecesFolder, pieceStems, staleLines, error))
+  // The cut lines of pieces this cut does not make go with their pieces.
+  if (!piecesFolder.empty() &&
+    !lkapp::removeStaleExports(
+      piecesFolder, pieceStems, lkapp::filesNotWritten(piecesFolder, isCutLinesFileName, cutLinesFiles), error))
   {
     std::cerr << "error: " << error << "\n";
     return 1;

@@ -570,6 +570,21 @@ bool isExportedFile(const std::string& path, const std::string& folder, std::ini
   return isPieceFileName(name) || std::any_of(others.begin(), others.end(), [&](const char* o) { return name == o; });
 }
 
+std::vector<std::string> filesNotWritten(
+  const std::string& folder, bool (*isKind)(const std::string&), const std::vector<std::string>& written)
+{
+  std::vector<std::string> left;
+  vtksys::Directory listing;
+  if (listing.Load(folder))
+    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+    {
+      const std::string name = listing.GetFile(i);
+      if (isKind(name) && std::find(written.begin(), written.end(), name) == written.end())
+        left.push_back(name);
+    }
+  return left;
+}
+
 bool removeStaleExports(const std::string& folder, const std::vector<std::string>& pieceStems,
   const std::vector<std::string>& others, std::string& error)
 {

@@ -128,6 +128,11 @@ bool isLatticeFileName(const std::string& name);
 /// removes: a piece's file (isPieceFileName), or one of `others` (names in
 /// the folder). An input among them would be lost to the export.
 bool isExportedFile(const std::string& path, const std::string& folder, std::initializer_list<const char*> others);
+/// The files in `folder` whose names `isKind` accepts and that are not among
+/// `written`: what an earlier run left of a kind of file this one writes
+/// (for removeStaleExports' `others`).
+std::vector<std::string> filesNotWritten(
+  const std::string& folder, bool (*isKind)(const std::string&), const std::vector<std::string>& written);
 /// Removes what an earlier export left in `folder`: every piece file
 /// (isPieceFileName) whose stem is not among `pieceStems`, this export's own
 /// (pieceFileStem), and the files in `others` (names in the folder) that

@@ -56,7 +56,6 @@
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkMatrix4x4.h>
-#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -1048,11 +1047,11 @@ FeatureEdges onDeformed(const FeatureEdges& edges, vtkPolyData* deformed, vtkIdT
 
 /// The feature edges of `piece` (its point ids, smaller first): the edges of
 /// its cut lines (MeshPointId naming its points; may be null) and of the
-/// strokes' `lines` (MeshPointId naming the points of the surface the cut was
-/// made on, which the piece's point data "InputPointId" maps; without it the
-/// piece is that surface) that are edges of its faces.
-FeatureEdges featureEdgesOf(
-  vtkPolyData* piece, vtkPolyData* cutLines, const std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>>& lines)
+/// strokes' `lines` (MeshPointId naming the points of `surface`, the one the
+/// cut was made on, which the piece's point data "InputPointId" maps; without
+/// it the piece is that surface) that are edges of its faces.
+FeatureEdges featureEdgesOf(vtkPolyData* piece, vtkPolyData* cutLines,
+  const std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>>& lines, vtkPolyData* surface)
 {
   const FeatureEdges faceEdges = faceEdgesOf(piece);
   std::set<std::array<vtkIdType, 2>> kept;
@@ -1061,38 +1060,26 @@ FeatureEdges featureEdgesOf(
     if (e[0] >= 0 && e[0] != e[1] && std::binary_search(faceEdges.begin(), faceEdges.end(), e))
       kept.insert(e);
   };
+  std::vector<lk::EdgeKey> edges;
+  if (cutLines)
+    lkvtk::lineEdges(cutLines, piece, edges);
+  for (const auto& [a, b] : edges)
+    add(a, b);
   vtkDataArray* input = piece->GetPointData()->GetArray("InputPointId");
   std::map<vtkIdType, vtkIdType> toPiece;
   for (vtkIdType i = 0; input && i < input->GetNumberOfTuples(); ++i)
     toPiece.emplace(static_cast<vtkIdType>(input->GetTuple1(i)), i);
-  const vtkIdType count = piece->GetNumberOfPoints();
   auto inPiece = [&](vtkIdType v) -> vtkIdType {
-    if (!input)
-      return v >= 0 && v < count ? v : -1;
     const auto found = toPiece.find(v);
-    return v >= 0 && found != toPiece.end() ? found->second : -1;
+    return !input ? v : found != toPiece.end() ? found->second : -1;
   };
-  auto addLines = [&](vtkPolyData* pd, bool mapped) {
-    vtkDataArray* ids = pd ? pd->GetPointData()->GetArray("MeshPointId") : nullptr;
-    if (!ids)
-      return;
-    auto cell = vtk::TakeSmartPointer(pd->GetLines()->NewIterator());
-    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-    {
-      vtkIdType n;
-      const vtkIdType* points;
-      cell->GetCurrentCell(n, points);
-      for (vtkIdType k = 0; k + 1 < n; ++k)
-      {
-        const auto a = static_cast<vtkIdType>(ids->GetTuple1(points[k]));
-        const auto b = static_cast<vtkIdType>(ids->GetTuple1(points[k + 1]));
-        add(mapped ? inPiece(a) : a, mapped ? inPiece(b) : b);
-      }
-    }
-  };
-  addLines(cutLines, false);
   for (const auto& line : lines)
-    addLines(line.first, true);
+  {
+    edges.clear();
+    lkvtk::lineEdges(line.first, surface, edges);
+    for (const auto& [a, b] : edges)
+      add(inPiece(a), inPiece(b));
+  }
   return FeatureEdges(kept.begin(), kept.end());
 }
 
@@ -1229,7 +1216,8 @@ void Planner::computeCut()
       {
         extract->SetPiece(r);
         extract->Update();
-        cut.featureEdges.push_back(featureEdgesOf(extract->GetOutput(), extract->GetCutLinesOutput(), cut.lines));
+        cut.featureEdges.push_back(
+          featureEdgesOf(extract->GetOutput(), extract->GetCutLinesOutput(), cut.lines, faces));
         cut.pieces.push_back(withCapOnly(extract->GetOutput()));
       }
       cut.innerWallLines = cutter->GetNumberOfInnerWallLines();
@@ -1246,7 +1234,7 @@ void Planner::computeCut()
   {
     auto whole = vtkSmartPointer<vtkPolyData>::New();
     whole->ShallowCopy(faces);
-    cut.featureEdges.assign(1, featureEdgesOf(whole, nullptr, cut.lines));
+    cut.featureEdges.assign(1, featureEdgesOf(whole, nullptr, cut.lines, faces));
     cut.pieces.push_back(whole);
   }
   followPieces(); // the pieces may be numbered anew
@@ -2840,9 +2828,8 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       "': export to another folder";
     return false;
   }
-  if (!input.empty() && lkapp::isLatticeFileName(vtksys::SystemTools::GetFilenameName(input)) &&
-    vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(input)) ==
-      vtksys::SystemTools::CollapseFullPath(folder))
+  if (const std::string name = vtksys::SystemTools::GetFilenameName(input);
+      lkapp::isLatticeFileName(name) && lkapp::isExportedFile(input, folder, { name.c_str() }))
   {
     error = "the input '" + input + "' is a lattice file the export writes or removes in '" + folder +
       "': export to another folder";
@@ -2963,17 +2950,12 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     others.push_back("mirror.stl");
     others.push_back("mirror.vtp");
   }
-  // The CT pictures of cut lines this plan does not have.
-  vtksys::Directory listing;
-  if (listing.Load(folder))
-    for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
-    {
-      const std::string name = listing.GetFile(i);
-      if (isScanPictureName(name) && std::find(scanPictures.begin(), scanPictures.end(), name) == scanPictures.end())
-        others.push_back(name);
-      if (lkapp::isLatticeFileName(name) && std::find(latticeFiles.begin(), latticeFiles.end(), name) == latticeFiles.end())
-        others.push_back(name);
-    }
+  // The CT pictures of cut lines this plan does not have, and the lattices
+  // it does not show.
+  for (const auto& [isKind, written] : { std::make_pair(&isScanPictureName, &scanPictures),
+         std::make_pair(&lkapp::isLatticeFileName, &latticeFiles) })
+    for (const std::string& name : lkapp::filesNotWritten(folder, isKind, *written))
+      others.push_back(name);
   if (!lkapp::removeStaleExports(folder, stems, others, error))
     return false;
   if (!scanPicturesError.empty())

@@ -387,14 +387,16 @@ bool readSession(
     s.strokes.push_back(st);
   }
   long long vertices = s.latticeVertices;
-  const auto count = [](const Json::Value& v, long long& out) { return jsonInteger(v, 4, 100000000, out); };
+  const auto count = [](const Json::Value& v, long long& out) {
+    return jsonInteger(v, kFewestLatticeVertices, kMostLatticeVertices, out);
+  };
   if (!jsonMember(root, "cut", s.cut, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "capping", s.capping, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "lattice", s.lattice, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "metro", s.metro, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "mirror", s.mirror, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "scanAcross", s.scanAcross, jsonBool, session, "true or false", error) ||
-    !jsonMember(root, "latticeVertices", vertices, count, session, "a whole number from 4 to 100,000,000", error))
+    !jsonMember(root, "latticeVertices", vertices, count, session, kLatticeVerticesRange, error))
     return false;
   s.latticeVertices = static_cast<long>(vertices);
   long long scanLine = 0;

@@ -178,6 +178,10 @@ constexpr std::size_t kPieceNameLength = lkvtk::kDICOMLongStringLength - 8;
 /// where that one cannot.
 bool validPieceName(const std::string& name, std::string& why);
 
+/// The lattices' vertices per piece a session (and the L key) may ask for.
+inline constexpr long kFewestLatticeVertices = 4, kMostLatticeVertices = 100000000;
+inline constexpr const char* kLatticeVerticesRange = "a whole number from 4 to 100,000,000";
+
 struct Session
 {
   std::vector<Stroke> strokes;

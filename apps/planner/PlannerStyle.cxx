@@ -358,6 +358,14 @@ void PlannerStyle::endSaw()
   this->Interactor->Render();
 }
 
+void PlannerStyle::putToolsDown()
+{
+  planner->drawing = false;
+  planner->sawing = false;
+  planner->moving = false;
+  planner->tool = NO_TOOL;
+}
+
 void PlannerStyle::stopMeasuring()
 {
   planner->measuring = 0;
@@ -869,8 +877,8 @@ void PlannerStyle::typeLatticeVertices(const std::string& key)
   else if (key == "Return" || key == "KP_Enter")
   {
     const long count = p.latticeText.empty() ? 0 : std::stol(p.latticeText);
-    if (count < 4 || count > 100000000)
-      p.message = "type the lattice's vertices per piece, a whole number from 4 to 100,000,000";
+    if (count < kFewestLatticeVertices || count > kMostLatticeVertices)
+      p.message = std::string("type the lattice's vertices per piece, ") + kLatticeVerticesRange;
     else
     {
       p.typingLattice = false;
@@ -930,10 +938,7 @@ void PlannerStyle::OnChar()
     else
     {
       planner->naming = 1;
-      planner->drawing = false;
-      planner->sawing = false;
-      planner->moving = false;
-      planner->tool = NO_TOOL;
+      putToolsDown();
       stopMeasuring();
     }
   }
@@ -948,10 +953,7 @@ void PlannerStyle::OnChar()
     {
       planner->measuring = 3;
       planner->settingPlane = true;
-      planner->drawing = false;
-      planner->sawing = false;
-      planner->moving = false;
-      planner->tool = NO_TOOL;
+      putToolsDown();
     }
     else if (!s.mirrorPlane.empty())
     {
@@ -971,10 +973,7 @@ void PlannerStyle::OnChar()
     planner->measuring = on ? clicks : 0;
     if (on)
     {
-      planner->drawing = false;
-      planner->sawing = false;
-      planner->moving = false;
-      planner->tool = NO_TOOL;
+      putToolsDown();
     }
   }
   else if (key == "d" || key == "p")
@@ -1114,11 +1113,7 @@ void PlannerStyle::OnChar()
     rebuild = false;
     planner->typingLattice = true;
     planner->latticeText.clear();
-    planner->typingMove = false;
-    planner->drawing = false;
-    planner->sawing = false;
-    planner->moving = false;
-    planner->tool = NO_TOOL;
+    putToolsDown();
     stopMeasuring();
   }
   else if (key == "v")
@@ -1130,10 +1125,7 @@ void PlannerStyle::OnChar()
     {
       planner->typingMove = true;
       planner->moveText.clear();
-      planner->drawing = false;
-      planner->sawing = false;
-      planner->moving = false;
-      planner->tool = NO_TOOL;
+      putToolsDown();
       stopMeasuring();
     }
   }

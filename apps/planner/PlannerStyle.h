@@ -91,6 +91,9 @@ public:
   /// A measured point picked (on the bone or the view), of `piece` (-1: none).
   void addMeasuredPoint(const std::array<double, 3>& point, int piece);
   void stopMeasuring();
+  /// No drawing, sawing, moving or deformation tool: before a mode that
+  /// takes the mouse or the keys (naming, measuring, typing a move or a count).
+  void putToolsDown();
   /// A key while naming: every key is the naming's (Escape stops it).
   void typeName(const std::string& key);
   /// A key while the segment's move is typed (v): digits, sign, point,
