@@ -97,6 +97,18 @@ void vtkLKPatchDeformationFilter::RemoveLastDeformation()
   this->Modified();
 }
 
+void vtkLKPatchDeformationFilter::RemoveDeformation(int index)
+{
+  if (index < 0 || index >= this->GetNumberOfDeformations())
+  {
+    vtkErrorMacro("RemoveDeformation: no deformation " << index << " (the filter has "
+                                                       << this->GetNumberOfDeformations() << ", from 0)");
+    return;
+  }
+  this->Deformations.erase(this->Deformations.begin() + index);
+  this->Modified();
+}
+
 namespace
 {
 /// The input's point data, interpolated at the midpoints the refinement made

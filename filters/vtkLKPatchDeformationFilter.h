@@ -63,6 +63,11 @@ public:
   void RemoveAllDeformations();
   /// Drops the last deformation added (nothing if there is none).
   void RemoveLastDeformation();
+  /// Drops deformation `index` (0 is the first added) and keeps the others
+  /// in order: the next update applies them again from the input (a bump
+  /// taken back from under the ones made after it). An index out of range
+  /// is an error, and nothing changes.
+  void RemoveDeformation(int index);
   int GetNumberOfDeformations() const { return static_cast<int>(this->Deformations.size()); }
 
   ///@{

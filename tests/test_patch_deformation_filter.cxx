@@ -205,6 +205,39 @@ TEST(PatchDeformationFilter, IncrementalUpdatesEqualFromScratch)
   expectSameMesh(live->GetOutput(), fromScratch(moved, {}));
 }
 
+// A deformation taken from the middle of the list: the rest, applied again
+// from the input, give what that list gives from scratch; an index out of
+// range is an error that changes nothing.
+TEST(PatchDeformationFilter, RemovingOneDeformationKeepsTheOthers)
+{
+  auto patch = planarPatch(16);
+  vtkNew<vtkLKPatchDeformationFilter> live;
+  live->SetInputData(patch);
+  live->SetMaxLevel(3);
+  live->AddFunctionalDeformation(-0.1, 0.0, 0.0, 0.05, 40.0, 0.3);
+  live->AddFunctionalDeformation(0.15, 0.1, 0.0, 0.12, 40.0, 0.3);
+  live->AddFunctionalDeformation(0.3, 0.3, 0.0, 0.2, 40.0, 0.3);
+  live->Update();
+  const vtkIdType refined = live->GetOutput()->GetNumberOfPoints();
+  live->RemoveDeformation(1);
+  EXPECT_EQ(live->GetNumberOfDeformations(), 2);
+  live->Update();
+  expectSameMesh(live->GetOutput(), fromScratch(patch, { { -0.1, 0.0, 0.05 }, { 0.3, 0.3, 0.2 } }));
+  EXPECT_LT(live->GetOutput()->GetNumberOfPoints(), refined); // its refinement went with it
+  {
+    lktest::ErrorRecorder recorder(live);
+    live->RemoveDeformation(2);
+    live->RemoveDeformation(-1);
+    EXPECT_EQ(recorder.errors, 2);
+    EXPECT_NE(recorder.messages.find("no deformation 2 (the filter has 2, from 0)"), std::string::npos)
+      << recorder.messages;
+  }
+  EXPECT_EQ(live->GetNumberOfDeformations(), 2);
+  live->RemoveDeformation(0);
+  live->Update();
+  expectSameMesh(live->GetOutput(), fromScratch(patch, { { 0.3, 0.3, 0.2 } }));
+}
+
 #include <vtkAppendPolyData.h>
 #include <vtkFieldData.h>
 #include <vtkSphereSource.h>

@@ -590,6 +590,12 @@ class PipelineTest(unittest.TestCase):
         deform.AddFunctionalDeformation(0.0, 0.0, 0.0, 0.1, 20.0, 0.4)
         deform.Update()
         self.assertAlmostEqual(deform.GetOutput().GetBounds()[5], 0.1, places=12)
+        # Two bumps, the first taken back alone: the second stands.
+        deform.AddFunctionalDeformation(0.25, 0.25, 0.0, 0.2, 20.0, 0.1)
+        deform.RemoveDeformation(0)
+        self.assertEqual(deform.GetNumberOfDeformations(), 1)
+        deform.Update()
+        self.assertAlmostEqual(deform.GetOutput().GetBounds()[5], 0.2, places=12)
         deform.RemoveAllDeformations()
         deform.Update()
         self.assertEqual(deform.GetOutput().GetNumberOfPolys(), 512)
