@@ -151,7 +151,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
                     "x: cut (capped) | l: lattice, L: size | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
-                    "f: deform (bump, box, smooth; drag up/down) | [ ]: tool radius | u: distance, a: angle | Delete: the line pointed at | o: mirror image, O: its plane\n"
+                    "f: deform (bump, box, smooth; drag up/down) | [ ]: tool radius | u: distance, a: angle | Delete: what is pointed at | o: mirror image, O: its plane\n"
                     "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
@@ -2023,6 +2023,89 @@ int Planner::strokeAt(int x, int y, double pixels, double& distance) const
     }
   }
   return best;
+}
+
+int Planner::deformationAt(int piece, const std::array<double, 3>& point) const
+{
+  for (std::size_t i = session.deformations.size(); i-- > 0;)
+  {
+    const Deformation& d = session.deformations[i];
+    if (d.piece != piece)
+      continue;
+    // What it moved, moved: its ball or cube swept along its normal by its
+    // amount (a dab's amount is 0).
+    std::array<double, 3> move;
+    for (std::size_t k = 0; k < 3; ++k)
+      move[k] = d.tool == "smooth" ? 0.0 : d.amount * d.normal[k];
+    if (d.tool == "box")
+    {
+      // The sweep's steps s in [0, 1] that put the point in the cube.
+      double low = 0.0, high = 1.0;
+      for (std::size_t k = 0; k < 3 && low <= high; ++k)
+      {
+        const double off = point[k] - d.centre[k];
+        if (move[k] == 0.0)
+        {
+          if (std::abs(off) > d.radius)
+            high = -1.0;
+          continue;
+        }
+        const double a = (off - d.radius) / move[k], b = (off + d.radius) / move[k];
+        low = std::max(low, std::min(a, b));
+        high = std::min(high, std::max(a, b));
+      }
+      if (low <= high)
+        return static_cast<int>(i);
+      continue;
+    }
+    // A ball swept along a segment: a capsule.
+    const double length2 = vtkMath::Dot(move.data(), move.data());
+    std::array<double, 3> off{ point[0] - d.centre[0], point[1] - d.centre[1], point[2] - d.centre[2] };
+    const double s = length2 > 0.0 ? std::clamp(vtkMath::Dot(off.data(), move.data()) / length2, 0.0, 1.0) : 0.0;
+    for (std::size_t k = 0; k < 3; ++k)
+      off[k] -= s * move[k];
+    if (vtkMath::Dot(off.data(), off.data()) <= d.radius * d.radius)
+      return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::pair<std::size_t, std::size_t> Planner::deformationGroup(std::size_t i) const
+{
+  const auto& all = session.deformations;
+  std::pair<std::size_t, std::size_t> group{ i, i };
+  if (i >= all.size() || all[i].tool != "smooth")
+    return group;
+  // Dabs a and b = a + 1 are of one stroke.
+  const auto joined = [&all](std::size_t a) {
+    const Deformation& d = all[a];
+    const Deformation& e = all[a + 1];
+    return d.tool == "smooth" && e.tool == "smooth" && d.piece == e.piece &&
+      vtkMath::Distance2BetweenPoints(d.centre.data(), e.centre.data()) <= e.radius * e.radius;
+  };
+  while (group.first > 0 && joined(group.first - 1))
+    --group.first;
+  while (group.second + 1 < all.size() && joined(group.second))
+    ++group.second;
+  return group;
+}
+
+void Planner::removeDeformation(std::size_t i)
+{
+  if (i >= session.deformations.size())
+    return;
+  const auto group = deformationGroup(i);
+  const Deformation& d = session.deformations[i];
+  const std::size_t count = group.second - group.first + 1;
+  if (count == 1)
+    notice = "deformation " + std::to_string(i) + " (" + d.tool + " on piece " + std::to_string(d.piece) + ") removed";
+  else
+    notice = "deformations " + std::to_string(group.first) + " to " + std::to_string(group.second) +
+      " (a smoothing brush stroke on piece " + std::to_string(d.piece) + ", " + std::to_string(count) + " dabs) removed";
+  notice += " (z: back)";
+  remember();
+  session.deformations.erase(session.deformations.begin() + static_cast<std::ptrdiff_t>(group.first),
+    session.deformations.begin() + static_cast<std::ptrdiff_t>(group.second + 1));
 }
 
 void Planner::showMeasurements()

@@ -564,6 +564,23 @@ public:
   /// (x, y) of the bone's view, within `pixels`; -1 for none (and on the CT
   /// view). `distance` as above.
   int strokeAt(int x, int y, double pixels, double& distance) const;
+  /// The deformation of `piece` whose region holds `point` (in the piece's
+  /// own frame, picked on the surface its deformations left): the latest
+  /// such, as it lies on top; -1 for none. A bump's region is its ball and
+  /// a box's its cube, each swept along its normal by its amount (what it
+  /// raised stands that far out; a bump's falls off, so a point beside it
+  /// can be within its reach); a smoothing dab's is its ball.
+  int deformationAt(int piece, const std::array<double, 3>& point) const;
+  /// The deformations that go with deformation i when it is removed
+  /// (Delete), first and last: itself, or for a smoothing dab the brush
+  /// stroke it belongs to: the run of dabs on its piece around it, each
+  /// within its radius of the one before (a stroke places one every third
+  /// of a radius; two strokes one after the other, the second from where the
+  /// first ended, are one).
+  std::pair<std::size_t, std::size_t> deformationGroup(std::size_t i) const;
+  /// Removes deformation i with its group (deformationGroup); the notice
+  /// says what went ("deformation 1 (box on piece 0) removed (z: back)").
+  void removeDeformation(std::size_t i);
   /// Whether (x, y) lies on the CT view, drawn.
   bool onScanView(int x, int y) const { return scanRenderer->GetDraw() && scanRenderer->IsInViewport(x, y); }
   /// (x, y)'s distance in pixels from the segment a-b drawn by `view` (its

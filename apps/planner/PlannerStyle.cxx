@@ -1177,14 +1177,22 @@ void PlannerStyle::OnChar()
   else if (key == "Delete" || key == "BackSpace")
   {
     // While measuring, the last point clicked goes; otherwise the
-    // measurement or the stroke whose line is under the mouse (undone
-    // with z).
+    // measurement or the stroke whose line is under the mouse, or else the
+    // deformation of the bone there (undone with z).
     Planner& p = *planner;
     rebuild = false;
     const int* pos = this->Interactor->GetEventPosition();
     double toMeasurement = 0.0, toStroke = 0.0;
     const int measurement = p.measurementAt(pos[0], pos[1], 12.0, toMeasurement);
     const int stroke = p.strokeAt(pos[0], pos[1], 12.0, toStroke);
+    int deformation = -1;
+    if (!p.session.deformations.empty() && !p.onScanView(pos[0], pos[1]))
+    {
+      std::array<double, 3> at, normal;
+      const int piece = pickPiece(pos[0], pos[1], at, normal);
+      if (piece >= 0)
+        deformation = p.deformationAt(piece, at);
+    }
     if (p.measuring && !p.measurePicked.empty())
     {
       p.measurePicked.pop_back();
@@ -1207,10 +1215,16 @@ void PlannerStyle::OnChar()
       p.notice = "stroke " + std::to_string(stroke + 1) + " removed (z: back)";
       rebuild = true;
     }
-    else if (p.session.measurements.empty() && p.session.strokes.empty())
-      p.message = key + ": nothing to remove (no stroke, no measurement)";
+    else if (deformation >= 0)
+    {
+      p.removeDeformation(static_cast<std::size_t>(deformation));
+      rebuild = true;
+    }
+    else if (p.session.measurements.empty() && p.session.strokes.empty() && p.session.deformations.empty())
+      p.message = key + ": nothing to remove (no stroke, no measurement, no deformation)";
     else
-      p.message = key + " removes the stroke or the measurement under the mouse: point at its line in the bone's view";
+      p.message = key +
+        " removes what is under the mouse in the bone's view: a stroke's or a measurement's line, or a deformation";
   }
   else if (key == "Escape" && planner->measuring)
   {
