@@ -30,6 +30,7 @@
 #include <numeric>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -926,6 +927,24 @@ void PlannerStyle::OnChar()
     return typeMove(key);
   if (planner->typingLattice)
     return typeLatticeVertices(key);
+  if (pressed)
+  {
+    // A key in the middle of a drag would change the tool, the cut or the
+    // session under it (z undoing what the drag started from, d turning a
+    // bump's pull into a stroke): it is not taken. Shift and the other
+    // modifiers say nothing (shift turns a move into a rotation).
+    static const char* const modifiers[] = { "Shift", "Control", "Alt", "Meta", "Super", "Caps_Lock", "ISO_" };
+    const bool modifier = key.empty() ||
+      std::any_of(std::begin(modifiers), std::end(modifiers),
+        [&key](const char* m) { return key.compare(0, std::strlen(m), m) == 0; });
+    if (!modifier)
+    {
+      planner->message = key + " not taken: let go of the mouse button first (a drag is under way)";
+      planner->updateStatus();
+      this->Interactor->Render();
+    }
+    return;
+  }
   Session& s = planner->session;
   std::string error;
   bool rebuild = true;

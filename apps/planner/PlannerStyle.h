@@ -34,6 +34,9 @@ public:
   Planner* planner = nullptr;
   std::string sessionPath = "planner_session.json", exportFolder = "planner-pieces";
   bool quitRequested = false; ///< 'q' or Escape was pressed
+  /// The left button is down on a drag of the view's tools: a stroke or a
+  /// saw line drawn, the segment moved, a deformation pulled. Keys wait for
+  /// it to be let go (OnChar).
   bool pressed = false;
   vtkNew<vtkCellPicker> picker;
   /// Cell locators for the pickers on large surfaces (a whole skull).
