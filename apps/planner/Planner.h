@@ -5,7 +5,11 @@
 /// cut pieces, their deformations, each piece's lattice and Metro colours,
 /// the actors, the status line, the report, the export and the screenshot.
 /// The window's mouse and keys are PlannerStyle.h; the command line is
-/// apps/latticekit-planner.cxx.
+/// apps/latticekit-planner.cxx. The class is defined in Planner.cxx (the
+/// scene, the status, the plan's text) and, one concern each, in
+/// PlannerCut.cxx, PlannerDeformations.cxx, PlannerLattices.cxx,
+/// PlannerMeasurements.cxx, PlannerNames.cxx, PlannerMirror.cxx,
+/// PlannerScanView.cxx and PlannerExport.cxx.
 
 #include "common/CutReport.h"
 #include "common/KeyComposer.h"
