@@ -952,6 +952,38 @@ std::string Planner::planText()
   for (std::size_t i = 0; i < session.deformations.size(); ++i)
   {
     const Deformation& d = session.deformations[i];
+    const auto group = deformationGroup(i);
+    if (group.second > i)
+    {
+      // A smoothing brush stroke (a dab every third of a radius): one line,
+      // not one per dab.
+      const Deformation& last = session.deformations[group.second];
+      double smallest = d.radius, largest = d.radius;
+      int fewest = d.iterations, most = d.iterations;
+      for (std::size_t k = i; k <= group.second; ++k)
+      {
+        const Deformation& dab = session.deformations[k];
+        smallest = std::min(smallest, dab.radius);
+        largest = std::max(largest, dab.radius);
+        fewest = std::min(fewest, dab.iterations);
+        most = std::max(most, dab.iterations);
+      }
+      std::snprintf(line, sizeof line,
+        "deformations %zu to %zu: smoothing brush stroke on piece %d, %zu dabs from (%.2f, %.2f, %.2f) to (%.2f, "
+        "%.2f, %.2f), radius %.2f",
+        i, group.second, d.piece, group.second - i + 1, d.centre[0], d.centre[1], d.centre[2], last.centre[0],
+        last.centre[1], last.centre[2], smallest);
+      text += line;
+      if (largest > smallest)
+      {
+        std::snprintf(line, sizeof line, " to %.2f", largest);
+        text += line;
+      }
+      text += ", " + std::to_string(fewest) + (most > fewest ? " to " + std::to_string(most) : std::string()) +
+        " iterations each\n";
+      i = group.second;
+      continue;
+    }
     std::snprintf(line, sizeof line, "deformation %zu: %s on piece %d at (%.2f, %.2f, %.2f), radius %.2f", i,
       d.tool.c_str(), d.piece, d.centre[0], d.centre[1], d.centre[2], d.radius);
     text += line;
