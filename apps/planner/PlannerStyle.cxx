@@ -1204,14 +1204,14 @@ void PlannerStyle::OnChar()
     double toMeasurement = 0.0, toStroke = 0.0;
     const int measurement = p.measurementAt(pos[0], pos[1], 12.0, toMeasurement);
     const int stroke = p.strokeAt(pos[0], pos[1], 12.0, toStroke);
-    int deformation = -1;
-    if (!p.session.deformations.empty() && !p.onScanView(pos[0], pos[1]))
-    {
+    // The deformation under the mouse, looked for only where no line is.
+    const auto deformationHere = [&]() {
       std::array<double, 3> at, normal;
-      const int piece = pickPiece(pos[0], pos[1], at, normal);
-      if (piece >= 0)
-        deformation = p.deformationAt(piece, at);
-    }
+      const int piece = p.session.deformations.empty() || p.onScanView(pos[0], pos[1])
+        ? -1
+        : pickPiece(pos[0], pos[1], at, normal);
+      return piece >= 0 ? p.deformationAt(piece, at) : -1;
+    };
     if (p.measuring && !p.measurePicked.empty())
     {
       p.measurePicked.pop_back();
@@ -1234,7 +1234,7 @@ void PlannerStyle::OnChar()
       p.notice = "stroke " + std::to_string(stroke + 1) + " removed (z: back)";
       rebuild = true;
     }
-    else if (deformation >= 0)
+    else if (const int deformation = deformationHere(); deformation >= 0)
     {
       p.removeDeformation(static_cast<std::size_t>(deformation));
       rebuild = true;
