@@ -804,7 +804,13 @@ void Planner::updateStatus()
       << (tool == SMOOTH ? " (drag to brush)" : " (drag up/down)");
   }
   if (!session.deformations.empty())
-    s << " | deformations: " << session.deformations.size();
+  {
+    // As the surgeon made them: a brush stroke is one, however many dabs.
+    std::size_t made = 0;
+    for (std::size_t i = 0; i < session.deformations.size(); i = deformationGroup(i).second + 1)
+      ++made;
+    s << " | deformations: " << made;
+  }
   if (naming == 1)
     s << " | NAME: click a piece (Escape: stop)";
   else if (naming == 2)
