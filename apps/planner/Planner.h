@@ -577,10 +577,11 @@ public:
   int deformationAt(int piece, const std::array<double, 3>& point) const;
   /// The deformations that go with deformation i when it is removed
   /// (Delete), first and last: itself, or for a smoothing dab the brush
-  /// stroke it belongs to: the run of dabs on its piece around it, each
-  /// within its radius of the one before (a stroke places one every third
-  /// of a radius; two strokes one after the other, the second from where the
-  /// first ended, are one).
+  /// stroke it belongs to: the run of dabs on its piece around it with its
+  /// stroke number; in a session without the numbers, each within its radius
+  /// of the one before (a stroke places one every third of a radius; two
+  /// strokes one after the other, the second from where the first ended,
+  /// are then one).
   std::pair<std::size_t, std::size_t> deformationGroup(std::size_t i) const;
   /// Removes deformation i with its group (deformationGroup); the notice
   /// says what went ("deformation 1 (box on piece 0) removed (z: back)").

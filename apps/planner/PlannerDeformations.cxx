@@ -163,12 +163,16 @@ std::pair<std::size_t, std::size_t> Planner::deformationGroup(std::size_t i) con
   std::pair<std::size_t, std::size_t> group{ i, i };
   if (i >= all.size() || all[i].tool != "smooth")
     return group;
-  // Dabs a and b = a + 1 are of one stroke.
+  // Dabs a and b = a + 1 are of one stroke: by its number, or where a
+  // session does not know it, by place.
   const auto joined = [&all](std::size_t a) {
     const Deformation& d = all[a];
     const Deformation& e = all[a + 1];
-    return d.tool == "smooth" && e.tool == "smooth" && d.piece == e.piece &&
-      vtkMath::Distance2BetweenPoints(d.centre.data(), e.centre.data()) <= e.radius * e.radius;
+    if (d.tool != "smooth" || e.tool != "smooth" || d.piece != e.piece)
+      return false;
+    if (d.stroke > 0 || e.stroke > 0)
+      return d.stroke == e.stroke;
+    return vtkMath::Distance2BetweenPoints(d.centre.data(), e.centre.data()) <= e.radius * e.radius;
   };
   while (group.first > 0 && joined(group.first - 1))
     --group.first;

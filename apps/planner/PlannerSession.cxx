@@ -136,7 +136,11 @@ std::string sessionText(const Session& s)
     jd["centre"] = triple(d.centre);
     jd["radius"] = d.radius;
     if (d.tool == "smooth")
+    {
       jd["iterations"] = d.iterations;
+      if (d.stroke > 0)
+        jd["stroke"] = d.stroke;
+    }
     else
     {
       jd["normal"] = triple(d.normal);
@@ -500,7 +504,7 @@ bool readSession(
     Deformation d;
     const std::string where = "deformation " + std::to_string(s.deformations.size()) + " in '" + path + "'";
     noteUnknownMembers(
-      jd, { "tool", "piece", "centre", "radius", "normal", "amount", "falloff", "iterations" }, where, notes);
+      jd, { "tool", "piece", "centre", "radius", "normal", "amount", "falloff", "iterations", "stroke" }, where, notes);
     if (!jd.isObject() || !jsonString(jd["tool"], d.tool) || (d.tool != "bump" && d.tool != "box" && d.tool != "smooth"))
     {
       error = where + " has the tool '" + (jd.isObject() && jd["tool"].isString() ? jd["tool"].asString() : std::string("?")) +
@@ -525,6 +529,13 @@ bool readSession(
         return false;
       }
       d.iterations = static_cast<int>(iterations);
+      long long stroke = 0;
+      const auto strokeNumber = [](const Json::Value& v, long long& out) {
+        return jsonInteger(v, 0, std::numeric_limits<int>::max(), out);
+      };
+      if (!jsonMember(jd, "stroke", stroke, strokeNumber, where, "a whole number, 1 or more (0: not known)", error))
+        return false;
+      d.stroke = static_cast<int>(stroke);
     }
     else if (!jsonNumbers(jd["normal"], d.normal) || !jsonNumber(jd["amount"], d.amount))
     {

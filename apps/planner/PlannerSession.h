@@ -35,7 +35,8 @@
 //                     "centre": [x, y, z], "radius": r > 0,
 //                     "normal": [x, y, z], "amount": k,   (bump, box)
 //                     "falloff": a >= 0,                  (bump; ln(100) / r^2)
-//                     "iterations": 1 to 100}, ...]       (smooth; 3)
+//                     "iterations": 1 to 100,             (smooth; 3)
+//                     "stroke": n >= 1}, ...]             (smooth: its brush stroke)
 //   "names": [{"name": text, "at": [x, y, z]}, ...]   names given to pieces (see
 //                                                     PieceName)
 //   "measurements": [{"from": [x, y, z],              distances and angles
@@ -101,7 +102,9 @@ struct Stroke
 /// - box: every vertex in the cube centre +- radius moves by amount * normal
 ///   (the paper's range deformation);
 /// - smooth: eq. 2 in the ball (centre, radius), `iterations` times (one dab
-///   of the smoothing brush).
+///   of the smoothing brush); `stroke` numbers the brush stroke it belongs
+///   to (1, 2, ...; the dabs of one stroke share it), 0 where it is not
+///   known (a session written before it was kept).
 struct Deformation
 {
   std::string tool = "bump";
@@ -109,6 +112,7 @@ struct Deformation
   std::array<double, 3> centre{ 0, 0, 0 }, normal{ 0, 0, 1 };
   double amount = 0.0, radius = 1.0, falloff = 0.0;
   int iterations = 3;
+  int stroke = 0;
 };
 
 /// A name a surgeon gave a piece (`t` in the window), for the export: the

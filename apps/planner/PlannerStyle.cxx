@@ -196,6 +196,14 @@ void PlannerStyle::startDeform()
   dragged.normal = n;
   dragged.radius = r;
   dragged.falloff = planner->tool == BUMP ? bumpFalloff(r) : 0.0;
+  if (planner->tool == SMOOTH)
+  {
+    // A new brush stroke: its dabs share the number after the session's last.
+    int last = 0;
+    for (const Deformation& d : planner->session.deformations)
+      last = std::max(last, d.stroke);
+    dragged.stroke = last + 1;
+  }
   dabs.assign(1, dragged);
   vtkLKPatchDeformationFilter* f = planner->deformer(static_cast<std::size_t>(piece));
   f->CheckCrossingsOff(); // while dragging; the release's rebuild looks (Planner::applyDeformations)
