@@ -101,9 +101,8 @@ int main(int argc, char* argv[])
     // among them (a piece cut again into its own folder) would be lost.
     for (const std::string& in : { input, linesPath })
     {
-      const std::string name = vtksys::SystemTools::GetFilenameName(in);
       if (lkapp::isExportedFile(in, piecesFolder, {}) ||
-        (isCutLinesFileName(name) && lkapp::isExportedFile(in, piecesFolder, { name.c_str() })))
+        (isCutLinesFileName(vtksys::SystemTools::GetFilenameName(in)) && lkapp::isInFolder(in, piecesFolder)))
       {
         std::cerr << "error: '" << in << "' is one of the files --pieces writes or removes in '" << piecesFolder
                   << "': give the pieces another folder\n";

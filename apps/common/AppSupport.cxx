@@ -559,14 +559,18 @@ bool isLatticeFileName(const std::string& name)
     isPieceFileName(name.substr(prefix.size()));
 }
 
+bool isInFolder(const std::string& path, const std::string& folder)
+{
+  return !path.empty() && !folder.empty() &&
+    vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(path)) ==
+    vtksys::SystemTools::CollapseFullPath(folder);
+}
+
 bool isExportedFile(const std::string& path, const std::string& folder, std::initializer_list<const char*> others)
 {
-  if (path.empty() || folder.empty())
+  if (!isInFolder(path, folder))
     return false;
-  const std::string full = vtksys::SystemTools::CollapseFullPath(path);
-  if (vtksys::SystemTools::GetFilenamePath(full) != vtksys::SystemTools::CollapseFullPath(folder))
-    return false;
-  const std::string name = vtksys::SystemTools::GetFilenameName(full);
+  const std::string name = vtksys::SystemTools::GetFilenameName(vtksys::SystemTools::CollapseFullPath(path));
   return isPieceFileName(name) || std::any_of(others.begin(), others.end(), [&](const char* o) { return name == o; });
 }
 

@@ -167,7 +167,7 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     return false;
   }
   if (const std::string name = vtksys::SystemTools::GetFilenameName(input);
-      lkapp::isLatticeFileName(name) && lkapp::isExportedFile(input, folder, { name.c_str() }))
+      lkapp::isLatticeFileName(name) && lkapp::isInFolder(input, folder))
   {
     error = "the input '" + input + "' is a lattice file the export writes or removes in '" + folder +
       "': export to another folder";
