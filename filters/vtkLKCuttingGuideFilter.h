@@ -1,0 +1,139 @@
+/**
+ * @class   vtkLKCuttingGuideFilter
+ * @brief   A cutting guide for a planar osteotomy: a shell that sits on the
+ *          bone across the cut's plane, with a slot the saw blade runs in.
+ *
+ * A planned cut reaches the patient through a guide printed from the plan:
+ * its inner face is the bone's own surface, so it seats in one place only,
+ * and the saw passes through its slot in the planned plane. This filter
+ * makes the guide of one plane cut (a saw line of the planner, the main
+ * job's cut plane).
+ *
+ * Method (VTK filters only):
+ * - The approach: the side of the bone the guide is put on, a direction in
+ *   the cut's plane toward the surgeon. Given (Approach), it is projected
+ *   into the plane. Left at 0, 0, 0 it is the short axis of the bone's
+ *   section in the plane (the loop of vtkCutter's section nearest
+ *   PlaneOrigin), turned away from the centre of the whole bone: a
+ *   mandible's body or ramus gets its guide on the outer (buccal) side.
+ * - The contact: the bone's faces within Reach of the plane on either side
+ *   whose normals lie within MaximumContactAngle of the approach and that
+ *   nothing of the bone hides along it (a ray from the face toward the
+ *   surgeon meets no other face), grown from the section's outermost point
+ *   across shared edges. The guide can so be put on and taken off along the
+ *   approach, and it never reaches round an edge of the bone. It is clipped
+ *   at +-Reach from the plane by vtkClipPolyData.
+ * - The slot: the contact's part within SlotWidth / 2 of the plane is taken
+ *   out, except for Bridge millimetres at each of its ends along the plane,
+ *   which keep the guide in one piece (the saw starts the cut in the slot;
+ *   the last millimetres past its ends are finished with the guide off, as
+ *   with any printed guide).
+ * - The shell: the contact moved Clearance along the approach (room for the
+ *   periosteum, or for the printer's tolerance) and swept Thickness along it
+ *   by vtkLinearExtrusionFilter, capped, oriented outward by
+ *   vtkPolyDataNormals. The slot's walls are planes parallel to the cut's,
+ *   SlotWidth apart, Thickness deep along the approach.
+ *
+ * Input: a bone surface (polygons; a closed mesh, so that its outside is
+ * known). Output: the guide, a closed triangle mesh oriented outward (ready
+ * for STL). Field data: GuideApproach (3 values, unit), GuideSlotLength
+ * (mm, along the plane), GuideContactArea (mm^2 of bone surface under the
+ * guide), GuideVolume (mm^3), and the input's SPACE tag. The same values
+ * are kept in the filter after an update.
+ *
+ * Errors (a VTK error and an empty output): a plane normal or an approach
+ * that is zero, not finite or (the approach) along the normal; a parameter
+ * out of its range; an input without polygons; a plane that meets no part
+ * of the bone; no face at the section facing the approach; a contact too
+ * short along the plane for a slot and two bridges.
+ */
+#ifndef vtkLKCuttingGuideFilter_h
+#define vtkLKCuttingGuideFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class LATTICEKITFILTERS_EXPORT vtkLKCuttingGuideFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKCuttingGuideFilter* New();
+  vtkTypeMacro(vtkLKCuttingGuideFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The cut's plane: a point of it (the section loop nearest this point is
+  /// the one the guide goes on) and its normal (finite, not zero; its length
+  /// does not matter). Default: the plane x = 0.
+  vtkSetVector3Macro(PlaneOrigin, double);
+  vtkGetVector3Macro(PlaneOrigin, double);
+  vtkSetVector3Macro(PlaneNormal, double);
+  vtkGetVector3Macro(PlaneNormal, double);
+  ///@}
+
+  ///@{
+  /// The side the guide goes on: a direction from the bone toward the
+  /// surgeon, projected into the plane. Default 0, 0, 0: the section's short
+  /// axis, away from the bone's centre (see above).
+  vtkSetVector3Macro(Approach, double);
+  vtkGetVector3Macro(Approach, double);
+  ///@}
+
+  ///@{
+  /// The guide's wall, along the approach: mm, default 4 (0.1 to 100).
+  vtkSetMacro(Thickness, double);
+  vtkGetMacro(Thickness, double);
+  /// How far the guide reaches on each side of the plane: mm, default 8
+  /// (more than SlotWidth / 2, at most 200).
+  vtkSetMacro(Reach, double);
+  vtkGetMacro(Reach, double);
+  /// The slot's width: the saw blade and its play, mm, default 1.2 (0.05 to 20).
+  vtkSetMacro(SlotWidth, double);
+  vtkGetMacro(SlotWidth, double);
+  /// The guide's material left at each end of the slot: mm, default 3 (0 to 100).
+  vtkSetMacro(Bridge, double);
+  vtkGetMacro(Bridge, double);
+  /// The gap between the bone and the guide along the approach: mm,
+  /// default 0 (0 to 10).
+  vtkSetMacro(Clearance, double);
+  vtkGetMacro(Clearance, double);
+  /// The largest angle between a face's normal and the approach for the
+  /// guide to rest on it: degrees, default 70 (1 to 89).
+  vtkSetMacro(MaximumContactAngle, double);
+  vtkGetMacro(MaximumContactAngle, double);
+  ///@}
+
+  ///@{
+  /// After an update (zeros before, or after an error): the approach used
+  /// (unit), the slot's length along the plane, the bone surface's area
+  /// under the guide and the guide's volume.
+  vtkGetVector3Macro(ApproachUsed, double);
+  vtkGetMacro(SlotLength, double);
+  vtkGetMacro(ContactArea, double);
+  vtkGetMacro(Volume, double);
+  ///@}
+
+protected:
+  vtkLKCuttingGuideFilter() = default;
+  ~vtkLKCuttingGuideFilter() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
+  double PlaneNormal[3] = { 1.0, 0.0, 0.0 };
+  double Approach[3] = { 0.0, 0.0, 0.0 };
+  double Thickness = 4.0;
+  double Reach = 8.0;
+  double SlotWidth = 1.2;
+  double Bridge = 3.0;
+  double Clearance = 0.0;
+  double MaximumContactAngle = 70.0;
+  double ApproachUsed[3] = { 0.0, 0.0, 0.0 };
+  double SlotLength = 0.0;
+  double ContactArea = 0.0;
+  double Volume = 0.0;
+
+private:
+  vtkLKCuttingGuideFilter(const vtkLKCuttingGuideFilter&) = delete;
+  void operator=(const vtkLKCuttingGuideFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,317 @@
+// vtkLKCuttingGuideFilter: a cutting guide on a box (exact volume, slot and
+// contact), on the TCIA mandible (closed, outward, outside the bone, free to
+// come off along its approach), and on bad input.
+#include "TestSupport.h"
+
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKCuttingGuideFilter.h"
+#include "vtkLKMedicalImageReader.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCleanPolyData.h>
+#include <vtkCubeSource.h>
+#include <vtkDataArray.h>
+#include <vtkFeatureEdges.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
+#include <vtkImplicitPolyDataDistance.h>
+#include <vtkLinearSubdivisionFilter.h>
+#include <vtkMath.h>
+#include <vtkPoints.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkTriangleFilter.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace
+{
+/// The volume a closed triangle surface encloses, positive when its faces
+/// are ordered with their normals pointing out (divergence theorem).
+double signedVolume(vtkPolyData* pd)
+{
+  double volume = 0.0;
+  auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    double a[3], b[3], c[3], bc[3];
+    pd->GetPoint(ids[0], a);
+    for (vtkIdType k = 1; k + 1 < n; ++k)
+    {
+      pd->GetPoint(ids[k], b);
+      pd->GetPoint(ids[k + 1], c);
+      vtkMath::Cross(b, c, bc);
+      volume += vtkMath::Dot(a, bc) / 6.0;
+    }
+  }
+  return volume;
+}
+
+/// Edges met by other than two faces (open or non-manifold).
+vtkIdType badEdges(vtkPolyData* pd)
+{
+  vtkNew<vtkFeatureEdges> edges;
+  edges->SetInputData(pd);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfCells();
+}
+
+/// A closed box 40 x 20 x 30 mm centred at the origin, in triangles, each
+/// face cut into 4^2 x 2 triangles.
+vtkSmartPointer<vtkPolyData> box()
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(40);
+  cube->SetYLength(20);
+  cube->SetZLength(30);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> finer;
+  finer->SetInputConnection(merged->GetOutputPort());
+  finer->SetNumberOfSubdivisions(2);
+  finer->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(finer->GetOutput());
+  return out;
+}
+
+double field(vtkPolyData* pd, const char* name, int component = 0)
+{
+  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
+  EXPECT_NE(a, nullptr) << name;
+  return a ? a->GetComponent(0, component) : std::numeric_limits<double>::quiet_NaN();
+}
+} // namespace
+
+TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
+{
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(box());
+  guide->SetPlaneOrigin(0, 0, 0);
+  guide->SetPlaneNormal(2, 0, 0);
+  guide->SetApproach(0.3, -1, 0); // the part along the normal is left out
+  guide->SetClearance(0.5);
+  guide->Update();
+  vtkPolyData* out = guide->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(badEdges(out), 0);
+  // The face y = -10 within 8 mm of the plane: 16 x 30 mm. The slot: 1.2 mm
+  // wide, the contact's 30 mm less two bridges of 3 mm, 4 mm deep.
+  EXPECT_NEAR(guide->GetContactArea(), 16.0 * 30.0, 1e-6);
+  EXPECT_NEAR(guide->GetSlotLength(), 24.0, 1e-6);
+  EXPECT_NEAR(guide->GetVolume(), 16.0 * 30.0 * 4.0 - 1.2 * 24.0 * 4.0, 1e-3);
+  EXPECT_NEAR(signedVolume(out), guide->GetVolume(), 1e-3); // faces oriented outward
+  EXPECT_NEAR(guide->GetApproachUsed()[0], 0.0, 1e-12);
+  EXPECT_NEAR(guide->GetApproachUsed()[1], -1.0, 1e-12);
+  EXPECT_NEAR(field(out, "GuideApproach", 1), -1.0, 1e-12);
+  EXPECT_NEAR(field(out, "GuideSlotLength"), 24.0, 1e-6);
+  EXPECT_NEAR(field(out, "GuideContactArea"), 480.0, 1e-6);
+  EXPECT_NEAR(field(out, "GuideVolume"), guide->GetVolume(), 1e-9);
+  // Where it lies: from the clearance to the wall's far side in y, within
+  // the reach in x; nothing in the slot between the bridges.
+  double b[6];
+  out->GetBounds(b);
+  EXPECT_NEAR(b[0], -8.0, 1e-9);
+  EXPECT_NEAR(b[1], 8.0, 1e-9);
+  EXPECT_NEAR(b[2], -14.5, 1e-9);
+  EXPECT_NEAR(b[3], -10.5, 1e-9);
+  EXPECT_NEAR(b[4], -15.0, 1e-9);
+  EXPECT_NEAR(b[5], 15.0, 1e-9);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    EXPECT_FALSE(std::abs(x[0]) < 0.6 - 1e-9 && std::abs(x[2]) < 12.0 - 1e-9) << "a point in the slot";
+  }
+
+  // Thicker, wider slot, no bridges short of the contact's ends but one:
+  // the volume follows.
+  guide->SetThickness(2.5);
+  guide->SetSlotWidth(2.0);
+  guide->SetBridge(1.0);
+  guide->SetReach(5.0);
+  guide->Update();
+  EXPECT_NEAR(guide->GetVolume(), 10.0 * 30.0 * 2.5 - 2.0 * 28.0 * 2.5, 1e-3);
+  EXPECT_EQ(badEdges(guide->GetOutput()), 0);
+}
+
+TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
+{
+  // Seen from (0, -1, 1) at 45 degrees, the box's faces y = -10 and
+  // z = 15 both face it within 50 degrees; at 40 degrees neither does.
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(box());
+  guide->SetPlaneNormal(1, 0, 0);
+  guide->SetApproach(0, -1, 1);
+  guide->SetMaximumContactAngle(50);
+  guide->Update();
+  EXPECT_NEAR(guide->GetContactArea(), 16.0 * 30.0 + 16.0 * 20.0, 1e-6);
+  EXPECT_EQ(badEdges(guide->GetOutput()), 0);
+  EXPECT_NEAR(signedVolume(guide->GetOutput()), guide->GetVolume(), 1e-3);
+  EXPECT_GT(guide->GetVolume(), 0.0);
+
+  lktest::ErrorRecorder errors(guide);
+  guide->SetMaximumContactAngle(40);
+  guide->Update();
+  EXPECT_EQ(errors.errors, 1);
+  EXPECT_NE(errors.messages.find("no face of the bone at the cut faces the approach"), std::string::npos)
+    << errors.messages;
+  EXPECT_EQ(guide->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApproach)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->Update();
+  vtkPolyData* surface = bone->GetOutput();
+  ASSERT_GT(surface->GetNumberOfCells(), 0);
+
+  // The mid-sagittal plane of the chin (the session's saw line), and a cut
+  // through the left body: the guide goes on the front and the outer side
+  // without being told.
+  struct Case
+  {
+    double origin[3], normal[3];
+  };
+  for (const Case& c : { Case{ { 0.0728, 276.64, -982.1 }, { 1, 0, 0 } }, Case{ { 30, 276.64, -982.1 }, { 1, 0.3, 0 } } })
+  {
+    vtkNew<vtkLKCuttingGuideFilter> guide;
+    guide->SetInputData(surface);
+    guide->SetPlaneOrigin(c.origin);
+    guide->SetPlaneNormal(c.normal);
+    lktest::ProgressRecorder progress(guide);
+    guide->Update();
+    vtkPolyData* out = guide->GetOutput();
+    ASSERT_GT(out->GetNumberOfCells(), 0);
+    EXPECT_EQ(badEdges(out), 0);
+    EXPECT_GT(guide->GetVolume(), 500.0);
+    EXPECT_NEAR(signedVolume(out), guide->GetVolume(), 1e-6 * guide->GetVolume());
+    EXPECT_GT(guide->GetSlotLength(), 15.0);
+    EXPECT_GT(guide->GetContactArea(), 300.0);
+    const double* d = guide->GetApproachUsed();
+    EXPECT_LT(d[1], -0.8) << "the guide is not on the front of the jaw";
+    EXPECT_NEAR(vtkMath::Dot(d, c.normal), 0.0, 1e-9);
+    if (c.origin[0] > 1.0)
+    {
+      EXPECT_GT(d[0], 0.1) << "the guide on the left body is not on its outer side";
+    }
+    ASSERT_GE(progress.progress.size(), 4u);
+    EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
+
+    // No point of the guide inside the bone, and each can leave along the
+    // approach without meeting it.
+    vtkNew<vtkImplicitPolyDataDistance> inside;
+    inside->SetInput(surface);
+    vtkNew<vtkStaticCellLocator> locator;
+    locator->SetDataSet(surface);
+    locator->BuildLocator();
+    vtkNew<vtkGenericCell> cell;
+    int within = 0, blocked = 0;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double x[3], from[3], to[3], t, hit[3], pcoords[3];
+      out->GetPoint(i, x);
+      if (inside->EvaluateFunction(x) < -1e-3)
+        ++within;
+      for (int k = 0; k < 3; ++k)
+      {
+        from[k] = x[k] + 1e-2 * d[k];
+        to[k] = x[k] + 500.0 * d[k];
+      }
+      int subId;
+      vtkIdType cellId;
+      if (locator->IntersectWithLine(from, to, 0.0, t, hit, pcoords, subId, cellId, cell))
+        ++blocked;
+    }
+    EXPECT_EQ(within, 0);
+    EXPECT_EQ(blocked, 0);
+  }
+}
+
+TEST(CuttingGuideFilter, StopsWhenAsked)
+{
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(box());
+  guide->SetApproach(0, -1, 0);
+  lktest::ProgressRecorder progress(guide);
+  progress.stopAt = 0.4;
+  guide->Update();
+  EXPECT_EQ(guide->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_LT(progress.progress.back(), 1.0);
+}
+
+TEST(CuttingGuideFilter, BadInputAndParametersAreRefused)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  vtkSmartPointer<vtkPolyData> solid = box();
+  struct Case
+  {
+    const char* why;
+    std::function<void(vtkLKCuttingGuideFilter*)> set;
+    const char* message;
+  };
+  const Case cases[] = {
+    { "zero normal", [](vtkLKCuttingGuideFilter* f) { f->SetPlaneNormal(0, 0, 0); }, "PlaneNormal finite and not zero" },
+    { "NaN origin", [&](vtkLKCuttingGuideFilter* f) { f->SetPlaneOrigin(nan, 0, 0); }, "PlaneOrigin must be finite" },
+    { "NaN approach", [&](vtkLKCuttingGuideFilter* f) { f->SetApproach(0, nan, 0); }, "Approach must be finite" },
+    { "approach along the normal", [](vtkLKCuttingGuideFilter* f) { f->SetApproach(-3, 0, 0); },
+      "the Approach lies along the plane's normal" },
+    { "no thickness", [](vtkLKCuttingGuideFilter* f) { f->SetThickness(0); }, "Thickness must be 0.1 to 100 mm" },
+    { "NaN slot", [&](vtkLKCuttingGuideFilter* f) { f->SetSlotWidth(nan); }, "SlotWidth must be" },
+    { "negative clearance", [](vtkLKCuttingGuideFilter* f) { f->SetClearance(-1); }, "Clearance must be 0 to 10" },
+    { "right angle", [](vtkLKCuttingGuideFilter* f) { f->SetMaximumContactAngle(90); },
+      "MaximumContactAngle must be 1 to 89 mm (degrees)" },
+    { "reach inside the slot", [](vtkLKCuttingGuideFilter* f) { f->SetReach(0.5); },
+      "Reach (0.5 mm) must be more than half the SlotWidth" },
+    { "plane beside the bone", [](vtkLKCuttingGuideFilter* f) { f->SetPlaneOrigin(50, 0, 0); },
+      "the plane meets no part of the bone" },
+    { "bridges longer than the contact", [](vtkLKCuttingGuideFilter* f) { f->SetBridge(15); },
+      "30 mm long along the plane, too short for a slot between two bridges of 15 mm" },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkLKCuttingGuideFilter> guide;
+    guide->SetInputData(solid);
+    guide->SetApproach(0, -1, 0);
+    c.set(guide);
+    lktest::ErrorRecorder errors(guide);
+    guide->Update();
+    EXPECT_EQ(errors.errors, 1) << c.why;
+    EXPECT_NE(errors.messages.find(c.message), std::string::npos) << c.why << ": " << errors.messages;
+    EXPECT_EQ(guide->GetOutput()->GetNumberOfCells(), 0) << c.why;
+    EXPECT_EQ(guide->GetSlotLength(), 0.0) << c.why;
+  }
+  // No surface at all, and a point that is not a number.
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  vtkNew<vtkPolyData> empty;
+  guide->SetInputData(empty);
+  {
+    lktest::ErrorRecorder errors(guide);
+    guide->Update();
+    EXPECT_NE(errors.messages.find("the input has no surface"), std::string::npos) << errors.messages;
+  }
+  vtkNew<vtkPolyData> broken;
+  broken->DeepCopy(solid);
+  broken->GetPoints()->SetPoint(3, nan, 0, 0);
+  guide->SetInputData(broken);
+  {
+    lktest::ErrorRecorder errors(guide);
+    guide->Update();
+    EXPECT_NE(errors.messages.find("point 3 of the input is not finite"), std::string::npos) << errors.messages;
+    EXPECT_EQ(guide->GetOutput()->GetNumberOfCells(), 0);
+  }
+}
