@@ -4,7 +4,6 @@
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCleanPolyData.h>
-#include <vtkClipPolyData.h>
 #include <vtkCellData.h>
 #include <vtkCutter.h>
 #include <vtkDoubleArray.h>
@@ -15,7 +14,6 @@
 #include <vtkLinearExtrusionFilter.h>
 #include <vtkMassProperties.h>
 #include <vtkMath.h>
-#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPlane.h>
@@ -26,7 +24,6 @@
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkStripper.h>
-#include <vtkTransform.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
 
@@ -105,59 +102,6 @@ vtkSmartPointer<vtkPolyData> trianglesOf(vtkPolyData* input)
   triangles->Update();
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(triangles->GetOutput());
-  return out;
-}
-
-vtkSmartPointer<vtkPolyData> clipped(vtkPolyData* input, vtkImplicitFunction* function)
-{
-  vtkNew<vtkClipPolyData> clip;
-  clip->SetInputData(input);
-  clip->SetClipFunction(function);
-  clip->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(clip->GetOutput());
-  return out;
-}
-
-/// `input` cut along `plane`: every face on both sides, the faces it
-/// crosses split, on points the two sides share.
-vtkSmartPointer<vtkPolyData> split(vtkPolyData* input, vtkPlane* plane)
-{
-  vtkNew<vtkClipPolyData> clip;
-  clip->SetInputData(input);
-  clip->SetClipFunction(plane);
-  clip->GenerateClippedOutputOn();
-  clip->Update();
-  vtkPolyData* one = clip->GetOutput();
-  vtkPolyData* other = clip->GetClippedOutput();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkCellArray> polys;
-  polys->DeepCopy(one->GetPolys());
-  auto it = vtk::TakeSmartPointer(other->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    polys->InsertNextCell(it->GetCurrentCell());
-  if (other->GetPoints() != one->GetPoints() && other->GetNumberOfCells() > 0)
-  {
-    // Not so in VTK 9.1, where both outputs share one point list; were it
-    // so, the points are appended (the guide's closedness check tells).
-    vtkNew<vtkPoints> points;
-    points->DeepCopy(one->GetPoints());
-    const vtkIdType offset = points->GetNumberOfPoints();
-    for (vtkIdType i = 0; i < other->GetNumberOfPoints(); ++i)
-      points->InsertNextPoint(other->GetPoint(i));
-    polys->DeepCopy(one->GetPolys());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      vtkIdList* ids = it->GetCurrentCell();
-      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-        ids->SetId(k, ids->GetId(k) + offset);
-      polys->InsertNextCell(ids);
-    }
-    out->SetPoints(points);
-  }
-  else
-    out->SetPoints(one->GetPoints());
-  out->SetPolys(polys);
   return out;
 }
 
@@ -326,200 +270,325 @@ int vtkLKCuttingGuideFilter::RequestData(
   Vec e;
   vtkMath::Cross(n.data(), d.data(), e.data());
 
-  // The contact: faces in the band, facing the approach, seen from it,
-  // grown from the face under the section's outermost point.
   vtkNew<vtkStaticCellLocator> locator;
   locator->SetDataSet(bone);
   locator->BuildLocator();
-  bone->BuildLinks();
-  const vtkIdType faces = bone->GetNumberOfCells();
-  const double facing = std::cos(vtkMath::RadiansFromDegrees(this->MaximumContactAngle));
   const double lift = 1e-4 * diagonal;
-  std::vector<signed char> state(static_cast<std::size_t>(faces), -1); // -1 not asked, 0 no, 1 yes
   vtkNew<vtkGenericCell> cell;
-  auto takes = [&](vtkIdType f) {
-    signed char& s = state[static_cast<std::size_t>(f)];
-    if (s >= 0)
-      return s == 1;
-    s = 0;
-    const vtkIdType* ids = nullptr;
-    vtkIdType size = 0;
-    bone->GetCellPoints(f, size, ids);
-    if (size != 3)
-      return false;
-    Vec p[3];
-    bool inBand = false;
-    for (int k = 0; k < 3; ++k)
-    {
-      bone->GetPoint(ids[k], p[k].data());
-      inBand = inBand || std::abs(dot(add(p[k], o, -1.0), n)) < this->Reach;
-    }
-    if (!inBand)
-      return false;
-    Vec normal;
-    vtkTriangle::ComputeNormal(p[0].data(), p[1].data(), p[2].data(), normal.data());
-    if (dot(normal, d) < facing)
-      return false;
-    const Vec middle = add(add(p[0], p[1]), p[2]);
-    const Vec from = add({ middle[0] / 3, middle[1] / 3, middle[2] / 3 }, d, lift);
+  // Whether nothing of the bone lies beyond `x` along the approach.
+  auto seen = [&](const Vec& x, vtkIdType self) {
+    const Vec from = add(x, d, lift);
     Vec to = add(from, d, 2.0 * diagonal);
-    double t = 0.0, x[3], pcoords[3];
+    double t = 0.0, hitPoint[3], pcoords[3];
     int subId = 0;
     vtkIdType hit = -1;
-    if (locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell) && hit != f)
-      return false;
-    s = 1;
-    return true;
+    return !locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hitPoint, pcoords, subId, hit, cell) ||
+      hit == self;
   };
-  const Vec* outermost = &loop->front();
-  for (const Vec& x : *loop)
-    if (dot(x, d) > dot(*outermost, d))
-      outermost = &x;
-  double closest[3], distance2 = 0.0;
-  vtkIdType seed = -1;
-  int subId = 0;
-  locator->FindClosestPoint(outermost->data(), closest, cell, seed, subId, distance2);
-  if (seed < 0 || !takes(seed))
+
+  // The guide's extent along the plane (u, along e): on a section, the run
+  // of its segments around its outermost point that face the approach
+  // within MaximumContactAngle (the outward normal, in the plane, of the
+  // chord over 3 mm about the segment's middle, so that the label map's
+  // staircase does not break the run; a longer segment's own) and that
+  // nothing hides. Clipped there, the guide's edges across the bone are
+  // straight.
+  auto uOf = [&](const Vec& x) { return dot(add(x, o, -1.0), e); };
+  auto vOf = [&](const Vec& x) { return dot(add(x, o, -1.0), d); };
+  const double facing = std::cos(vtkMath::RadiansFromDegrees(this->MaximumContactAngle));
+  struct Run
   {
-    // The outermost point may lie on an edge between a facing face and one
-    // that is not: try the faces round it.
-    vtkNew<vtkIdList> around;
-    if (seed >= 0)
+    bool found = false;
+    double low = 0.0, high = 0.0, deepest = 0.0;
+    Vec outermost{ 0, 0, 0 };
+  };
+  auto runOf = [&](std::vector<Vec> section) {
+    Run run;
+    const bool closed = section.size() > 2 &&
+      vtkMath::Distance2BetweenPoints(section.front().data(), section.back().data()) <= 1e-18 * diagonal * diagonal;
+    if (closed)
+      section.pop_back();
+    const std::size_t count = section.size();
+    if (count < 2)
+      return run;
+    const std::size_t segments = closed ? count : count - 1;
+    double area = 0.0;              // in (u, v): positive counter-clockwise
+    std::vector<double> arc{ 0.0 }; // the length along the section to each point
+    for (std::size_t i = 0; i < segments; ++i)
     {
-      const vtkIdType* ids = nullptr;
-      vtkIdType size = 0;
-      bone->GetCellPoints(seed, size, ids);
-      for (vtkIdType k = 0; k < size && (seed < 0 || !takes(seed)); ++k)
-      {
-        bone->GetPointCells(ids[k], around);
-        for (vtkIdType j = 0; j < around->GetNumberOfIds(); ++j)
-          if (takes(around->GetId(j)))
-          {
-            seed = around->GetId(j);
-            break;
-          }
-      }
+      const Vec& p = section[i];
+      const Vec& q = section[(i + 1) % count];
+      area += uOf(p) * vOf(q) - uOf(q) * vOf(p);
+      arc.push_back(arc.back() + std::sqrt(vtkMath::Distance2BetweenPoints(p.data(), q.data())));
     }
-    if (seed < 0 || !takes(seed))
+    const double total = arc.back();
+    // The point at length `at` along the section (round a closed one; an
+    // open one's ends where it stops).
+    auto pointAt = [&](double at) {
+      at = closed ? at - total * std::floor(at / total) : std::clamp(at, 0.0, total);
+      const std::size_t i = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(arc.begin(), arc.end(), at) - arc.begin()) - 1, segments - 1);
+      const double length = arc[i + 1] - arc[i];
+      const double t = length > 0.0 ? (at - arc[i]) / length : 0.0;
+      const Vec& p = section[i];
+      const Vec& q = section[(i + 1) % count];
+      return add(p, add(q, p, -1.0), t);
+    };
+    auto faces = [&](std::size_t i) {
+      const double middle = 0.5 * (arc[i] + arc[i + 1]);
+      const Vec a = pointAt(middle - 1.5), b = pointAt(middle + 1.5);
+      const double tu = uOf(b) - uOf(a), tv = vOf(b) - vOf(a);
+      const double length = std::hypot(tu, tv);
+      if (!(length > 0.0))
+        return false;
+      // Outward: to the right of the way round a counter-clockwise loop.
+      // An open section (a surface with a border) has no inside: either
+      // side.
+      const double mv = (area >= 0.0 ? -tu : tu) / length;
+      return (closed ? mv : std::abs(mv)) >= facing && seen(pointAt(middle), -1);
+    };
+    std::size_t outermost = 0;
+    for (std::size_t i = 1; i < count; ++i)
+      if (vOf(section[i]) > vOf(section[outermost]))
+        outermost = i;
+    run.outermost = section[outermost];
+    // The segments on either side of the outermost point, and on from them.
+    double low = std::numeric_limits<double>::infinity(), high = -low, deepest = low;
+    std::vector<char> taken(segments, 0);
+    const std::size_t before = outermost > 0 ? outermost - 1 : (closed ? segments - 1 : segments);
+    for (const auto& [start, way] : { std::make_pair(before, -1), std::make_pair(outermost, 1) })
     {
-      vtkErrorMacro("Cannot make a cutting guide: no face of the bone at the cut faces the approach ("
-                    << d[0] << ", " << d[1] << ", " << d[2] << ") within " << this->MaximumContactAngle
-                    << " degrees.");
-      return 0;
-    }
-  }
-  std::vector<vtkIdType> contact{ seed };
-  std::deque<vtkIdType> queue{ seed };
-  std::vector<char> queued(static_cast<std::size_t>(faces), 0);
-  queued[static_cast<std::size_t>(seed)] = 1;
-  vtkNew<vtkIdList> neighbours;
-  while (!queue.empty())
-  {
-    const vtkIdType f = queue.front();
-    queue.pop_front();
-    const vtkIdType* ids = nullptr;
-    vtkIdType size = 0;
-    bone->GetCellPoints(f, size, ids);
-    const vtkIdType corners[3] = { ids[0], ids[1], ids[2] };
-    for (int k = 0; k < 3; ++k)
-    {
-      bone->GetCellEdgeNeighbors(f, corners[k], corners[(k + 1) % 3], neighbours);
-      for (vtkIdType j = 0; j < neighbours->GetNumberOfIds(); ++j)
+      std::size_t k = start;
+      for (std::size_t step = 0; step < segments && k < segments && !taken[k] && faces(k); ++step)
       {
-        const vtkIdType g = neighbours->GetId(j);
-        if (!queued[static_cast<std::size_t>(g)] && takes(g))
+        taken[k] = 1;
+        for (const Vec& x : { section[k], section[(k + 1) % count] })
         {
-          queued[static_cast<std::size_t>(g)] = 1;
-          queue.push_back(g);
-          contact.push_back(g);
+          low = std::min(low, uOf(x));
+          high = std::max(high, uOf(x));
+          deepest = std::min(deepest, vOf(x));
         }
+        if (way < 0)
+          k = k > 0 ? k - 1 : (closed ? segments - 1 : segments);
+        else
+          k = k + 1 < segments ? k + 1 : (closed ? 0 : segments);
       }
     }
-    if (contact.size() % 1024 == 0 && this->GetAbortExecute())
-      break;
+    if (high >= low)
+    {
+      run.found = true;
+      run.low = low;
+      run.high = high;
+      run.deepest = deepest;
+    }
+    return run;
+  };
+  const Run cutRun = runOf(*loop);
+  double low = cutRun.found ? cutRun.low : 0.0, high = cutRun.found ? cutRun.high : 0.0;
+  const double deepest = cutRun.deepest;
+  if (!(high - low >= this->SlotWidth))
+  {
+    vtkErrorMacro("Cannot make a cutting guide: the bone's section at the cut faces the approach ("
+      << d[0] << ", " << d[1] << ", " << d[2] << ") within " << this->MaximumContactAngle << " degrees over "
+      << high - low << " mm only: no face of the bone at the cut faces the approach enough to rest a guide on.");
+    return 0;
   }
-  this->UpdateProgress(0.5);
+  this->UpdateProgress(0.3);
   if (lkvtk::stopRequested(this, { output }))
     return 1;
-  std::sort(contact.begin(), contact.end());
-  vtkNew<vtkCellArray> contactCells;
-  for (const vtkIdType f : contact)
-  {
-    const vtkIdType* ids = nullptr;
-    vtkIdType size = 0;
-    bone->GetCellPoints(f, size, ids);
-    contactCells->InsertNextCell(size, ids);
-  }
-  vtkNew<vtkPolyData> patch;
-  patch->SetPoints(bone->GetPoints());
-  patch->SetPolys(contactCells);
 
-  // Clipped at +-Reach from the plane.
-  vtkNew<vtkPlane> above, below;
-  above->SetOrigin(add(o, n, this->Reach).data());
-  above->SetNormal(-n[0], -n[1], -n[2]);
-  below->SetOrigin(add(o, n, -this->Reach).data());
-  below->SetNormal(n.data());
-  vtkSmartPointer<vtkPolyData> band = clipped(clipped(patch, above), below);
-  this->ContactArea = areaOf(band);
-
-  // The slot: the contact's extent along the plane, less the bridges.
-  vtkNew<vtkPlane> cutPlane;
-  cutPlane->SetOrigin(o.data());
-  cutPlane->SetNormal(n.data());
-  vtkNew<vtkCutter> across;
-  across->SetInputData(band);
-  across->SetCutFunction(cutPlane);
-  across->Update();
-  double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (vtkIdType i = 0; i < across->GetOutput()->GetNumberOfPoints(); ++i)
-  {
-    Vec x;
-    across->GetOutput()->GetPoint(i, x.data());
-    const double u = dot(add(x, o, -1.0), e);
-    low = std::min(low, u);
-    high = std::max(high, u);
-  }
+  // The slot: between the ends, less the bridges.
   const double slotLength = high - low - 2.0 * this->Bridge;
   if (!(slotLength >= this->SlotWidth))
   {
-    vtkErrorMacro("Cannot make a cutting guide: its contact with the bone at the cut is "
-      << std::max(0.0, high - low) << " mm long along the plane, too short for a slot between two bridges of "
-      << this->Bridge << " mm (a smaller Bridge or a larger MaximumContactAngle?).");
+    vtkErrorMacro("Cannot make a cutting guide: its contact with the bone at the cut is " << high - low
+      << " mm long along the plane, too short for a slot between two bridges of " << this->Bridge
+      << " mm (a smaller Bridge or a larger MaximumContactAngle?).");
     return 0;
   }
-  // The band split along the slot's four sides (each split keeps both
-  // sides, on shared points, so the mesh stays conforming), and the faces
-  // inside the slot taken out.
-  vtkSmartPointer<vtkPolyData> slotted = band;
-  const double ends[2] = { low + this->Bridge, high - this->Bridge };
-  for (int k = 0; k < 4; ++k)
+
+  // The contact: the bone as seen from the approach, over the rectangle
+  // within Reach of the plane and between the ends: a grid of rays along
+  // -d (every 0.25 mm or finer), each stopped at the first face it meets.
+  // A height field along the approach, so the guide comes off along it;
+  // its edges are straight, and the slot's sides and ends are grid lines.
+  double top = -std::numeric_limits<double>::infinity();
+  for (vtkIdType i = 0; i < bone->GetNumberOfPoints(); ++i)
   {
-    vtkNew<vtkPlane> side;
-    const Vec& axis = k < 2 ? n : e;
-    const double at = k < 2 ? (k == 0 ? -1.0 : 1.0) * this->SlotWidth / 2.0 : ends[k - 2];
-    side->SetOrigin(add(o, axis, at).data());
-    side->SetNormal(axis.data());
-    slotted = split(slotted, side);
+    Vec x;
+    bone->GetPoint(i, x.data());
+    top = std::max(top, vOf(x));
   }
-  vtkNew<vtkCellArray> kept;
-  auto cells = vtk::TakeSmartPointer(slotted->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdList* ids = cells->GetCurrentCell();
-    Vec middle{ 0, 0, 0 };
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+  // A ray that meets no bone down to a Reach below the runs' deepest point
+  // passed beside the bone (beyond its edge away from the plane): no
+  // contact there.
+  const double bottom = deepest - this->Reach;
+  auto lines = [](const std::vector<double>& stops, double spacing) {
+    std::vector<double> at{ stops.front() };
+    for (std::size_t k = 1; k < stops.size(); ++k)
     {
-      Vec x;
-      slotted->GetPoint(ids->GetId(k), x.data());
-      middle = add(middle, x, 1.0 / static_cast<double>(ids->GetNumberOfIds()));
+      const int parts = std::max(1, static_cast<int>(std::ceil((stops[k] - stops[k - 1]) / spacing - 1e-9)));
+      for (int j = 1; j <= parts; ++j)
+        at.push_back(stops[k - 1] + (stops[k] - stops[k - 1]) * j / parts);
     }
-    const Vec r = add(middle, o, -1.0);
-    const double s = dot(r, n), u = dot(r, e);
-    if (!(std::abs(s) < this->SlotWidth / 2.0 && u > ends[0] && u < ends[1]))
-      kept->InsertNextCell(ids);
+    return at;
+  };
+  const double spacing = std::max(0.25, std::max(2.0 * this->Reach, high - low) / 600.0);
+  const double half = this->SlotWidth / 2.0;
+  const std::vector<double> across = lines({ -this->Reach, -half, half, this->Reach }, spacing);
+  // The ends a hair inside, so that rays along a box's edge meet it.
+  const double hair = 1e-9 * diagonal;
+  const std::vector<double> along =
+    lines({ low + hair, low + this->Bridge, high - this->Bridge, high - hair }, spacing);
+  const std::size_t rows = across.size(), columns = along.size();
+  vtkNew<vtkPoints> gridPoints;
+  gridPoints->SetDataTypeToDouble();
+  std::vector<vtkIdType> gridId(rows * columns, -1);
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    for (std::size_t c = 0; c < columns; ++c)
+    {
+      const Vec base = add(add(o, n, across[r]), e, along[c]);
+      Vec from = add(base, d, top + 1.0 - vOf(base)), to = add(base, d, bottom - vOf(base));
+      double t = 0.0, x[3], pcoords[3];
+      int subId = 0;
+      vtkIdType hit = -1;
+      if (locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell))
+        gridId[r * columns + c] = gridPoints->InsertNextPoint(x);
+    }
+    this->UpdateProgress(0.3 + 0.3 * static_cast<double>(r + 1) / static_cast<double>(rows));
+    if (this->GetAbortExecute())
+      break;
   }
-  slotted->SetPolys(kept);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
+  // The cells whose four corners met the bone, outside the slot; of those,
+  // the ones joined across cell sides to the cell nearest the middle of the
+  // cut's section (a ray that met a far part of the bone leaves an island).
+  const std::size_t cellRows = rows - 1, cellColumns = columns - 1;
+  std::vector<char> usable(cellRows * cellColumns, 0);
+  for (std::size_t r = 0; r < cellRows; ++r)
+    for (std::size_t c = 0; c < cellColumns; ++c)
+    {
+      const double s = 0.5 * (across[r] + across[r + 1]), u = 0.5 * (along[c] + along[c + 1]);
+      const bool inSlot = std::abs(s) < half && u > low + this->Bridge && u < high - this->Bridge;
+      usable[r * cellColumns + c] = !inSlot && gridId[r * columns + c] >= 0 && gridId[(r + 1) * columns + c] >= 0 &&
+        gridId[(r + 1) * columns + c + 1] >= 0 && gridId[r * columns + c + 1] >= 0;
+    }
+  // A cell nearly along the approach (a triangle's normal more than 80
+  // degrees from it) is a wall where the rays slid off an edge of the bone
+  // and met it farther down: at the contact's edge it is left out, with
+  // what lies beyond it; inside the contact (a step of the scan's
+  // staircase) it stays.
+  std::vector<char> steep(usable.size(), 0);
+  const double wall = std::cos(vtkMath::RadiansFromDegrees(80.0));
+  for (std::size_t r = 0; r < cellRows; ++r)
+    for (std::size_t c = 0; c < cellColumns; ++c)
+    {
+      if (!usable[r * cellColumns + c])
+        continue;
+      Vec corner[4];
+      const vtkIdType ids[4] = { gridId[r * columns + c], gridId[(r + 1) * columns + c],
+        gridId[(r + 1) * columns + c + 1], gridId[r * columns + c + 1] };
+      for (int k = 0; k < 4; ++k)
+        gridPoints->GetPoint(ids[k], corner[k].data());
+      Vec first, second;
+      vtkTriangle::ComputeNormal(corner[0].data(), corner[2].data(), corner[1].data(), first.data());
+      vtkTriangle::ComputeNormal(corner[0].data(), corner[3].data(), corner[2].data(), second.data());
+      steep[r * cellColumns + c] = dot(first, d) < wall || dot(second, d) < wall;
+    }
+  const double middleU = std::clamp(uOf(cutRun.outermost), low, high);
+  std::size_t start = usable.size();
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t r = 0; r < cellRows; ++r)
+    for (std::size_t c = 0; c < cellColumns; ++c)
+    {
+      const double s = 0.5 * (across[r] + across[r + 1]), u = 0.5 * (along[c] + along[c + 1]);
+      const double away = s * s + (u - middleU) * (u - middleU);
+      if (usable[r * cellColumns + c] && !steep[r * cellColumns + c] && away < best)
+      {
+        best = away;
+        start = r * cellColumns + c;
+      }
+    }
+  std::vector<char> joined(usable.size(), 0);
+  if (start < usable.size())
+  {
+    std::deque<std::size_t> queue{ start };
+    joined[start] = 1;
+    while (!queue.empty())
+    {
+      const std::size_t k = queue.front();
+      queue.pop_front();
+      const std::size_t r = k / cellColumns, c = k % cellColumns;
+      const std::size_t next[4] = { r > 0 ? k - cellColumns : k, r + 1 < cellRows ? k + cellColumns : k,
+        c > 0 ? k - 1 : k, c + 1 < cellColumns ? k + 1 : k };
+      for (const std::size_t j : next)
+        if (usable[j] && !steep[j] && !joined[j])
+        {
+          joined[j] = 1;
+          queue.push_back(j);
+        }
+    }
+  }
+  // The cells left out that the joined ones enclose (no way to the grid's
+  // border through cells left out) go back in, if their rays met the bone.
+  {
+    std::vector<char> outside(usable.size(), 0);
+    std::deque<std::size_t> queue;
+    for (std::size_t r = 0; r < cellRows; ++r)
+      for (std::size_t c = 0; c < cellColumns; ++c)
+        if ((r == 0 || c == 0 || r + 1 == cellRows || c + 1 == cellColumns) && !joined[r * cellColumns + c])
+        {
+          outside[r * cellColumns + c] = 1;
+          queue.push_back(r * cellColumns + c);
+        }
+    while (!queue.empty())
+    {
+      const std::size_t k = queue.front();
+      queue.pop_front();
+      const std::size_t r = k / cellColumns, c = k % cellColumns;
+      const std::size_t next[4] = { r > 0 ? k - cellColumns : k, r + 1 < cellRows ? k + cellColumns : k,
+        c > 0 ? k - 1 : k, c + 1 < cellColumns ? k + 1 : k };
+      for (const std::size_t j : next)
+        if (!joined[j] && !outside[j])
+        {
+          outside[j] = 1;
+          queue.push_back(j);
+        }
+    }
+    for (std::size_t k = 0; k < usable.size(); ++k)
+      if (usable[k] && !joined[k] && !outside[k])
+        joined[k] = 1;
+  }
+  // Two triangles a cell, facing the approach (n x e = -d, so (s, u)
+  // clockwise faces +d).
+  vtkNew<vtkCellArray> grid;
+  for (std::size_t r = 0; r < cellRows; ++r)
+    for (std::size_t c = 0; c < cellColumns; ++c)
+    {
+      if (!joined[r * cellColumns + c])
+        continue;
+      const vtkIdType a = gridId[r * columns + c], b = gridId[(r + 1) * columns + c],
+                      q = gridId[(r + 1) * columns + c + 1], w = gridId[r * columns + c + 1];
+      const vtkIdType first[3] = { a, q, b }, second[3] = { a, w, q };
+      grid->InsertNextCell(3, first);
+      grid->InsertNextCell(3, second);
+    }
+  vtkNew<vtkPolyData> contactGrid;
+  contactGrid->SetPoints(gridPoints);
+  contactGrid->SetPolys(grid);
+  vtkNew<vtkCleanPolyData> compact; // the points no cell uses go
+  compact->SetInputData(contactGrid);
+  compact->PointMergingOff();
+  compact->Update();
+  vtkSmartPointer<vtkPolyData> slotted = compact->GetOutput();
+  if (slotted->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("Cannot make a cutting guide: no ray along the approach met the bone at the cut.");
+    return 0;
+  }
+  this->ContactArea = areaOf(slotted);
   this->UpdateProgress(0.7);
   if (lkvtk::stopRequested(this, { output }))
     return 1;

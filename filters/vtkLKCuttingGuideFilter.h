@@ -9,25 +9,32 @@
  * makes the guide of one plane cut (a saw line of the planner, the main
  * job's cut plane).
  *
- * Method (VTK filters only):
+ * Method (VTK's cutter and cell locator, then its extrusion):
  * - The approach: the side of the bone the guide is put on, a direction in
  *   the cut's plane toward the surgeon. Given (Approach), it is projected
  *   into the plane. Left at 0, 0, 0 it is the short axis of the bone's
  *   section in the plane (the loop of vtkCutter's section nearest
  *   PlaneOrigin), turned away from the centre of the whole bone: a
  *   mandible's body or ramus gets its guide on the outer (buccal) side.
- * - The contact: the bone's faces within Reach of the plane on either side
- *   whose normals lie within MaximumContactAngle of the approach and that
- *   nothing of the bone hides along it (a ray from the face toward the
- *   surgeon meets no other face), grown from the section's outermost point
- *   across shared edges. The guide can so be put on and taken off along the
- *   approach, and it never reaches round an edge of the bone. It is clipped
- *   at +-Reach from the plane by vtkClipPolyData.
- * - The slot: the contact's part within SlotWidth / 2 of the plane is taken
- *   out, except for Bridge millimetres at each of its ends along the plane,
- *   which keep the guide in one piece (the saw starts the cut in the slot;
- *   the last millimetres past its ends are finished with the guide off, as
- *   with any printed guide).
+ * - Its extent along the plane: the run of the section around its point
+ *   farthest along the approach that faces the approach within
+ *   MaximumContactAngle (the outward normal of the section's chord over 3
+ *   mm, so that a label map's staircase does not break the run) and that
+ *   no other part of the bone hides.
+ * - The contact: over the rectangle within Reach of the plane on either
+ *   side and that extent along it, a grid of rays (every 0.25 mm) along the
+ *   approach toward the bone, each stopped at the first face it meets
+ *   (vtkStaticCellLocator): the bone as the surgeon sees it, a height field
+ *   along the approach. So the guide can be put on and taken off along the
+ *   approach, never reaches round an edge of the bone, and has straight
+ *   edges. A ray that meets no bone within Reach below the section's part
+ *   leaves its cells out (beside the bone's edge), as does a part joined to
+ *   the rest by no cell side.
+ * - The slot: the grid's cells within SlotWidth / 2 of the plane, except
+ *   for Bridge millimetres at each of the extent's ends, which keep the
+ *   guide in one piece (the saw starts the cut in the slot; the last
+ *   millimetres past its ends are finished with the guide off, as with any
+ *   printed guide). Bridge 0 leaves two blocks.
  * - The shell: the contact moved Clearance along the approach (room for the
  *   periosteum, or for the printer's tolerance) and swept Thickness along it
  *   by vtkLinearExtrusionFilter, capped, oriented outward by

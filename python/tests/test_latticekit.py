@@ -23,7 +23,8 @@ class ImportTest(unittest.TestCase):
                      "vtkLKClosedLineCutFilter", "vtkLKExtractCutPieceFilter",
                      "vtkLKStrokeFeatureLineFilter",
                      "vtkLKWrinklySurfaceFilter", "vtkLKWrinklyNetSource",
-                     "vtkLKPatchDeformationFilter", "vtkLKStructureSetWriter"):
+                     "vtkLKPatchDeformationFilter", "vtkLKStructureSetWriter",
+                     "vtkLKSymmetryPlaneFilter", "vtkLKCuttingGuideFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -834,6 +835,57 @@ class PipelineTest(unittest.TestCase):
         # line and the cavity's (a disc cap would have one).
         self.assertEqual(loops.GetNumberOfExtractedRegions(), 2)
 
+    def test_a_cutting_guide_for_a_saw_cut_of_the_mandible(self):
+        # The chin cut in the mid-sagittal plane: the guide goes on the front
+        # of the jaw (-y in LPS) without being told, closed and outward
+        # facing, ready for STL.
+        import latticekit
+        from vtkmodules.vtkFiltersCore import vtkFeatureEdges, vtkMassProperties
+        from vtkmodules.vtkIOGeometry import vtkSTLWriter
+
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(MANDIBLE)
+        bone = latticekit.vtkLKBoneSurfaceFilter()
+        bone.SetInputConnection(reader.GetOutputPort())
+        guide = latticekit.vtkLKCuttingGuideFilter()
+        guide.SetInputConnection(bone.GetOutputPort())
+        guide.SetPlaneOrigin(0.0728, 276.64, -982.1)
+        guide.SetPlaneNormal(1, 0, 0)
+        guide.SetSlotWidth(1.0)
+        guide.Update()
+        out = guide.GetOutput()
+        self.assertGreater(out.GetNumberOfCells(), 1000)
+        edges = vtkFeatureEdges()
+        edges.SetInputData(out)
+        edges.BoundaryEdgesOn()
+        edges.NonManifoldEdgesOn()
+        edges.FeatureEdgesOff()
+        edges.ManifoldEdgesOff()
+        edges.Update()
+        self.assertEqual(edges.GetOutput().GetNumberOfCells(), 0)
+        mass = vtkMassProperties()
+        mass.SetInputData(out)
+        mass.Update()
+        self.assertAlmostEqual(mass.GetVolume(), guide.GetVolume(), delta=1e-6 * guide.GetVolume())
+        self.assertGreater(guide.GetVolume(), 500.0)
+        self.assertLess(guide.GetApproachUsed()[1], -0.9)
+        fields = out.GetFieldData()
+        self.assertAlmostEqual(fields.GetArray("GuideSlotLength").GetValue(0), guide.GetSlotLength(), places=12)
+        self.assertGreater(guide.GetSlotLength(), 15.0)
+        self.assertEqual(fields.GetAbstractArray("SPACE").GetValue(0), "LPS")  # as the bone says
+        with tempfile.TemporaryDirectory() as tmp:
+            writer = vtkSTLWriter()
+            writer.SetInputData(out)
+            writer.SetFileName(os.path.join(tmp, "guide.stl"))
+            self.assertEqual(writer.Write(), 1)
+        # A plane beside the bone: a VTK error and an empty guide.
+        guide.SetPlaneOrigin(500, 276.64, -982.1)
+        errors = []
+        guide.AddObserver("ErrorEvent", lambda caller, event: errors.append(event))
+        guide.Update()
+        self.assertEqual(guide.GetOutput().GetNumberOfCells(), 0)
+        self.assertEqual(len(errors), 1)
+
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
         # vtkNrrdReader reads nothing; latticekit's reader must not be fooled.
@@ -1001,6 +1053,8 @@ class AbortTest(unittest.TestCase):
             "Bezier IFS": made(latticekit.vtkLKBezierIFSFilter, InputData=control),
             "wrinkly surface": made(latticekit.vtkLKWrinklySurfaceFilter, InputConnection=net.GetOutputPort()),
             "patch deformation": made(latticekit.vtkLKPatchDeformationFilter, InputConnection=flat.GetOutputPort()),
+            "cutting guide": made(latticekit.vtkLKCuttingGuideFilter, InputData=ball, Reach=0.2, SlotWidth=0.1,
+                                  Bridge=0.1, Thickness=0.1),
         }
         for name, make in cases.items():
             f = make()
