@@ -49,6 +49,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -557,6 +558,12 @@ bool isLatticeFileName(const std::string& name)
   static const std::string prefix = "lattice_";
   return name.rfind(prefix, 0) == 0 && lower(vtksys::SystemTools::GetFilenameLastExtension(name)) == ".vtp" &&
     isPieceFileName(name.substr(prefix.size()));
+}
+
+bool isGuideFileName(const std::string& name)
+{
+  static const std::regex guide("guide_stroke[0-9]+[.](stl|vtp)");
+  return std::regex_match(name, guide);
 }
 
 bool isInFolder(const std::string& path, const std::string& folder)

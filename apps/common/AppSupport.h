@@ -124,6 +124,9 @@ bool isPieceFileName(const std::string& name);
 /// Whether a file's name (no folder) is one the planner's export writes for
 /// a piece's lattice: "lattice_", a piece's stem (isPieceFileName), ".vtp".
 bool isLatticeFileName(const std::string& name);
+/// Whether a file's name (no folder) is one the planner's export writes for
+/// a cutting guide: "guide_stroke", digits, ".stl" or ".vtp".
+bool isGuideFileName(const std::string& name);
 /// Whether `path` names a file directly in `folder` (both taken as full
 /// paths, so "./a/b.vtp" is in "a").
 bool isInFolder(const std::string& path, const std::string& folder);

@@ -98,6 +98,13 @@ const char* directionLetter(const std::array<double, 3>& v)
   return letters[axis][v[static_cast<std::size_t>(axis)] >= 0.0 ? 0 : 1];
 }
 
+const char* directionWord(const std::array<double, 3>& v)
+{
+  const std::string letter = directionLetter(v);
+  return letter == "L" ? "the patient's left" : letter == "R" ? "the patient's right" : letter == "A" ? "the front" :
+    letter == "P" ? "the back" : letter == "S" ? "the head" : "the feet";
+}
+
 vtkSmartPointer<vtkImageData> scanOnPlane(vtkImageData* volume, vtkMatrix4x4* dataToPatient, const ViewFrame& frame,
   double side, int pixels, double background)
 {

@@ -57,6 +57,9 @@ std::array<double, 3> inFrame(const ViewFrame& frame, const std::array<double, 3
 /// The patient direction a vector points to most, in LPS: "L", "R", "P",
 /// "A", "S" or "I".
 const char* directionLetter(const std::array<double, 3>& v);
+/// The same in words: "the patient's left", "the patient's right", "the
+/// front", "the back", "the head" or "the feet".
+const char* directionWord(const std::array<double, 3>& v);
 
 /// The volume on the frame's plane: a square of `side` mm centred on the
 /// frame's centre, `pixels` by `pixels` (pixel (i, j) at

@@ -107,10 +107,7 @@ std::string planeOffsetText(const ViewFrame& frame, double offset, bool directio
     return mm + std::string(offset > 0.0 ? "toward the viewer" : "away from the viewer");
   const std::array<double, 3> way{ offset * frame.towardViewer[0], offset * frame.towardViewer[1],
     offset * frame.towardViewer[2] };
-  const std::string letter = directionLetter(way);
-  const char* word = letter == "L" ? "the patient's left" : letter == "R" ? "the patient's right" :
-    letter == "A" ? "the front" : letter == "P" ? "the back" : letter == "S" ? "the head" : "the feet";
-  return mm + std::string("toward ") + word;
+  return mm + std::string("toward ") + directionWord(way);
 }
 
 GreyWindow handWindow(double width, double level)

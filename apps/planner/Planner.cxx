@@ -132,7 +132,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
                     "x: cut (capped) | l: lattice, L: size | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform (bump, box, smooth; drag up/down) | [ ]: tool radius | u: distance, a: angle | Delete: what is pointed at | o: mirror image, O: its plane\n"
-                    "t: name a piece (click it, type, Return) | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
+                    "t: name a piece (click it, type, Return) | k: cutting guides | z: undo  y: redo | w: save session | e: export pieces | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
 {
@@ -527,6 +527,15 @@ void Planner::setup()
   }
   mirrorPlaneActor->GetProperty()->SetOpacity(0.12);
   mirrorPlaneOutline->GetProperty()->SetLineWidth(2.0);
+  // The cutting guides: teal, apart from the pieces, and not picked
+  // (a stroke drawn where a guide lies lands on the bone under it).
+  vtkNew<vtkPolyDataMapper> guideMapper;
+  guideMapper->ScalarVisibilityOff();
+  guideActor->SetMapper(guideMapper);
+  guideActor->GetProperty()->SetColor(0.0, 0.55, 0.6);
+  guideActor->SetVisibility(false);
+  guideActor->PickableOff();
+  renderer->AddActor(guideActor);
   for (vtkActor* actor : { scanPlaneSheet.Get(), scanPlaneOutline.Get() })
   {
     vtkNew<vtkPolyDataMapper> mapper;
@@ -700,6 +709,7 @@ void Planner::rebuild()
     else
       addLine(message, "no mirror image: " + mirror.error);
   }
+  updateGuides();
   showNames();
   sceneMessage = message;
   showScan();
@@ -795,6 +805,13 @@ void Planner::updateStatus()
     else
       std::snprintf(text, sizeof text, " | mirror image: the bone %.2f mm from it", mirror.mean);
     s << text;
+  }
+  if (session.guides)
+  {
+    std::size_t shown = 0;
+    for (const CuttingGuide& g : guides)
+      shown += g.surface ? 1 : 0;
+    s << " | cutting guides: " << shown;
   }
   if (tool != NO_TOOL)
   {
@@ -1069,6 +1086,7 @@ std::string Planner::planText()
   }
   text += segmentText();
   text += mirrorText();
+  text += guidesText();
   // What the cut said (why it failed, a failed stroke) belongs to the plan
   // even when a later key's answer took its place in the window's message.
   std::vector<std::string> said;

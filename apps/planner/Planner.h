@@ -8,7 +8,7 @@
 /// apps/latticekit-planner.cxx. The class is defined in Planner.cxx (the
 /// scene, the status, the plan's text) and, one concern each, in
 /// PlannerCut.cxx, PlannerDeformations.cxx, PlannerLattices.cxx,
-/// PlannerMeasurements.cxx, PlannerNames.cxx, PlannerMirror.cxx,
+/// PlannerMeasurements.cxx, PlannerNames.cxx, PlannerMirror.cxx, PlannerGuides.cxx,
 /// PlannerScanView.cxx and PlannerExport.cxx.
 
 #include "common/CutReport.h"
@@ -241,6 +241,31 @@ public:
   static double degreesFromX(const std::array<double, 3>& normal);
   /// The plan's lines on the mirror image (empty when it is not shown).
   std::string mirrorText() const;
+
+  /// The cutting guides (k, the session's "guides"): one per saw line, on
+  /// the bone as scanned (before the cut, deformations and the segment's
+  /// move), made by vtkLKCuttingGuideFilter and kept while the bone and
+  /// that saw line's plane stay.
+  struct CuttingGuide
+  {
+    std::size_t stroke = 0;                        ///< the saw line's stroke, from 0
+    std::array<double, 3> origin{}, normal{};      ///< its plane, as the guide was made on it
+    vtkSmartPointer<vtkPolyData> surface;          ///< null when it could not be made (error)
+    std::array<double, 3> approach{ 0, 0, 0 };     ///< the side it goes on (unit)
+    double slotLength = 0.0, slotWidth = 0.0, thickness = 0.0, contactArea = 0.0, volume = 0.0;
+    std::string error;
+  };
+  std::vector<CuttingGuide> guides;
+  vtkPolyData* guidesBone = nullptr; ///< the bone (and its time) the guides were made on
+  vtkMTimeType guidesBoneTime = 0;
+  vtkNew<vtkActor> guideActor;
+  /// Makes the guides the session asks for (anew only where a saw line or
+  /// the bone changed), shows them and says in `message` why one failed.
+  void updateGuides();
+  /// The plan's lines on the guides (empty when they are not shown).
+  std::string guidesText() const;
+  /// "guide_stroke<n>", the stem of a guide's files (n from 1).
+  static std::string guideFileStem(std::size_t stroke);
 
   /// The scan the bone surface was made from, in its data coordinates, and
   /// the matrix to the bone's (patient) coordinates; null for a mesh file.

@@ -167,10 +167,10 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     return false;
   }
   if (const std::string name = vtksys::SystemTools::GetFilenameName(input);
-      lkapp::isLatticeFileName(name) && lkapp::isInFolder(input, folder))
+      (lkapp::isLatticeFileName(name) || lkapp::isGuideFileName(name)) && lkapp::isInFolder(input, folder))
   {
-    error = "the input '" + input + "' is a lattice file the export writes or removes in '" + folder +
-      "': export to another folder";
+    error = "the input '" + input + "' is a " + (lkapp::isGuideFileName(name) ? "cutting guide" : "lattice") +
+      " file the export writes or removes in '" + folder + "': export to another folder";
     return false;
   }
   vtksys::SystemTools::MakeDirectory(folder);
@@ -226,6 +226,16 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     for (const char* name : { "mirror.stl", "mirror.vtp" })
       if (!lkapp::writeMesh(mirror.surface, folder + "/" + name, error, space))
         return false;
+  // The cutting guides shown, to print (STL) and to read back (VTP).
+  std::vector<std::string> guideFiles;
+  for (const CuttingGuide& g : guides)
+    if (session.guides && g.surface)
+      for (const char* ext : { ".stl", ".vtp" })
+      {
+        guideFiles.push_back(guideFileStem(g.stroke) + ext);
+        if (!lkapp::writeMesh(g.surface, folder + "/" + guideFiles.back(), error, space))
+          return false;
+      }
   // The CT on each cut line's plane and across it, for the surgeon's notes.
   // A failure here is said at the end too.
   std::vector<std::string> scanPictures;
@@ -249,6 +259,13 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     header += "\n";
     if (!scanShownPicture.empty())
       header += "the view as shown: " + scanShownPicture + " (" + scanShownTitle + ")\n";
+  }
+  if (!guideFiles.empty())
+  {
+    header += "the cutting guides shown:";
+    for (const auto& name : guideFiles)
+      header += " " + name;
+    header += "\n";
   }
   if (!latticeFiles.empty())
   {
@@ -289,9 +306,9 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
     others.push_back("mirror.vtp");
   }
   // The CT pictures of cut lines this plan does not have, and the lattices
-  // it does not show.
+  // and guides it does not show.
   for (const auto& [isKind, written] : { std::make_pair(&isScanPictureName, &scanPictures),
-         std::make_pair(&lkapp::isLatticeFileName, &latticeFiles) })
+         std::make_pair(&lkapp::isLatticeFileName, &latticeFiles), std::make_pair(&lkapp::isGuideFileName, &guideFiles) })
     for (const std::string& name : lkapp::filesNotWritten(folder, isKind, *written))
       others.push_back(name);
   if (!lkapp::removeStaleExports(folder, stems, others, error))

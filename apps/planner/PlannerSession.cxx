@@ -100,6 +100,8 @@ std::string sessionText(const Session& s)
   root["latticeVertices"] = static_cast<Json::Int64>(s.latticeVertices);
   root["metro"] = s.metro;
   root["mirror"] = s.mirror;
+  if (s.guides)
+    root["guides"] = true;
   if (s.scanOnLine > 0)
     root["scanOnLine"] = s.scanOnLine;
   if (s.scanAcross)
@@ -324,7 +326,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "patient", "segment",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "guides", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "patient", "segment",
       "deformations", "names",
       "measurements",
       "surface", "input" },
@@ -399,6 +401,7 @@ bool readSession(
     !jsonMember(root, "lattice", s.lattice, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "metro", s.metro, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "mirror", s.mirror, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "guides", s.guides, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "scanAcross", s.scanAcross, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "latticeVertices", vertices, count, session, kLatticeVerticesRange, error))
     return false;

@@ -16,6 +16,7 @@
 //   "mirror": bool                                    the bone's mirror image across its
 //                                                     plane of symmetry, and the segment's
 //                                                     distance to it
+//   "guides": bool                                    a cutting guide for each saw line
 //   "mirrorPlane": [[x, y, z], [x, y, z], [x, y, z]]  the plane to mirror across, set by
 //                                                     three points (midline landmarks;
 //                                                     none: the fitted plane)
@@ -197,6 +198,9 @@ struct Session
   /// The bone's mirror image across its plane of symmetry, shown as the
   /// template of mirror-image planning (o).
   bool mirror = false;
+  /// A cutting guide for each saw line (k): a shell on the bone across the
+  /// saw's plane with a slot for the blade (vtkLKCuttingGuideFilter).
+  bool guides = false;
   /// The scan on cut line k's plane (c), k from 1 (the plan's numbering of
   /// the cut lines); 0: not shown.
   int scanOnLine = 0;

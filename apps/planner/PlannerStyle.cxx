@@ -1032,10 +1032,10 @@ void PlannerStyle::OnChar()
     planner->mode = key[0] - '1';
     rebuild = false;
   }
-  else if (key == "x" || key == "l" || key == "m" || key == "o")
+  else if (key == "x" || key == "l" || key == "m" || key == "o" || key == "k")
   {
     planner->remember();
-    bool& flag = key == "x" ? s.cut : key == "l" ? s.lattice : key == "m" ? s.metro : s.mirror;
+    bool& flag = key == "x" ? s.cut : key == "l" ? s.lattice : key == "m" ? s.metro : key == "o" ? s.mirror : s.guides;
     flag = !flag;
   }
   else if (key == "c")

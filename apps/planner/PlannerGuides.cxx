@@ -1,0 +1,132 @@
+// latticekit-planner: the cutting guides (k): for each saw line, a shell on
+// the bone across the saw's plane with a slot for the blade, to print.
+#include "planner/Planner.h"
+#include "planner/PlannerShared.h"
+
+#include "common/AppSupport.h"
+#include "common/ScanOnPlane.h"
+
+#include "vtkLKCuttingGuideFilter.h"
+
+#include <vtkActor.h>
+#include <vtkAppendPolyData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace lkplanner
+{
+
+std::string Planner::guideFileStem(std::size_t stroke)
+{
+  return "guide_stroke" + std::to_string(stroke + 1);
+}
+
+void Planner::updateGuides()
+{
+  guideActor->SetVisibility(false);
+  if (!session.guides)
+    return;
+  if (guidesBone != bone.Get() || guidesBoneTime != bone->GetMTime())
+    guides.clear(); // another bone: every guide anew
+  guidesBone = bone;
+  guidesBoneTime = bone->GetMTime();
+  std::vector<CuttingGuide> made;
+  for (std::size_t i = 0; i < session.strokes.size(); ++i)
+  {
+    const Stroke& st = session.strokes[i];
+    if (!st.saw)
+      continue;
+    // The plane through a point of the section the saw line cut along: the
+    // guide goes on that part of the bone.
+    const std::array<double, 3> origin = st.points.empty() ? st.sawOrigin : st.points.front();
+    bool kept = false;
+    for (const CuttingGuide& g : guides)
+      if (g.stroke == i && g.origin == origin && g.normal == st.sawNormal)
+      {
+        made.push_back(g);
+        kept = true;
+        break;
+      }
+    if (kept)
+      continue;
+    CuttingGuide g;
+    g.stroke = i;
+    g.origin = origin;
+    g.normal = st.sawNormal;
+    vtkNew<vtkLKCuttingGuideFilter> filter;
+    filter->SetInputData(facesOnly(bone));
+    filter->SetPlaneOrigin(origin.data());
+    filter->SetPlaneNormal(st.sawNormal.data());
+    const int before = lkapp::errorCount();
+    filter->Update();
+    if (filter->GetOutput()->GetNumberOfPolys() == 0)
+      g.error = lkapp::errorCount() > before ? lkapp::errorsSince(before) : std::string("no guide was made");
+    else
+    {
+      g.surface = vtkSmartPointer<vtkPolyData>::New();
+      g.surface->ShallowCopy(filter->GetOutput());
+      filter->GetApproachUsed(g.approach.data());
+      g.slotLength = filter->GetSlotLength();
+      g.contactArea = filter->GetContactArea();
+      g.volume = filter->GetVolume();
+      g.slotWidth = filter->GetSlotWidth();
+      g.thickness = filter->GetThickness();
+    }
+    made.push_back(g);
+  }
+  guides = made;
+  if (guides.empty())
+  {
+    addLine(message, "cutting guides (k) are made for saw lines (p): this plan has none");
+    return;
+  }
+  vtkNew<vtkAppendPolyData> all;
+  for (const CuttingGuide& g : guides)
+  {
+    if (g.surface)
+      all->AddInputData(g.surface);
+    else
+      addLine(message, "no cutting guide for the saw line of stroke " + std::to_string(g.stroke + 1) + ": " + g.error);
+  }
+  if (all->GetNumberOfInputConnections(0) == 0)
+    return;
+  all->Update();
+  vtkPolyDataMapper::SafeDownCast(guideActor->GetMapper())->SetInputData(all->GetOutput());
+  guideActor->SetVisibility(true);
+}
+
+std::string Planner::guidesText() const
+{
+  std::string text;
+  if (!session.guides)
+    return text;
+  for (const CuttingGuide& g : guides)
+  {
+    if (!g.surface)
+      continue; // its message says why
+    // The side it goes on, in the patient's words where the bone's
+    // coordinates are known (LPS).
+    std::array<double, 3> along{ -g.approach[0], -g.approach[1], -g.approach[2] };
+    for (double& v : along)
+      v = std::abs(v) < 5e-4 ? 0.0 : v; // no "-0.000"
+    const std::string side = lkapp::coordinateSpace(bone) == "LPS"
+      ? std::string("from ") + lkapp::directionWord(g.approach) + " "
+      : std::string();
+    char line[400];
+    std::snprintf(line, sizeof line,
+      "cutting guide for the saw line of stroke %zu: slot %.1f mm long and %.1f mm wide in the saw's plane, "
+      "walls %.1f mm thick, resting on %.0f mm^2 of bone, put on %s(along (%.3f, %.3f, %.3f)); %.0f mm^3 (%s.stl)\n",
+      g.stroke + 1, g.slotLength, g.slotWidth, g.thickness, g.contactArea, side.c_str(), along[0], along[1], along[2],
+      g.volume, guideFileStem(g.stroke).c_str());
+    text += line;
+  }
+  return text;
+}
+
+} // namespace lkplanner
