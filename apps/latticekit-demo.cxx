@@ -14,6 +14,7 @@
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKExtractCutPieceFilter.h"
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
@@ -646,6 +647,31 @@ int main(int argc, char* argv[])
         return 1;
       }
 
+  // The cutting guide: the plan's cut is a plane cut, so a printed guide
+  // with a slot in that plane takes it to the patient.
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(mandible);
+  guide->SetPlaneOrigin(plan.origin.data());
+  guide->SetPlaneNormal(plan.normal.data());
+  std::string guideError;
+  {
+    const int before = lkapp::errorCount();
+    {
+      lkapp::ProgressBar bar(guide, "cutting guide", !quiet);
+      guide->Update();
+    }
+    if (guide->GetOutput()->GetNumberOfPolys() == 0)
+      guideError = lkapp::errorCount() > before ? lkapp::errorsSince(before) : std::string("no guide was made");
+    if (before == 0)
+      lkapp::clearErrors(); // the plan goes on without it; the report says why
+  }
+  for (const char* name : { "guide.stl", "guide.vtp" })
+    if (guideError.empty() && !lkapp::writeMesh(guide->GetOutput(), folder + "/" + name, error, space))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+
   // 5. Table 2: no cut / cut / cut with quads (and refinement). Each piece
   //    keeps its locked lines' vertices; with fewer free vertices than
   //    locked ones the pieces' lattices are fans of slivers off the line
@@ -709,6 +735,20 @@ int main(int argc, char* argv[])
          << ":";
   for (std::size_t p = 0; p < pieces.size(); ++p)
     report << " piece " << p << " " << pieces[p]->GetNumberOfPolys() << " triangles" << (p + 1 < pieces.size() ? ";" : ".");
+  if (guideError.empty())
+  {
+    char text[400];
+    std::snprintf(text, sizeof text,
+      "\n- Cutting guide (`guide.stl`): a shell %.1f mm thick on %.0f mm^2 of the bone within %.0f mm of the cut "
+      "plane, on the side the section's short axis points to away from the mandible's centre (put on along "
+      "(%.3f, %.3f, %.3f)), with a slot %.1f mm wide and %.1f mm long in the plane for the saw; %.0f mm^3.",
+      guide->GetThickness(), guide->GetContactArea(), guide->GetReach(), -guide->GetApproachUsed()[0],
+      -guide->GetApproachUsed()[1], -guide->GetApproachUsed()[2], guide->GetSlotWidth(), guide->GetSlotLength(),
+      guide->GetVolume());
+    report << text;
+  }
+  else
+    report << "\n- No cutting guide: " << guideError;
   report << "\n\n## Table 2 (as in the paper): lattices at " << plan.vertices
          << " control vertices in all\n\n"
          << "Metro: symmetric Hausdorff distance between the lattice surfaces (one Doo-Sabin step, Gregory "
@@ -724,7 +764,8 @@ int main(int argc, char* argv[])
       r.name.c_str(), r.vertices, r.triangles, r.quads, r.polygons, r.bytes, r.max, r.mean, r.rms, r.seconds);
     report << text;
   }
-  report << "\nFiles: `mandible.vtp`/`.stl`, `stroke.vtp`, `cut_line.vtp`, `piece0`/`piece1` (`.stl` for "
+  report << "\nFiles: `mandible.vtp`/`.stl`, `stroke.vtp`, `cut_line.vtp`, " << (guideError.empty() ? "`guide.stl`/`.vtp`, " : "")
+         << "`piece0`/`piece1` (`.stl` for "
             "printing, `.vtp`, `.obj`), `lattice_whole.vtp`, `lattice_piece*.vtp`, `lattice_quads_piece*.vtp`, "
             "`lattice_surface_cut.vtp`, `lattice_surface_quads.vtp` (with the Metro distance)";
 
@@ -740,8 +781,14 @@ int main(int argc, char* argv[])
     tube->Update();
     auto tubePd = vtkSmartPointer<vtkPolyData>::New();
     tubePd->ShallowCopy(tube->GetOutput());
-    bool ok = renderPng({ surfaceActor(mandible, boneColour), surfaceActor(tubePd, red) }, nullptr,
-      "the plan: the osteotomy line (red) from the scripted stroke", plan, folder + "/plan.png", display, error);
+    const double teal[3] = { 0.0, 0.55, 0.6 };
+    std::vector<vtkSmartPointer<vtkActor>> planActors{ surfaceActor(mandible, boneColour), surfaceActor(tubePd, red) };
+    if (guideError.empty())
+      planActors.push_back(surfaceActor(guide->GetOutput(), teal));
+    bool ok = renderPng(planActors, nullptr,
+      guideError.empty() ? "the plan: the osteotomy line (red) from the scripted stroke, its cutting guide (teal)"
+                         : "the plan: the osteotomy line (red) from the scripted stroke",
+      plan, folder + "/plan.png", display, error);
     std::vector<vtkSmartPointer<vtkActor>> actors;
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
