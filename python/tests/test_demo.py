@@ -70,6 +70,18 @@ class DemoTest(unittest.TestCase):
                 self.assertEqual(open_edges(read("piece%d.vtp" % p)).GetNumberOfCells(), 0, "piece %d is not closed" % p)
             self.assertIsNotNone(read("lattice_surface_quads.vtp").GetPointData().GetArray("Distance"))
 
+            # The cutting guide: closed, on the bone's outer side of the plan's
+            # cut plane, its slot in that plane, as the report says.
+            guide = read("guide.vtp")
+            self.assertEqual(open_edges(guide).GetNumberOfCells(), 0, "the guide is not closed")
+            self.assertGreater(os.path.getsize(os.path.join(out, "guide.stl")), 0)
+            m = re.search(r"Cutting guide \(`guide.stl`\): a shell 4.0 mm thick on ([0-9]+) mm\^2 of the bone .* with a "
+                          r"slot 1.2 mm wide and ([0-9.]+) mm long in the plane for the saw; ([0-9]+) mm\^3", report)
+            self.assertIsNotNone(m, report)
+            self.assertGreater(float(m.group(1)), 200)
+            self.assertGreater(float(m.group(2)), 10)
+            self.assertAlmostEqual(float(m.group(3)), guide.GetFieldData().GetArray("GuideVolume").GetValue(0), delta=1)
+
             # The saved surface and cut line fit together: the line's MeshPointId
             # name mandible.vtp's points (the surface with the line split in), so
             # the two files cut again into the same pieces.
