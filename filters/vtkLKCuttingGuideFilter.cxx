@@ -254,16 +254,30 @@ int vtkLKCuttingGuideFilter::RequestData(
         best = k;
       }
     }
-    // Away from the centre of the whole bone.
-    Vec boneCentre{ 0, 0, 0 };
-    const vtkIdType count = bone->GetNumberOfPoints();
-    for (vtkIdType i = 0; i < count; ++i)
+    // Away from the centre of the bone round the cut (within twice the
+    // section's size of its centre, 30 mm at least): a mandible's arch
+    // curves in on both sides of a cut, so that centre lies inside it, on a
+    // mandible alone as on a whole skull (whose own centre is the
+    // cranium's, above and behind).
+    double size = 0.0;
+    for (const Vec& x : *loop)
+      size = std::max(size, std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), centre.data())));
+    const double near2 = std::pow(std::max(30.0, 4.0 * size), 2);
+    Vec around{ 0, 0, 0 };
+    vtkIdType counted = 0;
+    for (vtkIdType i = 0; i < bone->GetNumberOfPoints(); ++i)
     {
-      double x[3];
-      bone->GetPoint(i, x);
-      boneCentre = add(boneCentre, { x[0], x[1], x[2] }, 1.0 / static_cast<double>(count));
+      Vec x;
+      bone->GetPoint(i, x.data());
+      if (vtkMath::Distance2BetweenPoints(x.data(), centre.data()) <= near2)
+      {
+        around = add(around, x);
+        ++counted;
+      }
     }
-    if (dot(add(centre, boneCentre, -1.0), d) < 0.0)
+    if (counted > 0)
+      around = { around[0] / counted, around[1] / counted, around[2] / counted };
+    if (dot(add(centre, around, -1.0), d) < 0.0)
       d = { -d[0], -d[1], -d[2] };
   }
   vtkMath::Normalize(d.data());

@@ -14,8 +14,11 @@
  *   the cut's plane toward the surgeon. Given (Approach), it is projected
  *   into the plane. Left at 0, 0, 0 it is the short axis of the bone's
  *   section in the plane (the loop of vtkCutter's section nearest
- *   PlaneOrigin), turned away from the centre of the whole bone: a
- *   mandible's body or ramus gets its guide on the outer (buccal) side.
+ *   PlaneOrigin), turned away from the centre of the bone round the cut
+ *   (within twice the section's size, 30 mm at least): a mandible's arch
+ *   curves in on both sides of a cut, so its body or ramus gets the guide
+ *   on the outer (buccal) side, the chin on its front, on a mandible alone
+ *   or on a whole skull.
  * - Its extent along the plane: the run of the section around its point
  *   farthest along the approach that faces the approach within
  *   MaximumContactAngle (the outward normal of the section's chord over 3
@@ -80,7 +83,7 @@ public:
   ///@{
   /// The side the guide goes on: a direction from the bone toward the
   /// surgeon, projected into the plane. Default 0, 0, 0: the section's short
-  /// axis, away from the bone's centre (see above).
+  /// axis, away from the centre of the bone round the cut (see above).
   vtkSetVector3Macro(Approach, double);
   vtkGetVector3Macro(Approach, double);
   ///@}
