@@ -1,5 +1,6 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKAbort.h"
+#include "vtkLKFieldValues.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -525,11 +526,9 @@ int vtkLKCuttingGuideFilter::RequestData(
         start = r * cellColumns + c;
       }
     }
-  std::vector<char> joined(usable.size(), 0);
-  if (start < usable.size())
-  {
-    std::deque<std::size_t> queue{ start };
-    joined[start] = 1;
+  // Marks in `mark` the cells reachable across cell sides from those in
+  // `queue` (marked already) through cells `passes` lets through.
+  auto flood = [&](std::deque<std::size_t> queue, std::vector<char>& mark, const auto& passes) {
     while (!queue.empty())
     {
       const std::size_t k = queue.front();
@@ -538,39 +537,32 @@ int vtkLKCuttingGuideFilter::RequestData(
       const std::size_t next[4] = { r > 0 ? k - cellColumns : k, r + 1 < cellRows ? k + cellColumns : k,
         c > 0 ? k - 1 : k, c + 1 < cellColumns ? k + 1 : k };
       for (const std::size_t j : next)
-        if (usable[j] && !steep[j] && !joined[j])
+        if (!mark[j] && passes(j))
         {
-          joined[j] = 1;
+          mark[j] = 1;
           queue.push_back(j);
         }
     }
+  };
+  std::vector<char> joined(usable.size(), 0);
+  if (start < usable.size())
+  {
+    joined[start] = 1;
+    flood({ start }, joined, [&](std::size_t j) { return usable[j] && !steep[j]; });
   }
   // The cells left out that the joined ones enclose (no way to the grid's
   // border through cells left out) go back in, if their rays met the bone.
   {
     std::vector<char> outside(usable.size(), 0);
-    std::deque<std::size_t> queue;
+    std::deque<std::size_t> border;
     for (std::size_t r = 0; r < cellRows; ++r)
       for (std::size_t c = 0; c < cellColumns; ++c)
         if ((r == 0 || c == 0 || r + 1 == cellRows || c + 1 == cellColumns) && !joined[r * cellColumns + c])
         {
           outside[r * cellColumns + c] = 1;
-          queue.push_back(r * cellColumns + c);
+          border.push_back(r * cellColumns + c);
         }
-    while (!queue.empty())
-    {
-      const std::size_t k = queue.front();
-      queue.pop_front();
-      const std::size_t r = k / cellColumns, c = k % cellColumns;
-      const std::size_t next[4] = { r > 0 ? k - cellColumns : k, r + 1 < cellRows ? k + cellColumns : k,
-        c > 0 ? k - 1 : k, c + 1 < cellColumns ? k + 1 : k };
-      for (const std::size_t j : next)
-        if (!joined[j] && !outside[j])
-        {
-          outside[j] = 1;
-          queue.push_back(j);
-        }
-    }
+    flood(border, outside, [&](std::size_t j) { return !joined[j]; });
     for (std::size_t k = 0; k < usable.size(); ++k)
       if (usable[k] && !joined[k] && !outside[k])
         joined[k] = 1;
@@ -664,17 +656,11 @@ int vtkLKCuttingGuideFilter::RequestData(
   std::copy(d.begin(), d.end(), this->ApproachUsed);
   this->SlotLength = slotLength;
   this->Volume = mass->GetVolume();
-  auto addField = [&](const char* name, const double* v, int components) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->SetNumberOfComponents(components);
-    a->InsertNextTuple(v);
-    output->GetFieldData()->AddArray(a);
-  };
-  addField("GuideApproach", this->ApproachUsed, 3);
-  addField("GuideSlotLength", &this->SlotLength, 1);
-  addField("GuideContactArea", &this->ContactArea, 1);
-  addField("GuideVolume", &this->Volume, 1);
+  vtkFieldData* fd = output->GetFieldData();
+  lkvtk::addFieldValues(fd, "GuideApproach", this->ApproachUsed, 3);
+  lkvtk::addFieldValue(fd, "GuideSlotLength", this->SlotLength);
+  lkvtk::addFieldValue(fd, "GuideContactArea", this->ContactArea);
+  lkvtk::addFieldValue(fd, "GuideVolume", this->Volume);
   this->UpdateProgress(1.0);
   return 1;
 }

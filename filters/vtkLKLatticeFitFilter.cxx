@@ -1,4 +1,5 @@
 #include "vtkLKLatticeFitFilter.h"
+#include "vtkLKFieldValues.h"
 #include "vtkLKAbort.h"
 #include "vtkLKProgressRelay.h"
 
@@ -41,13 +42,7 @@ vtkStandardNewMacro(vtkLKLatticeFitFilter);
 
 namespace
 {
-void addValue(vtkFieldData* fd, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->InsertNextValue(value);
-  fd->AddArray(a);
-}
+using lkvtk::addFieldValue;
 
 struct Fit
 {
@@ -522,14 +517,14 @@ int vtkLKLatticeFitFilter::RequestData(
          "Hausdorff_Max", "Hausdorff_Mean", "Hausdorff_RMS", "Hausdorff_MaxPercent", "Hausdorff_MeanPercent",
          "Hausdorff_RMSPercent", "DisplayPolygons", "Patches" })
     fd->RemoveArray(name);
-  addValue(fd, "ControlVertices", static_cast<double>(fit.lattice.points.size()));
-  addValue(fd, "Triangles", static_cast<double>(fit.lattice.faces.size() - fit.quads));
-  addValue(fd, "Quads", static_cast<double>(fit.quads));
-  addValue(fd, "FeatureEdges", static_cast<double>(fit.features.size()));
+  addFieldValue(fd, "ControlVertices", static_cast<double>(fit.lattice.points.size()));
+  addFieldValue(fd, "Triangles", static_cast<double>(fit.lattice.faces.size() - fit.quads));
+  addFieldValue(fd, "Quads", static_cast<double>(fit.quads));
+  addFieldValue(fd, "FeatureEdges", static_cast<double>(fit.features.size()));
   if (searching)
   {
     // The search's trials, in order: count and Hausdorff error (%).
-    addValue(fd, "ErrorBoundTrials", static_cast<double>(errorBoundTrials.size()));
+    addFieldValue(fd, "ErrorBoundTrials", static_cast<double>(errorBoundTrials.size()));
     vtkNew<vtkDoubleArray> trials;
     trials->SetName("ErrorBoundTrialCountAndError");
     trials->SetNumberOfComponents(2);
@@ -539,12 +534,12 @@ int vtkLKLatticeFitFilter::RequestData(
   }
   if (this->Refinement)
   {
-    addValue(fd, "RefinementInitialRMS", fit.refinement.initialRms);
-    addValue(fd, "RefinementFinalRMS", fit.refinement.finalRms);
-    addValue(fd, "RefinementIterations", fit.refinement.iterations);
-    addValue(fd, "RefinementSamples", static_cast<double>(fit.samples));
-    addValue(fd, "RefinementInsertions", fit.insertions);
-    addValue(fd, "RefinementInsertionsRefused", fit.insertionsRefused);
+    addFieldValue(fd, "RefinementInitialRMS", fit.refinement.initialRms);
+    addFieldValue(fd, "RefinementFinalRMS", fit.refinement.finalRms);
+    addFieldValue(fd, "RefinementIterations", fit.refinement.iterations);
+    addFieldValue(fd, "RefinementSamples", static_cast<double>(fit.samples));
+    addFieldValue(fd, "RefinementInsertions", fit.insertions);
+    addFieldValue(fd, "RefinementInsertionsRefused", fit.insertionsRefused);
   }
 
   vertexMap->ShallowCopy(input);

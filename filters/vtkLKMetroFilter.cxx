@@ -1,4 +1,5 @@
 #include "vtkLKMetroFilter.h"
+#include "vtkLKFieldValues.h"
 #include "vtkLKAbort.h"
 
 #include "latticekit/ClosestPointTree.h"
@@ -34,10 +35,7 @@ namespace
 {
 void addValue(vtkFieldData* fd, const std::string& name, double value)
 {
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name.c_str());
-  a->InsertNextValue(value);
-  fd->AddArray(a);
+  lkvtk::addFieldValue(fd, name.c_str(), value);
 }
 
 void addStatistics(

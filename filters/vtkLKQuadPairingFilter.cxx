@@ -1,4 +1,5 @@
 #include "vtkLKQuadPairingFilter.h"
+#include "vtkLKFieldValues.h"
 #include "vtkLKAbort.h"
 
 #include "latticekit/QuadPairing.h"
@@ -100,12 +101,7 @@ int vtkLKQuadPairingFilter::RequestData(
     origin->InsertNextValue(src);
   }
   outCd->AddArray(origin);
-  auto add = [&](const char* name, double v) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(v);
-    output->GetFieldData()->AddArray(a);
-  };
+  auto add = [&](const char* name, double v) { lkvtk::addFieldValue(output->GetFieldData(), name, v); };
   add("Quads", static_cast<double>(r.quads));
   add("Triangles", static_cast<double>(r.lattice.faces.size() - r.quads));
   this->UpdateProgress(1.0);

@@ -1,5 +1,6 @@
 #include "vtkLKSymmetryPlaneFilter.h"
 #include "vtkLKAbort.h"
+#include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
 
 #include "latticekit/SymmetryPlane.h"
@@ -180,18 +181,12 @@ int vtkLKSymmetryPlaneFilter::RequestData(
   this->MeanDistance = plane.meanDistance;
   this->MaximumDistance = plane.maximumDistance;
   this->KeptFraction = plane.keptFraction;
-  auto add = [&](const char* name, const double* v, int components) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->SetNumberOfComponents(components);
-    a->InsertNextTuple(v);
-    output->GetFieldData()->AddArray(a);
-  };
-  add("SymmetryPlaneOrigin", this->PlaneOrigin, 3);
-  add("SymmetryPlaneNormal", this->PlaneNormal, 3);
-  add("SymmetryMeanDistance", &this->MeanDistance, 1);
-  add("SymmetryMaximumDistance", &this->MaximumDistance, 1);
-  add("SymmetryKeptFraction", &this->KeptFraction, 1);
+  vtkFieldData* fd = output->GetFieldData();
+  lkvtk::addFieldValues(fd, "SymmetryPlaneOrigin", this->PlaneOrigin, 3);
+  lkvtk::addFieldValues(fd, "SymmetryPlaneNormal", this->PlaneNormal, 3);
+  lkvtk::addFieldValue(fd, "SymmetryMeanDistance", this->MeanDistance);
+  lkvtk::addFieldValue(fd, "SymmetryMaximumDistance", this->MaximumDistance);
+  lkvtk::addFieldValue(fd, "SymmetryKeptFraction", this->KeptFraction);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -3,6 +3,7 @@
 /// Shared helpers of the filter tests: the sample data folder, conversion to
 /// the core mesh type, and recorders of VTK errors and progress.
 
+#include "latticekit/ManifoldRepair.h"
 #include "latticekit/TriangleMesh.h"
 #include "vtkLKPolyDataConversion.h"
 
@@ -12,6 +13,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkFeatureEdges.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
 #include <vtkPolyData.h>
@@ -39,6 +41,28 @@ inline lk::TriangleMesh toCore(vtkPolyData* pd)
   const std::string problem = lkvtk::toTriangleMesh(pd, m);
   EXPECT_EQ(problem, "");
   return m;
+}
+
+/// The volume a closed triangle surface encloses, positive when its faces
+/// are ordered with their normals pointing out (the core's, on the filters'
+/// conversion).
+inline double signedVolume(vtkPolyData* pd)
+{
+  return lk::signedVolume(toCore(pd));
+}
+
+/// The edges of `pd` met by one face or by more than two (0: closed and
+/// manifold).
+inline vtkIdType openOrNonManifoldEdges(vtkPolyData* pd)
+{
+  vtkNew<vtkFeatureEdges> edges;
+  edges->SetInputData(pd);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfLines();
 }
 
 /// Records the ErrorEvents (and their messages) of one VTK object; while it

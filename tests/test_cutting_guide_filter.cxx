@@ -12,7 +12,6 @@
 #include <vtkCleanPolyData.h>
 #include <vtkCubeSource.h>
 #include <vtkDataArray.h>
-#include <vtkFeatureEdges.h>
 #include <vtkFieldData.h>
 #include <vtkGenericCell.h>
 #include <vtkImplicitPolyDataDistance.h>
@@ -28,43 +27,6 @@
 
 namespace
 {
-/// The volume a closed triangle surface encloses, positive when its faces
-/// are ordered with their normals pointing out (divergence theorem).
-double signedVolume(vtkPolyData* pd)
-{
-  double volume = 0.0;
-  auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    double a[3], b[3], c[3], bc[3];
-    pd->GetPoint(ids[0], a);
-    for (vtkIdType k = 1; k + 1 < n; ++k)
-    {
-      pd->GetPoint(ids[k], b);
-      pd->GetPoint(ids[k + 1], c);
-      vtkMath::Cross(b, c, bc);
-      volume += vtkMath::Dot(a, bc) / 6.0;
-    }
-  }
-  return volume;
-}
-
-/// Edges met by other than two faces (open or non-manifold).
-vtkIdType badEdges(vtkPolyData* pd)
-{
-  vtkNew<vtkFeatureEdges> edges;
-  edges->SetInputData(pd);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfCells();
-}
-
 /// A closed box 40 x 20 x 30 mm centred at the origin, in triangles, each
 /// face cut into 4^2 x 2 triangles.
 vtkSmartPointer<vtkPolyData> box()
@@ -105,13 +67,13 @@ TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
   guide->Update();
   vtkPolyData* out = guide->GetOutput();
   ASSERT_GT(out->GetNumberOfCells(), 0);
-  EXPECT_EQ(badEdges(out), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   // The face y = -10 within 8 mm of the plane: 16 x 30 mm. The slot: 1.2 mm
   // wide, the contact's 30 mm less two bridges of 3 mm, 4 mm deep.
   EXPECT_NEAR(guide->GetContactArea(), 16.0 * 30.0 - 1.2 * 24.0, 1e-4);
   EXPECT_NEAR(guide->GetSlotLength(), 24.0, 1e-6);
   EXPECT_NEAR(guide->GetVolume(), 16.0 * 30.0 * 4.0 - 1.2 * 24.0 * 4.0, 1e-3);
-  EXPECT_NEAR(signedVolume(out), guide->GetVolume(), 1e-3); // faces oriented outward
+  EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-3); // faces oriented outward
   EXPECT_NEAR(guide->GetApproachUsed()[0], 0.0, 1e-12);
   EXPECT_NEAR(guide->GetApproachUsed()[1], -1.0, 1e-12);
   EXPECT_NEAR(field(out, "GuideApproach", 1), -1.0, 1e-12);
@@ -143,7 +105,7 @@ TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
   guide->SetReach(5.0);
   guide->Update();
   EXPECT_NEAR(guide->GetVolume(), 10.0 * 30.0 * 2.5 - 2.0 * 28.0 * 2.5, 1e-3);
-  EXPECT_EQ(badEdges(guide->GetOutput()), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(guide->GetOutput()), 0);
 }
 
 TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
@@ -161,8 +123,8 @@ TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
   guide->Update();
   EXPECT_NEAR(guide->GetContactArea(), 16.0 * 30.0 + 16.0 * 20.0 - 1.2 * (50.0 / std::sqrt(2.0) - 6.0) * std::sqrt(2.0), 2.0);
   EXPECT_NEAR(guide->GetSlotLength(), 50.0 / std::sqrt(2.0) - 6.0, 1e-6);
-  EXPECT_EQ(badEdges(guide->GetOutput()), 0);
-  EXPECT_NEAR(signedVolume(guide->GetOutput()), guide->GetVolume(), 1e-3);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(guide->GetOutput()), 0);
+  EXPECT_NEAR(lktest::signedVolume(guide->GetOutput()), guide->GetVolume(), 1e-3);
   EXPECT_GT(guide->GetVolume(), 0.0);
 
   lktest::ErrorRecorder errors(guide);
@@ -202,9 +164,9 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
     guide->Update();
     vtkPolyData* out = guide->GetOutput();
     ASSERT_GT(out->GetNumberOfCells(), 0);
-    EXPECT_EQ(badEdges(out), 0);
+    EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
     EXPECT_GT(guide->GetVolume(), 500.0);
-    EXPECT_NEAR(signedVolume(out), guide->GetVolume(), 1e-6 * guide->GetVolume());
+    EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-6 * guide->GetVolume());
     EXPECT_GT(guide->GetSlotLength(), 15.0);
     EXPECT_GT(guide->GetContactArea(), 300.0);
     const double* d = guide->GetApproachUsed();

@@ -48,18 +48,6 @@ vtkSmartPointer<vtkPolyData> toVtk(const lk::PolygonMesh& m)
   return pd;
 }
 
-vtkIdType openOrNonManifoldEdges(vtkPolyData* pd)
-{
-  vtkNew<vtkFeatureEdges> edges;
-  edges->SetInputData(pd);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfLines();
-}
-
 /// Fraction of triangles whose winding agrees with the derivative normals at their corners.
 double orientationAgreement(vtkPolyData* pd)
 {
@@ -100,7 +88,7 @@ TEST(LatticeSurfaceFilter, CubeLatticeIsAClosedOutwardSurface)
   EXPECT_EQ(out->GetNumberOfPolys(), 6 * 2 * 8 * 8);
   EXPECT_EQ(out->GetFieldData()->GetArray("DisplayPolygons")->GetTuple1(0), 768.0);
   EXPECT_EQ(out->GetNumberOfPoints(), 6 * 7 * 7 + 12 * 7 + 8); // shared points merged
-  EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   EXPECT_EQ(orientationAgreement(out), 1.0);
   vtkDataArray* normals = out->GetPointData()->GetArray("Normals");
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
@@ -134,7 +122,7 @@ TEST(LatticeSurfaceFilter, MixedFacesGiveAWatertightSurface)
     filter->SetInputData(toVtk(m));
     filter->SetResolution(5); // rounded up to 6, split patches get 3
     filter->Update();
-    EXPECT_EQ(openOrNonManifoldEdges(filter->GetOutput()), 0);
+    EXPECT_EQ(lktest::openOrNonManifoldEdges(filter->GetOutput()), 0);
     EXPECT_EQ(orientationAgreement(filter->GetOutput()), 1.0);
   }
 }
@@ -157,7 +145,7 @@ TEST(LatticeSurfaceFilter, DecimatedMandibleLattice)
   surface->Update();
   vtkPolyData* out = surface->GetOutput();
   EXPECT_NEAR(static_cast<double>(lattice->GetOutput()->GetNumberOfPoints()), 2000.0, 20.0);
-  EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   // No patch folds: each patch's normals stay on the side of its centre normal.
   double worst = 1.0;
   vtkIdType folded = 0;
@@ -237,7 +225,7 @@ TEST(LatticeSurfaceFilter, LineCellsMakeSharpEdges)
     out->GetPoint(i, p);
     ASSERT_NEAR(std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) }), 0.5, 1e-12);
   }
-  EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   EXPECT_EQ(out->GetNumberOfPoints(), 6 * 7 * 7 + 12 * 7 + 8);
   {
     vtkNew<vtkFeatureEdges> edges;
@@ -310,7 +298,7 @@ TEST(LatticeSurfaceFilter, ChordalToleranceAndClosestPoint)
     std::printf("chordal tolerance %g: resolution %d, %lld display polygons, farthest triangle centroid %.2e\n", tol, r,
       static_cast<long long>(out->GetNumberOfPolys()), worst);
     EXPECT_LT(worst, 2.0 * tol);
-    EXPECT_EQ(openOrNonManifoldEdges(out), 0);
+    EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   }
   // A point on the surface is its own closest point.
   double x[3], n[3], closest[3];

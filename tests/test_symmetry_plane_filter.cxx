@@ -31,30 +31,6 @@
 
 namespace
 {
-/// The volume a closed triangle surface encloses, positive when its faces
-/// are ordered with their normals pointing out (divergence theorem).
-double signedVolume(vtkPolyData* pd)
-{
-  double volume = 0.0;
-  auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    double a[3], b[3], c[3], bc[3];
-    pd->GetPoint(ids[0], a);
-    for (vtkIdType k = 1; k + 1 < n; ++k)
-    {
-      pd->GetPoint(ids[k], b);
-      pd->GetPoint(ids[k + 1], c);
-      vtkMath::Cross(b, c, bc);
-      volume += vtkMath::Dot(a, bc) / 6.0;
-    }
-  }
-  return volume;
-}
-
 /// An ellipsoid (30, 20, 12) with a ball of radius 4 on it at (0, 15, 8):
 /// symmetric about the plane x = 0 and about no other. Then turned 12
 /// degrees about z and 6 about y and moved by (5, -3, 100), with point
@@ -139,9 +115,9 @@ TEST(SymmetryPlaneFilter, FindsTheOnePlaneOfATiltedShapeAndMirrorsItOutwardFacin
   ASSERT_EQ(image->GetNumberOfPoints(), shape.surface->GetNumberOfPoints());
   ASSERT_EQ(image->GetNumberOfPolys(), shape.surface->GetNumberOfPolys());
   // Faces still point out: the same positive volume.
-  const double volume = signedVolume(shape.surface);
+  const double volume = lktest::signedVolume(shape.surface);
   EXPECT_GT(volume, 0.0);
-  EXPECT_NEAR(signedVolume(image), volume, 1e-9 * volume);
+  EXPECT_NEAR(lktest::signedVolume(image), volume, 1e-9 * volume);
   // Each point is the reflection of its own, and its normal the reflected
   // normal (still outward).
   vtkDataArray* normalsIn = shape.surface->GetPointData()->GetNormals();
@@ -281,7 +257,7 @@ TEST(SymmetryPlaneFilter, TheMandiblesMidSagittalPlane)
   once->SetMaximumNumberOfIterations(1);
   once->Update();
   EXPECT_LT(filter->GetMeanDistance(), once->GetMeanDistance());
-  EXPECT_NEAR(signedVolume(filter->GetOutput()), signedVolume(bone->GetOutput()), 1e-6 * signedVolume(bone->GetOutput()));
+  EXPECT_NEAR(lktest::signedVolume(filter->GetOutput()), lktest::signedVolume(bone->GetOutput()), 1e-6 * lktest::signedVolume(bone->GetOutput()));
 }
 
 TEST(SymmetryPlaneFilter, AMissingRamusDoesNotTiltThePlane)
