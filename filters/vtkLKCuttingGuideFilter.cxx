@@ -157,9 +157,9 @@ int vtkLKCuttingGuideFilter::RequestData(
   {
     if (!(r.value >= r.low && r.value <= r.high))
     {
-      vtkErrorMacro("Cannot make a cutting guide: " << r.name << " must be " << r.low << " to " << r.high
-                                                    << " mm" << (r.name[0] == 'M' ? " (degrees)" : "") << ", not "
-                                                    << r.value << ".");
+      const char* unit = r.name[0] == 'M' ? " degrees" : " mm";
+      vtkErrorMacro("Cannot make a cutting guide: " << r.name << " must be " << r.low << " to " << r.high << unit
+                                                    << ", not " << r.value << ".");
       return 0;
     }
   }
@@ -192,6 +192,14 @@ int vtkLKCuttingGuideFilter::RequestData(
   double bounds[6];
   bone->GetBounds(bounds);
   const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal)) // std::hypot of an infinite range can be NaN
+  {
+    vtkErrorMacro("Cannot make a cutting guide: the surface's extent is "
+      << (diagonal == 0.0 ? "nil (every point in one place)"
+                          : "too large to measure (its bounding box's diagonal overflows)")
+      << ".");
+    return 0;
+  }
 
   // The section loop nearest the origin: the bone the guide goes on.
   const std::vector<std::vector<Vec>> loops = sectionLoops(bone, o, n);

@@ -241,7 +241,7 @@ TEST(CuttingGuideFilter, BadInputAndParametersAreRefused)
     { "NaN slot", [&](vtkLKCuttingGuideFilter* f) { f->SetSlotWidth(nan); }, "SlotWidth must be" },
     { "negative clearance", [](vtkLKCuttingGuideFilter* f) { f->SetClearance(-1); }, "Clearance must be 0 to 10" },
     { "right angle", [](vtkLKCuttingGuideFilter* f) { f->SetMaximumContactAngle(90); },
-      "MaximumContactAngle must be 1 to 89 mm (degrees)" },
+      "MaximumContactAngle must be 1 to 89 degrees, not 90" },
     { "reach inside the slot", [](vtkLKCuttingGuideFilter* f) { f->SetReach(0.5); },
       "Reach (0.5 mm) must be more than half the SlotWidth" },
     { "plane beside the bone", [](vtkLKCuttingGuideFilter* f) { f->SetPlaneOrigin(50, 0, 0); },
@@ -270,6 +270,29 @@ TEST(CuttingGuideFilter, BadInputAndParametersAreRefused)
     lktest::ErrorRecorder errors(guide);
     guide->Update();
     EXPECT_NE(errors.messages.find("the input has no surface"), std::string::npos) << errors.messages;
+  }
+  // Every point in one place, and points too far apart to measure (in
+  // double: x from -1.6e308 to 1.6e308, finite, their range not).
+  for (const bool together : { true, false })
+  {
+    vtkNew<vtkPolyData> squeezed;
+    squeezed->DeepCopy(solid);
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < solid->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      solid->GetPoint(i, x);
+      points->InsertNextPoint(together ? 1.0 : x[0] * 8e306, together ? 1.0 : x[1], together ? 1.0 : x[2]);
+    }
+    squeezed->SetPoints(points);
+    guide->SetInputData(squeezed);
+    lktest::ErrorRecorder errors(guide);
+    guide->Update();
+    EXPECT_NE(errors.messages.find(together ? "nil (every point in one place)" : "too large to measure"),
+      std::string::npos)
+      << errors.messages;
+    EXPECT_EQ(guide->GetOutput()->GetNumberOfCells(), 0);
   }
   vtkNew<vtkPolyData> broken;
   broken->DeepCopy(solid);
