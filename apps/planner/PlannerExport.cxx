@@ -98,6 +98,19 @@ std::string Planner::exportStructureSet(
     structureSet->AddInputData(mirror.surface);
     roiNames.push_back(mirrorName);
   }
+  // The cutting guides shown, where the hospital's planning system shows
+  // them on the CT beside the pieces.
+  for (const CuttingGuide& g : guides)
+  {
+    const std::string name = "cutting guide (stroke " + std::to_string(g.stroke + 1) + ")";
+    if (session.guides && g.surface && lkapp::pieceFacts(g.surface).openEdges == 0 &&
+      std::find(roiNames.begin(), roiNames.end(), name) == roiNames.end())
+    {
+      structureSet->SetROIName(static_cast<int>(roiNames.size()), name.c_str());
+      structureSet->AddInputData(g.surface);
+      roiNames.push_back(name);
+    }
+  }
   // The measurements' points as landmarks where the plan puts them (the
   // segment moved), named by what they measure.
   for (std::size_t i = 0; i < session.measurements.size(); ++i)
