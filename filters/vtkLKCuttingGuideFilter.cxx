@@ -290,6 +290,8 @@ int vtkLKCuttingGuideFilter::RequestData(
       d = { -d[0], -d[1], -d[2] };
   }
   vtkMath::Normalize(d.data());
+  if (this->OtherSide)
+    d = { -d[0], -d[1], -d[2] };
   Vec e;
   vtkMath::Cross(n.data(), d.data(), e.data());
 
@@ -682,6 +684,7 @@ void vtkLKCuttingGuideFilter::PrintSelf(ostream& os, vtkIndent indent)
   triple("PlaneOrigin", this->PlaneOrigin);
   triple("PlaneNormal", this->PlaneNormal);
   triple("Approach", this->Approach);
+  os << indent << "OtherSide: " << (this->OtherSide ? "on" : "off") << "\n";
   os << indent << "Thickness: " << this->Thickness << "\n";
   os << indent << "Reach: " << this->Reach << "\n";
   os << indent << "SlotWidth: " << this->SlotWidth << "\n";

@@ -86,6 +86,11 @@ public:
   /// axis, away from the centre of the bone round the cut (see above).
   vtkSetVector3Macro(Approach, double);
   vtkGetVector3Macro(Approach, double);
+  /// The guide on the other side of the bone: the approach (given or
+  /// chosen) reversed (a lingual guide; default off).
+  vtkSetMacro(OtherSide, bool);
+  vtkGetMacro(OtherSide, bool);
+  vtkBooleanMacro(OtherSide, bool);
   ///@}
 
   ///@{
@@ -130,6 +135,7 @@ protected:
   double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
   double PlaneNormal[3] = { 1.0, 0.0, 0.0 };
   double Approach[3] = { 0.0, 0.0, 0.0 };
+  bool OtherSide = false;
   double Thickness = 4.0;
   double Reach = 8.0;
   double SlotWidth = 1.2;

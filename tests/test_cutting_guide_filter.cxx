@@ -97,6 +97,17 @@ TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
     EXPECT_FALSE(std::abs(x[0]) < 0.6 - 1e-9 && std::abs(x[2]) < 12.0 - 1e-9) << "a point in the slot";
   }
 
+  // On the other side: the face y = 10, the same guide mirrored.
+  guide->OtherSideOn();
+  guide->Update();
+  out->GetBounds(b);
+  EXPECT_NEAR(b[2], 10.5, 1e-9);
+  EXPECT_NEAR(b[3], 14.5, 1e-9);
+  EXPECT_NEAR(guide->GetApproachUsed()[1], 1.0, 1e-12);
+  EXPECT_NEAR(guide->GetVolume(), 16.0 * 30.0 * 4.0 - 1.2 * 24.0 * 4.0, 1e-3);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  guide->OtherSideOff();
+
   // Thicker, wider slot, no bridges short of the contact's ends but one:
   // the volume follows.
   guide->SetThickness(2.5);

@@ -250,6 +250,7 @@ public:
   {
     std::size_t stroke = 0;                        ///< the saw line's stroke, from 0
     std::array<double, 3> origin{}, normal{};      ///< its plane, as the guide was made on it
+    bool otherSide = false;                        ///< on the side the filter does not choose
     vtkSmartPointer<vtkPolyData> surface;          ///< null when it could not be made (error)
     std::array<double, 3> approach{ 0, 0, 0 };     ///< the side it goes on (unit)
     double slotLength = 0.0, slotWidth = 0.0, thickness = 0.0, contactArea = 0.0, volume = 0.0;

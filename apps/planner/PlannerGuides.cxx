@@ -47,7 +47,7 @@ void Planner::updateGuides()
     const std::array<double, 3> origin = st.points.empty() ? st.sawOrigin : st.points.front();
     bool kept = false;
     for (const CuttingGuide& g : guides)
-      if (g.stroke == i && g.origin == origin && g.normal == st.sawNormal)
+      if (g.stroke == i && g.origin == origin && g.normal == st.sawNormal && g.otherSide == session.guidesOtherSide)
       {
         made.push_back(g);
         kept = true;
@@ -59,10 +59,12 @@ void Planner::updateGuides()
     g.stroke = i;
     g.origin = origin;
     g.normal = st.sawNormal;
+    g.otherSide = session.guidesOtherSide;
     vtkNew<vtkLKCuttingGuideFilter> filter;
     filter->SetInputData(facesOnly(bone));
     filter->SetPlaneOrigin(origin.data());
     filter->SetPlaneNormal(st.sawNormal.data());
+    filter->SetOtherSide(session.guidesOtherSide);
     const int before = lkapp::errorCount();
     filter->Update();
     if (filter->GetOutput()->GetNumberOfPolys() == 0)

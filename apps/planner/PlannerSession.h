@@ -17,6 +17,7 @@
 //                                                     plane of symmetry, and the segment's
 //                                                     distance to it
 //   "guides": bool                                    a cutting guide for each saw line
+//   "guidesOtherSide": bool                           on the bone's other side (inner)
 //   "mirrorPlane": [[x, y, z], [x, y, z], [x, y, z]]  the plane to mirror across, set by
 //                                                     three points (midline landmarks;
 //                                                     none: the fitted plane)
@@ -201,6 +202,9 @@ struct Session
   /// A cutting guide for each saw line (k): a shell on the bone across the
   /// saw's plane with a slot for the blade (vtkLKCuttingGuideFilter).
   bool guides = false;
+  /// The guides on the other side of the bone (K): the side the filter
+  /// chooses (a mandible's outer side) reversed.
+  bool guidesOtherSide = false;
   /// The scan on cut line k's plane (c), k from 1 (the plan's numbering of
   /// the cut lines); 0: not shown.
   int scanOnLine = 0;

@@ -1032,6 +1032,16 @@ void PlannerStyle::OnChar()
     planner->mode = key[0] - '1';
     rebuild = false;
   }
+  else if (key == "K")
+  {
+    // The guides to the bone's other side (and back); shown, if they were
+    // not.
+    planner->remember();
+    s.guidesOtherSide = !s.guidesOtherSide;
+    s.guides = true;
+    planner->notice = s.guidesOtherSide ? "cutting guides: on the bone's other side (K: back)"
+                                        : "cutting guides: on the side chosen for them (K: the other)";
+  }
   else if (key == "x" || key == "l" || key == "m" || key == "o" || key == "k")
   {
     planner->remember();
