@@ -253,14 +253,13 @@ int vtkLKCuttingGuideFilter::RequestData(
     double values[3], vectors[3][3];
     double* vectorRows[3] = { vectors[0], vectors[1], vectors[2] };
     vtkMath::Jacobi(rows, values, vectorRows); // decreasing eigenvalues, vectors in columns
-    double best = -1.0;
-    for (int k = 2; k >= 0 && best < 0.0; --k)
+    for (int k = 2; k >= 0; --k)
     {
       const Vec v{ vectors[0][k], vectors[1][k], vectors[2][k] };
       if (std::abs(dot(v, n)) < 0.5)
       {
         d = add(v, n, -dot(v, n));
-        best = k;
+        break;
       }
     }
     // Away from the centre of the bone round the cut (within twice the
@@ -444,17 +443,23 @@ int vtkLKCuttingGuideFilter::RequestData(
     bone->GetPoint(i, x.data());
     top = std::max(top, vOf(x));
   }
-  // A ray that meets no bone down to a Reach below the runs' deepest point
+  // A ray that meets no bone down to a Reach below the run's deepest point
   // passed beside the bone (beyond its edge away from the plane): no
   // contact there.
   const double bottom = deepest - this->Reach;
+  // Grid lines through each of `stops` (increasing; those that coincide,
+  // as the slot's ends and the extent's with no bridge, once), at most
+  // `spacing` apart.
   auto lines = [](const std::vector<double>& stops, double spacing) {
     std::vector<double> at{ stops.front() };
     for (std::size_t k = 1; k < stops.size(); ++k)
     {
-      const int parts = std::max(1, static_cast<int>(std::ceil((stops[k] - stops[k - 1]) / spacing - 1e-9)));
+      if (stops[k] - at.back() <= 1e-6 * spacing)
+        continue;
+      const double from = at.back();
+      const int parts = std::max(1, static_cast<int>(std::ceil((stops[k] - from) / spacing - 1e-9)));
       for (int j = 1; j <= parts; ++j)
-        at.push_back(stops[k - 1] + (stops[k] - stops[k - 1]) * j / parts);
+        at.push_back(from + (stops[k] - from) * j / parts);
     }
     return at;
   };
@@ -523,17 +528,20 @@ int vtkLKCuttingGuideFilter::RequestData(
       steep[r * cellColumns + c] = dot(first, d) < wall || dot(second, d) < wall;
     }
   const double middleU = std::clamp(uOf(cutRun.outermost), low, high);
-  std::size_t start = usable.size();
-  double best = std::numeric_limits<double>::infinity();
+  // The cell nearest the cut's outermost point on each side of the plane
+  // (without bridges the two sides are two blocks).
+  std::size_t start[2] = { usable.size(), usable.size() };
+  double best[2] = { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
   for (std::size_t r = 0; r < cellRows; ++r)
     for (std::size_t c = 0; c < cellColumns; ++c)
     {
       const double s = 0.5 * (across[r] + across[r + 1]), u = 0.5 * (along[c] + along[c + 1]);
       const double away = s * s + (u - middleU) * (u - middleU);
-      if (usable[r * cellColumns + c] && !steep[r * cellColumns + c] && away < best)
+      const int side = s < 0.0 ? 0 : 1;
+      if (usable[r * cellColumns + c] && !steep[r * cellColumns + c] && away < best[side])
       {
-        best = away;
-        start = r * cellColumns + c;
+        best[side] = away;
+        start[side] = r * cellColumns + c;
       }
     }
   // Marks in `mark` the cells reachable across cell sides from those in
@@ -555,11 +563,12 @@ int vtkLKCuttingGuideFilter::RequestData(
     }
   };
   std::vector<char> joined(usable.size(), 0);
-  if (start < usable.size())
-  {
-    joined[start] = 1;
-    flood({ start }, joined, [&](std::size_t j) { return usable[j] && !steep[j]; });
-  }
+  for (const std::size_t first : start)
+    if (first < usable.size() && !joined[first])
+    {
+      joined[first] = 1;
+      flood({ first }, joined, [&](std::size_t j) { return usable[j] && !steep[j]; });
+    }
   // The cells left out that the joined ones enclose (no way to the grid's
   // border through cells left out) go back in, if their rays met the bone.
   {

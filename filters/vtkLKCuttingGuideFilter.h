@@ -31,8 +31,10 @@
  *   along the approach. So the guide can be put on and taken off along the
  *   approach, never reaches round an edge of the bone, and has straight
  *   edges. A ray that meets no bone within Reach below the section's part
- *   leaves its cells out (beside the bone's edge), as does a part joined to
- *   the rest by no cell side.
+ *   leaves its cells out (beside the bone's edge), as does a part joined by
+ *   no cell side to the cells nearest the section's outermost point on
+ *   either side of the plane (an island where rays met a far part of the
+ *   bone).
  * - The slot: the grid's cells within SlotWidth / 2 of the plane, except
  *   for Bridge millimetres at each of the extent's ends, which keep the
  *   guide in one piece (the saw starts the cut in the slot; the last

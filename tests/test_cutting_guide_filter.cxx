@@ -117,6 +117,13 @@ TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
   guide->Update();
   EXPECT_NEAR(guide->GetVolume(), 10.0 * 30.0 * 2.5 - 2.0 * 28.0 * 2.5, 1e-3);
   EXPECT_EQ(lktest::openOrNonManifoldEdges(guide->GetOutput()), 0);
+  // No bridges: the slot runs the contact's length, and the guide is two
+  // blocks, one on either side of the plane.
+  guide->SetBridge(0.0);
+  guide->Update();
+  EXPECT_NEAR(guide->GetSlotLength(), 30.0, 1e-6);
+  EXPECT_NEAR(guide->GetVolume(), 2.0 * 4.0 * 30.0 * 2.5, 1e-3);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(guide->GetOutput()), 0);
 }
 
 TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
