@@ -6,7 +6,9 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCellData.h>
+#include <vtkClipPolyData.h>
 #include <vtkCutter.h>
+#include <vtkCylinder.h>
 #include <vtkDoubleArray.h>
 #include <vtkFeatureEdges.h>
 #include <vtkFieldData.h>
@@ -132,6 +134,7 @@ int vtkLKCuttingGuideFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   std::fill(this->ApproachUsed, this->ApproachUsed + 3, 0.0);
   this->SlotLength = this->ContactArea = this->Volume = 0.0;
+  this->NumberOfScrewHoles = 0;
 
   const double normalLength = vtkMath::Norm(this->PlaneNormal);
   if (!finiteVector(this->PlaneOrigin) || !finiteVector(this->PlaneNormal) || !(normalLength > 0.0) ||
@@ -153,6 +156,7 @@ int vtkLKCuttingGuideFilter::RequestData(
   for (const Range& r : { Range{ "Thickness", this->Thickness, 0.1, 100.0 },
          Range{ "Reach", this->Reach, 0.0, 200.0 }, Range{ "SlotWidth", this->SlotWidth, 0.05, 20.0 },
          Range{ "Bridge", this->Bridge, 0.0, 100.0 }, Range{ "Clearance", this->Clearance, 0.0, 10.0 },
+         Range{ "ScrewHoleDiameter", this->ScrewHoleDiameter, 0.0, 10.0 },
          Range{ "MaximumContactAngle", this->MaximumContactAngle, 1.0, 89.0 } })
   {
     if (!(r.value >= r.low && r.value <= r.high))
@@ -167,6 +171,13 @@ int vtkLKCuttingGuideFilter::RequestData(
   {
     vtkErrorMacro("Cannot make a cutting guide: Reach (" << this->Reach << " mm) must be more than half the "
                                                          << "SlotWidth (" << this->SlotWidth << " mm).");
+    return 0;
+  }
+  if (this->ScrewHoleDiameter > 0.0 && !(this->ScrewHoleDiameter + 1.0 <= this->Reach - this->SlotWidth / 2.0))
+  {
+    vtkErrorMacro("Cannot make a cutting guide: a screw hole of " << this->ScrewHoleDiameter << " mm does not fit "
+      << "beside the slot with 0.5 mm of wall round it: the guide reaches " << this->Reach - this->SlotWidth / 2.0
+      << " mm from the slot (a larger Reach, or ScrewHoleDiameter 0 for none).");
     return 0;
   }
   if (!input || input->GetNumberOfPoints() < 3 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
@@ -613,6 +624,53 @@ int vtkLKCuttingGuideFilter::RequestData(
     vtkErrorMacro("Cannot make a cutting guide: no ray along the approach met the bone at the cut.");
     return 0;
   }
+  // The screw holes that fix the guide to the bone while the saw runs: one
+  // on each side of the slot, halfway between it and the guide's edge
+  // across the plane, at the middle of its extent along the plane, through
+  // the guide along the approach (vtkClipPolyData with a vtkCylinder, so
+  // their walls are round). A hole whose ray meets no bone is left out.
+  std::vector<Vec> holes;
+  if (this->ScrewHoleDiameter > 0.0)
+  {
+    const double radius = this->ScrewHoleDiameter / 2.0, at = 0.5 * (half + this->Reach);
+    for (const double side : { -1.0, 1.0 })
+    {
+      const Vec base = add(add(o, n, side * at), e, 0.5 * (low + high));
+      Vec from = add(base, d, top + 1.0 - vOf(base)), to = add(base, d, bottom - vOf(base));
+      double t = 0.0, x[3], pcoords[3];
+      int subId = 0;
+      vtkIdType hit = -1;
+      if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell))
+        continue;
+      vtkNew<vtkCylinder> drill;
+      drill->SetCenter(x);
+      drill->SetAxis(d.data());
+      drill->SetRadius(radius);
+      vtkNew<vtkClipPolyData> clip;
+      clip->SetInputData(slotted);
+      clip->SetClipFunction(drill);
+      clip->Update();
+      slotted = vtkSmartPointer<vtkPolyData>::New();
+      slotted->ShallowCopy(clip->GetOutput());
+      holes.push_back({ x[0], x[1], x[2] });
+    }
+    // The clip's new points lie on the grid's triangles, a hair inside a
+    // convex bone: each is put back on the bone along its ray.
+    vtkPoints* points = slotted->GetPoints();
+    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+    {
+      Vec x;
+      points->GetPoint(i, x.data());
+      const Vec base = add(x, d, -vOf(x));
+      Vec from = add(base, d, top + 1.0), to = add(base, d, bottom);
+      double t = 0.0, hitPoint[3], pcoords[3];
+      int subId = 0;
+      vtkIdType hit = -1;
+      if (locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hitPoint, pcoords, subId, hit, cell))
+        points->SetPoint(i, hitPoint);
+    }
+    points->Modified();
+  }
   this->ContactArea = areaOf(slotted);
   this->UpdateProgress(0.7);
   if (lkvtk::stopRequested(this, { output }))
@@ -680,6 +738,13 @@ int vtkLKCuttingGuideFilter::RequestData(
   lkvtk::addFieldValue(fd, "GuideSlotLength", this->SlotLength);
   lkvtk::addFieldValue(fd, "GuideContactArea", this->ContactArea);
   lkvtk::addFieldValue(fd, "GuideVolume", this->Volume);
+  vtkNew<vtkDoubleArray> holeCentres; // where each screw hole meets the bone
+  holeCentres->SetName("GuideScrewHoles");
+  holeCentres->SetNumberOfComponents(3);
+  for (const Vec& x : holes)
+    holeCentres->InsertNextTuple(x.data());
+  fd->AddArray(holeCentres);
+  this->NumberOfScrewHoles = static_cast<int>(holes.size());
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -699,9 +764,11 @@ void vtkLKCuttingGuideFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SlotWidth: " << this->SlotWidth << "\n";
   os << indent << "Bridge: " << this->Bridge << "\n";
   os << indent << "Clearance: " << this->Clearance << "\n";
+  os << indent << "ScrewHoleDiameter: " << this->ScrewHoleDiameter << "\n";
   os << indent << "MaximumContactAngle: " << this->MaximumContactAngle << "\n";
   triple("ApproachUsed", this->ApproachUsed);
   os << indent << "SlotLength: " << this->SlotLength << "\n";
   os << indent << "ContactArea: " << this->ContactArea << "\n";
   os << indent << "Volume: " << this->Volume << "\n";
+  os << indent << "NumberOfScrewHoles: " << this->NumberOfScrewHoles << "\n";
 }

@@ -40,6 +40,13 @@
  *   guide in one piece (the saw starts the cut in the slot; the last
  *   millimetres past its ends are finished with the guide off, as with any
  *   printed guide). Bridge 0 leaves two blocks.
+ * - The screw holes (ScrewHoleDiameter, 2.1 mm; 0: none): one on each side
+ *   of the slot, halfway between it and the guide's edge across the plane,
+ *   at the middle of the extent along it, through the guide along the
+ *   approach (the contact clipped by a vtkCylinder, so they are round, to
+ *   0.015 mm, the clip's chords across the 0.25 mm grid): the
+ *   screws that hold the guide while the saw runs, and whose holes in the
+ *   bone can take the plate's screws after the cut.
  * - The shell: the contact moved Clearance along the approach (room for the
  *   periosteum, or for the printer's tolerance) and swept Thickness along it
  *   by vtkLinearExtrusionFilter, capped, oriented outward by
@@ -50,8 +57,10 @@
  * known). Output: the guide, a closed triangle mesh oriented outward (ready
  * for STL). Field data: GuideApproach (3 values, unit), GuideSlotLength
  * (mm, along the plane), GuideContactArea (mm^2 of bone surface under the
- * guide), GuideVolume (mm^3), and the input's SPACE tag. The same values
- * are kept in the filter after an update.
+ * guide, the slot and the holes left out), GuideVolume (mm^3),
+ * GuideScrewHoles (a 3-value tuple for each hole: where its axis meets the
+ * bone), and the input's SPACE tag. The same values are kept in the filter
+ * after an update.
  *
  * Errors (a VTK error and an empty output): a plane normal or an approach
  * that is zero, not finite or (the approach) along the normal; a parameter
@@ -113,6 +122,11 @@ public:
   /// default 0 (0 to 10).
   vtkSetMacro(Clearance, double);
   vtkGetMacro(Clearance, double);
+  /// The screw holes' diameter, mm: one hole on each side of the slot fixes
+  /// the guide to the bone (2.1 mm: a 2.0 mm screw through it; 0: none;
+  /// at most 10, and 1 mm less than the guide's reach beside the slot).
+  vtkSetMacro(ScrewHoleDiameter, double);
+  vtkGetMacro(ScrewHoleDiameter, double);
   /// The largest angle between a face's normal and the approach for the
   /// guide to rest on it: degrees, default 70 (1 to 89).
   vtkSetMacro(MaximumContactAngle, double);
@@ -127,6 +141,8 @@ public:
   vtkGetMacro(SlotLength, double);
   vtkGetMacro(ContactArea, double);
   vtkGetMacro(Volume, double);
+  /// The screw holes made (0 to 2: a hole whose ray meets no bone is left out).
+  vtkGetMacro(NumberOfScrewHoles, int);
   ///@}
 
 protected:
@@ -144,6 +160,8 @@ protected:
   double Bridge = 3.0;
   double Clearance = 0.0;
   double MaximumContactAngle = 70.0;
+  double ScrewHoleDiameter = 2.1;
+  int NumberOfScrewHoles = 0;
   double ApproachUsed[3] = { 0.0, 0.0, 0.0 };
   double SlotLength = 0.0;
   double ContactArea = 0.0;

@@ -64,6 +64,7 @@ TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
   guide->SetPlaneNormal(2, 0, 0);
   guide->SetApproach(0.3, -1, 0); // the part along the normal is left out
   guide->SetClearance(0.5);
+  guide->SetScrewHoleDiameter(0.0); // the holes: below
   guide->Update();
   vtkPolyData* out = guide->GetOutput();
   ASSERT_GT(out->GetNumberOfCells(), 0);
@@ -126,6 +127,54 @@ TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
   EXPECT_EQ(lktest::openOrNonManifoldEdges(guide->GetOutput()), 0);
 }
 
+TEST(CuttingGuideFilter, TwoRoundScrewHolesBesideTheSlot)
+{
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(box());
+  guide->SetPlaneNormal(1, 0, 0);
+  guide->SetApproach(0, -1, 0);
+  guide->Update();
+  vtkPolyData* out = guide->GetOutput();
+  ASSERT_EQ(guide->GetNumberOfScrewHoles(), 2);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  // Halfway between the slot (0.6 mm) and the edge (8 mm) across the plane,
+  // at the middle along it, on the bone.
+  vtkDataArray* centres = out->GetFieldData()->GetArray("GuideScrewHoles");
+  ASSERT_NE(centres, nullptr);
+  ASSERT_EQ(centres->GetNumberOfTuples(), 2);
+  for (vtkIdType k = 0; k < 2; ++k)
+  {
+    const double* c = centres->GetTuple3(k);
+    EXPECT_NEAR(std::abs(c[0]), 4.3, 1e-9);
+    EXPECT_NEAR(c[1], -10.0, 1e-9);
+    EXPECT_NEAR(c[2], 0.0, 1e-9);
+  }
+  EXPECT_LT(centres->GetTuple3(0)[0] * centres->GetTuple3(1)[0], 0.0); // one on each side
+  // Round, 2.1 mm across, through the wall: no point of the guide within
+  // them (but for the clip's chords across the 0.25 mm grid, 0.015 mm at
+  // most), and the volume less two cylinders (the clipped polygon's within
+  // 2 %).
+  const double r = 1.05;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    const double fromAxis = std::hypot(std::abs(x[0]) - 4.3, x[2]);
+    EXPECT_GT(fromAxis, r - 0.016) << "a point in a screw hole";
+  }
+  const double solid = 16.0 * 30.0 * 4.0 - 1.2 * 24.0 * 4.0, drilled = 2.0 * vtkMath::Pi() * r * r * 4.0;
+  EXPECT_NEAR(guide->GetVolume(), solid - drilled, 0.02 * drilled);
+  EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-3);
+  // Too wide to fit beside the slot: refused.
+  lktest::ErrorRecorder errors(guide);
+  guide->SetReach(3.0);
+  guide->Update();
+  EXPECT_NE(errors.messages.find("a screw hole of 2.1 mm does not fit beside the slot"), std::string::npos)
+    << errors.messages;
+  EXPECT_EQ(guide->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(guide->GetNumberOfScrewHoles(), 0);
+}
+
 TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
 {
   // Seen from (0, -1, 1) at 45 degrees, the box's faces y = -10 and
@@ -138,6 +187,7 @@ TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
   guide->SetPlaneNormal(1, 0, 0);
   guide->SetApproach(0, -1, 1);
   guide->SetMaximumContactAngle(50);
+  guide->SetScrewHoleDiameter(0.0);
   guide->Update();
   EXPECT_NEAR(guide->GetContactArea(), 16.0 * 30.0 + 16.0 * 20.0 - 1.2 * (50.0 / std::sqrt(2.0) - 6.0) * std::sqrt(2.0), 2.0);
   EXPECT_NEAR(guide->GetSlotLength(), 50.0 / std::sqrt(2.0) - 6.0, 1e-6);
@@ -258,6 +308,8 @@ TEST(CuttingGuideFilter, BadInputAndParametersAreRefused)
     { "no thickness", [](vtkLKCuttingGuideFilter* f) { f->SetThickness(0); }, "Thickness must be 0.1 to 100 mm" },
     { "NaN slot", [&](vtkLKCuttingGuideFilter* f) { f->SetSlotWidth(nan); }, "SlotWidth must be" },
     { "negative clearance", [](vtkLKCuttingGuideFilter* f) { f->SetClearance(-1); }, "Clearance must be 0 to 10" },
+    { "NaN screw hole", [&](vtkLKCuttingGuideFilter* f) { f->SetScrewHoleDiameter(nan); },
+      "ScrewHoleDiameter must be 0 to 10 mm" },
     { "right angle", [](vtkLKCuttingGuideFilter* f) { f->SetMaximumContactAngle(90); },
       "MaximumContactAngle must be 1 to 89 degrees, not 90" },
     { "reach inside the slot", [](vtkLKCuttingGuideFilter* f) { f->SetReach(0.5); },

@@ -254,6 +254,8 @@ public:
     vtkSmartPointer<vtkPolyData> surface;          ///< null when it could not be made (error)
     std::array<double, 3> approach{ 0, 0, 0 };     ///< the side it goes on (unit)
     double slotLength = 0.0, slotWidth = 0.0, thickness = 0.0, contactArea = 0.0, volume = 0.0;
+    int screwHoles = 0;              ///< made beside the slot ...
+    double screwHoleDiameter = 0.0;  ///< ... this wide
     std::string error;
   };
   std::vector<CuttingGuide> guides;

@@ -79,6 +79,8 @@ void Planner::updateGuides()
       g.volume = filter->GetVolume();
       g.slotWidth = filter->GetSlotWidth();
       g.thickness = filter->GetThickness();
+      g.screwHoles = filter->GetNumberOfScrewHoles();
+      g.screwHoleDiameter = filter->GetScrewHoleDiameter();
     }
     made.push_back(g);
   }
@@ -120,12 +122,17 @@ std::string Planner::guidesText() const
     const std::string side = lkapp::coordinateSpace(bone) == "LPS"
       ? std::string("from ") + lkapp::directionWord(g.approach) + " "
       : std::string();
-    char line[400];
+    char holes[80] = "no screw hole";
+    if (g.screwHoles > 0)
+      std::snprintf(holes, sizeof holes, "%d screw hole%s of %.1f mm", g.screwHoles, g.screwHoles == 1 ? "" : "s",
+        g.screwHoleDiameter);
+    char line[500];
     std::snprintf(line, sizeof line,
       "cutting guide for the saw line of stroke %zu: slot %.1f mm long and %.1f mm wide in the saw's plane, "
-      "walls %.1f mm thick, resting on %.0f mm^2 of bone, put on %s(along (%.3f, %.3f, %.3f)); %.0f mm^3 (%s.stl)\n",
-      g.stroke + 1, g.slotLength, g.slotWidth, g.thickness, g.contactArea, side.c_str(), along[0], along[1], along[2],
-      g.volume, guideFileStem(g.stroke).c_str());
+      "walls %.1f mm thick, %s, resting on %.0f mm^2 of bone, put on %s(along (%.3f, %.3f, %.3f)); %.0f mm^3 "
+      "(%s.stl)\n",
+      g.stroke + 1, g.slotLength, g.slotWidth, g.thickness, holes, g.contactArea, side.c_str(), along[0], along[1],
+      along[2], g.volume, guideFileStem(g.stroke).c_str());
     text += line;
   }
   return text;

@@ -52,10 +52,11 @@ def main(argv):
         return 1
 
     approach = guide.GetApproachUsed()
-    print("cutting guide: slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, on %.0f mm^2 of bone; "
-          "put on along (%.3f, %.3f, %.3f); %.0f mm^3"
-          % (guide.GetSlotLength(), guide.GetSlotWidth(), guide.GetThickness(), guide.GetContactArea(),
-             -approach[0], -approach[1], -approach[2], guide.GetVolume()))
+    print("cutting guide: slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, %d screw holes of %.1f mm, "
+          "on %.0f mm^2 of bone; put on along (%.3f, %.3f, %.3f); %.0f mm^3"
+          % (guide.GetSlotLength(), guide.GetSlotWidth(), guide.GetThickness(), guide.GetNumberOfScrewHoles(),
+             guide.GetScrewHoleDiameter(), guide.GetContactArea(), -approach[0], -approach[1], -approach[2],
+             guide.GetVolume()))
 
     os.makedirs(folder, exist_ok=True)
     stl = vtkSTLWriter()

@@ -76,7 +76,8 @@ class DemoTest(unittest.TestCase):
             self.assertEqual(open_edges(guide).GetNumberOfCells(), 0, "the guide is not closed")
             self.assertGreater(os.path.getsize(os.path.join(out, "guide.stl")), 0)
             m = re.search(r"Cutting guide \(`guide.stl`\): a shell 4.0 mm thick on ([0-9]+) mm\^2 of the bone .* with a "
-                          r"slot 1.2 mm wide and ([0-9.]+) mm long in the plane for the saw; ([0-9]+) mm\^3", report)
+                          r"slot 1.2 mm wide and ([0-9.]+) mm long in the plane for the saw and 2 screw hole\(s\) of 2.1 "
+                          r"mm beside it to hold it; ([0-9]+) mm\^3", report)
             self.assertIsNotNone(m, report)
             self.assertGreater(float(m.group(1)), 200)
             self.assertGreater(float(m.group(2)), 10)

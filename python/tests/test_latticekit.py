@@ -1054,7 +1054,7 @@ class AbortTest(unittest.TestCase):
             "wrinkly surface": made(latticekit.vtkLKWrinklySurfaceFilter, InputConnection=net.GetOutputPort()),
             "patch deformation": made(latticekit.vtkLKPatchDeformationFilter, InputConnection=flat.GetOutputPort()),
             "cutting guide": made(latticekit.vtkLKCuttingGuideFilter, InputData=ball, Reach=0.2, SlotWidth=0.1,
-                                  Bridge=0.1, Thickness=0.1),
+                                  Bridge=0.1, Thickness=0.1, ScrewHoleDiameter=0),
         }
         for name, make in cases.items():
             f = make()
