@@ -4,18 +4,25 @@
 #include "common/CutReport.h"
 
 #include "vtkLKClosedLineCutFilter.h"
+#include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKExtractCutPieceFilter.h"
 #include "vtkLKMeshPointIds.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
+#include <vtkFieldData.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +51,12 @@ void usage(std::ostream& os)
         "                     pieceN.vtp's points: latticekit-fit pieceN.vtp --features\n"
         "                     pieceN_cut_lines.vtp --lock-features keeps them); files an\n"
         "                     earlier run left there beyond this cut's pieces are removed\n"
+        "  --guides FOLDER    also write a cutting guide for each flat line (within 0.5 mm of\n"
+        "                     its plane, as a saw line or a plane's section is) as\n"
+        "                     FOLDER/guide_lineN.stl and .vtp (vtkLKCuttingGuideFilter on MESH:\n"
+        "                     a shell on the bone's outer side with a slot in the line's plane\n"
+        "                     and two screw holes); guide files an earlier run left there and\n"
+        "                     this one does not write are removed\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
 }
@@ -57,12 +70,93 @@ bool isCutLinesFileName(const std::string& name)
     lkapp::isPieceFileName(name.substr(0, name.size() - cutLinesSuffix.size()) + ".vtp");
 }
 
+/// The files --guides writes: "guide_lineN.stl" and "guide_lineN.vtp".
+bool isGuideLineFileName(const std::string& name)
+{
+  static const std::regex guide("guide_line[0-9]+[.](stl|vtp)");
+  return std::regex_match(name, guide);
+}
+
+/// A cutting guide for each line of `lines` (its line cells, in order,
+/// numbered from 1) that lies within 0.5 mm of its best-fitting plane, on
+/// `mesh`, written into `folder`; a line per guide on standard output.
+/// False with `error` when a file cannot be written.
+bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folder, const std::string& space,
+  std::vector<std::string>& written, std::string& error)
+{
+  const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(lines);
+  vtkNew<vtkPolyData> faces; // the bone, without its line cells
+  faces->SetPoints(mesh->GetPoints());
+  faces->SetPolys(mesh->GetPolys());
+  faces->SetStrips(mesh->GetStrips());
+  faces->GetFieldData()->PassData(mesh->GetFieldData());
+  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  std::size_t k = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && k < facts.size(); it->GoToNextCell(), ++k)
+  {
+    const lkapp::LineFacts& f = facts[k];
+    const std::string label = "guide line " + std::to_string(k + 1);
+    if (!f.closed || f.flatness > 0.5)
+    {
+      char why[80] = "is not closed";
+      if (f.closed)
+        std::snprintf(why, sizeof why, "is %.2f mm off its plane", f.flatness);
+      std::printf("%-16s none: the line %s (a saw cuts a plane)\n", label.c_str(), why);
+      continue;
+    }
+    // The plane through the line's first point, moved onto its best plane:
+    // the guide goes on the part of the bone the line runs round (not on an
+    // inner wall nearer the line's centre).
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    double origin[3];
+    lines->GetPoint(ids[0], origin);
+    double apart[3];
+    vtkMath::Subtract(origin, f.centre, apart);
+    const double off = vtkMath::Dot(apart, f.normal);
+    for (int c = 0; c < 3; ++c)
+      origin[c] -= off * f.normal[c];
+    vtkNew<vtkLKCuttingGuideFilter> guide;
+    guide->SetInputData(faces);
+    guide->SetPlaneOrigin(origin);
+    guide->SetPlaneNormal(f.normal[0], f.normal[1], f.normal[2]);
+    // The cut stands without a guide: why one is not made is this line's
+    // report, not an error of the run.
+    const std::string why = lkapp::updateKeepingErrors(guide);
+    if (guide->GetOutput()->GetNumberOfPolys() == 0)
+    {
+      std::printf("%-16s none: %s\n", label.c_str(), why.empty() ? "no guide was made" : why.c_str());
+      continue;
+    }
+    const std::string stem = "guide_line" + std::to_string(k + 1);
+    for (const char* ext : { ".stl", ".vtp" })
+    {
+      written.push_back(stem + ext);
+      if (!lkapp::writeMesh(guide->GetOutput(), folder + "/" + written.back(), error, space))
+        return false;
+    }
+    double along[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      along[c] = -guide->GetApproachUsed()[c];
+      along[c] = std::abs(along[c]) < 5e-4 ? 0.0 : along[c]; // no "-0.000"
+    }
+    std::printf("%-16s slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, %d screw hole(s) of %.1f mm, on "
+                "%.0f mm^2 of bone, put on along (%.3f, %.3f, %.3f); %.0f mm^3: %s.stl, .vtp\n",
+      label.c_str(), guide->GetSlotLength(), guide->GetSlotWidth(), guide->GetThickness(),
+      guide->GetNumberOfScrewHoles(), guide->GetScrewHoleDiameter(), guide->GetContactArea(), along[0], along[1],
+      along[2], guide->GetVolume(), stem.c_str());
+  }
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
 {
   lkapp::installCrashReport("latticekit-cut");
-  std::string input, output, linesPath, piecesFolder;
+  std::string input, output, linesPath, piecesFolder, guidesFolder;
   bool quiet = false, capping = true, innerWalls = true;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
@@ -78,6 +172,8 @@ int main(int argc, char* argv[])
       innerWalls = false;
     else if (a == "--pieces")
       piecesFolder = args.value(a);
+    else if (a == "--guides")
+      guidesFolder = args.value(a);
     else if (a == "-q" || a == "--quiet")
       quiet = true;
     else if (lkapp::Arguments::isOption(a))
@@ -118,6 +214,27 @@ int main(int argc, char* argv[])
       return 1;
     }
     if (!lkapp::checkWritable(piecesFolder + "/piece0.stl", error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+  }
+  if (!guidesFolder.empty())
+  {
+    for (const std::string& in : { input, linesPath })
+      if (isGuideLineFileName(vtksys::SystemTools::GetFilenameName(in)) && lkapp::isInFolder(in, guidesFolder))
+      {
+        std::cerr << "error: '" << in << "' is one of the files --guides writes or removes in '" << guidesFolder
+                  << "': give the guides another folder\n";
+        return 1;
+      }
+    std::string error;
+    if (!vtksys::SystemTools::MakeDirectory(guidesFolder))
+    {
+      std::cerr << "error: cannot make the folder '" << guidesFolder << "' for the guides\n";
+      return 1;
+    }
+    if (!lkapp::checkWritable(guidesFolder + "/guide_line1.stl", error))
     {
       std::cerr << "error: " << error << "\n";
       return 1;
@@ -224,7 +341,24 @@ int main(int argc, char* argv[])
     std::cerr << "error: " << error << "\n";
     return 1;
   }
-  std::printf("written          %s (%lld bytes)%s\n", output.c_str(), lkapp::fileBytes(output),
-    piecesFolder.empty() ? "" : (", and the pieces in " + piecesFolder).c_str());
+  if (!guidesFolder.empty())
+  {
+    std::vector<std::string> guideFiles;
+    if (!writeGuides(mesh, lines ? lines.Get() : mesh.Get(), guidesFolder, space, guideFiles, error))
+    {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+    // An earlier run's guides that this one does not write go.
+    for (const std::string& name : lkapp::filesNotWritten(guidesFolder, isGuideLineFileName, guideFiles))
+      if (!vtksys::SystemTools::RemoveFile(guidesFolder + "/" + name))
+      {
+        std::cerr << "error: cannot remove the earlier guide '" << guidesFolder << "/" << name << "'\n";
+        return 1;
+      }
+  }
+  std::printf("written          %s (%lld bytes)%s%s\n", output.c_str(), lkapp::fileBytes(output),
+    piecesFolder.empty() ? "" : (", and the pieces in " + piecesFolder).c_str(),
+    guidesFolder.empty() ? "" : (", and the guides in " + guidesFolder).c_str());
   return 0;
 }

@@ -655,15 +655,11 @@ int main(int argc, char* argv[])
   guide->SetPlaneNormal(plan.normal.data());
   std::string guideError;
   {
-    const int before = lkapp::errorCount();
-    {
-      lkapp::ProgressBar bar(guide, "cutting guide", !quiet);
-      guide->Update();
-    }
-    if (guide->GetOutput()->GetNumberOfPolys() == 0)
-      guideError = lkapp::errorCount() > before ? lkapp::errorsSince(before) : std::string("no guide was made");
-    if (before == 0)
-      lkapp::clearErrors(); // the plan goes on without it; the report says why
+    // The plan goes on without it; the report says why.
+    lkapp::ProgressBar bar(guide, "cutting guide", !quiet);
+    guideError = lkapp::updateKeepingErrors(guide);
+    if (guideError.empty() && guide->GetOutput()->GetNumberOfPolys() == 0)
+      guideError = "no guide was made";
   }
   for (const char* name : { "guide.stl", "guide.vtp" })
     if (guideError.empty() && !lkapp::writeMesh(guide->GetOutput(), folder + "/" + name, error, space))

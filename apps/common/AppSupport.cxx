@@ -134,6 +134,21 @@ std::string lower(std::string s)
 
 } // namespace
 
+std::string updateKeepingErrors(vtkAlgorithm* algorithm)
+{
+  // An observer of ErrorEvent takes the error: VTK then does not print it.
+  std::string last;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&last);
+  onError->SetCallback([](vtkObject*, unsigned long, void* cd, void* call) {
+    *static_cast<std::string*>(cd) = call ? cleanMessage(static_cast<const char*>(call)) : std::string();
+  });
+  const unsigned long tag = algorithm->AddObserver(vtkCommand::ErrorEvent, onError);
+  algorithm->Update();
+  algorithm->RemoveObserver(tag);
+  return last;
+}
+
 std::string cleanMessage(const std::string& text)
 {
   std::string m = text;

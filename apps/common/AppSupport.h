@@ -41,6 +41,10 @@ void installMessageHandler(bool quiet = false);
 /// A VTK message as a user reads it: "ERROR: In file, line N\nvtkClass
 /// (0x..): message\n\n" gives "message".
 std::string cleanMessage(const std::string& text);
+/// Updates `algorithm` for a step the run goes on without (a cutting guide
+/// beside the cut): its errors are taken, not printed or counted, and the
+/// last one is returned, cleaned (empty: none).
+std::string updateKeepingErrors(vtkAlgorithm* algorithm);
 /// Number of VTK errors since the last call to clearErrors().
 int errorCount();
 /// Messages of those errors, joined by newlines.

@@ -65,10 +65,12 @@ void Planner::updateGuides()
     filter->SetPlaneOrigin(origin.data());
     filter->SetPlaneNormal(st.sawNormal.data());
     filter->SetOtherSide(session.guidesOtherSide);
-    const int before = lkapp::errorCount();
-    filter->Update();
+    g.error = lkapp::updateKeepingErrors(filter); // the plan goes on without it; its message says why
     if (filter->GetOutput()->GetNumberOfPolys() == 0)
-      g.error = lkapp::errorCount() > before ? lkapp::errorsSince(before) : std::string("no guide was made");
+    {
+      if (g.error.empty())
+        g.error = "no guide was made";
+    }
     else
     {
       g.surface = vtkSmartPointer<vtkPolyData>::New();
