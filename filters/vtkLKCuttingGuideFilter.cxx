@@ -1,6 +1,7 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKAbort.h"
 #include "vtkLKFieldValues.h"
+#include "vtkLKPolyDataConversion.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -91,23 +92,6 @@ std::vector<std::vector<Vec>> sectionLoops(vtkPolyData* surface, const Vec& o, c
   return loops;
 }
 
-/// The surface's polygons alone, as triangles.
-vtkSmartPointer<vtkPolyData> trianglesOf(vtkPolyData* input)
-{
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(input->GetPoints());
-  surface->SetPolys(input->GetPolys());
-  surface->SetStrips(input->GetStrips());
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(surface);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(triangles->GetOutput());
-  return out;
-}
-
 double areaOf(vtkPolyData* triangles)
 {
   double area = 0.0;
@@ -180,37 +164,19 @@ int vtkLKCuttingGuideFilter::RequestData(
       << " mm from the slot (a larger Reach, or ScrewHoleDiameter 0 for none).");
     return 0;
   }
-  if (!input || input->GetNumberOfPoints() < 3 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  if (const std::string why = lkvtk::surfaceProblem(input); !why.empty())
   {
-    vtkErrorMacro("Cannot make a cutting guide: the input has no surface (no polygons).");
+    vtkErrorMacro("Cannot make a cutting guide: " << why << ".");
     return 0;
   }
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    input->GetPoint(i, x);
-    if (!finiteVector(x))
-    {
-      vtkErrorMacro("Cannot make a cutting guide: point " << i << " of the input is not finite.");
-      return 0;
-    }
-  }
 
-  vtkSmartPointer<vtkPolyData> bone = trianglesOf(input);
+  vtkSmartPointer<vtkPolyData> bone = lkvtk::facesAsTriangles(input);
   const Vec o{ this->PlaneOrigin[0], this->PlaneOrigin[1], this->PlaneOrigin[2] };
   Vec n{ this->PlaneNormal[0], this->PlaneNormal[1], this->PlaneNormal[2] };
   vtkMath::Normalize(n.data());
   double bounds[6];
   bone->GetBounds(bounds);
   const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
-  if (!(diagonal > 0.0) || !std::isfinite(diagonal)) // std::hypot of an infinite range can be NaN
-  {
-    vtkErrorMacro("Cannot make a cutting guide: the surface's extent is "
-      << (diagonal == 0.0 ? "nil (every point in one place)"
-                          : "too large to measure (its bounding box's diagonal overflows)")
-      << ".");
-    return 0;
-  }
 
   // The section loop nearest the origin: the bone the guide goes on.
   const std::vector<std::vector<Vec>> loops = sectionLoops(bone, o, n);

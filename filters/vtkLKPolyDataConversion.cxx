@@ -11,6 +11,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStaticPointLocator.h>
+#include <vtkTriangleFilter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,44 @@
 
 namespace lkvtk
 {
+
+std::string surfaceProblem(vtkPolyData* pd)
+{
+  if (!pd || pd->GetNumberOfPoints() < 3 || pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
+    return "the input has no surface (no polygons or strips)";
+  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    pd->GetPoint(i, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      return "point " + std::to_string(i) + " is not finite";
+  }
+  double b[6];
+  pd->GetBounds(b);
+  const double low[3] = { b[0], b[2], b[4] }, high[3] = { b[1], b[3], b[5] };
+  const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(low, high)); // infinite, not NaN, on overflow
+  if (diagonal == 0.0)
+    return "every point is in one place";
+  if (!std::isfinite(diagonal))
+    return "the surface is too large to measure (its bounding box's diagonal overflows)";
+  return std::string();
+}
+
+vtkSmartPointer<vtkPolyData> facesAsTriangles(vtkPolyData* pd)
+{
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(pd->GetPoints());
+  surface->SetPolys(pd->GetPolys());
+  surface->SetStrips(pd->GetStrips());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(surface);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(triangles->GetOutput());
+  return out;
+}
 
 std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh)
 {

@@ -25,6 +25,16 @@ std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh);
 /// the same input checks as toTriangleMesh but for polygons.
 std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh);
 
+/// What makes `pd` no surface to work on, as a clause for vtkErrorMacro
+/// ("the input has no surface (no polygons or strips)", "point 5 is not
+/// finite", "every point is in one place", "the surface is too large to
+/// measure (...)"); empty when it is one.
+std::string surfaceProblem(vtkPolyData* pd);
+
+/// `pd`'s polygons and strips as triangles (polygons fanned, strips split;
+/// vertices and lines left out), on its points.
+vtkSmartPointer<vtkPolyData> facesAsTriangles(vtkPolyData* pd);
+
 /// A vtkPolyData with the mesh's points (double precision) and triangles.
 vtkSmartPointer<vtkPolyData> fromTriangleMesh(const lk::TriangleMesh& mesh);
 

@@ -15,7 +15,6 @@
 #include <vtkReverseSense.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
-#include <vtkTriangleFilter.h>
 
 #include <algorithm>
 #include <array>
@@ -91,53 +90,17 @@ int vtkLKSymmetryPlaneFilter::RequestData(
     vtkErrorMacro("MaximumNumberOfPoints must be 3 to 10^7, not " << this->MaximumNumberOfPoints << ".");
     return 0;
   }
-  if (!input || input->GetNumberOfPoints() < 3 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  if (const std::string why = lkvtk::surfaceProblem(input); !why.empty())
   {
-    vtkErrorMacro("Cannot find a plane of symmetry: the input has no surface (no polygons or strips).");
-    return 0;
-  }
-  const vtkIdType count = input->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    double x[3];
-    input->GetPoint(i, x);
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-    {
-      vtkErrorMacro("Cannot find a plane of symmetry: point " << i << " is not finite.");
-      return 0;
-    }
-  }
-  double bounds[6];
-  input->GetBounds(bounds);
-  const double start[3] = { bounds[0], bounds[2], bounds[4] };
-  const double diagonalLength = std::sqrt(vtkMath::Distance2BetweenPoints(
-    start, std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
-  if (diagonalLength == 0.0)
-  {
-    vtkErrorMacro("Cannot find a plane of symmetry: every point is in one place.");
-    return 0;
-  }
-  if (!std::isfinite(diagonalLength))
-  {
-    vtkErrorMacro("Cannot find a plane of symmetry: the surface is too large to measure (its bounding box's "
-                  "diagonal overflows).");
+    vtkErrorMacro("Cannot find a plane of symmetry: " << why << ".");
     return 0;
   }
   this->UpdateProgress(0.05);
 
   // The registration works on triangles: polygons fanned, strips split,
   // lines and vertices left out (the points stay as they are).
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(input->GetPoints());
-  surface->SetPolys(input->GetPolys());
-  surface->SetStrips(input->GetStrips());
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(surface);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
   lk::TriangleMesh mesh;
-  if (const std::string why = lkvtk::toTriangleMesh(triangles->GetOutput(), mesh);
+  if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(input), mesh);
       !why.empty() || mesh.triangles.empty())
   {
     vtkErrorMacro("Cannot find a plane of symmetry: " << (why.empty() ? "the input has no triangles" : why));
