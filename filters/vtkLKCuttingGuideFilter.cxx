@@ -2,13 +2,13 @@
 #include "vtkLKAbort.h"
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
+#include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCellData.h>
 #include <vtkClipPolyData.h>
-#include <vtkCutter.h>
 #include <vtkCylinder.h>
 #include <vtkDoubleArray.h>
 #include <vtkFeatureEdges.h>
@@ -27,7 +27,6 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
-#include <vtkStripper.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
 
@@ -59,56 +58,6 @@ bool finiteVector(const double v[3])
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
-/// The polylines of `surface`'s section by the plane (o, n), each a list of
-/// points (closed loops repeat no point).
-std::vector<std::vector<Vec>> sectionLoops(vtkPolyData* surface, const Vec& o, const Vec& n)
-{
-  vtkNew<vtkPlane> plane;
-  plane->SetOrigin(o.data());
-  plane->SetNormal(n.data());
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(surface);
-  cutter->SetCutFunction(plane);
-  vtkNew<vtkStripper> stripper;
-  stripper->SetInputConnection(cutter->GetOutputPort());
-  stripper->JoinContiguousSegmentsOn();
-  stripper->Update();
-  vtkPolyData* lines = stripper->GetOutput();
-  std::vector<std::vector<Vec>> loops;
-  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdList* ids = it->GetCurrentCell();
-    std::vector<Vec> loop;
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      Vec x;
-      lines->GetPoint(ids->GetId(k), x.data());
-      loop.push_back(x);
-    }
-    if (!loop.empty())
-      loops.push_back(std::move(loop));
-  }
-  return loops;
-}
-
-double areaOf(vtkPolyData* triangles)
-{
-  double area = 0.0;
-  auto it = vtk::TakeSmartPointer(triangles->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdList* ids = it->GetCurrentCell();
-    if (ids->GetNumberOfIds() != 3)
-      continue;
-    double a[3], b[3], c[3];
-    triangles->GetPoint(ids->GetId(0), a);
-    triangles->GetPoint(ids->GetId(1), b);
-    triangles->GetPoint(ids->GetId(2), c);
-    area += vtkTriangle::TriangleArea(a, b, c);
-  }
-  return area;
-}
 } // namespace
 
 int vtkLKCuttingGuideFilter::RequestData(
@@ -178,20 +127,13 @@ int vtkLKCuttingGuideFilter::RequestData(
   bone->GetBounds(bounds);
   const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
 
-  // The section loop nearest the origin: the bone the guide goes on.
-  const std::vector<std::vector<Vec>> loops = sectionLoops(bone, o, n);
-  const std::vector<Vec>* loop = nullptr;
-  double nearest = std::numeric_limits<double>::infinity();
-  for (const auto& l : loops)
-    for (const Vec& x : l)
-    {
-      const double d2 = vtkMath::Distance2BetweenPoints(x.data(), o.data());
-      if (d2 < nearest)
-      {
-        nearest = d2;
-        loop = &l;
-      }
-    }
+  // The section nearest the origin: the bone the guide goes on.
+  vtkNew<vtkPlane> cutPlane;
+  cutPlane->SetOrigin(o.data());
+  cutPlane->SetNormal(n.data());
+  const std::vector<std::vector<Vec>> sections = lkvtk::sectionPolylines(bone, cutPlane);
+  const int nearest = lkvtk::nearestPolyline(sections, o);
+  const std::vector<Vec>* loop = nearest < 0 ? nullptr : &sections[static_cast<std::size_t>(nearest)];
   if (!loop)
   {
     vtkErrorMacro("Cannot make a cutting guide: the plane meets no part of the bone.");
@@ -305,8 +247,7 @@ int vtkLKCuttingGuideFilter::RequestData(
   };
   auto runOf = [&](std::vector<Vec> section) {
     Run run;
-    const bool closed = section.size() > 2 &&
-      vtkMath::Distance2BetweenPoints(section.front().data(), section.back().data()) <= 1e-18 * diagonal * diagonal;
+    const bool closed = section.size() > 2 && section.front() == section.back();
     if (closed)
       section.pop_back();
     const std::size_t count = section.size();
@@ -637,7 +578,10 @@ int vtkLKCuttingGuideFilter::RequestData(
     }
     points->Modified();
   }
-  this->ContactArea = areaOf(slotted);
+  vtkNew<vtkMassProperties> contactArea;
+  contactArea->SetInputData(slotted);
+  contactArea->Update();
+  this->ContactArea = contactArea->GetSurfaceArea();
   this->UpdateProgress(0.7);
   if (lkvtk::stopRequested(this, { output }))
     return 1;

@@ -1,12 +1,9 @@
 #include "common/PlaneSection.h"
+#include "vtkLKSectionLoops.h"
 
-#include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
-#include <vtkCutter.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPlane.h>
-#include <vtkStripper.h>
 
 #include <cmath>
 
@@ -16,30 +13,9 @@ namespace lkapp
 std::vector<std::vector<Point3>> sectionLoops(vtkPolyData* surface, vtkImplicitFunction* function)
 {
   std::vector<std::vector<Point3>> loops;
-  if (!surface || !function || surface->GetNumberOfPolys() == 0)
-    return loops;
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(surface);
-  cutter->SetCutFunction(function);
-  vtkNew<vtkStripper> strip;
-  strip->SetInputConnection(cutter->GetOutputPort());
-  strip->JoinContiguousSegmentsOn();
-  strip->Update();
-  vtkPolyData* sections = strip->GetOutput();
-  if (!sections->GetLines())
-    return loops;
-  auto it = vtk::TakeSmartPointer(sections->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    if (n < 8 || ids[0] != ids[n - 1])
-      continue; // open sections (at an open surface's border) are not loops
-    std::vector<Point3>& loop = loops.emplace_back(static_cast<std::size_t>(n));
-    for (vtkIdType k = 0; k < n; ++k)
-      sections->GetPoint(ids[k], loop[static_cast<std::size_t>(k)].data());
-  }
+  for (std::vector<Point3>& line : lkvtk::sectionPolylines(surface, function))
+    if (line.size() >= 8 && line.front() == line.back()) // open sections (at an open surface's border) are not loops
+      loops.push_back(std::move(line));
   return loops;
 }
 
@@ -59,21 +35,7 @@ std::vector<std::vector<Point3>> planeSectionLoops(
 
 int nearestLoop(const std::vector<std::vector<Point3>>& loops, const Point3& p, double* distance)
 {
-  int best = -1;
-  double nearest = VTK_DOUBLE_MAX;
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    for (const Point3& q : loops[l])
-    {
-      const double d = vtkMath::Distance2BetweenPoints(p.data(), q.data());
-      if (d < nearest)
-      {
-        nearest = d;
-        best = static_cast<int>(l);
-      }
-    }
-  if (distance)
-    *distance = best < 0 ? VTK_DOUBLE_MAX : std::sqrt(nearest);
-  return best;
+  return lkvtk::nearestPolyline(loops, p, distance);
 }
 
 bool loopEncloses(const std::vector<Point3>& loop, const Point3& p, const Point3& normal)
