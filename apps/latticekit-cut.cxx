@@ -18,9 +18,10 @@
 #include <vtkPolyData.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <array>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <regex>
 #include <string>
@@ -68,6 +69,34 @@ bool isCutLinesFileName(const std::string& name)
   return name.size() > cutLinesSuffix.size() &&
     name.compare(name.size() - cutLinesSuffix.size(), cutLinesSuffix.size(), cutLinesSuffix) == 0 &&
     lkapp::isPieceFileName(name.substr(0, name.size() - cutLinesSuffix.size()) + ".vtp");
+}
+
+/// Makes `folder` for what `option` writes (`what`: "pieces", "guides") and
+/// tries the file `probe` in it, so that a folder that cannot be written is
+/// reported before the cut, not after it; first refuses an input among the
+/// files written or removed there (`ours`). False with the message printed.
+bool prepareFolder(const std::string& folder, const char* option, const char* what, const char* probe,
+  const std::vector<std::string>& inputs, const std::function<bool(const std::string&)>& ours)
+{
+  for (const std::string& in : inputs)
+    if (ours(in))
+    {
+      std::cerr << "error: '" << in << "' is one of the files " << option << " writes or removes in '" << folder
+                << "': give the " << what << " another folder\n";
+      return false;
+    }
+  std::string error;
+  if (!vtksys::SystemTools::MakeDirectory(folder))
+  {
+    std::cerr << "error: cannot make the folder '" << folder << "' for the " << what << "\n";
+    return false;
+  }
+  if (!lkapp::checkWritable(folder + "/" + probe, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return false;
+  }
+  return true;
 }
 
 /// The files --guides writes: "guide_lineN.stl" and "guide_lineN.vtp".
@@ -136,12 +165,7 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       if (!lkapp::writeMesh(guide->GetOutput(), folder + "/" + written.back(), error, space))
         return false;
     }
-    double along[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      along[c] = -guide->GetApproachUsed()[c];
-      along[c] = std::abs(along[c]) < 5e-4 ? 0.0 : along[c]; // no "-0.000"
-    }
+    const std::array<double, 3> along = lkapp::guideDirection(guide->GetApproachUsed());
     std::printf("%-16s slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, %d screw hole(s) of %.1f mm, on "
                 "%.0f mm^2 of bone, put on along (%.3f, %.3f, %.3f); %.0f mm^3: %s.stl, .vtp\n",
       label.c_str(), guide->GetSlotLength(), guide->GetSlotWidth(), guide->GetThickness(),
@@ -190,56 +214,23 @@ int main(int argc, char* argv[])
   lkapp::installMessageHandler(quiet);
   if (!lkapp::checkAllWritable({ output }, { input, linesPath }))
     return 1;
-  if (!piecesFolder.empty())
-  {
-    // The pieces' files (pieceN.stl, .vtp, .obj) are written there, and
-    // those of an earlier cut beyond this one's count removed: an input
-    // among them (a piece cut again into its own folder) would be lost.
-    for (const std::string& in : { input, linesPath })
-    {
-      if (lkapp::isExportedFile(in, piecesFolder, {}) ||
-        (isCutLinesFileName(vtksys::SystemTools::GetFilenameName(in)) && lkapp::isInFolder(in, piecesFolder)))
-      {
-        std::cerr << "error: '" << in << "' is one of the files --pieces writes or removes in '" << piecesFolder
-                  << "': give the pieces another folder\n";
-        return 1;
-      }
-    }
-    // The folder is made now, and a file in it tried, so that a folder that
-    // cannot be written is reported before the cut, not after it.
-    std::string error;
-    if (!vtksys::SystemTools::MakeDirectory(piecesFolder))
-    {
-      std::cerr << "error: cannot make the folder '" << piecesFolder << "' for the pieces\n";
-      return 1;
-    }
-    if (!lkapp::checkWritable(piecesFolder + "/piece0.stl", error))
-    {
-      std::cerr << "error: " << error << "\n";
-      return 1;
-    }
-  }
-  if (!guidesFolder.empty())
-  {
-    for (const std::string& in : { input, linesPath })
-      if (isGuideLineFileName(vtksys::SystemTools::GetFilenameName(in)) && lkapp::isInFolder(in, guidesFolder))
-      {
-        std::cerr << "error: '" << in << "' is one of the files --guides writes or removes in '" << guidesFolder
-                  << "': give the guides another folder\n";
-        return 1;
-      }
-    std::string error;
-    if (!vtksys::SystemTools::MakeDirectory(guidesFolder))
-    {
-      std::cerr << "error: cannot make the folder '" << guidesFolder << "' for the guides\n";
-      return 1;
-    }
-    if (!lkapp::checkWritable(guidesFolder + "/guide_line1.stl", error))
-    {
-      std::cerr << "error: " << error << "\n";
-      return 1;
-    }
-  }
+  // The pieces' files (pieceN.stl, .vtp, .obj) are written there, and
+  // those of an earlier cut beyond this one's count removed: an input among
+  // them (a piece cut again into its own folder) would be lost. So for the
+  // guides' files.
+  if (!piecesFolder.empty() &&
+    !prepareFolder(piecesFolder, "--pieces", "pieces", "piece0.stl", { input, linesPath },
+      [&](const std::string& in) {
+        return lkapp::isExportedFile(in, piecesFolder, {}) ||
+          (isCutLinesFileName(vtksys::SystemTools::GetFilenameName(in)) && lkapp::isInFolder(in, piecesFolder));
+      }))
+    return 1;
+  if (!guidesFolder.empty() &&
+    !prepareFolder(guidesFolder, "--guides", "guides", "guide_line1.stl", { input, linesPath },
+      [&](const std::string& in) {
+        return isGuideLineFileName(vtksys::SystemTools::GetFilenameName(in)) && lkapp::isInFolder(in, guidesFolder);
+      }))
+    return 1;
   std::string error;
   vtkSmartPointer<vtkPolyData> mesh = lkapp::readMesh(input, error);
   vtkSmartPointer<vtkPolyData> lines;

@@ -733,14 +733,15 @@ int main(int argc, char* argv[])
     report << " piece " << p << " " << pieces[p]->GetNumberOfPolys() << " triangles" << (p + 1 < pieces.size() ? ";" : ".");
   if (guideError.empty())
   {
+    const std::array<double, 3> along = lkapp::guideDirection(guide->GetApproachUsed());
     char text[400];
     std::snprintf(text, sizeof text,
       "\n- Cutting guide (`guide.stl`): a shell %.1f mm thick on %.0f mm^2 of the bone within %.0f mm of the cut "
       "plane, on the outer side (along the section's short axis, away from the bone round the cut; put on along "
       "(%.3f, %.3f, %.3f)), with a slot %.1f mm wide and %.1f mm long in the plane for the saw and %d screw "
       "hole(s) of %.1f mm beside it to hold it; %.0f mm^3.",
-      guide->GetThickness(), guide->GetContactArea(), guide->GetReach(), -guide->GetApproachUsed()[0],
-      -guide->GetApproachUsed()[1], -guide->GetApproachUsed()[2], guide->GetSlotWidth(), guide->GetSlotLength(),
+      guide->GetThickness(), guide->GetContactArea(), guide->GetReach(), along[0], along[1], along[2],
+      guide->GetSlotWidth(), guide->GetSlotLength(),
       guide->GetNumberOfScrewHoles(), guide->GetScrewHoleDiameter(), guide->GetVolume());
     report << text;
   }

@@ -575,6 +575,14 @@ bool isLatticeFileName(const std::string& name)
     isPieceFileName(name.substr(prefix.size()));
 }
 
+std::array<double, 3> guideDirection(const double approach[3])
+{
+  std::array<double, 3> along{};
+  for (int c = 0; c < 3; ++c)
+    along[c] = std::abs(approach[c]) < 5e-4 ? 0.0 : -approach[c];
+  return along;
+}
+
 bool isGuideFileName(const std::string& name)
 {
   static const std::regex guide("guide_stroke[0-9]+[.](stl|vtp)");

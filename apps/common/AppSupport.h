@@ -128,6 +128,10 @@ bool isPieceFileName(const std::string& name);
 /// Whether a file's name (no folder) is one the planner's export writes for
 /// a piece's lattice: "lattice_", a piece's stem (isPieceFileName), ".vtp".
 bool isLatticeFileName(const std::string& name);
+/// The direction a cutting guide is put on along: its approach (the
+/// filter's ApproachUsed, from the bone toward the surgeon) reversed, with
+/// rounding's dust (below 5e-4) made 0, so that a report gives no "-0.000".
+std::array<double, 3> guideDirection(const double approach[3]);
 /// Whether a file's name (no folder) is one the planner's export writes for
 /// a cutting guide: "guide_stroke", digits, ".stl" or ".vtp".
 bool isGuideFileName(const std::string& name);

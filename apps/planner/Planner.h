@@ -17,6 +17,7 @@
 #include "common/ScanPicture.h"
 #include "planner/PlannerSession.h"
 
+#include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
 
@@ -251,11 +252,10 @@ public:
     std::size_t stroke = 0;                        ///< the saw line's stroke, from 0
     std::array<double, 3> origin{}, normal{};      ///< its plane, as the guide was made on it
     bool otherSide = false;                        ///< on the side the filter does not choose
+    /// The filter that made it: its settings and what it measured (the
+    /// approach, the slot's length, the contact, the volume, the holes).
+    vtkSmartPointer<vtkLKCuttingGuideFilter> filter;
     vtkSmartPointer<vtkPolyData> surface;          ///< null when it could not be made (error)
-    std::array<double, 3> approach{ 0, 0, 0 };     ///< the side it goes on (unit)
-    double slotLength = 0.0, slotWidth = 0.0, thickness = 0.0, contactArea = 0.0, volume = 0.0;
-    int screwHoles = 0;              ///< made beside the slot ...
-    double screwHoleDiameter = 0.0;  ///< ... this wide
     std::string error;
   };
   std::vector<CuttingGuide> guides;

@@ -60,30 +60,16 @@ void Planner::updateGuides()
     g.origin = origin;
     g.normal = st.sawNormal;
     g.otherSide = session.guidesOtherSide;
-    vtkNew<vtkLKCuttingGuideFilter> filter;
-    filter->SetInputData(facesOnly(bone));
-    filter->SetPlaneOrigin(origin.data());
-    filter->SetPlaneNormal(st.sawNormal.data());
-    filter->SetOtherSide(session.guidesOtherSide);
-    g.error = lkapp::updateKeepingErrors(filter); // the plan goes on without it; its message says why
-    if (filter->GetOutput()->GetNumberOfPolys() == 0)
-    {
-      if (g.error.empty())
-        g.error = "no guide was made";
-    }
-    else
-    {
-      g.surface = vtkSmartPointer<vtkPolyData>::New();
-      g.surface->ShallowCopy(filter->GetOutput());
-      filter->GetApproachUsed(g.approach.data());
-      g.slotLength = filter->GetSlotLength();
-      g.contactArea = filter->GetContactArea();
-      g.volume = filter->GetVolume();
-      g.slotWidth = filter->GetSlotWidth();
-      g.thickness = filter->GetThickness();
-      g.screwHoles = filter->GetNumberOfScrewHoles();
-      g.screwHoleDiameter = filter->GetScrewHoleDiameter();
-    }
+    g.filter = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
+    g.filter->SetInputData(facesOnly(bone));
+    g.filter->SetPlaneOrigin(origin.data());
+    g.filter->SetPlaneNormal(st.sawNormal.data());
+    g.filter->SetOtherSide(session.guidesOtherSide);
+    g.error = lkapp::updateKeepingErrors(g.filter); // the plan goes on without it; its message says why
+    if (g.filter->GetOutput()->GetNumberOfPolys() > 0)
+      g.surface = g.filter->GetOutput();
+    else if (g.error.empty())
+      g.error = "no guide was made";
     made.push_back(g);
   }
   guides = made;
@@ -118,23 +104,24 @@ std::string Planner::guidesText() const
       continue; // its message says why
     // The side it goes on, in the patient's words where the bone's
     // coordinates are known (LPS).
-    std::array<double, 3> along{ -g.approach[0], -g.approach[1], -g.approach[2] };
-    for (double& v : along)
-      v = std::abs(v) < 5e-4 ? 0.0 : v; // no "-0.000"
+    const double* approach = g.filter->GetApproachUsed();
+    const std::array<double, 3> along = lkapp::guideDirection(approach);
     const std::string side = lkapp::coordinateSpace(bone) == "LPS"
-      ? std::string("from ") + lkapp::directionWord(g.approach) + " "
+      ? std::string("from ") + lkapp::directionWord({ approach[0], approach[1], approach[2] }) + " "
       : std::string();
+    const int screwHoles = g.filter->GetNumberOfScrewHoles();
     char holes[80] = "no screw hole";
-    if (g.screwHoles > 0)
-      std::snprintf(holes, sizeof holes, "%d screw hole%s of %.1f mm", g.screwHoles, g.screwHoles == 1 ? "" : "s",
-        g.screwHoleDiameter);
+    if (screwHoles > 0)
+      std::snprintf(holes, sizeof holes, "%d screw hole%s of %.1f mm", screwHoles, screwHoles == 1 ? "" : "s",
+        g.filter->GetScrewHoleDiameter());
     char line[500];
     std::snprintf(line, sizeof line,
       "cutting guide for the saw line of stroke %zu: slot %.1f mm long and %.1f mm wide in the saw's plane, "
       "walls %.1f mm thick, %s, resting on %.0f mm^2 of bone, put on %s(along (%.3f, %.3f, %.3f)); %.0f mm^3 "
       "(%s.stl)\n",
-      g.stroke + 1, g.slotLength, g.slotWidth, g.thickness, holes, g.contactArea, side.c_str(), along[0], along[1],
-      along[2], g.volume, guideFileStem(g.stroke).c_str());
+      g.stroke + 1, g.filter->GetSlotLength(), g.filter->GetSlotWidth(), g.filter->GetThickness(), holes,
+      g.filter->GetContactArea(), side.c_str(), along[0], along[1], along[2], g.filter->GetVolume(),
+      guideFileStem(g.stroke).c_str());
     text += line;
   }
   return text;
