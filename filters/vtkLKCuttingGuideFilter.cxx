@@ -640,6 +640,19 @@ int vtkLKCuttingGuideFilter::RequestData(
   output->GetCellData()->Initialize();
   output->GetFieldData()->PassData(input->GetFieldData());
 
+  // The middle of the slot on the bone (on the plane where no ray meets
+  // it): where the saw enters, and the guide's place for others (a bar
+  // that joins two guides).
+  Vec slotCentre = add(o, e, 0.5 * (low + high) - uOf(o));
+  {
+    Vec from = add(slotCentre, d, top + 1.0 - vOf(slotCentre)), to = add(slotCentre, d, bottom - vOf(slotCentre));
+    double t = 0.0, x[3], pcoords[3];
+    int subId = 0;
+    vtkIdType hit = -1;
+    if (locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell))
+      slotCentre = { x[0], x[1], x[2] };
+  }
+
   std::copy(d.begin(), d.end(), this->ApproachUsed);
   this->SlotLength = slotLength;
   this->Volume = mass->GetVolume();
@@ -648,6 +661,13 @@ int vtkLKCuttingGuideFilter::RequestData(
   lkvtk::addFieldValue(fd, "GuideSlotLength", this->SlotLength);
   lkvtk::addFieldValue(fd, "GuideContactArea", this->ContactArea);
   lkvtk::addFieldValue(fd, "GuideVolume", this->Volume);
+  lkvtk::addFieldValues(fd, "GuidePlaneNormal", n.data(), 3);
+  lkvtk::addFieldValues(fd, "GuideSlotCentre", slotCentre.data(), 3);
+  lkvtk::addFieldValue(fd, "GuideSlotWidth", this->SlotWidth);
+  lkvtk::addFieldValue(fd, "GuideThickness", this->Thickness);
+  lkvtk::addFieldValue(fd, "GuideReach", this->Reach);
+  lkvtk::addFieldValue(fd, "GuideClearance", this->Clearance);
+  lkvtk::addFieldValue(fd, "GuideScrewHoleDiameter", holes.empty() ? 0.0 : this->ScrewHoleDiameter);
   vtkNew<vtkDoubleArray> holeCentres; // where each screw hole meets the bone
   holeCentres->SetName("GuideScrewHoles");
   holeCentres->SetNumberOfComponents(3);

@@ -59,7 +59,10 @@
  * (mm, along the plane), GuideContactArea (mm^2 of bone surface under the
  * guide, the slot and the holes left out), GuideVolume (mm^3),
  * GuideScrewHoles (a 3-value tuple for each hole: where its axis meets the
- * bone), and the input's SPACE tag. The same values are kept in the filter
+ * bone); what places the guide for other filters (vtkLKGuideBarFilter):
+ * GuidePlaneNormal (unit), GuideSlotCentre (the middle of the slot on the
+ * bone), GuideSlotWidth, GuideThickness, GuideReach, GuideClearance and
+ * GuideScrewHoleDiameter (0: no holes); and the input's SPACE tag. The same values are kept in the filter
  * after an update.
  *
  * Errors (a VTK error and an empty output): a plane normal or an approach

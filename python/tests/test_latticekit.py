@@ -24,7 +24,8 @@ class ImportTest(unittest.TestCase):
                      "vtkLKStrokeFeatureLineFilter",
                      "vtkLKWrinklySurfaceFilter", "vtkLKWrinklyNetSource",
                      "vtkLKPatchDeformationFilter", "vtkLKStructureSetWriter",
-                     "vtkLKSymmetryPlaneFilter", "vtkLKCuttingGuideFilter"):
+                     "vtkLKSymmetryPlaneFilter", "vtkLKCuttingGuideFilter",
+                     "vtkLKGuideBarFilter"):
             cls = getattr(latticekit, name)
             obj = cls()
             self.assertTrue(obj.IsA("vtkAlgorithm"), name)
@@ -886,6 +887,71 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(guide.GetOutput().GetNumberOfCells(), 0)
         self.assertEqual(len(errors), 1)
 
+    def test_a_resection_guide_joins_the_guides_of_two_cuts(self):
+        # A segment of the anterior mandible between cuts through the left
+        # and the right body: the two guides joined by a bar in front of the
+        # chin, one closed part to print, its screw holes open from above.
+        import latticekit
+        from vtkmodules.vtkFiltersCore import vtkFeatureEdges, vtkImplicitPolyDataDistance, vtkPolyDataConnectivityFilter
+
+        reader = latticekit.vtkLKMedicalImageReader()
+        reader.SetFileName(MANDIBLE)
+        bone = latticekit.vtkLKBoneSurfaceFilter()
+        bone.SetInputConnection(reader.GetOutputPort())
+        guides = []
+        for x, tilt in ((-30, -0.3), (30, 0.3)):
+            guide = latticekit.vtkLKCuttingGuideFilter()
+            guide.SetInputConnection(bone.GetOutputPort())
+            guide.SetPlaneOrigin(x, 276.64, -982.1)
+            guide.SetPlaneNormal(1, tilt, 0)
+            guide.Update()
+            guides.append(guide)
+        bar = latticekit.vtkLKGuideBarFilter()
+        bar.SetInputConnection(0, bone.GetOutputPort())
+        for guide in guides:
+            bar.AddGuideConnection(guide.GetOutputPort())
+        bar.Update()
+        out = bar.GetOutput()
+        self.assertGreater(out.GetNumberOfCells(), 1000)
+        edges = vtkFeatureEdges()
+        edges.SetInputData(out)
+        edges.BoundaryEdgesOn()
+        edges.NonManifoldEdgesOn()
+        edges.FeatureEdgesOff()
+        edges.ManifoldEdgesOff()
+        edges.Update()
+        self.assertEqual(edges.GetOutput().GetNumberOfCells(), 0)
+        parts = vtkPolyDataConnectivityFilter()
+        parts.SetInputData(out)
+        parts.SetExtractionModeToAllRegions()
+        parts.Update()
+        self.assertEqual(parts.GetNumberOfExtractedRegions(), 1)
+        self.assertGreater(bar.GetVolume(), sum(g.GetVolume() for g in guides))
+        self.assertGreater(bar.GetBarLength(), 40.0)
+        self.assertLess(bar.GetBarLength(), 90.0)
+        self.assertAlmostEqual(bar.GetBarDiameter(), 4.0)  # the walls' thickness
+        self.assertGreater(bar.GetBarGap(), 1.97)
+        fields = out.GetFieldData()
+        self.assertAlmostEqual(fields.GetArray("GuideBarLength").GetValue(0), bar.GetBarLength(), places=9)
+        self.assertEqual(fields.GetAbstractArray("SPACE").GetValue(0), "LPS")
+        # In front of the chin (-y in LPS), and nowhere inside the bone.
+        bounds = out.GetBounds()
+        chin = bone.GetOutput().GetBounds()
+        self.assertLess(bounds[2], chin[2] - 2.0)
+        inside = vtkImplicitPolyDataDistance()
+        inside.SetInput(bone.GetOutput())
+        deepest = min(inside.EvaluateFunction(out.GetPoint(i)) for i in range(0, out.GetNumberOfPoints(), 7))
+        self.assertGreater(deepest, -1e-3)
+        # One guide: a VTK error and an empty output.
+        single = latticekit.vtkLKGuideBarFilter()
+        single.SetInputConnection(0, bone.GetOutputPort())
+        single.AddGuideConnection(guides[0].GetOutputPort())
+        errors = []
+        single.AddObserver("ErrorEvent", lambda caller, event: errors.append(event))
+        single.Update()
+        self.assertEqual(single.GetOutput().GetNumberOfCells(), 0)
+        self.assertEqual(len(errors), 1)
+
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
         # vtkNrrdReader reads nothing; latticekit's reader must not be fooled.
@@ -979,8 +1045,8 @@ class AbortTest(unittest.TestCase):
         from vtkmodules.util.vtkConstants import VTK_STRING
         from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
         from vtkmodules.vtkCommonDataModel import vtkPolyData
-        from vtkmodules.vtkFiltersCore import vtkTriangleFilter
-        from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+        from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkTriangleFilter
+        from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
 
         sphere = vtkSphereSource()
         sphere.SetThetaResolution(24)
@@ -1039,6 +1105,31 @@ class AbortTest(unittest.TestCase):
                 return f
             return make
 
+        box = vtkCubeSource()
+        box.SetXLength(100)
+        box.SetYLength(20)
+        box.SetZLength(30)
+        box_faces = vtkTriangleFilter()
+        box_faces.SetInputConnection(box.GetOutputPort())
+        box_triangles = vtkCleanPolyData()  # the cube's faces share their corners
+        box_triangles.SetInputConnection(box_faces.GetOutputPort())
+        box_triangles.Update()
+        box_guides = []
+        for x in (-30, 30):
+            g = latticekit.vtkLKCuttingGuideFilter()
+            g.SetInputConnection(box_triangles.GetOutputPort())
+            g.SetPlaneOrigin(x, 0, 0)
+            g.SetApproach(0, -1, 0)
+            g.Update()
+            box_guides.append(g.GetOutput())
+
+        def guide_bar():
+            f = latticekit.vtkLKGuideBarFilter()
+            f.SetBoneData(box_triangles.GetOutput())
+            for g in box_guides:
+                f.AddGuideData(g)
+            return f
+
         cases = {
             "bone surface": bone,
             "mesh repair": made(latticekit.vtkLKMeshRepairFilter, InputData=ball),
@@ -1055,6 +1146,7 @@ class AbortTest(unittest.TestCase):
             "patch deformation": made(latticekit.vtkLKPatchDeformationFilter, InputConnection=flat.GetOutputPort()),
             "cutting guide": made(latticekit.vtkLKCuttingGuideFilter, InputData=ball, Reach=0.2, SlotWidth=0.1,
                                   Bridge=0.1, Thickness=0.1, ScrewHoleDiameter=0),
+            "guide bar": guide_bar,
         }
         for name, make in cases.items():
             f = make()

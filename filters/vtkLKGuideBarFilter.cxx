@@ -1,0 +1,447 @@
+#include "vtkLKGuideBarFilter.h"
+#include "vtkLKAbort.h"
+#include "vtkLKFieldValues.h"
+#include "vtkLKPolyDataConversion.h"
+
+#include "latticekit/SolidUnion.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCleanPolyData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
+#include <vtkImplicitPolyDataDistance.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMassProperties.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkTriangleFilter.h>
+#include <vtkTubeFilter.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkLKGuideBarFilter);
+
+namespace
+{
+using Vec = std::array<double, 3>;
+
+Vec add(const Vec& a, const Vec& b, double s = 1.0)
+{
+  return { a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2] };
+}
+
+double dot(const Vec& a, const Vec& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+double distance(const Vec& a, const Vec& b)
+{
+  return std::sqrt(vtkMath::Distance2BetweenPoints(a.data(), b.data()));
+}
+
+/// One guide's place, from its field data.
+struct Guide
+{
+  Vec approach{}, normal{}, slotCentre{};
+  double slotWidth = 0.0, thickness = 0.0, reach = 0.0, clearance = 0.0, hole = 0.0;
+};
+
+/// Reads `name` (`components` finite values) from the guide's field data;
+/// false if it is missing or wrong.
+bool readField(vtkPolyData* guide, const char* name, double* values, int components)
+{
+  vtkDataArray* a = guide->GetFieldData() ? guide->GetFieldData()->GetArray(name) : nullptr;
+  if (!a || a->GetNumberOfComponents() != components || a->GetNumberOfTuples() < 1)
+    return false;
+  for (int k = 0; k < components; ++k)
+  {
+    values[k] = a->GetComponent(0, k);
+    if (!std::isfinite(values[k]))
+      return false;
+  }
+  return true;
+}
+} // namespace
+
+vtkLKGuideBarFilter::vtkLKGuideBarFilter()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+int vtkLKGuideBarFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  return 1;
+}
+
+int vtkLKGuideBarFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->BarLength = this->BarDiameter = this->BarGap = this->Volume = 0.0;
+
+  struct Range
+  {
+    const char* name;
+    double value, low, high;
+  };
+  for (const Range& r : { Range{ "StandOff", this->StandOff, 0.0, 50.0 },
+         Range{ "MaximumLength", this->MaximumLength, 1.0, 1000.0 } })
+    if (!(r.value >= r.low && r.value <= r.high))
+    {
+      vtkErrorMacro("Cannot join the guides: " << r.name << " must be " << r.low << " to " << r.high << " mm, not "
+                                               << r.value << ".");
+      return 0;
+    }
+  if (!(this->Diameter == 0.0 || (this->Diameter >= 1.0 && this->Diameter <= 20.0)))
+  {
+    vtkErrorMacro("Cannot join the guides: Diameter must be 1 to 20 mm (0: the guides' wall thickness), not "
+      << this->Diameter << ".");
+    return 0;
+  }
+  const int count = inputVector[1]->GetNumberOfInformationObjects();
+  if (count != 2)
+  {
+    vtkErrorMacro("Cannot join the guides: a bar joins two guides, and port 1 has " << count << ".");
+    return 0;
+  }
+  if (const std::string why = lkvtk::surfaceProblem(input); !why.empty())
+  {
+    vtkErrorMacro("Cannot join the guides: the bone: " << why << ".");
+    return 0;
+  }
+  vtkPolyData* guideData[2] = { vtkPolyData::GetData(inputVector[1], 0), vtkPolyData::GetData(inputVector[1], 1) };
+  Guide guide[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    Guide& g = guide[i];
+    const char* missing = nullptr;
+    if (!guideData[i] || guideData[i]->GetNumberOfPolys() == 0)
+      missing = "polygons";
+    else if (!readField(guideData[i], "GuideApproach", g.approach.data(), 3))
+      missing = "GuideApproach";
+    else if (!readField(guideData[i], "GuidePlaneNormal", g.normal.data(), 3))
+      missing = "GuidePlaneNormal";
+    else if (!readField(guideData[i], "GuideSlotCentre", g.slotCentre.data(), 3))
+      missing = "GuideSlotCentre";
+    else if (!readField(guideData[i], "GuideSlotWidth", &g.slotWidth, 1))
+      missing = "GuideSlotWidth";
+    else if (!readField(guideData[i], "GuideThickness", &g.thickness, 1))
+      missing = "GuideThickness";
+    else if (!readField(guideData[i], "GuideReach", &g.reach, 1))
+      missing = "GuideReach";
+    else if (!readField(guideData[i], "GuideClearance", &g.clearance, 1))
+      missing = "GuideClearance";
+    else if (!readField(guideData[i], "GuideScrewHoleDiameter", &g.hole, 1))
+      missing = "GuideScrewHoleDiameter";
+    if (missing)
+    {
+      vtkErrorMacro("Cannot join the guides: guide " << i + 1 << " has no " << missing
+                                                      << " (guides come from vtkLKCuttingGuideFilter).");
+      return 0;
+    }
+    vtkMath::Normalize(g.approach.data());
+    vtkMath::Normalize(g.normal.data());
+  }
+  const double apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(guide[0].approach, guide[1].approach), -1.0, 1.0)));
+  if (apart > 120.0)
+  {
+    vtkErrorMacro("Cannot join the guides: they are put on from directions " << apart
+      << " degrees apart (more than 120): a bar between them would go round the bone.");
+    return 0;
+  }
+  if (distance(guide[0].slotCentre, guide[1].slotCentre) > this->MaximumLength)
+  {
+    vtkErrorMacro("Cannot join the guides: their slots are " << distance(guide[0].slotCentre, guide[1].slotCentre)
+      << " mm apart, more than MaximumLength (" << this->MaximumLength << " mm).");
+    return 0;
+  }
+  const double radius = 0.5 * (this->Diameter > 0.0 ? this->Diameter : std::min(guide[0].thickness, guide[1].thickness));
+  Vec mean = add(guide[0].approach, guide[1].approach);
+  vtkMath::Normalize(mean.data());
+
+  vtkSmartPointer<vtkPolyData> bone = lkvtk::facesAsTriangles(input);
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(bone);
+  locator->BuildLocator();
+  double bounds[6];
+  bone->GetBounds(bounds);
+  const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+  vtkNew<vtkGenericCell> cell;
+  // How high the bone is along `d` under `x` (the first face a ray down
+  // along -d from far above meets), or -infinity where it meets none.
+  auto boneHeight = [&](const Vec& x, const Vec& d) {
+    const Vec from = add(x, d, diagonal), to = add(x, d, -diagonal);
+    double t = 0.0, hit[3], pcoords[3];
+    int subId = 0;
+    vtkIdType cellId = -1;
+    if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
+      return -std::numeric_limits<double>::infinity();
+    return dot(add({ hit[0], hit[1], hit[2] }, x, -1.0), d);
+  };
+
+  // The distance to the bone, signed (negative inside), and the nearest
+  // point of it.
+  vtkNew<vtkPolyDataNormals> outward; // the sign needs faces facing out
+  outward->SetInputData(bone);
+  outward->ConsistencyOn();
+  outward->AutoOrientNormalsOn();
+  outward->SplittingOff();
+  outward->ComputeCellNormalsOn();
+  outward->ComputePointNormalsOff();
+  outward->Update();
+  vtkNew<vtkImplicitPolyDataDistance> away;
+  away->SetInput(outward->GetOutput());
+
+  // Each end: at the guide's edge on the other's side of its slot, clear of
+  // the screw hole, in the wall: its middle above the bone along the
+  // approach, or higher where the bar would reach into the bone there (a
+  // bar thicker than the wall, a wall on a slope).
+  Vec end[2], lead[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    const Guide& g = guide[i];
+    const Guide& other = guide[1 - i];
+    Vec side = g.normal;
+    if (dot(add(other.slotCentre, g.slotCentre, -1.0), side) < 0.0)
+      side = { -side[0], -side[1], -side[2] };
+    const double half = g.slotWidth / 2.0;
+    const double inner = g.hole > 0.0 ? 0.5 * (half + g.reach) + g.hole / 2.0 + 0.5 : half + 0.5;
+    const double s = std::max(inner, g.reach - radius);
+    if (!(s < g.reach))
+    {
+      vtkErrorMacro("Cannot join the guides: guide " << i + 1 << " has no room for the bar beside its screw hole "
+                                                     << "(a larger Reach).");
+      return 0;
+    }
+    const Vec base = add(g.slotCentre, side, s);
+    const double height = boneHeight(base, g.approach);
+    if (!std::isfinite(height))
+    {
+      vtkErrorMacro("Cannot join the guides: no bone under guide " << i + 1 << "'s edge (is port 0 the bone the "
+                                                                   << "guides were made on?).");
+      return 0;
+    }
+    const Vec onBone = add(base, g.approach, height - dot(add(base, g.slotCentre, -1.0), g.approach));
+    end[i] = add(onBone, g.approach, g.clearance + g.thickness / 2.0);
+    for (int step = 0; step < 100 && away->EvaluateFunction(end[i].data()) < radius; ++step)
+      end[i] = add(end[i], g.approach, 0.1);
+    const double level = dot(add(end[i], onBone, -1.0), g.approach);
+    if (!(level < g.clearance + g.thickness + 0.5 * radius))
+    {
+      vtkErrorMacro("Cannot join the guides: the bar would stand " << level << " mm above the bone at guide " << i + 1
+        << "'s edge, clear of its wall (a thinner bar, or a thicker wall).");
+      return 0;
+    }
+    lead[i] = add(end[i], side, g.reach - s + radius);
+  }
+  this->UpdateProgress(0.1);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
+
+  // The centre line: straight from end to end, then pushed off the bone.
+  const double spacing = 0.5;
+  std::vector<Vec> line{ end[0] };
+  {
+    const double length = distance(lead[0], lead[1]);
+    const int parts = std::max(2, static_cast<int>(std::ceil(length / spacing)));
+    for (int k = 0; k <= parts; ++k)
+      line.push_back(add(lead[0], add(lead[1], lead[0], -1.0), static_cast<double>(k) / parts));
+    line.push_back(end[1]);
+  }
+  const std::size_t points = line.size();
+  // The distance each point must keep from the bone: the radius at the
+  // guides, the radius and the stand-off a little beyond their edges.
+  std::vector<double> needed(points), arc(points, 0.0);
+  for (std::size_t k = 1; k < points; ++k)
+    arc[k] = arc[k - 1] + distance(line[k - 1], line[k]);
+  const double leadLength = distance(end[0], lead[0]);
+  // Over 5 mm and twice the stand-off, along a smooth step (the bar bends
+  // no tighter than it must).
+  const double ramp = 5.0 + 2.0 * this->StandOff;
+  auto neededAt = [&](double fromEnd) {
+    const double t = std::clamp((fromEnd - leadLength) / ramp, 0.0, 1.0);
+    return radius + this->StandOff * t * t * (3.0 - 2.0 * t);
+  };
+  for (std::size_t k = 0; k < points; ++k)
+    needed[k] = neededAt(std::min(arc[k], arc.back() - arc[k]));
+  // Pushes each point that is too near the bone out to its distance,
+  // forward: along the guides' mean approach, square to the line between
+  // the ends and to the guides' mean direction along their slots (so the
+  // bar bows out toward the surgeon, level with the guides' middles, in
+  // front of the bone and not over its edge: a mandible's teeth); the
+  // largest shortfall before the push.
+  Vec chord = add(end[1], end[0], -1.0);
+  vtkMath::Normalize(chord.data());
+  Vec along{ 0, 0, 0 };
+  for (const Guide& g : guide)
+  {
+    Vec axis;
+    vtkMath::Cross(g.normal.data(), g.approach.data(), axis.data());
+    along = add(along, axis, dot(axis, along) < 0.0 ? -1.0 : 1.0);
+  }
+  along = add(along, chord, -dot(along, chord));
+  Vec forward = add(mean, chord, -dot(mean, chord));
+  if (vtkMath::Normalize(along.data()) > 1e-6)
+    forward = add(forward, along, -dot(forward, along));
+  if (!(vtkMath::Normalize(forward.data()) > 1e-6))
+    forward = mean;
+  auto push = [&]() {
+    double worst = 0.0;
+    for (std::size_t k = 1; k + 1 < points; ++k)
+    {
+      const double f = away->EvaluateFunction(line[k].data());
+      const double shortfall = needed[k] - f;
+      worst = std::max(worst, shortfall);
+      if (shortfall <= 0.0)
+        continue;
+      line[k] = add(line[k], forward, shortfall);
+    }
+    return worst;
+  };
+  // Pushes, then smoothing (each point toward its neighbours' middle, the
+  // ends where they are), until a round's smoothing leaves every point
+  // where it may be; then pushes alone, for what the last smoothing took.
+  const int rounds = 300;
+  for (int round = 0; round < rounds; ++round)
+  {
+    if (push() < 0.01 && round > 0)
+      break;
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      std::vector<Vec> smoothed = line;
+      for (std::size_t k = 1; k + 1 < points; ++k)
+        smoothed[k] = add(add(line[k], line[k], -0.5), add(line[k - 1], line[k + 1]), 0.25);
+      line = smoothed;
+    }
+    if (round % 20 == 0)
+    {
+      this->UpdateProgress(0.1 + 0.5 * round / rounds);
+      if (this->GetAbortExecute())
+        break;
+    }
+  }
+  double worst = 0.0;
+  for (int k = 0; k < 10; ++k)
+  {
+    worst = push();
+    if (worst < 1e-3)
+      break;
+  }
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
+  if (!(worst < 0.1))
+  {
+    vtkErrorMacro("Cannot join the guides: no bar of " << 2.0 * radius << " mm found a way " << this->StandOff
+      << " mm clear of the bone between them (" << worst << " mm short).");
+    return 0;
+  }
+  double length = 0.0, gap = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < points; ++k)
+    length += distance(line[k - 1], line[k]);
+  for (std::size_t k = 1; k + 1 < points; ++k)
+    if (needed[k] >= radius + this->StandOff) // past the ramps
+      gap = std::min(gap, away->EvaluateFunction(line[k].data()) - radius);
+  if (!std::isfinite(gap))
+    gap = 0.0; // guides side by side: no free part
+  if (length > this->MaximumLength)
+  {
+    vtkErrorMacro("Cannot join the guides: the bar would be " << length << " mm long, more than MaximumLength ("
+                                                              << this->MaximumLength << " mm).");
+    return 0;
+  }
+  this->UpdateProgress(0.6);
+
+  // The tube round it, and the union of the three.
+  vtkNew<vtkPoints> linePoints;
+  linePoints->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(static_cast<vtkIdType>(points));
+  for (const Vec& x : line)
+    lines->InsertCellPoint(linePoints->InsertNextPoint(x.data()));
+  vtkNew<vtkPolyData> centre;
+  centre->SetPoints(linePoints);
+  centre->SetLines(lines);
+  vtkNew<vtkTubeFilter> tube;
+  tube->SetInputData(centre);
+  tube->SetRadius(radius);
+  tube->SetNumberOfSides(24);
+  tube->CappingOn();
+  tube->SidesShareVerticesOn();
+  vtkNew<vtkTriangleFilter> tubeTriangles;
+  tubeTriangles->SetInputConnection(tube->GetOutputPort());
+  vtkNew<vtkCleanPolyData> tubeClean;
+  tubeClean->SetInputConnection(tubeTriangles->GetOutputPort());
+  tubeClean->PointMergingOn();
+  tubeClean->SetTolerance(0.0);
+  tubeClean->Update();
+  std::vector<lk::TriangleMesh> solids(3);
+  vtkPolyData* parts[3] = { guideData[0], tubeClean->GetOutput(), guideData[1] };
+  const char* names[3] = { "guide 1", "the bar", "guide 2" };
+  for (int k = 0; k < 3; ++k)
+    if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(parts[k]), solids[k]); !why.empty())
+    {
+      vtkErrorMacro("Cannot join the guides: " << names[k] << ": " << why << ".");
+      return 0;
+    }
+  lk::TriangleMesh joined;
+  if (const std::string why = lk::solidUnion(solids, joined); !why.empty())
+  {
+    vtkErrorMacro("Cannot join the guides (guide 1, the bar, guide 2): " << why << ".");
+    return 0;
+  }
+  this->UpdateProgress(0.9);
+  if (lkvtk::stopRequested(this, { output }))
+    return 1;
+
+  vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(joined);
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(result);
+  mass->Update();
+  output->ShallowCopy(result);
+  output->GetPointData()->Initialize();
+  output->GetCellData()->Initialize();
+  output->GetFieldData()->PassData(input->GetFieldData());
+  this->BarLength = length;
+  this->BarDiameter = 2.0 * radius;
+  this->BarGap = gap;
+  this->Volume = mass->GetVolume();
+  vtkFieldData* fd = output->GetFieldData();
+  lkvtk::addFieldValue(fd, "GuideBarLength", this->BarLength);
+  lkvtk::addFieldValue(fd, "GuideBarDiameter", this->BarDiameter);
+  lkvtk::addFieldValue(fd, "GuideBarGap", this->BarGap);
+  lkvtk::addFieldValue(fd, "GuideVolume", this->Volume);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Diameter: " << this->Diameter << "\n";
+  os << indent << "StandOff: " << this->StandOff << "\n";
+  os << indent << "MaximumLength: " << this->MaximumLength << "\n";
+  os << indent << "BarLength: " << this->BarLength << "\n";
+  os << indent << "BarDiameter: " << this->BarDiameter << "\n";
+  os << indent << "BarGap: " << this->BarGap << "\n";
+  os << indent << "Volume: " << this->Volume << "\n";
+}

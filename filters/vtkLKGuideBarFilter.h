@@ -1,0 +1,114 @@
+/**
+ * @class   vtkLKGuideBarFilter
+ * @brief   Two cutting guides joined by a bar over the bone between them:
+ *          a resection guide, one part to print.
+ *
+ * A segment of bone taken out between two saw cuts (a mandible's body
+ * before a fibula flap) is cut through two slots. Printed apart, the two
+ * guides of vtkLKCuttingGuideFilter can each be put on a little off the
+ * plan; joined, they hold the two cuts at the distance and angle the plan
+ * gave them, and the bar over the segment gives the surgeon something to
+ * hold. This filter makes that part.
+ *
+ * Method:
+ * - Each guide's place comes from its field data (GuideApproach,
+ *   GuidePlaneNormal, GuideSlotCentre, GuideSlotWidth, GuideThickness,
+ *   GuideReach, GuideClearance, GuideScrewHoleDiameter, as
+ *   vtkLKCuttingGuideFilter writes them).
+ * - The bar starts at each guide's edge on the other guide's side of its
+ *   slot, clear of its screw hole (so the hole still takes its screw from
+ *   above), in the guide's wall there: its middle above the bone (found by
+ *   a ray along the guide's approach), or higher until the bar's radius
+ *   clears the bone (a bar thicker than the wall, a wall on a slope).
+ * - Its centre line starts straight from end to end and is pushed away
+ *   from the bone (vtkImplicitPolyDataDistance: away from the nearest point
+ *   of the bone outside it, along the guides' mean approach inside it),
+ *   with smoothing between pushes, until every point of it lies at least
+ *   StandOff plus the bar's radius from the bone (the radius alone near the
+ *   ends, growing to that in a smooth step over 5 mm and twice StandOff
+ *   from a radius past each guide's edge, so that it bends gently). So the bar
+ *   arches over the bone (the chin between two cuts beside it) and touches
+ *   nothing it does not have to: the periosteum is not pressed, and the
+ *   guide seats on the guides' contact only.
+ * - The bar is a tube round that line (vtkTubeFilter, capped), and the two
+ *   guides and the bar are joined into one closed surface (CGAL's
+ *   corefinement, lk::solidUnion): one part, facing outward, its volume
+ *   what it looks to be.
+ *
+ * Inputs: port 0, the bone surface (a closed mesh) the guides were made on;
+ * port 1, the two guides (two connections, vtkLKCuttingGuideFilter's
+ * outputs). Output: the joined guide, a closed triangle mesh oriented
+ * outward. Field data: GuideBarLength (mm along its centre line),
+ * GuideBarDiameter (mm), GuideBarGap (the least distance between the bar and
+ * the bone away from the guides, mm), GuideVolume (mm^3), and the bone's
+ * SPACE tag. The same values are kept in the filter after an update.
+ *
+ * Errors (a VTK error and an empty output): not two guides, or a guide
+ * without the field data above; a parameter out of range; guides put on
+ * from directions more than 120 degrees apart (the bar would go round the
+ * bone); guides farther apart than MaximumLength; a bar that cannot clear
+ * the bone; a union CGAL cannot make (a guide that crosses itself).
+ */
+#ifndef vtkLKGuideBarFilter_h
+#define vtkLKGuideBarFilter_h
+
+#include "LatticeKitFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class LATTICEKITFILTERS_EXPORT vtkLKGuideBarFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLKGuideBarFilter* New();
+  vtkTypeMacro(vtkLKGuideBarFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The bone on port 0; the two guides on port 1 (AddInputData(1, guide)).
+  /// @{
+  void SetBoneData(vtkDataObject* bone) { this->SetInputData(0, bone); }
+  void AddGuideData(vtkDataObject* guide) { this->AddInputData(1, guide); }
+  void AddGuideConnection(vtkAlgorithmOutput* guide) { this->AddInputConnection(1, guide); }
+  /// @}
+
+  ///@{
+  /// The bar's diameter: mm, default 0: the guides' wall thickness (the
+  /// thinner one's); otherwise 1 to 20.
+  vtkSetMacro(Diameter, double);
+  vtkGetMacro(Diameter, double);
+  /// The least gap between the bar and the bone away from the guides: mm,
+  /// default 2 (0 to 50).
+  vtkSetMacro(StandOff, double);
+  vtkGetMacro(StandOff, double);
+  /// The longest bar made: mm along its centre line, default 150 (1 to
+  /// 1000). Guides farther apart are refused.
+  vtkSetMacro(MaximumLength, double);
+  vtkGetMacro(MaximumLength, double);
+  ///@}
+
+  ///@{
+  /// After an update (zeros before, or after an error).
+  vtkGetMacro(BarLength, double);
+  vtkGetMacro(BarDiameter, double);
+  vtkGetMacro(BarGap, double);
+  vtkGetMacro(Volume, double);
+  ///@}
+
+protected:
+  vtkLKGuideBarFilter();
+  ~vtkLKGuideBarFilter() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Diameter = 0.0;
+  double StandOff = 2.0;
+  double MaximumLength = 150.0;
+  double BarLength = 0.0;
+  double BarDiameter = 0.0;
+  double BarGap = 0.0;
+  double Volume = 0.0;
+
+private:
+  vtkLKGuideBarFilter(const vtkLKGuideBarFilter&) = delete;
+  void operator=(const vtkLKGuideBarFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,262 @@
+// vtkLKGuideBarFilter: two cutting guides joined by a bar, on a long box
+// (where the bar must lie, its gap, the volume) and on the TCIA mandible
+// (one closed part outside the bone, screw holes left open), and bad input.
+#include "TestSupport.h"
+
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKCuttingGuideFilter.h"
+#include "vtkLKGuideBarFilter.h"
+#include "vtkLKMedicalImageReader.h"
+
+#include <vtkCleanPolyData.h>
+#include <vtkCubeSource.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
+#include <vtkImplicitPolyDataDistance.h>
+#include <vtkLinearSubdivisionFilter.h>
+#include <vtkMath.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkTriangleFilter.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace
+{
+/// A closed box 100 x 20 x 30 mm centred at the origin, in triangles.
+vtkSmartPointer<vtkPolyData> longBox()
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(100);
+  cube->SetYLength(20);
+  cube->SetZLength(30);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> finer;
+  finer->SetInputConnection(merged->GetOutputPort());
+  finer->SetNumberOfSubdivisions(3);
+  finer->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(finer->GetOutput());
+  return out;
+}
+
+/// The guide of the plane through `origin` with normal `normal`.
+vtkSmartPointer<vtkPolyData> guideOn(vtkPolyData* bone, const double origin[3], const double normal[3],
+  const double approach[3] = nullptr, double* volume = nullptr)
+{
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(bone);
+  guide->SetPlaneOrigin(origin);
+  guide->SetPlaneNormal(normal);
+  if (approach)
+    guide->SetApproach(approach);
+  guide->Update();
+  if (volume)
+    *volume = guide->GetVolume();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(guide->GetOutput());
+  return out;
+}
+
+vtkIdType regions(vtkPolyData* pd)
+{
+  vtkNew<vtkPolyDataConnectivityFilter> parts;
+  parts->SetInputData(pd);
+  parts->SetExtractionModeToAllRegions();
+  parts->Update();
+  return parts->GetNumberOfExtractedRegions();
+}
+
+/// The screw holes of `guide` whose axis, from the bone out along the
+/// approach, meets `part` within 30 mm: holes a bar covers.
+int coveredHoles(vtkPolyData* guide, vtkPolyData* part)
+{
+  vtkDataArray* holes = guide->GetFieldData()->GetArray("GuideScrewHoles");
+  vtkDataArray* approach = guide->GetFieldData()->GetArray("GuideApproach");
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(part);
+  locator->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  int covered = 0;
+  for (vtkIdType h = 0; h < holes->GetNumberOfTuples(); ++h)
+  {
+    double from[3], to[3], t, hit[3], pcoords[3];
+    int subId;
+    vtkIdType cellId;
+    for (int k = 0; k < 3; ++k)
+    {
+      from[k] = holes->GetComponent(h, k) + 0.01 * approach->GetComponent(0, k);
+      to[k] = holes->GetComponent(h, k) + 30.0 * approach->GetComponent(0, k);
+    }
+    if (locator->IntersectWithLine(from, to, 0.0, t, hit, pcoords, subId, cellId, cell))
+      ++covered;
+  }
+  return covered;
+}
+} // namespace
+
+TEST(GuideBarFilter, OnALongBoxTheBarArchesItsStandOffAboveTheFace)
+{
+  vtkSmartPointer<vtkPolyData> bone = longBox();
+  const double left[3] = { -30, 0, 0 }, right[3] = { 30, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
+  double volumes[2];
+  vtkSmartPointer<vtkPolyData> a = guideOn(bone, left, normal, front, &volumes[0]);
+  vtkSmartPointer<vtkPolyData> b = guideOn(bone, right, normal, front, &volumes[1]);
+  ASSERT_GT(a->GetNumberOfCells(), 0);
+  ASSERT_GT(b->GetNumberOfCells(), 0);
+
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(a);
+  bar->AddGuideData(b);
+  lktest::ProgressRecorder progress(bar);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  // One closed part facing outward.
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_NEAR(lktest::signedVolume(out), bar->GetVolume(), 1e-6 * bar->GetVolume());
+  // The bar: as thick as the walls (4 mm), from 6 mm past each slot (its
+  // edge's 8 mm less the radius, clear of the hole) at the walls' middle
+  // (y = -12), 2 mm above the face between the guides (y = -14).
+  EXPECT_DOUBLE_EQ(bar->GetBarDiameter(), 4.0);
+  EXPECT_GT(bar->GetBarLength(), 48.0);
+  EXPECT_LT(bar->GetBarLength(), 49.0);
+  EXPECT_NEAR(bar->GetBarGap(), 2.0, 0.03);
+  double bounds[6];
+  out->GetBounds(bounds);
+  EXPECT_NEAR(bounds[2], -16.0, 0.03); // the bar's far side, 2 + 4 mm out
+  // The volume: both guides and a 4 mm tube (24 sides) over the bar's
+  // length less the 2 mm of each end inside a guide's wall.
+  const double tube = 24.0 / 2.0 * std::sin(2.0 * vtkMath::Pi() / 24.0) * 4.0;
+  EXPECT_NEAR(bar->GetVolume(), volumes[0] + volumes[1] + tube * (bar->GetBarLength() - 4.0), 0.01 * bar->GetVolume());
+  // Outside the box, and the screw holes left open from above.
+  vtkNew<vtkImplicitPolyDataDistance> inside;
+  inside->SetInput(bone);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    ASSERT_GT(inside->EvaluateFunction(out->GetPoint(i)), -1e-6) << "point " << i << " inside the bone";
+  EXPECT_EQ(coveredHoles(a, out), 0);
+  EXPECT_EQ(coveredHoles(b, out), 0);
+  // Field data and progress.
+  EXPECT_NEAR(out->GetFieldData()->GetArray("GuideBarLength")->GetComponent(0, 0), bar->GetBarLength(), 1e-12);
+  EXPECT_NEAR(out->GetFieldData()->GetArray("GuideVolume")->GetComponent(0, 0), bar->GetVolume(), 1e-12);
+  ASSERT_GE(progress.progress.size(), 3u);
+  EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
+
+  // A thicker bar stands higher at the guides (its lower side on the wall's)
+  // and farther out.
+  bar->SetDiameter(6.0);
+  bar->SetStandOff(5.0);
+  bar->Update();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_NEAR(bar->GetBarGap(), 5.0, 0.03);
+  out->GetBounds(bounds);
+  EXPECT_NEAR(bounds[2], -10.0 - 5.0 - 6.0, 0.03);
+}
+
+TEST(GuideBarFilter, OnTheMandibleTheChinAndTheLeftBodyMakeOnePartOutsideTheBone)
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> boneFilter;
+  boneFilter->SetInputConnection(reader->GetOutputPort());
+  boneFilter->Update();
+  vtkPolyData* bone = boneFilter->GetOutput();
+  ASSERT_GT(bone->GetNumberOfCells(), 0);
+  // The chin's mid-sagittal cut and one through the left body: a segment of
+  // the anterior mandible between them.
+  const double chin[3] = { 0.0728, 276.64, -982.1 }, sagittal[3] = { 1, 0, 0 };
+  const double body[3] = { 30, 276.64, -982.1 }, across[3] = { 1, 0.3, 0 };
+  double volumes[2];
+  vtkSmartPointer<vtkPolyData> a = guideOn(bone, chin, sagittal, nullptr, &volumes[0]);
+  vtkSmartPointer<vtkPolyData> b = guideOn(bone, body, across, nullptr, &volumes[1]);
+  ASSERT_GT(a->GetNumberOfCells(), 0);
+  ASSERT_GT(b->GetNumberOfCells(), 0);
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(a);
+  bar->AddGuideData(b);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_NEAR(lktest::signedVolume(out), bar->GetVolume(), 1e-6 * bar->GetVolume());
+  EXPECT_GT(bar->GetVolume(), volumes[0] + volumes[1]);
+  EXPECT_GT(bar->GetBarLength(), 20.0);
+  EXPECT_LT(bar->GetBarLength(), 60.0);
+  EXPECT_GT(bar->GetBarGap(), 2.0 - 0.03);
+  vtkNew<vtkImplicitPolyDataDistance> inside;
+  inside->SetInput(bone);
+  int within = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    within += inside->EvaluateFunction(out->GetPoint(i)) < -1e-3;
+  EXPECT_EQ(within, 0);
+  EXPECT_EQ(coveredHoles(a, out), 0);
+  EXPECT_EQ(coveredHoles(b, out), 0);
+}
+
+TEST(GuideBarFilter, StopsWhenAsked)
+{
+  vtkSmartPointer<vtkPolyData> bone = longBox();
+  const double left[3] = { -30, 0, 0 }, right[3] = { 30, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(guideOn(bone, left, normal, front));
+  bar->AddGuideData(guideOn(bone, right, normal, front));
+  lktest::ProgressRecorder progress(bar);
+  progress.stopAt = 0.1;
+  bar->Update();
+  EXPECT_EQ(bar->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_LT(progress.progress.back(), 1.0);
+}
+
+TEST(GuideBarFilter, BadInputAndParametersAreRefused)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  vtkSmartPointer<vtkPolyData> bone = longBox();
+  const double left[3] = { -30, 0, 0 }, right[3] = { 30, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 },
+               back[3] = { 0, 1, 0 };
+  vtkSmartPointer<vtkPolyData> a = guideOn(bone, left, normal, front), b = guideOn(bone, right, normal, front),
+                               behind = guideOn(bone, right, normal, back);
+  struct Case
+  {
+    const char* why;
+    std::function<void(vtkLKGuideBarFilter*)> set;
+    const char* message;
+  };
+  const Case cases[] = {
+    { "one guide", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); }, "a bar joins two guides, and port 1 has 1" },
+    { "three guides", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(b); },
+      "port 1 has 3" },
+    { "a plain mesh", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(bone); },
+      "guide 2 has no GuideApproach (guides come from vtkLKCuttingGuideFilter)" },
+    { "opposite sides", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(behind); },
+      "180 degrees apart (more than 120)" },
+    { "too far", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetMaximumLength(50); },
+      "60 mm apart, more than MaximumLength (50 mm)" },
+    { "thin bar", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetDiameter(0.5); },
+      "Diameter must be 1 to 20 mm" },
+    { "NaN stand-off", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetStandOff(nan); },
+      "StandOff must be 0 to 50 mm" },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkLKGuideBarFilter> bar;
+    bar->SetBoneData(bone);
+    c.set(bar);
+    lktest::ErrorRecorder errors(bar);
+    bar->Update();
+    EXPECT_EQ(errors.errors, 1) << c.why;
+    EXPECT_NE(errors.messages.find(c.message), std::string::npos) << c.why << ": " << errors.messages;
+    EXPECT_EQ(bar->GetOutput()->GetNumberOfCells(), 0) << c.why;
+  }
+}
