@@ -81,6 +81,17 @@ TEST(CuttingGuideFilter, OnABoxItIsTheContactSweptLessTheSlot)
   EXPECT_NEAR(field(out, "GuideSlotLength"), 24.0, 1e-6);
   EXPECT_NEAR(field(out, "GuideContactArea"), 480.0 - 28.8, 1e-4);
   EXPECT_NEAR(field(out, "GuideVolume"), guide->GetVolume(), 1e-9);
+  // Where the guide is, for a bar that joins it to another: its plane, the
+  // slot's middle on the bone, its sizes.
+  EXPECT_NEAR(field(out, "GuidePlaneNormal", 0), 1.0, 1e-12);
+  EXPECT_NEAR(field(out, "GuideSlotCentre", 0), 0.0, 1e-9);
+  EXPECT_NEAR(field(out, "GuideSlotCentre", 1), -10.0, 1e-9);
+  EXPECT_NEAR(field(out, "GuideSlotCentre", 2), 0.0, 1e-6);
+  EXPECT_DOUBLE_EQ(field(out, "GuideSlotWidth"), 1.2);
+  EXPECT_DOUBLE_EQ(field(out, "GuideThickness"), 4.0);
+  EXPECT_DOUBLE_EQ(field(out, "GuideReach"), 8.0);
+  EXPECT_DOUBLE_EQ(field(out, "GuideClearance"), 0.5);
+  EXPECT_DOUBLE_EQ(field(out, "GuideScrewHoleDiameter"), 0.0); // none made
   // Where it lies: from the clearance to the wall's far side in y, within
   // the reach in x; nothing in the slot between the bridges.
   double b[6];

@@ -132,7 +132,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
                     "x: cut (capped) | l: lattice, L: size | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform (bump, box, smooth; drag up/down) | [ ]: tool radius | u: distance, a: angle | Delete: what is pointed at | o: mirror image, O: its plane\n"
-                    "t: name a piece (click it, type, Return) | k: cutting guides (K: side) | z: undo  y: redo | w: save session | e: export | q: quit | mouse: rotate, pan, zoom";
+                    "t: name a piece (click it, type, Return) | k: cutting guides (K: side, j: joined) | z: undo  y: redo | w: save session | e: export | q: quit | mouse: rotate, pan, zoom";
 
 const char* toolName(int tool)
 {
@@ -812,6 +812,11 @@ void Planner::updateStatus()
     for (const CuttingGuide& g : guides)
       shown += g.surface ? 1 : 0;
     s << " | cutting guides: " << shown;
+    std::size_t joined = 0;
+    for (const JoinedGuide& j : joinedGuides)
+      joined += j.surface ? 1 : 0;
+    if (joined > 0)
+      s << " (" << 2 * joined << " joined by " << (joined == 1 ? "a bar" : std::to_string(joined) + " bars") << ")";
   }
   if (tool != NO_TOOL)
   {

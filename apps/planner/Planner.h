@@ -18,6 +18,7 @@
 #include "planner/PlannerSession.h"
 
 #include "vtkLKCuttingGuideFilter.h"
+#include "vtkLKGuideBarFilter.h"
 #include "vtkLKPatchDeformationFilter.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
 
@@ -265,10 +266,33 @@ public:
   /// Makes the guides the session asks for (anew only where a saw line or
   /// the bone changed), shows them and says in `message` why one failed.
   void updateGuides();
+  /// Joins the guides in pairs when the session asks (anew only where a
+  /// guide changed), and says in `message` why a pair stays apart.
+  void updateJoinedGuides();
   /// The plan's lines on the guides (empty when they are not shown).
   std::string guidesText() const;
   /// "guide_stroke<n>", the stem of a guide's files (n from 1).
   static std::string guideFileStem(std::size_t stroke);
+  /// The resection guides (j, the session's "guidesJoined"): the guides of
+  /// the saw lines in pairs, in stroke order (guides[0] and guides[1],
+  /// guides[2] and guides[3], ...), each pair joined by a bar over the bone
+  /// between them (vtkLKGuideBarFilter) into one part; made anew only when
+  /// one of its guides was.
+  struct JoinedGuide
+  {
+    std::size_t first = 0, second = 0; ///< its guides, indices into `guides`
+    vtkSmartPointer<vtkPolyData> firstSurface, secondSurface; ///< what it was made of
+    vtkSmartPointer<vtkLKGuideBarFilter> filter;             ///< its bar's settings and sizes
+    vtkSmartPointer<vtkPolyData> surface; ///< null when it could not be made (error)
+    std::string error;
+  };
+  std::vector<JoinedGuide> joinedGuides;
+  /// The joined guide made with guides[i], or null (apart, or the join
+  /// failed).
+  const JoinedGuide* joinedGuideOf(std::size_t i) const;
+  /// "guide_strokes<n>-<m>", the stem of a joined guide's files (its saw
+  /// lines' strokes, from 1).
+  std::string joinedGuideFileStem(const JoinedGuide& joined) const;
 
   /// The scan the bone surface was made from, in its data coordinates, and
   /// the matrix to the bone's (patient) coordinates; null for a mesh file.

@@ -100,14 +100,23 @@ std::string Planner::exportStructureSet(
   }
   // The cutting guides shown, where the hospital's planning system shows
   // them on the CT beside the pieces.
-  for (const CuttingGuide& g : guides)
+  // A pair joined by a bar is one ROI, as it is one part.
+  std::vector<std::pair<std::string, vtkPolyData*>> guideParts;
+  for (const JoinedGuide& j : joinedGuides)
+    if (j.surface)
+      guideParts.emplace_back("resection guide (strokes " + std::to_string(guides[j.first].stroke + 1) + " and " +
+          std::to_string(guides[j.second].stroke + 1) + ")",
+        j.surface);
+  for (std::size_t i = 0; i < guides.size(); ++i)
+    if (guides[i].surface && !joinedGuideOf(i))
+      guideParts.emplace_back("cutting guide (stroke " + std::to_string(guides[i].stroke + 1) + ")", guides[i].surface);
+  for (const auto& [name, surface] : guideParts)
   {
-    const std::string name = "cutting guide (stroke " + std::to_string(g.stroke + 1) + ")";
-    if (session.guides && g.surface && lkapp::pieceFacts(g.surface).openEdges == 0 &&
+    if (session.guides && lkapp::pieceFacts(surface).openEdges == 0 &&
       std::find(roiNames.begin(), roiNames.end(), name) == roiNames.end())
     {
       structureSet->SetROIName(static_cast<int>(roiNames.size()), name.c_str());
-      structureSet->AddInputData(g.surface);
+      structureSet->AddInputData(surface);
       roiNames.push_back(name);
     }
   }
@@ -240,13 +249,21 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
       if (!lkapp::writeMesh(mirror.surface, folder + "/" + name, error, space))
         return false;
   // The cutting guides shown, to print (STL) and to read back (VTP).
+  // A pair joined by a bar is one part, in one file.
   std::vector<std::string> guideFiles;
-  for (const CuttingGuide& g : guides)
-    if (session.guides && g.surface)
+  std::vector<std::pair<std::string, vtkPolyData*>> guideParts;
+  for (const JoinedGuide& j : joinedGuides)
+    if (j.surface)
+      guideParts.emplace_back(joinedGuideFileStem(j), j.surface);
+  for (std::size_t i = 0; i < guides.size(); ++i)
+    if (guides[i].surface && !joinedGuideOf(i))
+      guideParts.emplace_back(guideFileStem(guides[i].stroke), guides[i].surface);
+  for (const auto& [stem, surface] : guideParts)
+    if (session.guides)
       for (const char* ext : { ".stl", ".vtp" })
       {
-        guideFiles.push_back(guideFileStem(g.stroke) + ext);
-        if (!lkapp::writeMesh(g.surface, folder + "/" + guideFiles.back(), error, space))
+        guideFiles.push_back(stem + ext);
+        if (!lkapp::writeMesh(surface, folder + "/" + guideFiles.back(), error, space))
           return false;
       }
   // The CT on each cut line's plane and across it, for the surgeon's notes.

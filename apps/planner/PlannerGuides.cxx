@@ -27,6 +27,20 @@ std::string Planner::guideFileStem(std::size_t stroke)
   return "guide_stroke" + std::to_string(stroke + 1);
 }
 
+std::string Planner::joinedGuideFileStem(const JoinedGuide& joined) const
+{
+  return "guide_strokes" + std::to_string(guides[joined.first].stroke + 1) + "-" +
+    std::to_string(guides[joined.second].stroke + 1);
+}
+
+const Planner::JoinedGuide* Planner::joinedGuideOf(std::size_t i) const
+{
+  for (const JoinedGuide& j : joinedGuides)
+    if (j.surface && (j.first == i || j.second == i))
+      return &j;
+  return nullptr;
+}
+
 void Planner::updateGuides()
 {
   guideActor->SetVisibility(false);
@@ -75,17 +89,21 @@ void Planner::updateGuides()
   guides = made;
   if (guides.empty())
   {
+    joinedGuides.clear();
     addLine(message, "cutting guides (k) are made for saw lines (p): this plan has none");
     return;
   }
-  vtkNew<vtkAppendPolyData> all;
   for (const CuttingGuide& g : guides)
-  {
-    if (g.surface)
-      all->AddInputData(g.surface);
-    else
+    if (!g.surface)
       addLine(message, "no cutting guide for the saw line of stroke " + std::to_string(g.stroke + 1) + ": " + g.error);
-  }
+  updateJoinedGuides();
+  vtkNew<vtkAppendPolyData> all;
+  for (const JoinedGuide& j : joinedGuides)
+    if (j.surface)
+      all->AddInputData(j.surface);
+  for (std::size_t i = 0; i < guides.size(); ++i)
+    if (guides[i].surface && !joinedGuideOf(i))
+      all->AddInputData(guides[i].surface);
   if (all->GetNumberOfInputConnections(0) == 0)
     return;
   all->Update();
@@ -93,13 +111,77 @@ void Planner::updateGuides()
   guideActor->SetVisibility(true);
 }
 
+void Planner::updateJoinedGuides()
+{
+  if (!session.guidesJoined)
+  {
+    joinedGuides.clear();
+    return;
+  }
+  if (guides.size() < 2)
+  {
+    joinedGuides.clear();
+    addLine(message, "cutting guides are joined (j) in pairs of saw lines: this plan has one");
+    return;
+  }
+  std::vector<JoinedGuide> made;
+  for (std::size_t i = 0; i + 1 < guides.size(); i += 2)
+  {
+    const CuttingGuide& a = guides[i];
+    const CuttingGuide& b = guides[i + 1];
+    const std::string which =
+      "strokes " + std::to_string(a.stroke + 1) + " and " + std::to_string(b.stroke + 1);
+    if (!a.surface || !b.surface)
+    {
+      addLine(message, "the cutting guides of " + which + " are not joined: the guide of stroke " +
+          std::to_string((a.surface ? b : a).stroke + 1) + " could not be made");
+      continue;
+    }
+    bool kept = false;
+    for (const JoinedGuide& j : joinedGuides)
+      if (j.firstSurface == a.surface && j.secondSurface == b.surface)
+      {
+        made.push_back(j);
+        made.back().first = i;
+        made.back().second = i + 1;
+        kept = true;
+        break;
+      }
+    if (!kept)
+    {
+      JoinedGuide j;
+      j.first = i;
+      j.second = i + 1;
+      j.firstSurface = a.surface;
+      j.secondSurface = b.surface;
+      j.filter = vtkSmartPointer<vtkLKGuideBarFilter>::New();
+      j.filter->SetBoneData(facesOnly(bone));
+      j.filter->AddGuideData(a.surface);
+      j.filter->AddGuideData(b.surface);
+      j.error = lkapp::updateKeepingErrors(j.filter); // the guides stay apart; its message says why
+      if (j.filter->GetOutput()->GetNumberOfPolys() > 0)
+        j.surface = j.filter->GetOutput();
+      else if (j.error.empty())
+        j.error = "no bar was made";
+      made.push_back(j);
+    }
+    if (!made.back().surface)
+      addLine(message, "the cutting guides of " + which + " are not joined: " + made.back().error);
+  }
+  if (guides.size() % 2 == 1)
+    addLine(message, "the cutting guide of stroke " + std::to_string(guides.back().stroke + 1) +
+        " stays apart: guides are joined in pairs of saw lines");
+  joinedGuides = made;
+}
+
 std::string Planner::guidesText() const
 {
   std::string text;
   if (!session.guides)
     return text;
-  for (const CuttingGuide& g : guides)
+  for (std::size_t i = 0; i < guides.size(); ++i)
   {
+    const CuttingGuide& g = guides[i];
     if (!g.surface)
       continue; // its message says why
     // The side it goes on, in the patient's words where the bone's
@@ -121,7 +203,19 @@ std::string Planner::guidesText() const
       "(%s.stl)\n",
       g.stroke + 1, g.filter->GetSlotLength(), g.filter->GetSlotWidth(), g.filter->GetThickness(), holes,
       g.filter->GetContactArea(), side.c_str(), along[0], along[1], along[2], g.filter->GetVolume(),
-      guideFileStem(g.stroke).c_str());
+      (joinedGuideOf(i) ? "in " + joinedGuideFileStem(*joinedGuideOf(i)) : guideFileStem(g.stroke)).c_str());
+    text += line;
+  }
+  for (const JoinedGuide& j : joinedGuides)
+  {
+    if (!j.surface)
+      continue; // its message says why
+    char line[400];
+    std::snprintf(line, sizeof line,
+      "resection guide: the cutting guides of strokes %zu and %zu joined by a bar of %.1f mm, %.0f mm long and "
+      "%.1f mm clear of the bone between them; %.0f mm^3 in one part (%s.stl)\n",
+      guides[j.first].stroke + 1, guides[j.second].stroke + 1, j.filter->GetBarDiameter(), j.filter->GetBarLength(),
+      j.filter->GetBarGap(), j.filter->GetVolume(), joinedGuideFileStem(j).c_str());
     text += line;
   }
   return text;

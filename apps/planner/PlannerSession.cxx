@@ -104,6 +104,8 @@ std::string sessionText(const Session& s)
     root["guides"] = true;
   if (s.guidesOtherSide)
     root["guidesOtherSide"] = true;
+  if (s.guidesJoined)
+    root["guidesJoined"] = true;
   if (s.scanOnLine > 0)
     root["scanOnLine"] = s.scanOnLine;
   if (s.scanAcross)
@@ -328,7 +330,7 @@ bool readSession(
   const std::string session = "the session '" + path + "'";
   s = Session();
   noteUnknownMembers(root,
-    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "guides", "guidesOtherSide", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "patient", "segment",
+    { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "guides", "guidesOtherSide", "guidesJoined", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "patient", "segment",
       "deformations", "names",
       "measurements",
       "surface", "input" },
@@ -405,6 +407,7 @@ bool readSession(
     !jsonMember(root, "mirror", s.mirror, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "guides", s.guides, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "guidesOtherSide", s.guidesOtherSide, jsonBool, session, "true or false", error) ||
+    !jsonMember(root, "guidesJoined", s.guidesJoined, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "scanAcross", s.scanAcross, jsonBool, session, "true or false", error) ||
     !jsonMember(root, "latticeVertices", vertices, count, session, kLatticeVerticesRange, error))
     return false;

@@ -18,6 +18,10 @@
 //                                                     distance to it
 //   "guides": bool                                    a cutting guide for each saw line
 //   "guidesOtherSide": bool                           on the bone's other side (inner)
+//   "guidesJoined": bool                              the guides of the saw lines in
+//                                                     pairs (1st and 2nd, 3rd and 4th,
+//                                                     ...) joined by a bar: resection
+//                                                     guides
 //   "mirrorPlane": [[x, y, z], [x, y, z], [x, y, z]]  the plane to mirror across, set by
 //                                                     three points (midline landmarks;
 //                                                     none: the fitted plane)
@@ -205,6 +209,11 @@ struct Session
   /// The guides on the other side of the bone (K): the side the filter
   /// chooses (a mandible's outer side) reversed.
   bool guidesOtherSide = false;
+  /// The guides of the saw lines taken in pairs in stroke order (the 1st and
+  /// the 2nd, the 3rd and the 4th, ...) joined by a bar over the bone
+  /// between them (j): a resection guide each, one part to print
+  /// (vtkLKGuideBarFilter).
+  bool guidesJoined = false;
   /// The scan on cut line k's plane (c), k from 1 (the plan's numbering of
   /// the cut lines); 0: not shown.
   int scanOnLine = 0;

@@ -1042,6 +1042,16 @@ void PlannerStyle::OnChar()
     planner->notice = s.guidesOtherSide ? "cutting guides: on the bone's other side (K: back)"
                                         : "cutting guides: on the side chosen for them (K: the other)";
   }
+  else if (key == "j")
+  {
+    // The guides joined in pairs by a bar (and apart again); shown, if they
+    // were not.
+    planner->remember();
+    s.guidesJoined = !s.guidesJoined;
+    s.guides = true;
+    planner->notice = s.guidesJoined ? "cutting guides: joined in pairs by a bar (j: apart)"
+                                     : "cutting guides: apart (j: joined in pairs)";
+  }
   else if (key == "x" || key == "l" || key == "m" || key == "o" || key == "k")
   {
     planner->remember();
