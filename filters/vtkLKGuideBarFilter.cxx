@@ -358,11 +358,12 @@ int vtkLKGuideBarFilter::RequestData(
   double length = 0.0, gap = std::numeric_limits<double>::infinity();
   for (std::size_t k = 1; k < points; ++k)
     length += distance(line[k - 1], line[k]);
+  // The gap where the bar is farthest from both guides (past the ramps; on
+  // guides too near for the whole stand-off, at the ramps' top).
+  const double top = *std::max_element(needed.begin() + 1, needed.end() - 1);
   for (std::size_t k = 1; k + 1 < points; ++k)
-    if (needed[k] >= radius + this->StandOff) // past the ramps
+    if (needed[k] >= top - 1e-9)
       gap = std::min(gap, away->EvaluateFunction(line[k].data()) - radius);
-  if (!std::isfinite(gap))
-    gap = 0.0; // guides side by side: no free part
   if (length > this->MaximumLength)
   {
     vtkErrorMacro("Cannot join the guides: the bar would be " << length << " mm long, more than MaximumLength ("

@@ -40,7 +40,8 @@
  * outputs). Output: the joined guide, a closed triangle mesh oriented
  * outward. Field data: GuideBarLength (mm along its centre line),
  * GuideBarDiameter (mm), GuideBarGap (the least distance between the bar and
- * the bone away from the guides, mm), GuideVolume (mm^3), and the bone's
+ * the bone where it is farthest from both guides: StandOff, or less for
+ * guides too near each other for the bar to rise that far, mm), GuideVolume (mm^3), and the bone's
  * SPACE tag. The same values are kept in the filter after an update.
  *
  * Errors (a VTK error and an empty output): not two guides, or a guide

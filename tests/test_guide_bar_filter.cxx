@@ -160,6 +160,22 @@ TEST(GuideBarFilter, OnALongBoxTheBarArchesItsStandOffAboveTheFace)
   EXPECT_NEAR(bar->GetBarGap(), 5.0, 0.03);
   out->GetBounds(bounds);
   EXPECT_NEAR(bounds[2], -10.0 - 5.0 - 6.0, 0.03);
+
+  // Guides 28 mm apart: the bar, 16 mm between their edges, rises part of
+  // the way only; the gap says how far.
+  const double nearLeft[3] = { -14, 0, 0 }, nearRight[3] = { 14, 0, 0 };
+  vtkNew<vtkLKGuideBarFilter> shortBar;
+  shortBar->SetBoneData(bone);
+  shortBar->AddGuideData(guideOn(bone, nearLeft, normal, front));
+  shortBar->AddGuideData(guideOn(bone, nearRight, normal, front));
+  shortBar->Update();
+  ASSERT_GT(shortBar->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(shortBar->GetOutput()), 0);
+  EXPECT_EQ(regions(shortBar->GetOutput()), 1);
+  EXPECT_GT(shortBar->GetBarGap(), 0.3);
+  EXPECT_LT(shortBar->GetBarGap(), 1.9);
+  EXPECT_GT(shortBar->GetBarLength(), 16.0);
+  EXPECT_LT(shortBar->GetBarLength(), 17.0);
 }
 
 TEST(GuideBarFilter, OnTheMandibleTheChinAndTheLeftBodyMakeOnePartOutsideTheBone)
