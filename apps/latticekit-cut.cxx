@@ -5,6 +5,7 @@
 
 #include "vtkLKClosedLineCutFilter.h"
 #include "vtkLKCuttingGuideFilter.h"
+#include "vtkLKGuideBarFilter.h"
 #include "vtkLKExtractCutPieceFilter.h"
 #include "vtkLKMeshPointIds.h"
 
@@ -58,6 +59,10 @@ void usage(std::ostream& os)
         "                     a shell on the bone's outer side with a slot in the line's plane\n"
         "                     and two screw holes); guide files an earlier run left there and\n"
         "                     this one does not write are removed\n"
+        "  --join-guides      with --guides: the flat lines' guides in pairs (the 1st and the\n"
+        "                     2nd, the 3rd and the 4th, ...) joined by a bar over the bone\n"
+        "                     between them into one resection guide each (vtkLKGuideBarFilter),\n"
+        "                     written as FOLDER/guide_linesN-M.stl and .vtp in place of the two\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
 }
@@ -99,19 +104,23 @@ bool prepareFolder(const std::string& folder, const char* option, const char* wh
   return true;
 }
 
-/// The files --guides writes: "guide_lineN.stl" and "guide_lineN.vtp".
+/// The files --guides writes: "guide_lineN.stl" and "guide_lineN.vtp"; with
+/// --join-guides "guide_linesN-M.stl" and ".vtp" for two joined.
 bool isGuideLineFileName(const std::string& name)
 {
-  static const std::regex guide("guide_line[0-9]+[.](stl|vtp)");
+  static const std::regex guide("guide_(line[0-9]+|lines[0-9]+-[0-9]+)[.](stl|vtp)");
   return std::regex_match(name, guide);
 }
 
 /// A cutting guide for each line of `lines` (its line cells, in order,
 /// numbered from 1) that lies within 0.5 mm of its best-fitting plane, on
-/// `mesh`, written into `folder`; a line per guide on standard output.
-/// False with `error` when a file cannot be written.
+/// `mesh`, written into `folder`; a line per guide on standard output. With
+/// `join`, those lines' guides in pairs (the 1st and the 2nd flat line, the
+/// 3rd and the 4th, ...) joined by a bar into one part each
+/// (vtkLKGuideBarFilter), written in place of the two. False with `error`
+/// when a file cannot be written.
 bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folder, const std::string& space,
-  std::vector<std::string>& written, std::string& error)
+  bool join, std::vector<std::string>& written, std::string& error)
 {
   const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(lines);
   vtkNew<vtkPolyData> faces; // the bone, without its line cells
@@ -119,18 +128,30 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
   faces->SetPolys(mesh->GetPolys());
   faces->SetStrips(mesh->GetStrips());
   faces->GetFieldData()->PassData(mesh->GetFieldData());
+  // The guide of each flat line (or why there is none), in the lines' order.
+  struct Guide
+  {
+    std::size_t line = 0; // from 0
+    vtkSmartPointer<vtkLKCuttingGuideFilter> filter;
+    std::string why;         // empty when it was made
+    std::string joinedStem;  // the part it is in, when joined
+  };
+  std::vector<Guide> guides;
+  std::vector<std::string> report(facts.size());
+  auto labelOf = [](std::size_t line) { return "guide line " + std::to_string(line + 1); };
   auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
   std::size_t k = 0;
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && k < facts.size(); it->GoToNextCell(), ++k)
   {
     const lkapp::LineFacts& f = facts[k];
-    const std::string label = "guide line " + std::to_string(k + 1);
     if (!f.closed || f.flatness > 0.5)
     {
       char why[80] = "is not closed";
       if (f.closed)
         std::snprintf(why, sizeof why, "is %.2f mm off its plane", f.flatness);
-      std::printf("%-16s none: the line %s (a saw cuts a plane)\n", label.c_str(), why);
+      char line[200];
+      std::snprintf(line, sizeof line, "%-16s none: the line %s (a saw cuts a plane)\n", labelOf(k).c_str(), why);
+      report[k] = line;
       continue;
     }
     // The plane through the line's first point, moved onto its best plane:
@@ -146,32 +167,94 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     const double off = vtkMath::Dot(apart, f.normal);
     for (int c = 0; c < 3; ++c)
       origin[c] -= off * f.normal[c];
-    vtkNew<vtkLKCuttingGuideFilter> guide;
-    guide->SetInputData(faces);
-    guide->SetPlaneOrigin(origin);
-    guide->SetPlaneNormal(f.normal[0], f.normal[1], f.normal[2]);
+    Guide g;
+    g.line = k;
+    g.filter = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
+    g.filter->SetInputData(faces);
+    g.filter->SetPlaneOrigin(origin);
+    g.filter->SetPlaneNormal(f.normal[0], f.normal[1], f.normal[2]);
     // The cut stands without a guide: why one is not made is this line's
     // report, not an error of the run.
-    const std::string why = lkapp::updateKeepingErrors(guide);
-    if (guide->GetOutput()->GetNumberOfPolys() == 0)
-    {
-      std::printf("%-16s none: %s\n", label.c_str(), why.empty() ? "no guide was made" : why.c_str());
-      continue;
-    }
-    const std::string stem = "guide_line" + std::to_string(k + 1);
+    g.why = lkapp::updateKeepingErrors(g.filter);
+    if (g.filter->GetOutput()->GetNumberOfPolys() == 0 && g.why.empty())
+      g.why = "no guide was made";
+    else if (g.filter->GetOutput()->GetNumberOfPolys() > 0)
+      g.why.clear();
+    guides.push_back(g);
+  }
+  // The joined pairs, after the lines' own reports.
+  std::string joinedReport;
+  auto write = [&](vtkPolyData* part, const std::string& stem) {
     for (const char* ext : { ".stl", ".vtp" })
     {
       written.push_back(stem + ext);
-      if (!lkapp::writeMesh(guide->GetOutput(), folder + "/" + written.back(), error, space))
+      if (!lkapp::writeMesh(part, folder + "/" + written.back(), error, space))
         return false;
     }
-    const std::array<double, 3> along = lkapp::guideDirection(guide->GetApproachUsed());
-    std::printf("%-16s slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, %d screw hole(s) of %.1f mm, on "
-                "%.0f mm^2 of bone, put on along (%.3f, %.3f, %.3f); %.0f mm^3: %s.stl, .vtp\n",
-      label.c_str(), guide->GetSlotLength(), guide->GetSlotWidth(), guide->GetThickness(),
-      guide->GetNumberOfScrewHoles(), guide->GetScrewHoleDiameter(), guide->GetContactArea(), along[0], along[1],
-      along[2], guide->GetVolume(), stem.c_str());
+    return true;
+  };
+  for (std::size_t i = 0; join && i + 1 < guides.size(); i += 2)
+  {
+    Guide& a = guides[i];
+    Guide& b = guides[i + 1];
+    const std::string label = "guide lines " + std::to_string(a.line + 1) + "-" + std::to_string(b.line + 1);
+    char line[400];
+    if (!a.why.empty() || !b.why.empty())
+    {
+      std::snprintf(line, sizeof line, "%-16s not joined: guide line %zu has no guide\n", label.c_str(),
+        (a.why.empty() ? b : a).line + 1);
+      joinedReport += line;
+      continue;
+    }
+    vtkNew<vtkLKGuideBarFilter> bar;
+    bar->SetBoneData(faces);
+    bar->AddGuideData(a.filter->GetOutput());
+    bar->AddGuideData(b.filter->GetOutput());
+    const std::string why = lkapp::updateKeepingErrors(bar);
+    if (bar->GetOutput()->GetNumberOfPolys() == 0)
+    {
+      std::snprintf(line, sizeof line, "%-16s not joined: %s\n", label.c_str(), why.empty() ? "no bar was made" : why.c_str());
+      joinedReport += line;
+      continue;
+    }
+    const std::string stem = "guide_lines" + std::to_string(a.line + 1) + "-" + std::to_string(b.line + 1);
+    if (!write(bar->GetOutput(), stem))
+      return false;
+    a.joinedStem = b.joinedStem = stem;
+    std::snprintf(line, sizeof line,
+      "%-16s joined by a bar of %.1f mm, %.0f mm long and %.1f mm clear of the bone between them; %.0f mm^3 in one "
+      "part: %s.stl, .vtp\n",
+      label.c_str(), bar->GetBarDiameter(), bar->GetBarLength(), bar->GetBarGap(), bar->GetVolume(), stem.c_str());
+    joinedReport += line;
   }
+  if (join && guides.size() % 2 == 1)
+    joinedReport += "guide line " + std::to_string(guides.back().line + 1) +
+      " stays apart: guides are joined in pairs of flat lines\n";
+  for (const Guide& g : guides)
+  {
+    char line[600];
+    if (!g.why.empty())
+      std::snprintf(line, sizeof line, "%-16s none: %s\n", labelOf(g.line).c_str(), g.why.c_str());
+    else
+    {
+      const std::string stem = g.joinedStem.empty() ? "guide_line" + std::to_string(g.line + 1) : g.joinedStem;
+      if (g.joinedStem.empty() && !write(g.filter->GetOutput(), stem))
+        return false;
+      vtkLKCuttingGuideFilter* guide = g.filter;
+      const std::array<double, 3> along = lkapp::guideDirection(guide->GetApproachUsed());
+      std::snprintf(line, sizeof line,
+        "%-16s slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, %d screw hole(s) of %.1f mm, on "
+        "%.0f mm^2 of bone, put on along (%.3f, %.3f, %.3f); %.0f mm^3: %s%s.stl%s\n",
+        labelOf(g.line).c_str(), guide->GetSlotLength(), guide->GetSlotWidth(), guide->GetThickness(),
+        guide->GetNumberOfScrewHoles(), guide->GetScrewHoleDiameter(), guide->GetContactArea(), along[0], along[1],
+        along[2], guide->GetVolume(), g.joinedStem.empty() ? "" : "in ", stem.c_str(),
+        g.joinedStem.empty() ? ", .vtp" : "");
+    }
+    report[g.line] = line;
+  }
+  for (const std::string& line : report)
+    std::fputs(line.c_str(), stdout);
+  std::fputs(joinedReport.c_str(), stdout);
   return true;
 }
 
@@ -181,7 +264,7 @@ int main(int argc, char* argv[])
 {
   lkapp::installCrashReport("latticekit-cut");
   std::string input, output, linesPath, piecesFolder, guidesFolder;
-  bool quiet = false, capping = true, innerWalls = true;
+  bool quiet = false, capping = true, innerWalls = true, joinGuides = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -198,6 +281,8 @@ int main(int argc, char* argv[])
       piecesFolder = args.value(a);
     else if (a == "--guides")
       guidesFolder = args.value(a);
+    else if (a == "--join-guides")
+      joinGuides = true;
     else if (a == "-q" || a == "--quiet")
       quiet = true;
     else if (lkapp::Arguments::isOption(a))
@@ -209,6 +294,11 @@ int main(int argc, char* argv[])
   {
     std::cerr << "error: a MESH and -o CUT are required\n";
     usage(std::cerr);
+    return 2;
+  }
+  if (joinGuides && guidesFolder.empty())
+  {
+    std::cerr << "error: --join-guides joins the guides --guides FOLDER makes: give --guides too\n";
     return 2;
   }
   lkapp::installMessageHandler(quiet);
@@ -335,7 +425,7 @@ int main(int argc, char* argv[])
   if (!guidesFolder.empty())
   {
     std::vector<std::string> guideFiles;
-    if (!writeGuides(mesh, lines ? lines.Get() : mesh.Get(), guidesFolder, space, guideFiles, error))
+    if (!writeGuides(mesh, lines ? lines.Get() : mesh.Get(), guidesFolder, space, joinGuides, guideFiles, error))
     {
       std::cerr << "error: " << error << "\n";
       return 1;
