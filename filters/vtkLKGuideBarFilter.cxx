@@ -284,12 +284,13 @@ int vtkLKGuideBarFilter::RequestData(
   };
   for (std::size_t k = 0; k < points; ++k)
     needed[k] = neededAt(std::min(arc[k], arc.back() - arc[k]));
-  // Pushes each point that is too near the bone out to its distance,
-  // forward: along the guides' mean approach, square to the line between
-  // the ends and to the guides' mean direction along their slots (so the
-  // bar bows out toward the surgeon, level with the guides' middles, in
-  // front of the bone and not over its edge: a mandible's teeth); the
-  // largest shortfall before the push.
+  // Pushes each point that is too near the bone out to its distance, level
+  // with the guides' middles (square to their mean direction along their
+  // slots, so that the bar goes in front of the bone and not over its edge:
+  // a mandible's teeth): away from the nearest point of the bone, or, inside
+  // it or where that is up or down or back, forward (the guides' mean
+  // approach, square to the line between the ends); the largest shortfall
+  // before the push.
   Vec chord = add(end[1], end[0], -1.0);
   vtkMath::Normalize(chord.data());
   Vec along{ 0, 0, 0 };
@@ -305,16 +306,26 @@ int vtkLKGuideBarFilter::RequestData(
     forward = add(forward, along, -dot(forward, along));
   if (!(vtkMath::Normalize(forward.data()) > 1e-6))
     forward = mean;
+  const bool level = vtkMath::Norm(along.data()) > 0.5;
   auto push = [&]() {
     double worst = 0.0;
     for (std::size_t k = 1; k + 1 < points; ++k)
     {
-      const double f = away->EvaluateFunction(line[k].data());
+      double nearest[3];
+      const double f = away->EvaluateFunctionAndGetClosestPoint(line[k].data(), nearest);
       const double shortfall = needed[k] - f;
       worst = std::max(worst, shortfall);
       if (shortfall <= 0.0)
         continue;
-      line[k] = add(line[k], forward, shortfall);
+      // Outside the bone: away from it, level (round a corner of the bone
+      // the guides are on), unless that is up or down, over its edge.
+      Vec way = add(line[k], { nearest[0], nearest[1], nearest[2] }, -1.0);
+      vtkMath::Normalize(way.data());
+      if (level)
+        way = add(way, along, -dot(way, along));
+      if (f <= 0.0 || !(vtkMath::Normalize(way.data()) > 0.5) || dot(way, forward) < 0.0)
+        way = forward;
+      line[k] = add(line[k], way, shortfall);
     }
     return worst;
   };
@@ -405,6 +416,14 @@ int vtkLKGuideBarFilter::RequestData(
       return 0;
     }
   lk::TriangleMesh joined;
+  if (!lk::solidUnion({ solids[1] }, joined).empty())
+  {
+    // The tube crosses itself where its line bends tighter than its radius.
+    vtkErrorMacro("Cannot join the guides: the bar would bend tighter than its radius (" << radius
+      << " mm) on its way between them, where it clears the bone (a thinner bar, or guides that face more alike: "
+      << apart << " degrees apart).");
+    return 0;
+  }
   if (const std::string why = lk::solidUnion(solids, joined); !why.empty())
   {
     vtkErrorMacro("Cannot join the guides (guide 1, the bar, guide 2): " << why << ".");

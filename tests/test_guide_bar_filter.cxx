@@ -220,6 +220,38 @@ TEST(GuideBarFilter, OnTheMandibleTheChinAndTheLeftBodyMakeOnePartOutsideTheBone
   EXPECT_EQ(coveredHoles(b, out), 0);
 }
 
+TEST(GuideBarFilter, RoundACornerOfTheBoneTheBarStaysClearOfBothFaces)
+{
+  // A guide on the front of the box (y = -10) and one on its end (x = 50),
+  // 90 degrees apart: the bar goes round the corner between them, away from
+  // both faces, level with the guides' middles (z = 0).
+  vtkSmartPointer<vtkPolyData> bone = longBox();
+  const double onFront[3] = { -30, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
+  const double onEnd[3] = { 46, 0, 0 }, across[3] = { 0, 1, 0 }, end[3] = { 1, 0, 0 };
+  vtkSmartPointer<vtkPolyData> a = guideOn(bone, onFront, normal, front), b = guideOn(bone, onEnd, across, end);
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(a);
+  bar->AddGuideData(b);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_NEAR(bar->GetBarGap(), 2.0, 0.03);
+  vtkNew<vtkImplicitPolyDataDistance> inside;
+  inside->SetInput(bone);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    ASSERT_GT(inside->EvaluateFunction(out->GetPoint(i)), -1e-6) << "point " << i << " inside the bone";
+  // Level: the bar keeps within the guides' height (z within +-15 mm, the
+  // box's) rather than going over the box's top or under its bottom.
+  double bounds[6];
+  out->GetBounds(bounds);
+  EXPECT_GE(bounds[4], -15.0 - 1e-6);
+  EXPECT_LE(bounds[5], 15.0 + 1e-6);
+  EXPECT_GT(bounds[1], 50.0 + 4.0); // beyond the end face: the guide there and the bar round to it
+}
+
 TEST(GuideBarFilter, StopsWhenAsked)
 {
   vtkSmartPointer<vtkPolyData> bone = longBox();
@@ -243,6 +275,11 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
                back[3] = { 0, 1, 0 };
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, left, normal, front), b = guideOn(bone, right, normal, front),
                                behind = guideOn(bone, right, normal, back);
+  // Round the box's corner at x = 50: a guide on the front near it and one
+  // on the end face.
+  const double nearCorner[3] = { 40, 0, 0 }, onEnd[3] = { 46, 0, 0 }, across[3] = { 0, 1, 0 }, end[3] = { 1, 0, 0 };
+  vtkSmartPointer<vtkPolyData> cornerFront = guideOn(bone, nearCorner, normal, front),
+                               cornerEnd = guideOn(bone, onEnd, across, end);
   struct Case
   {
     const char* why;
@@ -263,6 +300,9 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
       "Diameter must be 1 to 20 mm" },
     { "NaN stand-off", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetStandOff(nan); },
       "StandOff must be 0 to 50 mm" },
+    { "too thick round a corner",
+      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(cornerFront); f->AddGuideData(cornerEnd); f->SetDiameter(8); },
+      "the bar would bend tighter than its radius (4 mm) on its way between them" },
   };
   for (const Case& c : cases)
   {
