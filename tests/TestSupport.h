@@ -11,12 +11,17 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCleanPolyData.h>
+#include <vtkCubeSource.h>
+#include <vtkLinearSubdivisionFilter.h>
+#include <vtkTriangleFilter.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkFeatureEdges.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkWeakPointer.h>
 
 #include <string>
@@ -28,6 +33,27 @@
 
 namespace lktest
 {
+/// A closed box of the given sizes centred at the origin, in triangles that
+/// share their corners, each face cut into 4^subdivisions x 2 triangles.
+inline vtkSmartPointer<vtkPolyData> triangulatedBox(double x, double y, double z, int subdivisions)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(x);
+  cube->SetYLength(y);
+  cube->SetZLength(z);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> finer;
+  finer->SetInputConnection(merged->GetOutputPort());
+  finer->SetNumberOfSubdivisions(subdivisions);
+  finer->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(finer->GetOutput());
+  return out;
+}
+
 
 inline std::string sampleData(const std::string& relative)
 {

@@ -27,25 +27,10 @@
 
 namespace
 {
-/// A closed box 40 x 20 x 30 mm centred at the origin, in triangles, each
-/// face cut into 4^2 x 2 triangles.
+/// A closed box 40 x 20 x 30 mm centred at the origin, in triangles.
 vtkSmartPointer<vtkPolyData> box()
 {
-  vtkNew<vtkCubeSource> cube;
-  cube->SetXLength(40);
-  cube->SetYLength(20);
-  cube->SetZLength(30);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(cube->GetOutputPort());
-  vtkNew<vtkCleanPolyData> merged;
-  merged->SetInputConnection(triangles->GetOutputPort());
-  vtkNew<vtkLinearSubdivisionFilter> finer;
-  finer->SetInputConnection(merged->GetOutputPort());
-  finer->SetNumberOfSubdivisions(2);
-  finer->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(finer->GetOutput());
-  return out;
+  return lktest::triangulatedBox(40, 20, 30, 2);
 }
 
 double field(vtkPolyData* pd, const char* name, int component = 0)

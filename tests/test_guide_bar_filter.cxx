@@ -29,21 +29,7 @@ namespace
 /// A closed box 100 x 20 x 30 mm centred at the origin, in triangles.
 vtkSmartPointer<vtkPolyData> longBox()
 {
-  vtkNew<vtkCubeSource> cube;
-  cube->SetXLength(100);
-  cube->SetYLength(20);
-  cube->SetZLength(30);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(cube->GetOutputPort());
-  vtkNew<vtkCleanPolyData> merged;
-  merged->SetInputConnection(triangles->GetOutputPort());
-  vtkNew<vtkLinearSubdivisionFilter> finer;
-  finer->SetInputConnection(merged->GetOutputPort());
-  finer->SetNumberOfSubdivisions(3);
-  finer->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(finer->GetOutput());
-  return out;
+  return lktest::triangulatedBox(100, 20, 30, 3);
 }
 
 /// The guide of the plane through `origin` with normal `normal`.

@@ -892,7 +892,8 @@ class PipelineTest(unittest.TestCase):
         # and the right body: the two guides joined by a bar in front of the
         # chin, one closed part to print, its screw holes open from above.
         import latticekit
-        from vtkmodules.vtkFiltersCore import vtkFeatureEdges, vtkImplicitPolyDataDistance, vtkPolyDataConnectivityFilter
+        from vtkmodules.vtkFiltersCore import vtkImplicitPolyDataDistance, vtkPolyDataConnectivityFilter
+        from mesh_checks import open_edges
 
         reader = latticekit.vtkLKMedicalImageReader()
         reader.SetFileName(MANDIBLE)
@@ -913,14 +914,7 @@ class PipelineTest(unittest.TestCase):
         bar.Update()
         out = bar.GetOutput()
         self.assertGreater(out.GetNumberOfCells(), 1000)
-        edges = vtkFeatureEdges()
-        edges.SetInputData(out)
-        edges.BoundaryEdgesOn()
-        edges.NonManifoldEdgesOn()
-        edges.FeatureEdgesOff()
-        edges.ManifoldEdgesOff()
-        edges.Update()
-        self.assertEqual(edges.GetOutput().GetNumberOfCells(), 0)
+        self.assertEqual(open_edges(out).GetNumberOfCells(), 0)
         parts = vtkPolyDataConnectivityFilter()
         parts.SetInputData(out)
         parts.SetExtractionModeToAllRegions()
