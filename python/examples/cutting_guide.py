@@ -16,11 +16,9 @@ import os
 import sys
 
 import latticekit
-from latticekit.rendering import save_png
+from latticekit.rendering import save_part_on_bone
 from vtkmodules.vtkIOGeometry import vtkSTLWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the render window's back end)
 
 
 def main(argv):
@@ -70,31 +68,8 @@ def main(argv):
         print("error: cannot write the guide's files in %r" % folder, file=sys.stderr)
         return 1
 
-    renderer = vtkRenderer()
-    renderer.SetBackground(1, 1, 1)
-    for source, colour in ((bone, (0.93, 0.87, 0.72)), (guide, (0.0, 0.55, 0.6))):
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputConnection(source.GetOutputPort())
-        mapper.ScalarVisibilityOff()
-        actor = vtkActor()
-        actor.SetMapper(mapper)
-        actor.GetProperty().SetColor(colour)
-        renderer.AddActor(actor)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(800, 600)
-    window.AddRenderer(renderer)
-    # From the side the guide goes on; z up (the head, in LPS and RAS)
-    # unless the guide is put on from above or below.
-    camera = renderer.GetActiveCamera()
-    bounds = guide.GetOutput().GetBounds()
-    centre = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
-    camera.SetFocalPoint(centre)
-    camera.SetPosition([centre[k] + 200 * approach[k] for k in range(3)])
-    camera.SetViewUp((0, 0, 1) if abs(approach[2]) < 0.9 else (0, 1, 0))
-    renderer.ResetCamera(bounds)
-    camera.Zoom(0.5)
-    save_png(window, os.path.join(folder, "guide.png"))
+    # From the side the guide goes on.
+    save_part_on_bone(bone, guide, approach, os.path.join(folder, "guide.png"))
     return 0
 
 

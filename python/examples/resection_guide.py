@@ -17,11 +17,9 @@ import os
 import sys
 
 import latticekit
-from latticekit.rendering import save_png
+from latticekit.rendering import save_part_on_bone
 from vtkmodules.vtkIOGeometry import vtkSTLWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the render window's back end)
 
 
 def main(argv):
@@ -71,31 +69,9 @@ def main(argv):
         print("error: cannot write the guide's files in %r" % folder, file=sys.stderr)
         return 1
 
-    renderer = vtkRenderer()
-    renderer.SetBackground(1, 1, 1)
-    for source, colour in ((bone, (0.93, 0.87, 0.72)), (bar, (0.0, 0.55, 0.6))):
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputConnection(source.GetOutputPort())
-        mapper.ScalarVisibilityOff()
-        actor = vtkActor()
-        actor.SetMapper(mapper)
-        actor.GetProperty().SetColor(colour)
-        renderer.AddActor(actor)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(800, 600)
-    window.AddRenderer(renderer)
-    # From the guides' mean approach (the front of the bar), z up.
+    # From the guides' mean approach (the front of the bar).
     approach = [sum(g.GetApproachUsed()[k] for g in guides) for k in range(3)]
-    camera = renderer.GetActiveCamera()
-    bounds = bar.GetOutput().GetBounds()
-    centre = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
-    camera.SetFocalPoint(centre)
-    camera.SetPosition([centre[k] + 200 * approach[k] for k in range(3)])
-    camera.SetViewUp((0, 0, 1) if abs(approach[2]) < 0.9 * sum(a * a for a in approach) ** 0.5 else (0, 1, 0))
-    renderer.ResetCamera(bounds)
-    camera.Zoom(0.8)
-    save_png(window, os.path.join(folder, "resection_guide.png"))
+    save_part_on_bone(bone, bar, approach, os.path.join(folder, "resection_guide.png"), zoom=0.8)
     return 0
 
 

@@ -4,7 +4,8 @@ import os
 from vtkmodules.vtkCommonDataModel import vtkDataObject
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkWindowToImageFilter
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
+                                         vtkWindowToImageFilter)
 
 
 def edge_actor(mesh):
@@ -54,3 +55,35 @@ def save_png(window, path):
             os.remove(temporary)
         raise OSError(error.errno, f"cannot write {path!r}: {error.strerror}") from error
     print("wrote", path)
+
+
+def save_part_on_bone(bone, part, towards, path, zoom=0.5):
+    """Write to the PNG file `path` a printed part (a cutting guide, teal) on
+    its bone (ivory), both algorithms, seen from direction `towards` (from
+    the part's centre); z up (the head, in LPS and RAS) unless `towards` is
+    nearly along z. Off screen, 800 x 600. Raises OSError as save_png."""
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the render window's back end)
+    renderer = vtkRenderer()
+    renderer.SetBackground(1, 1, 1)
+    for source, colour in ((bone, (0.93, 0.87, 0.72)), (part, (0.0, 0.55, 0.6))):
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(source.GetOutputPort())
+        mapper.ScalarVisibilityOff()
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(colour)
+        renderer.AddActor(actor)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(800, 600)
+    window.AddRenderer(renderer)
+    length = sum(t * t for t in towards) ** 0.5
+    camera = renderer.GetActiveCamera()
+    bounds = part.GetOutput().GetBounds()
+    centre = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
+    camera.SetFocalPoint(centre)
+    camera.SetPosition([centre[k] + 200 * towards[k] / length for k in range(3)])
+    camera.SetViewUp((0, 0, 1) if abs(towards[2]) < 0.9 * length else (0, 1, 0))
+    renderer.ResetCamera(bounds)
+    camera.Zoom(zoom)
+    save_png(window, path)
