@@ -63,7 +63,7 @@ struct Guide
 };
 
 /// Reads `name` (`components` finite values) from the guide's field data;
-/// false if it is missing or wrong.
+/// false if it is missing, of another size or not finite.
 bool readField(vtkPolyData* guide, const char* name, double* values, int components)
 {
   vtkDataArray* a = guide->GetFieldData() ? guide->GetFieldData()->GetArray(name) : nullptr;
@@ -159,8 +159,14 @@ int vtkLKGuideBarFilter::RequestData(
                                                       << " (guides come from vtkLKCuttingGuideFilter).");
       return 0;
     }
-    vtkMath::Normalize(g.approach.data());
-    vtkMath::Normalize(g.normal.data());
+    if (!(vtkMath::Normalize(g.approach.data()) > 0.0) || !(vtkMath::Normalize(g.normal.data()) > 0.0) ||
+      !(g.thickness > 0.0) || !(g.reach > g.slotWidth / 2.0) || !(g.slotWidth > 0.0) || !(g.clearance >= 0.0) ||
+      !(g.hole >= 0.0))
+    {
+      vtkErrorMacro("Cannot join the guides: guide " << i + 1 << "'s field data do not describe a guide (a zero "
+                                                      << "approach or normal, or sizes out of their ranges).");
+      return 0;
+    }
   }
   const double apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(guide[0].approach, guide[1].approach), -1.0, 1.0)));
   if (apart > 120.0)

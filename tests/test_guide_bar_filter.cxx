@@ -278,6 +278,15 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
       "port 1 has 3" },
     { "a plain mesh", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(bone); },
       "guide 2 has no GuideApproach (guides come from vtkLKCuttingGuideFilter)" },
+    { "a guide of no thickness",
+      [&](vtkLKGuideBarFilter* f) {
+        auto odd = vtkSmartPointer<vtkPolyData>::New();
+        odd->DeepCopy(b);
+        odd->GetFieldData()->GetArray("GuideThickness")->SetComponent(0, 0, 0.0);
+        f->AddGuideData(a);
+        f->AddGuideData(odd);
+      },
+      "guide 2's field data do not describe a guide" },
     { "opposite sides", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(behind); },
       "180 degrees apart (more than 120)" },
     { "too far", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetMaximumLength(50); },
