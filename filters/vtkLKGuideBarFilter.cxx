@@ -156,6 +156,7 @@ int vtkLKGuideBarFilter::RequestData(
     if (missing)
     {
       vtkErrorMacro("Cannot join the guides: guide " << i + 1 << " has no " << missing
+                                                      << (missing[0] == 'p' ? "" : " of finite values")
                                                       << " (guides come from vtkLKCuttingGuideFilter).");
       return 0;
     }
@@ -182,6 +183,16 @@ int vtkLKGuideBarFilter::RequestData(
     return 0;
   }
   const double radius = 0.5 * (this->Diameter > 0.0 ? this->Diameter : std::min(guide[0].thickness, guide[1].thickness));
+  // Room between the guides' facing edges for the bar (guides nearer each
+  // other would have it cross the other's slot, or are one guide).
+  const double slotsApart = distance(guide[0].slotCentre, guide[1].slotCentre);
+  if (slotsApart < guide[0].reach + guide[1].reach + 2.0 * radius)
+  {
+    vtkErrorMacro("Cannot join the guides: their slots are " << slotsApart << " mm apart, too near for a bar of "
+      << 2.0 * radius << " mm between their edges (they reach " << guide[0].reach << " and " << guide[1].reach
+      << " mm from their slots).");
+    return 0;
+  }
   Vec mean = add(guide[0].approach, guide[1].approach);
   vtkMath::Normalize(mean.data());
 
@@ -426,8 +437,8 @@ int vtkLKGuideBarFilter::RequestData(
   {
     // The tube crosses itself where its line bends tighter than its radius.
     vtkErrorMacro("Cannot join the guides: the bar would bend tighter than its radius (" << radius
-      << " mm) on its way between them, where it clears the bone (a thinner bar, or guides that face more alike: "
-      << apart << " degrees apart).");
+      << " mm) on its way between them, where it clears the bone (a thinner bar, a smaller StandOff, or guides "
+      << "that face more alike: " << apart << " degrees apart).");
     return 0;
   }
   if (const std::string why = lk::solidUnion(solids, joined); !why.empty())

@@ -41,14 +41,20 @@
  * outward. Field data: GuideBarLength (mm along its centre line),
  * GuideBarDiameter (mm), GuideBarGap (the least distance between the bar and
  * the bone where it is farthest from both guides: StandOff, or less for
- * guides too near each other for the bar to rise that far, mm), GuideVolume (mm^3), and the bone's
- * SPACE tag. The same values are kept in the filter after an update.
+ * guides too near each other for the bar to rise that far, mm),
+ * GuideVolume (mm^3), and the bone's SPACE tag. The same values are kept
+ * in the filter after an update.
  *
  * Errors (a VTK error and an empty output): not two guides, or a guide
- * without the field data above; a parameter out of range; guides put on
- * from directions more than 120 degrees apart (the bar would go round the
- * bone); guides farther apart than MaximumLength; a bar that cannot clear
- * the bone; a union CGAL cannot make (a guide that crosses itself).
+ * without the field data above (or with data that describe no guide); a
+ * parameter out of range; guides put on from directions more than 120
+ * degrees apart (the bar would go round the bone); guides farther apart
+ * than MaximumLength, or too near for a bar between their edges (their
+ * slots nearer than both reaches and the bar's diameter: it would cross a
+ * slot); no room for the bar beside a screw hole; no bone under a guide's
+ * edge (another bone); a bar that cannot clear the bone, or that would bend
+ * tighter than its radius to; a union CGAL cannot make (a guide that
+ * crosses itself).
  */
 #ifndef vtkLKGuideBarFilter_h
 #define vtkLKGuideBarFilter_h

@@ -277,7 +277,9 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
     { "three guides", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(b); },
       "port 1 has 3" },
     { "a plain mesh", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(bone); },
-      "guide 2 has no GuideApproach (guides come from vtkLKCuttingGuideFilter)" },
+      "guide 2 has no GuideApproach of finite values (guides come from vtkLKCuttingGuideFilter)" },
+    { "the same guide twice", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(a); },
+      "their slots are 0 mm apart, too near for a bar of 4 mm between their edges" },
     { "a guide of no thickness",
       [&](vtkLKGuideBarFilter* f) {
         auto odd = vtkSmartPointer<vtkPolyData>::New();
@@ -295,9 +297,12 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
       "Diameter must be 1 to 20 mm" },
     { "NaN stand-off", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetStandOff(nan); },
       "StandOff must be 0 to 50 mm" },
-    { "too thick round a corner",
-      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(cornerFront); f->AddGuideData(cornerEnd); f->SetDiameter(8); },
-      "the bar would bend tighter than its radius (4 mm) on its way between them" },
+    { "guides too near",
+      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(cornerFront); f->AddGuideData(cornerEnd); },
+      "their slots are 14.1421 mm apart, too near for a bar of 4 mm between their edges" },
+    { "a bar to stand 50 mm off the bone",
+      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetStandOff(50); },
+      "the bar would bend tighter than its radius (2 mm) on its way between them" },
   };
   for (const Case& c : cases)
   {
