@@ -53,7 +53,7 @@
  * slots nearer than both reaches and the bar's diameter: it would cross a
  * slot); no room for the bar beside a screw hole; no bone under a guide's
  * edge (another bone); a bar that cannot clear the bone, or that would bend
- * tighter than its radius to; a union CGAL cannot make (a guide that
+ * tighter than its radius; a union CGAL cannot make (a guide that
  * crosses itself).
  */
 #ifndef vtkLKGuideBarFilter_h
