@@ -12,6 +12,8 @@
 #include <vtkFieldData.h>
 #include <vtkExtractVOI.h>
 #include <vtkFlyingEdges3D.h>
+#include <vtkMassProperties.h>
+#include <vtkFeatureEdges.h>
 #include <vtkImageCast.h>
 #include <vtkImageConstantPad.h>
 #include <vtkImageData.h>
@@ -566,6 +568,34 @@ int vtkLKBoneSurfaceFilter::RequestData(
   if (lkvtk::stopRequested(this, { output }))
   {
     return 1;
+  }
+
+  // A label map's smoothing thins what is only a few voxels thick (a
+  // printed guide's wall, read back from a structure set): said when the
+  // surface encloses much less than the labelled voxels do.
+  if (this->TreatedAsLabelMap && sigma > 0.0 && !this->FillCavities)
+  {
+    vtkDataArray* values = volume->GetPointData()->GetScalars();
+    vtkIdType labelled = 0;
+    for (vtkIdType v = 0; v < values->GetNumberOfTuples(); ++v)
+      labelled += values->GetComponent(v, 0) >= 0.5;
+    const double* h = volume->GetSpacing();
+    const double voxels = static_cast<double>(labelled) * std::abs(h[0] * h[1] * h[2]);
+    vtkNew<vtkFeatureEdges> open;
+    open->SetInputConnection(contour->GetOutputPort());
+    open->BoundaryEdgesOn();
+    open->NonManifoldEdgesOff();
+    open->FeatureEdgesOff();
+    open->ManifoldEdgesOff();
+    open->Update();
+    vtkNew<vtkMassProperties> enclosed;
+    enclosed->SetInputConnection(contour->GetOutputPort());
+    enclosed->Update();
+    if (open->GetOutput()->GetNumberOfCells() == 0 && voxels > 0.0 && enclosed->GetVolume() < 0.8 * voxels)
+      vtkWarningMacro("The label map's smoothing (a Gaussian of " << sigma << " voxel) left "
+        << std::lround(100.0 * enclosed->GetVolume() / voxels) << " % of the labelled voxels' volume inside the "
+        << "surface: a structure a few voxels thin (a guide's wall) is eaten away; ImageSmoothing 0 "
+        << "(--image-smooth 0) keeps it.");
   }
 
   // Component selection in data coordinates.

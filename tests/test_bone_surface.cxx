@@ -1153,3 +1153,46 @@ TEST(MeshRepairFilter, RepairsASurfaceMadeOfTriangleStripsOnly)
   EXPECT_EQ(lk::countBoundaryEdges(m), 0u);
   EXPECT_GT(lk::signedVolume(m), 0.0);
 }
+
+// A label thinner than the label maps' smoothing reaches (a plate two slices
+// of 2.5 mm thick: a printed guide's wall read back from a structure set)
+// keeps about half its volume inside the surface: a warning says so and how
+// to keep it. A plate of four slices, or the same plate unsmoothed, gets
+// none.
+TEST(BoneSurface, ALabelThinnerThanItsSmoothingIsSaidToLoseVolume)
+{
+  auto plate = [](int slices) {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(40, 40, 20);
+    image->SetSpacing(1.0, 1.0, 2.5);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    auto* v = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int k = 0; k < 20; ++k)
+      for (int j = 0; j < 40; ++j)
+        for (int i = 0; i < 40; ++i)
+          v[(k * 40 + j) * 40 + i] = i >= 5 && i < 35 && j >= 5 && j < 35 && k >= 8 && k < 8 + slices;
+    return image;
+  };
+  struct Case
+  {
+    int slices;
+    double smoothing; // -1: the label maps' default
+    int warnings;
+  };
+  for (const Case& c : { Case{ 2, -1.0, 1 }, Case{ 2, 0.0, 0 }, Case{ 4, -1.0, 0 } })
+  {
+    vtkNew<vtkLKBoneSurfaceFilter> surface;
+    surface->SetInputData(plate(c.slices));
+    surface->SetImageSmoothing(c.smoothing);
+    lktest::ErrorRecorder messages(surface);
+    surface->Update();
+    EXPECT_EQ(messages.errors, 0) << messages.messages;
+    EXPECT_GT(surface->GetOutput()->GetNumberOfPolys(), 0);
+    EXPECT_EQ(messages.warnings, c.warnings) << c.slices << " slices: " << messages.warningMessages;
+    if (c.warnings)
+      EXPECT_NE(messages.warningMessages.find("% of the labelled voxels' volume inside the surface: a structure a few "
+                                              "voxels thin (a guide's wall) is eaten away; ImageSmoothing 0"),
+        std::string::npos)
+        << messages.warningMessages;
+  }
+}
