@@ -577,8 +577,15 @@ int vtkLKBoneSurfaceFilter::RequestData(
   {
     vtkDataArray* values = volume->GetPointData()->GetScalars();
     vtkIdType labelled = 0;
-    for (vtkIdType v = 0; v < values->GetNumberOfTuples(); ++v)
-      labelled += values->GetComponent(v, 0) >= 0.5;
+    const vtkIdType count = values->GetNumberOfTuples();
+    if (values->GetDataType() == VTK_UNSIGNED_CHAR && values->GetNumberOfComponents() == 1)
+    {
+      const auto* v = static_cast<const unsigned char*>(values->GetVoidPointer(0));
+      labelled = static_cast<vtkIdType>(std::count_if(v, v + count, [](unsigned char x) { return x != 0; }));
+    }
+    else
+      for (vtkIdType v = 0; v < count; ++v)
+        labelled += values->GetComponent(v, 0) >= 0.5;
     const double* h = volume->GetSpacing();
     const double voxels = static_cast<double>(labelled) * std::abs(h[0] * h[1] * h[2]);
     vtkNew<vtkFeatureEdges> open;
