@@ -63,6 +63,7 @@ void usage(std::ostream& os)
         "                     2nd, the 3rd and the 4th, ...) joined by a bar over the bone\n"
         "                     between them into one resection guide each (vtkLKGuideBarFilter),\n"
         "                     written as FOLDER/guide_linesN-M.stl and .vtp in place of the two\n"
+        "                     guides' own files\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
 }
