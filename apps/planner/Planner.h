@@ -290,6 +290,16 @@ public:
   /// The joined guide made with guides[i], or null (apart, or the join
   /// failed).
   const JoinedGuide* joinedGuideOf(std::size_t i) const;
+  /// A part to print: a joined pair (one part), or a guide joined to none.
+  struct GuidePart
+  {
+    vtkPolyData* surface = nullptr;
+    std::string stem;    ///< its files' stem: guide_strokeN, guide_strokesN-M
+    std::string roiName; ///< its ROI in the exported structure set
+  };
+  /// The guides made, as they are printed: the joined pairs, then the
+  /// guides joined to none (shown, exported as files and as ROIs alike).
+  std::vector<GuidePart> guideParts() const;
   /// "guide_strokes<n>-<m>", the stem of a joined guide's files (its saw
   /// lines' strokes, from 1).
   std::string joinedGuideFileStem(const JoinedGuide& joined) const;

@@ -101,23 +101,14 @@ std::string Planner::exportStructureSet(
   // The cutting guides shown, where the hospital's planning system shows
   // them on the CT beside the pieces.
   // A pair joined by a bar is one ROI, as it is one part.
-  std::vector<std::pair<std::string, vtkPolyData*>> guideParts;
-  for (const JoinedGuide& j : joinedGuides)
-    if (j.surface)
-      guideParts.emplace_back("resection guide (strokes " + std::to_string(guides[j.first].stroke + 1) + " and " +
-          std::to_string(guides[j.second].stroke + 1) + ")",
-        j.surface);
-  for (std::size_t i = 0; i < guides.size(); ++i)
-    if (guides[i].surface && !joinedGuideOf(i))
-      guideParts.emplace_back("cutting guide (stroke " + std::to_string(guides[i].stroke + 1) + ")", guides[i].surface);
-  for (const auto& [name, surface] : guideParts)
+  for (const GuidePart& part : guideParts())
   {
-    if (session.guides && lkapp::pieceFacts(surface).openEdges == 0 &&
-      std::find(roiNames.begin(), roiNames.end(), name) == roiNames.end())
+    if (session.guides && lkapp::pieceFacts(part.surface).openEdges == 0 &&
+      std::find(roiNames.begin(), roiNames.end(), part.roiName) == roiNames.end())
     {
-      structureSet->SetROIName(static_cast<int>(roiNames.size()), name.c_str());
-      structureSet->AddInputData(surface);
-      roiNames.push_back(name);
+      structureSet->SetROIName(static_cast<int>(roiNames.size()), part.roiName.c_str());
+      structureSet->AddInputData(part.surface);
+      roiNames.push_back(part.roiName);
     }
   }
   // The measurements' points as landmarks where the plan puts them (the
@@ -251,19 +242,12 @@ bool Planner::exportPieces(const std::string& folder, std::string& error)
   // The cutting guides shown, to print (STL) and to read back (VTP).
   // A pair joined by a bar is one part, in one file.
   std::vector<std::string> guideFiles;
-  std::vector<std::pair<std::string, vtkPolyData*>> guideParts;
-  for (const JoinedGuide& j : joinedGuides)
-    if (j.surface)
-      guideParts.emplace_back(joinedGuideFileStem(j), j.surface);
-  for (std::size_t i = 0; i < guides.size(); ++i)
-    if (guides[i].surface && !joinedGuideOf(i))
-      guideParts.emplace_back(guideFileStem(guides[i].stroke), guides[i].surface);
-  for (const auto& [stem, surface] : guideParts)
+  for (const GuidePart& part : guideParts())
     if (session.guides)
       for (const char* ext : { ".stl", ".vtp" })
       {
-        guideFiles.push_back(stem + ext);
-        if (!lkapp::writeMesh(surface, folder + "/" + guideFiles.back(), error, space))
+        guideFiles.push_back(part.stem + ext);
+        if (!lkapp::writeMesh(part.surface, folder + "/" + guideFiles.back(), error, space))
           return false;
       }
   // The CT on each cut line's plane and across it, for the surgeon's notes.

@@ -41,6 +41,21 @@ const Planner::JoinedGuide* Planner::joinedGuideOf(std::size_t i) const
   return nullptr;
 }
 
+std::vector<Planner::GuidePart> Planner::guideParts() const
+{
+  std::vector<GuidePart> parts;
+  for (const JoinedGuide& j : joinedGuides)
+    if (j.surface)
+      parts.push_back({ j.surface, joinedGuideFileStem(j),
+        "resection guide (strokes " + std::to_string(guides[j.first].stroke + 1) + " and " +
+          std::to_string(guides[j.second].stroke + 1) + ")" });
+  for (std::size_t i = 0; i < guides.size(); ++i)
+    if (guides[i].surface && !joinedGuideOf(i))
+      parts.push_back({ guides[i].surface, guideFileStem(guides[i].stroke),
+        "cutting guide (stroke " + std::to_string(guides[i].stroke + 1) + ")" });
+  return parts;
+}
+
 void Planner::updateGuides()
 {
   guideActor->SetVisibility(false);
@@ -98,12 +113,8 @@ void Planner::updateGuides()
       addLine(message, "no cutting guide for the saw line of stroke " + std::to_string(g.stroke + 1) + ": " + g.error);
   updateJoinedGuides();
   vtkNew<vtkAppendPolyData> all;
-  for (const JoinedGuide& j : joinedGuides)
-    if (j.surface)
-      all->AddInputData(j.surface);
-  for (std::size_t i = 0; i < guides.size(); ++i)
-    if (guides[i].surface && !joinedGuideOf(i))
-      all->AddInputData(guides[i].surface);
+  for (const GuidePart& part : guideParts())
+    all->AddInputData(part.surface);
   if (all->GetNumberOfInputConnections(0) == 0)
     return;
   all->Update();
