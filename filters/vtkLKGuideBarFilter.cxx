@@ -176,16 +176,16 @@ int vtkLKGuideBarFilter::RequestData(
       << " degrees apart (more than 120): a bar between them would go round the bone.");
     return 0;
   }
-  if (distance(guide[0].slotCentre, guide[1].slotCentre) > this->MaximumLength)
+  const double slotsApart = distance(guide[0].slotCentre, guide[1].slotCentre);
+  if (slotsApart > this->MaximumLength)
   {
-    vtkErrorMacro("Cannot join the guides: their slots are " << distance(guide[0].slotCentre, guide[1].slotCentre)
+    vtkErrorMacro("Cannot join the guides: their slots are " << slotsApart
       << " mm apart, more than MaximumLength (" << this->MaximumLength << " mm).");
     return 0;
   }
   const double radius = 0.5 * (this->Diameter > 0.0 ? this->Diameter : std::min(guide[0].thickness, guide[1].thickness));
   // Room between the guides' facing edges for the bar (guides nearer each
   // other would have it cross the other's slot, or are one guide).
-  const double slotsApart = distance(guide[0].slotCentre, guide[1].slotCentre);
   if (slotsApart < guide[0].reach + guide[1].reach + 2.0 * radius)
   {
     vtkErrorMacro("Cannot join the guides: their slots are " << slotsApart << " mm apart, too near for a bar of "
