@@ -2,6 +2,7 @@
 // into pieces (vtkLKClosedLineCutFilter), capped for printing by default.
 #include "common/AppSupport.h"
 #include "common/CutReport.h"
+#include "common/GuidePairs.h"
 
 #include "vtkLKClosedLineCutFilter.h"
 #include "vtkLKCuttingGuideFilter.h"
@@ -19,12 +20,14 @@
 #include <vtkPolyData.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
 #include <functional>
 #include <iostream>
 #include <regex>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,11 +62,11 @@ void usage(std::ostream& os)
         "                     a shell on the bone's outer side with a slot in the line's plane\n"
         "                     and two screw holes); guide files an earlier run left there and\n"
         "                     this one does not write are removed\n"
-        "  --join-guides      with --guides: the flat lines' guides in pairs (the 1st and the\n"
-        "                     2nd, the 3rd and the 4th, ...) joined by a bar over the bone\n"
-        "                     between them into one resection guide each (vtkLKGuideBarFilter),\n"
-        "                     written as FOLDER/guide_linesN-M.stl and .vtp in place of the two\n"
-        "                     guides' own files\n"
+        "  --join-guides      with --guides: the flat lines' guides in pairs, the two lines\n"
+        "                     either side of one piece (as they lie along the bone), joined by\n"
+        "                     a bar over the bone between them into one resection guide each\n"
+        "                     (vtkLKGuideBarFilter), written as FOLDER/guide_linesN-M.stl and\n"
+        "                     .vtp in place of the two guides' own files\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
 }
@@ -116,12 +119,12 @@ bool isGuideLineFileName(const std::string& name)
 /// A cutting guide for each line of `lines` (its line cells, in order,
 /// numbered from 1) that lies within 0.5 mm of its best-fitting plane, on
 /// `mesh`, written into `folder`; a line per guide on standard output. With
-/// `join`, those lines' guides in pairs (the 1st and the 2nd flat line, the
-/// 3rd and the 4th, ...) joined by a bar into one part each
-/// (vtkLKGuideBarFilter), written in place of the two. False with `error`
+/// `join`, those lines' guides in pairs, two lines either side of one of the
+/// cut's `pieces` (lkapp::pairLinesByPiece), joined by a bar into one part
+/// each (vtkLKGuideBarFilter), written in place of the two. False with `error`
 /// when a file cannot be written.
 bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folder, const std::string& space,
-  bool join, std::vector<std::string>& written, std::string& error)
+  bool join, const std::vector<vtkPolyData*>& pieces, std::vector<std::string>& written, std::string& error)
 {
   const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(lines);
   vtkNew<vtkPolyData> faces; // the bone, without its line cells
@@ -194,10 +197,36 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     }
     return true;
   };
-  for (std::size_t i = 0; join && i + 1 < guides.size(); i += 2)
+  // The pairs: two flat lines either side of one piece (the segment between
+  // two saw cuts), as they lie along the bone.
+  std::vector<std::vector<std::array<double, 3>>> guideLines;
+  it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  k = 0;
+  std::size_t next = 0; // the next guide, in the lines' order
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && next < guides.size(); it->GoToNextCell(), ++k)
   {
-    Guide& a = guides[i];
-    Guide& b = guides[i + 1];
+    if (guides[next].line != k)
+      continue;
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    guideLines.emplace_back();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      lines->GetPoint(ids[i], x);
+      guideLines.back().push_back({ x[0], x[1], x[2] });
+    }
+    ++next;
+  }
+  const std::vector<std::set<std::size_t>> piecesOf =
+    lkapp::piecesAlongLines(pieces, guideLines, 1e-5 * mesh->GetLength());
+  const std::vector<std::pair<std::size_t, std::size_t>> pairs =
+    join ? lkapp::pairLinesByPiece(piecesOf) : std::vector<std::pair<std::size_t, std::size_t>>();
+  for (const auto& pair : pairs)
+  {
+    Guide& a = guides[pair.first];
+    Guide& b = guides[pair.second];
     const std::string label = "guide lines " + std::to_string(a.line + 1) + "-" + std::to_string(b.line + 1);
     char line[400];
     if (!a.why.empty() || !b.why.empty())
@@ -228,9 +257,30 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       label.c_str(), bar->GetBarDiameter(), bar->GetBarLength(), bar->GetBarGap(), bar->GetVolume(), stem.c_str());
     joinedReport += line;
   }
-  if (join && guides.size() % 2 == 1)
-    joinedReport += "guide line " + std::to_string(guides.back().line + 1) +
-      " stays apart: guides are joined in pairs of flat lines\n";
+  for (std::size_t i = 0; join && i < guides.size(); ++i)
+  {
+    if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == i || p.second == i; }))
+      continue;
+    const std::vector<std::size_t> beside = lkapp::lineNeighbours(i, piecesOf);
+    std::string why = "no other flat line bounds a piece of the cut with it (a resection guide joins the lines "
+                      "either side of one piece)";
+    auto lineOf = [&](std::size_t g) { return std::to_string(guides[g].line + 1); };
+    if (beside.size() == 1)
+    {
+      const auto& p = *std::find_if(pairs.begin(), pairs.end(),
+        [&](const auto& q) { return q.first == beside[0] || q.second == beside[0]; });
+      why = "the flat line beside it (line " + lineOf(beside[0]) + ") is joined to line " +
+        lineOf(p.first == beside[0] ? p.second : p.first);
+    }
+    else if (beside.size() > 1)
+    {
+      why = "the flat lines beside it (lines ";
+      for (std::size_t m = 0; m < beside.size(); ++m)
+        why += (m == 0 ? "" : m + 1 == beside.size() ? " and " : ", ") + lineOf(beside[m]);
+      why += ") are joined to others";
+    }
+    joinedReport += labelOf(guides[i].line) + " stays apart: " + why + "\n";
+  }
   for (const Guide& g : guides)
   {
     char line[600];
@@ -381,6 +431,7 @@ int main(int argc, char* argv[])
       .c_str());
   std::vector<std::string> pieceStems; // the files' names, piece0, piece1, ...
   std::vector<std::string> cutLinesFiles; // piece0_cut_lines.vtp, ...
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces; // for the guides' pairs
   vtkNew<vtkLKExtractCutPieceFilter> extract;
   extract->SetInputConnection(cut->GetOutputPort());
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)
@@ -389,6 +440,7 @@ int main(int argc, char* argv[])
     extract->Update();
     vtkNew<vtkPolyData> piece;
     piece->ShallowCopy(extract->GetOutput());
+    pieces.push_back(piece);
     const lkapp::PieceFacts facts = lkapp::pieceFacts(piece);
     std::printf("piece %-11d %lld points, %lld faces (%lld cap)%s\n", p,
       static_cast<long long>(piece->GetNumberOfPoints()), static_cast<long long>(facts.faces),
@@ -426,7 +478,11 @@ int main(int argc, char* argv[])
   if (!guidesFolder.empty())
   {
     std::vector<std::string> guideFiles;
-    if (!writeGuides(mesh, lines ? lines.Get() : mesh.Get(), guidesFolder, space, joinGuides, guideFiles, error))
+    std::vector<vtkPolyData*> piecesMade;
+    for (const auto& piece : pieces)
+      piecesMade.push_back(piece);
+    if (!writeGuides(
+          mesh, lines ? lines.Get() : mesh.Get(), guidesFolder, space, joinGuides, piecesMade, guideFiles, error))
     {
       std::cerr << "error: " << error << "\n";
       return 1;

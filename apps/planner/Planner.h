@@ -274,8 +274,9 @@ public:
   /// "guide_stroke<n>", the stem of a guide's files (n from 1).
   static std::string guideFileStem(std::size_t stroke);
   /// The resection guides (j, the session's "guidesJoined"): the guides of
-  /// the saw lines in pairs, in stroke order (guides[0] and guides[1],
-  /// guides[2] and guides[3], ...), each pair joined by a bar over the bone
+  /// the saw lines in pairs, the two lines either side of one piece of
+  /// the cut (lkapp::pairLinesByPiece: as they lie along the bone, not as
+  /// they were drawn; without a cut, in stroke order), each pair joined by a bar over the bone
   /// between them (vtkLKGuideBarFilter) into one part; made anew only when
   /// one of its guides was.
   struct JoinedGuide

@@ -4,6 +4,7 @@
 #include "planner/PlannerShared.h"
 
 #include "common/AppSupport.h"
+#include "common/GuidePairs.h"
 #include "common/ScanOnPlane.h"
 
 #include "vtkLKCuttingGuideFilter.h"
@@ -13,9 +14,11 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -135,11 +138,36 @@ void Planner::updateJoinedGuides()
     addLine(message, "cutting guides are joined (j) in pairs of saw lines: this plan has one");
     return;
   }
-  std::vector<JoinedGuide> made;
-  for (std::size_t i = 0; i + 1 < guides.size(); i += 2)
+  // The pairs: two saw lines that bound one piece of the cut (the segment
+  // between them), as they lie along the bone, not as they were drawn.
+  std::vector<std::vector<std::array<double, 3>>> lines(guides.size());
+  for (std::size_t i = 0; i < guides.size(); ++i)
+    for (std::size_t k = 0; k < cut.lineStrokes.size(); ++k)
+      if (cut.lineStrokes[k] == guides[i].stroke)
+      {
+        vtkPolyData* line = cut.lines[k].first;
+        for (vtkIdType p = 0; p < line->GetNumberOfPoints(); ++p)
+        {
+          double x[3];
+          line->GetPoint(p, x);
+          lines[i].push_back({ x[0], x[1], x[2] });
+        }
+      }
+  std::vector<vtkPolyData*> pieces;
+  double size = 0.0;
+  for (const auto& piece : cut.pieces)
   {
+    pieces.push_back(piece);
+    size = std::max(size, piece->GetLength());
+  }
+  const std::vector<std::set<std::size_t>> piecesOf = lkapp::piecesAlongLines(pieces, lines, 1e-6 * size);
+  const std::vector<std::pair<std::size_t, std::size_t>> pairs = lkapp::pairLinesByPiece(piecesOf);
+  std::vector<JoinedGuide> made;
+  for (const auto& pair : pairs)
+  {
+    const std::size_t i = pair.first, i2 = pair.second;
     const CuttingGuide& a = guides[i];
-    const CuttingGuide& b = guides[i + 1];
+    const CuttingGuide& b = guides[i2];
     const std::string which =
       "strokes " + std::to_string(a.stroke + 1) + " and " + std::to_string(b.stroke + 1);
     if (!a.surface || !b.surface)
@@ -154,7 +182,7 @@ void Planner::updateJoinedGuides()
       {
         made.push_back(j);
         made.back().first = i;
-        made.back().second = i + 1;
+        made.back().second = i2;
         kept = true;
         break;
       }
@@ -162,7 +190,7 @@ void Planner::updateJoinedGuides()
     {
       JoinedGuide j;
       j.first = i;
-      j.second = i + 1;
+      j.second = i2;
       j.firstSurface = a.surface;
       j.secondSurface = b.surface;
       j.filter = vtkSmartPointer<vtkLKGuideBarFilter>::New();
@@ -179,9 +207,31 @@ void Planner::updateJoinedGuides()
     if (!made.back().surface)
       addLine(message, "the cutting guides of " + which + " are not joined: " + made.back().error);
   }
-  if (guides.size() % 2 == 1)
-    addLine(message, "the cutting guide of stroke " + std::to_string(guides.back().stroke + 1) +
-        " stays apart: guides are joined in pairs of saw lines");
+  // The guides in no pair, and why.
+  for (std::size_t i = 0; i < guides.size(); ++i)
+  {
+    if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == i || p.second == i; }))
+      continue;
+    const std::vector<std::size_t> beside = lkapp::lineNeighbours(i, piecesOf);
+    auto strokeOf = [&](std::size_t g) { return std::to_string(guides[g].stroke + 1); };
+    std::string why = "no other saw line bounds a piece of the cut with it (a resection guide joins the saw lines "
+                      "either side of one piece)";
+    if (beside.size() == 1)
+    {
+      const auto& p = *std::find_if(pairs.begin(), pairs.end(),
+        [&](const auto& q) { return q.first == beside[0] || q.second == beside[0]; });
+      why = "the saw line beside it (stroke " + strokeOf(beside[0]) + ") is joined to stroke " +
+        strokeOf(p.first == beside[0] ? p.second : p.first);
+    }
+    else if (beside.size() > 1)
+    {
+      why = "the saw lines beside it (strokes ";
+      for (std::size_t k = 0; k < beside.size(); ++k)
+        why += (k == 0 ? "" : k + 1 == beside.size() ? " and " : ", ") + strokeOf(beside[k]);
+      why += ") are joined to others";
+    }
+    addLine(message, "the cutting guide of stroke " + strokeOf(i) + " stays apart: " + why);
+  }
   joinedGuides = made;
 }
 

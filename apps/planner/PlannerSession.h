@@ -19,9 +19,9 @@
 //   "guides": bool                                    a cutting guide for each saw line
 //   "guidesOtherSide": bool                           on the bone's other side (inner)
 //   "guidesJoined": bool                              the guides of the saw lines in
-//                                                     pairs (1st and 2nd, 3rd and 4th,
-//                                                     ...) joined by a bar: resection
-//                                                     guides
+//                                                     pairs (two lines either side of
+//                                                     one piece) joined by a bar:
+//                                                     resection guides
 //   "mirrorPlane": [[x, y, z], [x, y, z], [x, y, z]]  the plane to mirror across, set by
 //                                                     three points (midline landmarks;
 //                                                     none: the fitted plane)
@@ -209,9 +209,9 @@ struct Session
   /// The guides on the other side of the bone (K): the side the filter
   /// chooses (a mandible's outer side) reversed.
   bool guidesOtherSide = false;
-  /// The guides of the saw lines taken in pairs in stroke order (the 1st and
-  /// the 2nd, the 3rd and the 4th, ...) joined by a bar over the bone
-  /// between them (j): a resection guide each, one part to print
+  /// The guides of the saw lines taken in pairs, two lines either side of
+  /// one piece of the cut (lkapp::pairLinesByPiece), joined by a bar over the
+  /// bone between them (j): a resection guide each, one part to print
   /// (vtkLKGuideBarFilter).
   bool guidesJoined = false;
   /// The scan on cut line k's plane (c), k from 1 (the plan's numbering of
