@@ -59,9 +59,9 @@ void usage(std::ostream& os)
         "  --guides FOLDER    also write a cutting guide for each flat line (within 0.5 mm of\n"
         "                     its plane, as a saw line or a plane's section is) as\n"
         "                     FOLDER/guide_lineN.stl and .vtp (vtkLKCuttingGuideFilter on MESH:\n"
-        "                     a shell on the bone's outer side with a slot in the line's plane\n"
-        "                     and two screw holes); guide files an earlier run left there and\n"
-        "                     this one does not write are removed\n"
+        "                     a shell on the bone's outer side with a slot in the line's plane,\n"
+        "                     two screw holes and the line's number raised on it); guide files\n"
+        "                     an earlier run left there and this one does not write are removed\n"
         "  --join-guides      with --guides: the flat lines' guides in pairs, the two lines\n"
         "                     either side of one piece (as they lie along the bone), joined by\n"
         "                     a bar over the bone between them into one resection guide each\n"
@@ -177,6 +177,7 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     g.filter->SetInputData(faces);
     g.filter->SetPlaneOrigin(origin);
     g.filter->SetPlaneNormal(f.normal[0], f.normal[1], f.normal[2]);
+    g.filter->SetLabel(std::to_string(k + 1).c_str()); // the line's number, as its file name gives it
     // The cut stands without a guide: why one is not made is this line's
     // report, not an error of the run.
     g.why = lkapp::updateKeepingErrors(g.filter);
@@ -294,10 +295,12 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       vtkLKCuttingGuideFilter* guide = g.filter;
       const std::array<double, 3> along = lkapp::guideDirection(guide->GetApproachUsed());
       std::snprintf(line, sizeof line,
-        "%-16s slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, %d screw hole(s) of %.1f mm, on "
+        "%-16s slot %.1f mm long and %.1f mm wide, walls %.1f mm thick, %d screw hole(s) of %.1f mm%s, on "
         "%.0f mm^2 of bone, put on along (%.3f, %.3f, %.3f); %.0f mm^3: %s%s.stl%s\n",
         labelOf(g.line).c_str(), guide->GetSlotLength(), guide->GetSlotWidth(), guide->GetThickness(),
-        guide->GetNumberOfScrewHoles(), guide->GetScrewHoleDiameter(), guide->GetContactArea(), along[0], along[1],
+        guide->GetNumberOfScrewHoles(), guide->GetScrewHoleDiameter(),
+        guide->GetLabelPlaced() ? (", labelled \"" + std::string(guide->GetLabel()) + "\"").c_str() : "",
+        guide->GetContactArea(), along[0], along[1],
         along[2], guide->GetVolume(), g.joinedStem.empty() ? "" : "in ", stem.c_str(),
         g.joinedStem.empty() ? ", .vtp" : "");
     }

@@ -1,7 +1,9 @@
 #include "vtkLKCuttingGuideFilter.h"
+#include "latticekit/SolidUnion.h"
 #include "vtkLKAbort.h"
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
+#include "vtkLKRaisedLabel.h"
 #include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
@@ -27,6 +29,7 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStringArray.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
 
@@ -35,9 +38,15 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkLKCuttingGuideFilter);
+
+vtkLKCuttingGuideFilter::~vtkLKCuttingGuideFilter()
+{
+  this->SetLabel(nullptr);
+}
 
 namespace
 {
@@ -68,6 +77,8 @@ int vtkLKCuttingGuideFilter::RequestData(
   std::fill(this->ApproachUsed, this->ApproachUsed + 3, 0.0);
   this->SlotLength = this->ContactArea = this->Volume = 0.0;
   this->NumberOfScrewHoles = 0;
+  this->LabelPlaced = false;
+  this->LabelHeightUsed = 0.0;
 
   const double normalLength = vtkMath::Norm(this->PlaneNormal);
   if (!finiteVector(this->PlaneOrigin) || !finiteVector(this->PlaneNormal) || !(normalLength > 0.0) ||
@@ -90,6 +101,7 @@ int vtkLKCuttingGuideFilter::RequestData(
          Range{ "Reach", this->Reach, 0.0, 200.0 }, Range{ "SlotWidth", this->SlotWidth, 0.05, 20.0 },
          Range{ "Bridge", this->Bridge, 0.0, 100.0 }, Range{ "Clearance", this->Clearance, 0.0, 10.0 },
          Range{ "ScrewHoleDiameter", this->ScrewHoleDiameter, 0.0, 10.0 },
+         Range{ "LabelHeight", this->LabelHeight, 1.5, 20.0 },
          Range{ "MaximumContactAngle", this->MaximumContactAngle, 1.0, 89.0 } })
   {
     if (!(r.value >= r.low && r.value <= r.high))
@@ -622,8 +634,17 @@ int vtkLKCuttingGuideFilter::RequestData(
   if (lkvtk::stopRequested(this, { output }))
     return 1;
 
+  // The label, raised on the outer face and joined to the shell.
+  vtkSmartPointer<vtkPolyData> shell = outward->GetOutput();
+  if (this->Label && *this->Label)
+  {
+    const std::string why = this->PutOnLabel(shell, o, n, e, d, low, high);
+    if (!why.empty())
+      vtkWarningMacro("The cutting guide is made without its label '" << this->Label << "': " << why << ".");
+  }
+
   vtkNew<vtkFeatureEdges> open;
-  open->SetInputConnection(outward->GetOutputPort());
+  open->SetInputData(shell);
   open->BoundaryEdgesOn();
   open->NonManifoldEdgesOn();
   open->FeatureEdgesOff();
@@ -633,9 +654,9 @@ int vtkLKCuttingGuideFilter::RequestData(
     vtkWarningMacro("The cutting guide is not closed: " << edges << " of its edges are open or shared by more than "
                                                         << "two faces (the bone's surface was not manifold there?).");
   vtkNew<vtkMassProperties> mass;
-  mass->SetInputConnection(outward->GetOutputPort());
+  mass->SetInputData(shell);
   mass->Update();
-  output->ShallowCopy(outward->GetOutput());
+  output->ShallowCopy(shell);
   output->GetPointData()->Initialize();
   output->GetCellData()->Initialize();
   output->GetFieldData()->PassData(input->GetFieldData());
@@ -675,8 +696,113 @@ int vtkLKCuttingGuideFilter::RequestData(
     holeCentres->InsertNextTuple(x.data());
   fd->AddArray(holeCentres);
   this->NumberOfScrewHoles = static_cast<int>(holes.size());
+  if (this->LabelPlaced)
+  {
+    vtkNew<vtkStringArray> label;
+    label->SetName("GuideLabel");
+    label->InsertNextValue(this->Label);
+    fd->AddArray(label);
+  }
   this->UpdateProgress(1.0);
   return 1;
+}
+
+std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& shell, const std::array<double, 3>& o,
+  const std::array<double, 3>& n, const std::array<double, 3>& e, const std::array<double, 3>& d, double low,
+  double high)
+{
+  for (const char* c = this->Label; *c; ++c)
+    if (static_cast<unsigned char>(*c) < 32 || static_cast<unsigned char>(*c) > 126)
+      return "vtkVectorText draws printable ASCII characters only";
+  const double margin = 0.5, stroke = 0.6, relief = 0.6, depth = std::min(1.0, 0.5 * this->Thickness);
+  const double smallest = 1.5, edge = 0.3;
+  vtkSmartPointer<vtkPolyData> outline = lkvtk::textOutline(this->Label, this->LabelHeight, stroke, edge);
+  if (!outline)
+    return "it has no character to draw";
+  double b[6];
+  outline->GetBounds(b);
+  const double aspect = b[1] / b[3]; // width over height
+  // The room: four rectangles (in s across the plane, u along it), beside
+  // the slot on either side, between a screw hole and an end.
+  const double half = this->SlotWidth / 2.0, holeRadius = this->ScrewHoleDiameter / 2.0, middle = 0.5 * (low + high);
+  const double acrossRoom = this->Reach - half - 2.0 * margin, alongRoom = 0.5 * (high - low) - holeRadius - 2.0 * margin;
+  if (!(acrossRoom > 0.0) || !(alongRoom > 0.0))
+    return "there is no room for it beside the slot (a larger Reach, a longer guide)";
+  const double acrossMiddle = 0.5 * (half + this->Reach), alongMiddle = holeRadius + margin + 0.5 * alongRoom;
+  // The text's up: across the plane (the text reads along the slot) or
+  // along it (across the slot), nearest the coordinates' +z first (the
+  // patient's head in LPS and RAS alike), so that on a vertical cut a short
+  // label stands upright; the full height first, then the largest that fits.
+  struct Place
+  {
+    Vec up;
+    double height, upwards;
+    bool acrossUp;
+  };
+  std::vector<Place> places;
+  for (const bool acrossUp : { true, false })
+    for (const double sign : { 1.0, -1.0 })
+    {
+      const Vec up = acrossUp ? Vec{ sign * n[0], sign * n[1], sign * n[2] } : Vec{ sign * e[0], sign * e[1], sign * e[2] };
+      // Its height along up, its width along the other.
+      const double upRoom = acrossUp ? acrossRoom : alongRoom, wideRoom = acrossUp ? alongRoom : acrossRoom;
+      const double height = std::min({ this->LabelHeight, upRoom, wideRoom / aspect });
+      if (height >= smallest)
+        places.push_back({ up, height, up[2], acrossUp });
+    }
+  std::stable_sort(places.begin(), places.end(), [&](const Place& p, const Place& q) {
+    const bool pFull = p.height >= this->LabelHeight - 1e-9, qFull = q.height >= this->LabelHeight - 1e-9;
+    if (pFull != qFull)
+      return pFull;
+    if (!pFull && std::abs(p.height - q.height) > 1e-9)
+      return p.height > q.height;
+    return p.upwards > q.upwards + 1e-9;
+  });
+  if (places.empty())
+    return "it is too long for the room beside the slot between a screw hole and the guide's end (" +
+      std::to_string(alongRoom) + " by " + std::to_string(acrossRoom) + " mm, at " + std::to_string(smallest) +
+      " mm tall)";
+  std::string why;
+  for (const Place& place : places)
+  {
+    if (std::abs(place.height - this->LabelHeight) > 1e-9)
+    {
+      outline = lkvtk::textOutline(this->Label, place.height, stroke, edge);
+      if (!outline)
+        return "it has no character to draw";
+    }
+    outline->GetBounds(b);
+    Vec reading;
+    vtkMath::Cross(place.up.data(), d.data(), reading.data());
+    for (const double side : { 1.0, -1.0 })
+      for (const double ahead : { 1.0, -1.0 })
+      {
+        // The text's middle in the middle of the rectangle.
+        const Vec centre = add(add(o, n, side * acrossMiddle), e, middle + ahead * alongMiddle);
+        const Vec origin = add(add(centre, reading, -0.5 * b[1]), place.up, -0.5 * b[3]);
+        std::string problem;
+        vtkSmartPointer<vtkPolyData> raised =
+          lkvtk::raisedLabel(shell, outline, origin.data(), reading.data(), place.up.data(), relief, depth, problem);
+        if (!raised)
+        {
+          if (why.empty())
+            why = problem;
+          continue;
+        }
+        std::vector<lk::TriangleMesh> solids(2);
+        if (!lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(shell), solids[0]).empty() ||
+          !lkvtk::toTriangleMesh(raised, solids[1]).empty())
+          return "its solid could not be made";
+        lk::TriangleMesh joined;
+        if (const std::string failed = lk::solidUnion(solids, joined); !failed.empty())
+          return "it could not be joined to the guide: " + failed;
+        shell = lkvtk::fromTriangleMesh(joined);
+        this->LabelPlaced = true;
+        this->LabelHeightUsed = place.height;
+        return std::string();
+      }
+  }
+  return "no room for it on the outer face beside the slot: " + why;
 }
 
 void vtkLKCuttingGuideFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -696,6 +822,9 @@ void vtkLKCuttingGuideFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Clearance: " << this->Clearance << "\n";
   os << indent << "ScrewHoleDiameter: " << this->ScrewHoleDiameter << "\n";
   os << indent << "MaximumContactAngle: " << this->MaximumContactAngle << "\n";
+  os << indent << "Label: " << (this->Label ? this->Label : "(none)") << "\n";
+  os << indent << "LabelHeight: " << this->LabelHeight << "\n";
+  os << indent << "LabelPlaced: " << (this->LabelPlaced ? "yes" : "no") << "\n";
   triple("ApproachUsed", this->ApproachUsed);
   os << indent << "SlotLength: " << this->SlotLength << "\n";
   os << indent << "ContactArea: " << this->ContactArea << "\n";

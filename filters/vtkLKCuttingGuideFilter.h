@@ -52,6 +52,17 @@
  *   by vtkLinearExtrusionFilter, capped, oriented outward by
  *   vtkPolyDataNormals. The slot's walls are planes parallel to the cut's,
  *   SlotWidth apart, Thickness deep along the approach.
+ * - The label (Label, none by default): the text raised 0.6 mm on the
+ *   guide's outer face, LabelHeight tall (3 mm; less where the room beside
+ *   the slot is narrower, 1.5 mm at least), its strokes 0.6 mm wide at
+ *   least, reading along the slot as seen from the approach, beside the
+ *   slot between a screw hole and an end of the guide (the first of the
+ *   four such places the text fits on whole, on a face within 60 degrees of
+ *   the approach), sunk 1 mm into the wall and joined to it into one solid
+ *   (CGAL's corefinement, lk::solidUnion). Parts printed for one plan are
+ *   told apart by it (the planner writes each saw line's stroke number). A
+ *   label with nothing to draw (vtkVectorText draws printable ASCII) or no
+ *   room is left out with a warning; the guide is made without it.
  *
  * Input: a bone surface (polygons; a closed mesh, so that its outside is
  * known). Output: the guide, a closed triangle mesh oriented outward (ready
@@ -62,7 +73,8 @@
  * bone); what places the guide for other filters (vtkLKGuideBarFilter):
  * GuidePlaneNormal (unit), GuideSlotCentre (the middle of the slot on the
  * bone), GuideSlotWidth, GuideThickness, GuideReach, GuideClearance and
- * GuideScrewHoleDiameter (0: no holes); and the input's SPACE tag. The same values are kept in the filter
+ * GuideScrewHoleDiameter (0: no holes); GuideLabel (a string array, the
+ * label's text, only when it was put on); and the input's SPACE tag. The same values are kept in the filter
  * after an update.
  *
  * Errors (a VTK error and an empty output): a plane normal or an approach
@@ -76,6 +88,10 @@
 
 #include "LatticeKitFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for PutOnLabel
+
+#include <array>  // for PutOnLabel
+#include <string> // for PutOnLabel
 
 class LATTICEKITFILTERS_EXPORT vtkLKCuttingGuideFilter : public vtkPolyDataAlgorithm
 {
@@ -134,6 +150,13 @@ public:
   /// guide to rest on it: degrees, default 70 (1 to 89).
   vtkSetMacro(MaximumContactAngle, double);
   vtkGetMacro(MaximumContactAngle, double);
+  /// The text raised on the guide's outer face (see above; default none).
+  vtkSetStringMacro(Label);
+  vtkGetStringMacro(Label);
+  /// The label's height: mm, default 3 (1.5 to 20; less where it has no
+  /// room, down to 1.5).
+  vtkSetMacro(LabelHeight, double);
+  vtkGetMacro(LabelHeight, double);
   ///@}
 
   ///@{
@@ -146,11 +169,15 @@ public:
   vtkGetMacro(Volume, double);
   /// The screw holes made (0 to 2: a hole whose ray meets no bone is left out).
   vtkGetMacro(NumberOfScrewHoles, int);
+  /// Whether the label was put on (false without one, or without room),
+  /// and its height there (mm; 0 without).
+  vtkGetMacro(LabelPlaced, bool);
+  vtkGetMacro(LabelHeightUsed, double);
   ///@}
 
 protected:
   vtkLKCuttingGuideFilter() = default;
-  ~vtkLKCuttingGuideFilter() override = default;
+  ~vtkLKCuttingGuideFilter() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
@@ -164,13 +191,25 @@ protected:
   double Clearance = 0.0;
   double MaximumContactAngle = 70.0;
   double ScrewHoleDiameter = 2.1;
+  char* Label = nullptr;
+  double LabelHeight = 3.0;
   int NumberOfScrewHoles = 0;
+  bool LabelPlaced = false;
+  double LabelHeightUsed = 0.0;
   double ApproachUsed[3] = { 0.0, 0.0, 0.0 };
   double SlotLength = 0.0;
   double ContactArea = 0.0;
   double Volume = 0.0;
 
 private:
+  /// Raises the label on `shell` (the guide, replaced by the union) at the
+  /// first place it fits (o, n, e, d: the plane's point and normal, the
+  /// direction along the plane and the approach; low, high: the guide's
+  /// extent along e); empty, or why it was left out.
+  std::string PutOnLabel(vtkSmartPointer<vtkPolyData>& shell, const std::array<double, 3>& o,
+    const std::array<double, 3>& n, const std::array<double, 3>& e, const std::array<double, 3>& d, double low,
+    double high);
+
   vtkLKCuttingGuideFilter(const vtkLKCuttingGuideFilter&) = delete;
   void operator=(const vtkLKCuttingGuideFilter&) = delete;
 };

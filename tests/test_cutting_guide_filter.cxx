@@ -6,6 +6,7 @@
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKMedicalImageReader.h"
+#include "vtkLKRaisedLabel.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -18,6 +19,8 @@
 #include <vtkLinearSubdivisionFilter.h>
 #include <vtkMath.h>
 #include <vtkPoints.h>
+#include <vtkMassProperties.h>
+#include <vtkStringArray.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
 
@@ -171,6 +174,91 @@ TEST(CuttingGuideFilter, TwoRoundScrewHolesBesideTheSlot)
   EXPECT_EQ(guide->GetNumberOfScrewHoles(), 0);
 }
 
+TEST(CuttingGuideFilter, ItsLabelIsRaisedOnItsOuterFaceBesideTheSlot)
+{
+  // The box's face y = -10, the slot along z: "7" stands upright (its up
+  // along +z), 0.6 mm proud of the outer face at y = -14, beside the slot
+  // and clear of the screw holes (at z = 0, x = +-4.3).
+  vtkNew<vtkLKCuttingGuideFilter> plain;
+  plain->SetInputData(box());
+  plain->SetApproach(0, -1, 0);
+  plain->Update();
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(box());
+  guide->SetApproach(0, -1, 0);
+  guide->SetLabel("7");
+  lktest::ErrorRecorder recorder(guide);
+  guide->Update();
+  EXPECT_EQ(recorder.warnings, 0) << recorder.warningMessages;
+  vtkPolyData* out = guide->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  ASSERT_TRUE(guide->GetLabelPlaced());
+  EXPECT_DOUBLE_EQ(guide->GetLabelHeightUsed(), 3.0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-6 * guide->GetVolume());
+  auto* label = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("GuideLabel"));
+  ASSERT_NE(label, nullptr);
+  EXPECT_EQ(label->GetValue(0), "7");
+  EXPECT_EQ(plain->GetOutput()->GetFieldData()->GetAbstractArray("GuideLabel"), nullptr);
+  // What it adds: the text's area, 0.6 mm tall (the rest is in the wall).
+  auto outline = lkvtk::textOutline("7", 3.0, 0.6, 0.3);
+  ASSERT_TRUE(outline);
+  vtkNew<vtkMassProperties> area;
+  area->SetInputData(outline);
+  area->Update();
+  EXPECT_NEAR(guide->GetVolume() - plain->GetVolume(), 0.6 * area->GetSurfaceArea(), 1e-3 * guide->GetVolume());
+  // Where: the points beyond the outer face, within the label's rectangle.
+  double low[3] = { 1e9, 1e9, 1e9 }, high[3] = { -1e9, -1e9, -1e9 };
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    if (x[1] > -14.0 - 1e-6)
+      continue;
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = std::min(low[k], x[k]);
+      high[k] = std::max(high[k], x[k]);
+    }
+  }
+  EXPECT_NEAR(low[1], -14.6, 1e-9);
+  EXPECT_NEAR(high[2] - low[2], 3.0, 0.05); // upright: 3 mm along z
+  EXPECT_LT(high[0] - low[0], 3.0);
+  EXPECT_GT(std::min(std::abs(low[0]), std::abs(high[0])), 0.6 + 0.5 - 1e-6); // beside the slot
+  EXPECT_LT(std::max(std::abs(low[0]), std::abs(high[0])), 8.0 - 0.5 + 1e-6); // inside the edge
+  EXPECT_GT(std::min(std::abs(low[2]), std::abs(high[2])), 1.05 + 0.5 - 1e-6); // past the screw hole
+  EXPECT_LT(std::max(std::abs(low[2]), std::abs(high[2])), 15.0 - 0.5 + 1e-6); // inside the end
+}
+
+TEST(CuttingGuideFilter, ALabelWithoutRoomOrCharactersIsLeftOutWithAWarning)
+{
+  for (const char* text : { "123456789012345678", "\xc3\xa9", " " })
+  {
+    vtkNew<vtkLKCuttingGuideFilter> guide;
+    guide->SetInputData(box());
+    guide->SetApproach(0, -1, 0);
+    guide->SetLabel(text);
+    lktest::ErrorRecorder recorder(guide);
+    guide->Update();
+    EXPECT_EQ(recorder.errors, 0);
+    EXPECT_EQ(recorder.warnings, 1) << text;
+    EXPECT_NE(recorder.warningMessages.find("The cutting guide is made without its label"), std::string::npos)
+      << recorder.warningMessages;
+    EXPECT_GT(guide->GetOutput()->GetNumberOfCells(), 0);
+    EXPECT_FALSE(guide->GetLabelPlaced());
+    EXPECT_EQ(guide->GetOutput()->GetFieldData()->GetAbstractArray("GuideLabel"), nullptr);
+  }
+  // Too long at 3 mm, it is made smaller, down to 1.5 mm.
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(box());
+  guide->SetApproach(0, -1, 0);
+  guide->SetLabel("1234567");
+  guide->Update();
+  EXPECT_TRUE(guide->GetLabelPlaced());
+  EXPECT_LT(guide->GetLabelHeightUsed(), 3.0);
+  EXPECT_GE(guide->GetLabelHeightUsed(), 1.5);
+}
+
 TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
 {
   // Seen from (0, -1, 1) at 45 degrees, the box's faces y = -10 and
@@ -224,11 +312,13 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
     guide->SetInputData(surface);
     guide->SetPlaneOrigin(c.origin);
     guide->SetPlaneNormal(c.normal);
+    guide->SetLabel("12");
     lktest::ProgressRecorder progress(guide);
     guide->Update();
     vtkPolyData* out = guide->GetOutput();
     ASSERT_GT(out->GetNumberOfCells(), 0);
     EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+    EXPECT_TRUE(guide->GetLabelPlaced());
     EXPECT_GT(guide->GetVolume(), 500.0);
     EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-6 * guide->GetVolume());
     EXPECT_GT(guide->GetSlotLength(), 15.0);
@@ -306,6 +396,7 @@ TEST(CuttingGuideFilter, BadInputAndParametersAreRefused)
     { "negative clearance", [](vtkLKCuttingGuideFilter* f) { f->SetClearance(-1); }, "Clearance must be 0 to 10" },
     { "NaN screw hole", [&](vtkLKCuttingGuideFilter* f) { f->SetScrewHoleDiameter(nan); },
       "ScrewHoleDiameter must be 0 to 10 mm" },
+    { "tiny label", [](vtkLKCuttingGuideFilter* f) { f->SetLabelHeight(1); }, "LabelHeight must be 1.5 to 20 mm" },
     { "right angle", [](vtkLKCuttingGuideFilter* f) { f->SetMaximumContactAngle(90); },
       "MaximumContactAngle must be 1 to 89 degrees, not 90" },
     { "reach inside the slot", [](vtkLKCuttingGuideFilter* f) { f->SetReach(0.5); },

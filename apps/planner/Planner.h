@@ -258,6 +258,7 @@ public:
     vtkSmartPointer<vtkLKCuttingGuideFilter> filter;
     vtkSmartPointer<vtkPolyData> surface;          ///< null when it could not be made (error)
     std::string error;
+    std::string warning; ///< what the filter warned of (its label left out)
   };
   std::vector<CuttingGuide> guides;
   vtkPolyData* guidesBone = nullptr; ///< the bone (and its time) the guides were made on

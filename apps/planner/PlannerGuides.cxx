@@ -97,7 +97,10 @@ void Planner::updateGuides()
     g.filter->SetPlaneOrigin(origin.data());
     g.filter->SetPlaneNormal(st.sawNormal.data());
     g.filter->SetOtherSide(session.guidesOtherSide);
+    g.filter->SetLabel(std::to_string(i + 1).c_str()); // the stroke's number, as the plan and the file name give it
+    const int warningsBefore = lkapp::warningCount();
     g.error = lkapp::updateKeepingErrors(g.filter); // the plan goes on without it; its message says why
+    g.warning = lkapp::warningsSince(warningsBefore); // a label left out
     if (g.filter->GetOutput()->GetNumberOfPolys() > 0)
       g.surface = g.filter->GetOutput();
     else if (g.error.empty())
@@ -114,6 +117,8 @@ void Planner::updateGuides()
   for (const CuttingGuide& g : guides)
     if (!g.surface)
       addLine(message, "no cutting guide for the saw line of stroke " + std::to_string(g.stroke + 1) + ": " + g.error);
+    else if (!g.warning.empty())
+      addLines(message, "the cutting guide of stroke " + std::to_string(g.stroke + 1) + ": ", g.warning);
   updateJoinedGuides();
   vtkNew<vtkAppendPolyData> all;
   for (const GuidePart& part : guideParts())
@@ -260,9 +265,10 @@ std::string Planner::guidesText() const
     char line[500];
     std::snprintf(line, sizeof line,
       "cutting guide for the saw line of stroke %zu: slot %.1f mm long and %.1f mm wide in the saw's plane, "
-      "walls %.1f mm thick, %s, resting on %.0f mm^2 of bone, put on %s(along (%.3f, %.3f, %.3f)); %.0f mm^3 "
+      "walls %.1f mm thick, %s%s, resting on %.0f mm^2 of bone, put on %s(along (%.3f, %.3f, %.3f)); %.0f mm^3 "
       "(%s.stl)\n",
       g.stroke + 1, g.filter->GetSlotLength(), g.filter->GetSlotWidth(), g.filter->GetThickness(), holes,
+      g.filter->GetLabelPlaced() ? (", labelled \"" + std::string(g.filter->GetLabel()) + "\"").c_str() : "",
       g.filter->GetContactArea(), side.c_str(), along[0], along[1], along[2], g.filter->GetVolume(),
       (joinedGuideOf(i) ? "in " + joinedGuideFileStem(*joinedGuideOf(i)) : guideFileStem(g.stroke)).c_str());
     text += line;

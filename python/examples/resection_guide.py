@@ -6,7 +6,8 @@ usage: PYTHONPATH=build/python xvfb-run -a /usr/bin/python3 python/examples/rese
 
 Two cuts' planes, each through (OX, OY, OZ) with normal (NX, NY, NZ), patient
 mm as the surface is (a segment of bone taken out between them). Each gets a
-cutting guide with a slot for the saw blade (vtkLKCuttingGuideFilter), and
+cutting guide with a slot for the saw blade and its number, 1 or 2, raised on
+it (vtkLKCuttingGuideFilter), and
 vtkLKGuideBarFilter joins the two by a bar in front of the bone into one
 part, so the two slots keep the distance and angle of the plan. OUT_FOLDER
 gets resection_guide.stl (to print), resection_guide.vtp (the bar's facts in
@@ -46,6 +47,7 @@ def main(argv):
         guide.SetInputConnection(bone.GetOutputPort())
         guide.SetPlaneOrigin(numbers[6 * k:6 * k + 3])
         guide.SetPlaneNormal(numbers[6 * k + 3:6 * k + 6])
+        guide.SetLabel(str(k + 1))  # raised on it: which cut is which
         bar.AddGuideConnection(guide.GetOutputPort())
         guides.append(guide)
     bar.Update()
