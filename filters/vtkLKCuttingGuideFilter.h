@@ -35,6 +35,14 @@
  *   no cell side to the cells nearest the section's outermost point on
  *   either side of the plane (an island where rays met a far part of the
  *   bone).
+ * - Its edges away from the slot: where they cross the grid obliquely on a
+ *   steep face, the cells' steps would stand as teeth along the approach on
+ *   the swept shell's side (a 0.25 mm step on a face 65 degrees from the
+ *   approach rises 0.5 mm). Where the face at an edge turns more than 30
+ *   degrees from the approach (fully beyond 45, averaged over 1 mm), the
+ *   contact ends instead along a smooth line about 0.4 mm inside it
+ *   (vtkClipPolyData of the cells' distance to the edge, averaged over 1 mm
+ *   each way), its new points put back on the bone along their rays.
  * - The slot: the grid's cells within SlotWidth / 2 of the plane, except
  *   for Bridge millimetres at each of the extent's ends, which keep the
  *   guide in one piece (the saw starts the cut in the slot; the last

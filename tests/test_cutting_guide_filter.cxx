@@ -19,6 +19,10 @@
 #include <vtkLinearSubdivisionFilter.h>
 #include <vtkMath.h>
 #include <vtkPoints.h>
+#include <vtkCellData.h>
+#include <vtkIdList.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkPolyDataNormals.h>
 #include <vtkMassProperties.h>
 #include <vtkStringArray.h>
 #include <vtkStaticCellLocator.h>
@@ -27,6 +31,9 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -34,6 +41,71 @@ namespace
 vtkSmartPointer<vtkPolyData> box()
 {
   return lktest::triangulatedBox(40, 20, 30, 2);
+}
+
+/// How many corners of the guide's inner face's border (seen along the
+/// approach d) turn more than 45 degrees where an edge beside them rises
+/// along d more steeply than 45 degrees: the teeth a stepped edge on a steep
+/// face makes once swept.
+int teethAtTheEdge(vtkPolyData* guide, const double d[3])
+{
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(guide);
+  normals->ComputeCellNormalsOn();
+  normals->ComputePointNormalsOff();
+  normals->SplittingOff();
+  normals->ConsistencyOff();
+  normals->Update();
+  vtkPolyData* faces = normals->GetOutput();
+  vtkDataArray* n = faces->GetCellData()->GetNormals();
+  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType i = 0; i < faces->GetNumberOfCells(); ++i)
+  {
+    double normal[3];
+    n->GetTuple(i, normal);
+    if (vtkMath::Dot(normal, d) > -0.2)
+      continue; // not the inner face
+    faces->GetCellPoints(i, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      const vtkIdType a = ids->GetId(k), b = ids->GetId((k + 1) % ids->GetNumberOfIds());
+      ++uses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  std::map<vtkIdType, std::vector<vtkIdType>> border;
+  for (const auto& [edge, count] : uses)
+    if (count == 1)
+    {
+      border[edge.first].push_back(edge.second);
+      border[edge.second].push_back(edge.first);
+    }
+  int teeth = 0;
+  for (const auto& [v, next] : border)
+  {
+    if (next.size() != 2)
+      continue;
+    double p[3], a[3], b[3];
+    faces->GetPoint(v, p);
+    faces->GetPoint(next[0], a);
+    faces->GetPoint(next[1], b);
+    double in[3], out[3];
+    vtkMath::Subtract(p, a, in);
+    vtkMath::Subtract(b, p, out);
+    const double riseIn = vtkMath::Dot(in, d), riseOut = vtkMath::Dot(out, d);
+    for (int k = 0; k < 3; ++k)
+    {
+      in[k] -= riseIn * d[k];
+      out[k] -= riseOut * d[k];
+    }
+    const double lengthIn = vtkMath::Norm(in), lengthOut = vtkMath::Norm(out);
+    if (!(lengthIn > 1e-9 && lengthOut > 1e-9))
+      continue;
+    const bool turns = vtkMath::Dot(in, out) < std::cos(vtkMath::RadiansFromDegrees(45.0)) * lengthIn * lengthOut;
+    const bool steep = std::abs(riseIn) > lengthIn || std::abs(riseOut) > lengthOut;
+    teeth += turns && steep;
+  }
+  return teeth;
 }
 
 double field(vtkPolyData* pd, const char* name, int component = 0)
@@ -360,6 +432,12 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
     }
     EXPECT_EQ(within, 0);
     EXPECT_EQ(blocked, 0);
+    EXPECT_LE(teethAtTheEdge(out, d), 4) << "the guide's edge stands in teeth on a steep face";
+    vtkNew<vtkPolyDataConnectivityFilter> parts;
+    parts->SetInputData(out);
+    parts->SetExtractionModeToAllRegions();
+    parts->Update();
+    EXPECT_EQ(parts->GetNumberOfExtractedRegions(), 1); // no sliver beside it
   }
 }
 
