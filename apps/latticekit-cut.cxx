@@ -262,24 +262,8 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
   {
     if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == i || p.second == i; }))
       continue;
-    const std::vector<std::size_t> beside = lkapp::lineNeighbours(i, piecesOf);
-    std::string why = "no other flat line bounds a piece of the cut with it (a resection guide joins the lines "
-                      "either side of one piece)";
-    auto lineOf = [&](std::size_t g) { return std::to_string(guides[g].line + 1); };
-    if (beside.size() == 1)
-    {
-      const auto& p = *std::find_if(pairs.begin(), pairs.end(),
-        [&](const auto& q) { return q.first == beside[0] || q.second == beside[0]; });
-      why = "the flat line beside it (line " + lineOf(beside[0]) + ") is joined to line " +
-        lineOf(p.first == beside[0] ? p.second : p.first);
-    }
-    else if (beside.size() > 1)
-    {
-      why = "the flat lines beside it (lines ";
-      for (std::size_t m = 0; m < beside.size(); ++m)
-        why += (m == 0 ? "" : m + 1 == beside.size() ? " and " : ", ") + lineOf(beside[m]);
-      why += ") are joined to others";
-    }
+    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, pairs, "flat line", "line",
+      [&](std::size_t g) { return std::to_string(guides[g].line + 1); });
     joinedReport += labelOf(guides[i].line) + " stays apart: " + why + "\n";
   }
   for (const Guide& g : guides)

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -98,4 +99,23 @@ TEST(GuidePairs, ALineIsOnThePiecesThatHoldMostOfItsPoints)
   const std::vector<std::array<double, 3>> off{ { 0, 0, 0 }, { 2e-6, 1, 0 }, { 2e-6, 1, 1 }, { 2e-6, 0, 1 } };
   EXPECT_TRUE(lkapp::piecesAlongLines(pieces, { off }, 1e-6)[0].empty());
   EXPECT_TRUE(lkapp::piecesAlongLines(pieces, { {} }, 1e-6)[0].empty());
+}
+
+TEST(GuidePairs, ALineLeftApartIsToldWhy)
+{
+  auto number = [](std::size_t line) { return std::to_string(line + 1); };
+  // Drawn 1, 3, 2 along the bone: the 2nd stays apart beside the 3rd.
+  const auto piecesOf = chain({ 0, 2, 1 });
+  const Pairs pairs = lkapp::pairLinesByPiece(piecesOf);
+  EXPECT_EQ(lkapp::whyLineStaysApart(1, piecesOf, pairs, "saw line", "stroke", number),
+    "the saw line beside it (stroke 3) is joined to stroke 1");
+  // Alone on its pieces.
+  const std::vector<std::set<std::size_t>> apart{ { 0, 1 }, { 2, 3 } };
+  EXPECT_EQ(lkapp::whyLineStaysApart(1, apart, {}, "flat line", "line", number),
+    "no other flat line bounds a piece of the cut with it (a resection guide joins the flat lines either side of "
+    "one piece)");
+  // Without a cut, five lines: the 5th beside all four, each joined.
+  const std::vector<std::set<std::size_t>> whole(5, std::set<std::size_t>{ 0 });
+  EXPECT_EQ(lkapp::whyLineStaysApart(4, whole, lkapp::pairLinesByPiece(whole), "saw line", "stroke", number),
+    "the saw lines beside it (strokes 1, 2, 3 and 4) are joined to others");
 }

@@ -87,4 +87,26 @@ std::vector<std::pair<std::size_t, std::size_t>> pairLinesByPiece(
   return pairs;
 }
 
+std::string whyLineStaysApart(std::size_t line, const std::vector<std::set<std::size_t>>& piecesOfLine,
+  const std::vector<std::pair<std::size_t, std::size_t>>& pairs, const std::string& lineWord,
+  const std::string& numberWord, const std::function<std::string(std::size_t)>& number)
+{
+  const std::vector<std::size_t> beside = lineNeighbours(line, piecesOfLine);
+  if (beside.empty())
+    return "no other " + lineWord + " bounds a piece of the cut with it (a resection guide joins the " + lineWord +
+      "s either side of one piece)";
+  if (beside.size() == 1)
+  {
+    const auto pair = std::find_if(pairs.begin(), pairs.end(),
+      [&](const auto& q) { return q.first == beside[0] || q.second == beside[0]; });
+    if (pair != pairs.end())
+      return "the " + lineWord + " beside it (" + numberWord + " " + number(beside[0]) + ") is joined to " +
+        numberWord + " " + number(pair->first == beside[0] ? pair->second : pair->first);
+  }
+  std::string why = "the " + lineWord + "s beside it (" + numberWord + "s ";
+  for (std::size_t k = 0; k < beside.size(); ++k)
+    why += (k == 0 ? "" : k + 1 == beside.size() ? " and " : ", ") + number(beside[k]);
+  return why + ") are joined to others";
+}
+
 } // namespace lkapp

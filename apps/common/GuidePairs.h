@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <set>
 #include <string>
 #include <utility>
@@ -40,5 +41,15 @@ std::vector<std::pair<std::size_t, std::size_t>> pairLinesByPiece(
 /// order): for a line left out of every pair, empty when no other line bounds
 /// a piece with it, else the lines beside it (each paired with another).
 std::vector<std::size_t> lineNeighbours(std::size_t line, const std::vector<std::set<std::size_t>>& piecesOfLine);
+
+/// Why line `line`, in none of `pairs`, stays apart, in words: "no other
+/// saw line bounds a piece of the cut with it (...)", "the saw line beside it
+/// (stroke 3) is joined to stroke 1" or "the saw lines beside it (strokes 1
+/// and 3) are joined to others", with `lineWord` ("saw line") and
+/// `numberWord` ("stroke") as the caller names them, and `number` giving a
+/// line's number as the user knows it.
+std::string whyLineStaysApart(std::size_t line, const std::vector<std::set<std::size_t>>& piecesOfLine,
+  const std::vector<std::pair<std::size_t, std::size_t>>& pairs, const std::string& lineWord,
+  const std::string& numberWord, const std::function<std::string(std::size_t)>& number);
 
 } // namespace lkapp

@@ -217,24 +217,8 @@ void Planner::updateJoinedGuides()
   {
     if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == i || p.second == i; }))
       continue;
-    const std::vector<std::size_t> beside = lkapp::lineNeighbours(i, piecesOf);
     auto strokeOf = [&](std::size_t g) { return std::to_string(guides[g].stroke + 1); };
-    std::string why = "no other saw line bounds a piece of the cut with it (a resection guide joins the saw lines "
-                      "either side of one piece)";
-    if (beside.size() == 1)
-    {
-      const auto& p = *std::find_if(pairs.begin(), pairs.end(),
-        [&](const auto& q) { return q.first == beside[0] || q.second == beside[0]; });
-      why = "the saw line beside it (stroke " + strokeOf(beside[0]) + ") is joined to stroke " +
-        strokeOf(p.first == beside[0] ? p.second : p.first);
-    }
-    else if (beside.size() > 1)
-    {
-      why = "the saw lines beside it (strokes ";
-      for (std::size_t k = 0; k < beside.size(); ++k)
-        why += (k == 0 ? "" : k + 1 == beside.size() ? " and " : ", ") + strokeOf(beside[k]);
-      why += ") are joined to others";
-    }
+    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, pairs, "saw line", "stroke", strokeOf);
     addLine(message, "the cutting guide of stroke " + strokeOf(i) + " stays apart: " + why);
   }
   joinedGuides = made;
