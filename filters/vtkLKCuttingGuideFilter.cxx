@@ -543,8 +543,10 @@ int vtkLKCuttingGuideFilter::RequestData(
   // `window` each way (those outside counting 0), is `inset` (0.41 mm in
   // from a straight edge). Where the face is within 30 degrees of the
   // approach the edge stays as it is, and between 30 and 45 degrees the
-  // line moves from the one to the other.
-  const double inset = 0.5, window = 1.0, cap = 3.0;
+  // line moves from the one to the other. (The lengths shrink with a Reach
+  // under 8 mm: a guide for a small model keeps its contact.)
+  const double scale = std::min(1.0, this->Reach / 8.0);
+  const double inset = 0.5 * scale, window = 1.0 * scale, cap = 3.0 * scale;
   vtkNew<vtkDoubleArray> edgeDistance;
   edgeDistance->SetName("EdgeDistance");
   edgeDistance->SetNumberOfValues(gridPoints->GetNumberOfPoints());
@@ -667,7 +669,7 @@ int vtkLKCuttingGuideFilter::RequestData(
   vtkNew<vtkClipPolyData> smoothEdge;
   smoothEdge->SetInputConnection(compact->GetOutputPort());
   smoothEdge->SetValue(inset);
-  // A sliver the line cut off from the rest (under 1 mm^2) goes.
+  // A sliver the line cut off from the rest (under 1 mm^2, scaled) goes.
   vtkNew<vtkPolyDataConnectivityFilter> parts;
   parts->SetInputConnection(smoothEdge->GetOutputPort());
   parts->SetExtractionModeToAllRegions();
@@ -694,7 +696,7 @@ int vtkLKCuttingGuideFilter::RequestData(
     for (vtkIdType i = 0; region && i < clipped->GetNumberOfCells(); ++i)
     {
       clipped->GetCellPoints(i, ids);
-      if (ids->GetNumberOfIds() == 3 && area[static_cast<std::size_t>(region->GetComponent(ids->GetId(0), 0))] >= 1.0)
+      if (ids->GetNumberOfIds() == 3 && area[static_cast<std::size_t>(region->GetComponent(ids->GetId(0), 0))] >= scale * scale)
         kept->InsertNextCell(ids);
     }
     vtkNew<vtkPolyData> whole;
@@ -705,6 +707,14 @@ int vtkLKCuttingGuideFilter::RequestData(
     unused->PointMergingOff();
     unused->Update();
     slotted->ShallowCopy(unused->GetOutput());
+    slotted->GetPointData()->Initialize();
+  }
+  if (slotted->GetNumberOfPolys() == 0)
+  {
+    // All of it lay on steep faces near its edges: the contact as the grid
+    // gave it.
+    compact->Update();
+    slotted->ShallowCopy(compact->GetOutput());
     slotted->GetPointData()->Initialize();
   }
   if (slotted->GetNumberOfPolys() == 0)
