@@ -37,6 +37,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <deque>
 #include <limits>
 #include <string>
@@ -896,6 +898,8 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
   for (const char* c = this->Label; *c; ++c)
     if (static_cast<unsigned char>(*c) < 32 || static_cast<unsigned char>(*c) > 126)
       return "vtkVectorText draws printable ASCII characters only";
+  if (std::strlen(this->Label) > 40) // none that long fits beside a slot
+    return "it is longer than 40 characters";
   const double margin = 0.5, stroke = 0.6, relief = 0.6, depth = std::min(1.0, 0.5 * this->Thickness);
   const double smallest = 1.5, edge = 0.3;
   vtkSmartPointer<vtkPolyData> outline = lkvtk::textOutline(this->Label, this->LabelHeight, stroke, edge);
@@ -941,9 +945,14 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
     return p.upwards > q.upwards + 1e-9;
   });
   if (places.empty())
-    return "it is too long for the room beside the slot between a screw hole and the guide's end (" +
-      std::to_string(alongRoom) + " by " + std::to_string(acrossRoom) + " mm, at " + std::to_string(smallest) +
-      " mm tall)";
+  {
+    char room[200];
+    std::snprintf(room, sizeof room,
+      "it is too long for the room beside the slot between a screw hole and the guide's end (%.1f by %.1f mm, at "
+      "%.1f mm tall)",
+      alongRoom, acrossRoom, smallest);
+    return room;
+  }
   std::string why;
   for (const Place& place : places)
   {

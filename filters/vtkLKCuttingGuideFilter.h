@@ -71,8 +71,9 @@
  *   the approach), sunk 1 mm into the wall and joined to it into one solid
  *   (CGAL's corefinement, lk::solidUnion). Parts printed for one plan are
  *   told apart by it (the planner writes each saw line's stroke number). A
- *   label with nothing to draw (vtkVectorText draws printable ASCII) or no
- *   room is left out with a warning; the guide is made without it.
+ *   label with nothing to draw (vtkVectorText draws printable ASCII), longer
+ *   than 40 characters or without room is left out with a warning; the
+ *   guide is made without it.
  *
  * Input: a bone surface (polygons; a closed mesh, so that its outside is
  * known). Output: the guide, a closed triangle mesh oriented outward (ready
