@@ -3,6 +3,8 @@
 // come off along its approach), and on bad input.
 #include "TestSupport.h"
 
+#include "latticekit/SolidUnion.h"
+
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKMedicalImageReader.h"
@@ -445,6 +447,31 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
     parts->Update();
     EXPECT_EQ(parts->GetNumberOfExtractedRegions(), 1); // no sliver beside it
   }
+}
+
+TEST(CuttingGuideFilter, ItsSmoothEdgeDoesNotFoldTheShellOnASteepFace)
+{
+  // The left body's lingual side: the smooth edge's line passed a hair from
+  // grid points on a face nearly along the approach, and the slivers there
+  // folded the inner face through the shell's side (25 crossing pairs; the
+  // label could not be joined to it).
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputConnection(bone->GetOutputPort());
+  guide->SetPlaneOrigin(35, 276.64, -982.1);
+  guide->SetPlaneNormal(1, 0.35, 0);
+  guide->SetOtherSide(true);
+  guide->SetLabel("7");
+  guide->Update();
+  vtkPolyData* out = guide->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  lk::TriangleMesh solid;
+  EXPECT_EQ(lk::solidUnion({ lktest::toCore(out) }, solid), ""); // closed, bounds a volume, crosses nothing
+  EXPECT_TRUE(guide->GetLabelPlaced());
 }
 
 TEST(CuttingGuideFilter, StopsWhenAsked)
