@@ -449,29 +449,40 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
   }
 }
 
-TEST(CuttingGuideFilter, ItsSmoothEdgeDoesNotFoldTheShellOnASteepFace)
+TEST(CuttingGuideFilter, AcrossTheMandibleEachGuideIsOneSolidWithItsLabel)
 {
-  // The left body's lingual side: the smooth edge's line passed a hair from
-  // grid points on a face nearly along the approach, and the slivers there
-  // folded the inner face through the shell's side (25 crossing pairs; the
-  // label could not be joined to it).
+  // Planes every 5 mm along the TCIA mandible, turned with the arch, on the
+  // side the filter chooses and on the other: each guide is made, is one
+  // closed solid that crosses nothing (CGAL's test in lk::solidUnion) and
+  // carries its label. (The lingual guide at x = 35 crossed itself, 25
+  // pairs, while the smooth edge's line could pass a hair from a grid point
+  // on a face nearly along the approach; its label could not be joined.)
   vtkNew<vtkLKMedicalImageReader> reader;
   reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
   vtkNew<vtkLKBoneSurfaceFilter> bone;
   bone->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkLKCuttingGuideFilter> guide;
-  guide->SetInputConnection(bone->GetOutputPort());
-  guide->SetPlaneOrigin(35, 276.64, -982.1);
-  guide->SetPlaneNormal(1, 0.35, 0);
-  guide->SetOtherSide(true);
-  guide->SetLabel("7");
-  guide->Update();
-  vtkPolyData* out = guide->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0);
-  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
-  lk::TriangleMesh solid;
-  EXPECT_EQ(lk::solidUnion({ lktest::toCore(out) }, solid), ""); // closed, bounds a volume, crosses nothing
-  EXPECT_TRUE(guide->GetLabelPlaced());
+  bone->Update();
+  int made = 0;
+  for (int x = -50; x <= 50; x += 5)
+    for (const bool otherSide : { false, true })
+    {
+      vtkNew<vtkLKCuttingGuideFilter> guide;
+      guide->SetInputConnection(bone->GetOutputPort());
+      guide->SetPlaneOrigin(x, 276.64, -982.1);
+      guide->SetPlaneNormal(1, 0.01 * x, 0);
+      guide->SetOtherSide(otherSide);
+      guide->SetLabel(std::to_string(std::abs(x)).c_str());
+      guide->Update();
+      vtkPolyData* out = guide->GetOutput();
+      const std::string where = "x = " + std::to_string(x) + (otherSide ? ", other side" : "");
+      ASSERT_GT(out->GetNumberOfCells(), 0) << where;
+      ++made;
+      EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0) << where;
+      lk::TriangleMesh solid;
+      EXPECT_EQ(lk::solidUnion({ lktest::toCore(out) }, solid), "") << where;
+      EXPECT_TRUE(guide->GetLabelPlaced()) << where;
+    }
+  EXPECT_EQ(made, 42);
 }
 
 TEST(CuttingGuideFilter, StopsWhenAsked)
