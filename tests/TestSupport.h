@@ -5,6 +5,8 @@
 
 #include "latticekit/ManifoldRepair.h"
 #include "latticekit/TriangleMesh.h"
+#include "vtkLKBoneSurfaceFilter.h"
+#include "vtkLKMedicalImageReader.h"
 #include "vtkLKPolyDataConversion.h"
 
 #include <gtest/gtest.h>
@@ -58,6 +60,20 @@ inline vtkSmartPointer<vtkPolyData> triangulatedBox(double x, double y, double z
 inline std::string sampleData(const std::string& relative)
 {
   return std::string(LATTICEKIT_SAMPLE_DATA) + "/" + relative;
+}
+
+/// The bundled TCIA mandible (0522c0017) as vtkLKBoneSurfaceFilter makes it
+/// with its defaults (12,212 points); empty if it cannot be read.
+inline vtkSmartPointer<vtkPolyData> tciaMandibleSurface()
+{
+  vtkNew<vtkLKMedicalImageReader> reader;
+  reader->SetFileName(sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputConnection(reader->GetOutputPort());
+  bone->Update();
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->ShallowCopy(bone->GetOutput());
+  return surface;
 }
 
 /// The filters' own conversion; a mesh it refuses is a test failure.

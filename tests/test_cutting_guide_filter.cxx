@@ -371,12 +371,7 @@ TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
 
 TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApproach)
 {
-  vtkNew<vtkLKMedicalImageReader> reader;
-  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
-  vtkNew<vtkLKBoneSurfaceFilter> bone;
-  bone->SetInputConnection(reader->GetOutputPort());
-  bone->Update();
-  vtkPolyData* surface = bone->GetOutput();
+  vtkSmartPointer<vtkPolyData> surface = lktest::tciaMandibleSurface();
   ASSERT_GT(surface->GetNumberOfCells(), 0);
 
   // The mid-sagittal plane of the chin (the session's saw line), and a cut
@@ -457,17 +452,14 @@ TEST(CuttingGuideFilter, AcrossTheMandibleEachGuideIsOneSolidWithItsLabel)
   // carries its label. (The lingual guide at x = 35 crossed itself, 25
   // pairs, while the smooth edge's line could pass a hair from a grid point
   // on a face nearly along the approach; its label could not be joined.)
-  vtkNew<vtkLKMedicalImageReader> reader;
-  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
-  vtkNew<vtkLKBoneSurfaceFilter> bone;
-  bone->SetInputConnection(reader->GetOutputPort());
-  bone->Update();
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  ASSERT_GT(bone->GetNumberOfCells(), 0);
   int made = 0;
   for (int x = -50; x <= 50; x += 5)
     for (const bool otherSide : { false, true })
     {
       vtkNew<vtkLKCuttingGuideFilter> guide;
-      guide->SetInputConnection(bone->GetOutputPort());
+      guide->SetInputData(bone);
       guide->SetPlaneOrigin(x, 276.64, -982.1);
       guide->SetPlaneNormal(1, 0.01 * x, 0);
       guide->SetOtherSide(otherSide);

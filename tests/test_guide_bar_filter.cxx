@@ -166,12 +166,7 @@ TEST(GuideBarFilter, OnALongBoxTheBarArchesItsStandOffAboveTheFace)
 
 TEST(GuideBarFilter, OnTheMandibleTheChinAndTheLeftBodyMakeOnePartOutsideTheBone)
 {
-  vtkNew<vtkLKMedicalImageReader> reader;
-  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
-  vtkNew<vtkLKBoneSurfaceFilter> boneFilter;
-  boneFilter->SetInputConnection(reader->GetOutputPort());
-  boneFilter->Update();
-  vtkPolyData* bone = boneFilter->GetOutput();
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
   ASSERT_GT(bone->GetNumberOfCells(), 0);
   // The chin's mid-sagittal cut and one through the left body: a segment of
   // the anterior mandible between them.

@@ -129,14 +129,10 @@ TEST(LatticeSurfaceFilter, MixedFacesGiveAWatertightSurface)
 
 TEST(LatticeSurfaceFilter, DecimatedMandibleLattice)
 {
-  vtkNew<vtkLKMedicalImageReader> reader;
-  reader->SetFileName(lktest::sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
-  vtkNew<vtkLKBoneSurfaceFilter> bone;
-  bone->SetInputConnection(reader->GetOutputPort());
-  bone->Update();
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
   vtkNew<vtkQuadricDecimation> decimate;
-  decimate->SetInputConnection(bone->GetOutputPort());
-  decimate->SetTargetReduction(1.0 - 2000.0 / static_cast<double>(bone->GetOutput()->GetNumberOfPoints()));
+  decimate->SetInputData(bone);
+  decimate->SetTargetReduction(1.0 - 2000.0 / static_cast<double>(bone->GetNumberOfPoints()));
   vtkNew<vtkLKMeshRepairFilter> lattice;
   lattice->SetInputConnection(decimate->GetOutputPort());
   vtkNew<vtkLKLatticeSurfaceFilter> surface;
@@ -182,7 +178,7 @@ TEST(LatticeSurfaceFilter, DecimatedMandibleLattice)
   EXPECT_GT(mass->GetVolume(), 0.0);
   // Close to the bone it rounds (before any fitting).
   vtkNew<vtkLKMetroFilter> metro;
-  metro->SetInputConnection(bone->GetOutputPort());
+  metro->SetInputData(bone);
   metro->SetTargetData(out);
   metro->SetNumberOfSamples(200000);
   metro->Update();
