@@ -136,6 +136,7 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
   struct Guide
   {
     std::size_t line = 0; // from 0
+    std::vector<std::array<double, 3>> points; // the line's, for its pair
     vtkSmartPointer<vtkLKCuttingGuideFilter> filter;
     std::string why;         // empty when it was made
     std::string joinedStem;  // the part it is in, when joined
@@ -173,6 +174,12 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       origin[c] -= off * f.normal[c];
     Guide g;
     g.line = k;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      lines->GetPoint(ids[i], x);
+      g.points.push_back({ x[0], x[1], x[2] });
+    }
     g.filter = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
     g.filter->SetInputData(faces);
     g.filter->SetPlaneOrigin(origin);
@@ -201,25 +208,8 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
   // The pairs: two flat lines either side of one piece (the segment between
   // two saw cuts), as they lie along the bone.
   std::vector<std::vector<std::array<double, 3>>> guideLines;
-  it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
-  k = 0;
-  std::size_t next = 0; // the next guide, in the lines' order
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && next < guides.size(); it->GoToNextCell(), ++k)
-  {
-    if (guides[next].line != k)
-      continue;
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    guideLines.emplace_back();
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double x[3];
-      lines->GetPoint(ids[i], x);
-      guideLines.back().push_back({ x[0], x[1], x[2] });
-    }
-    ++next;
-  }
+  for (const Guide& g : guides)
+    guideLines.push_back(g.points);
   const std::vector<std::set<std::size_t>> piecesOf =
     lkapp::piecesAlongLines(pieces, guideLines, 1e-5 * mesh->GetLength());
   const std::vector<std::pair<std::size_t, std::size_t>> pairs =
