@@ -972,13 +972,15 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
     return room;
   }
   std::string why;
+  double outlineHeight = this->LabelHeight; // what `outline` was drawn at
   for (const Place& place : places)
   {
-    if (std::abs(place.height - this->LabelHeight) > 1e-9)
+    if (std::abs(place.height - outlineHeight) > 1e-9)
     {
       outline = lkvtk::textOutline(this->Label, place.height, stroke, edge);
       if (!outline)
         return "it has no character to draw";
+      outlineHeight = place.height;
     }
     outline->GetBounds(b);
     Vec reading;
