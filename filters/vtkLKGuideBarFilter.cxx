@@ -9,6 +9,7 @@
 #include <vtkCellData.h>
 #include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkGenericCell.h>
 #include <vtkImplicitPolyDataDistance.h>
@@ -31,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,35 @@ bool readField(vtkPolyData* guide, const char* name, double* values, int compone
   }
   return true;
 }
+
+/// The bar: a capped tube of `radius` round `line`, its sides sharing their
+/// points, in triangles, merged.
+vtkSmartPointer<vtkPolyData> tubeAround(const std::vector<Vec>& line, double radius)
+{
+  vtkNew<vtkPoints> linePoints;
+  linePoints->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(static_cast<vtkIdType>(line.size()));
+  for (const Vec& x : line)
+    lines->InsertCellPoint(linePoints->InsertNextPoint(x.data()));
+  vtkNew<vtkPolyData> centre;
+  centre->SetPoints(linePoints);
+  centre->SetLines(lines);
+  vtkNew<vtkTubeFilter> tube;
+  tube->SetInputData(centre);
+  tube->SetRadius(radius);
+  tube->SetNumberOfSides(24);
+  tube->CappingOn();
+  tube->SidesShareVerticesOn();
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(tube->GetOutputPort());
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(triangles->GetOutputPort());
+  clean->PointMergingOn();
+  clean->SetTolerance(0.0);
+  clean->Update();
+  return clean->GetOutput();
+}
 } // namespace
 
 vtkLKGuideBarFilter::vtkLKGuideBarFilter()
@@ -98,6 +129,8 @@ int vtkLKGuideBarFilter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->BarLength = this->BarDiameter = this->BarGap = this->Volume = 0.0;
+  this->BarLengths.clear();
+  this->BarGaps.clear();
 
   struct Range
   {
@@ -119,7 +152,7 @@ int vtkLKGuideBarFilter::RequestData(
     return 0;
   }
   const int count = inputVector[1]->GetNumberOfInformationObjects();
-  if (count != 2)
+  if (count < 2)
   {
     vtkErrorMacro("Cannot join the guides: a bar joins two guides, and port 1 has " << count << ".");
     return 0;
@@ -129,10 +162,12 @@ int vtkLKGuideBarFilter::RequestData(
     vtkErrorMacro("Cannot join the guides: the bone: " << why << ".");
     return 0;
   }
-  vtkPolyData* guideData[2] = { vtkPolyData::GetData(inputVector[1], 0), vtkPolyData::GetData(inputVector[1], 1) };
-  Guide guide[2];
-  for (int i = 0; i < 2; ++i)
+  const std::size_t n = static_cast<std::size_t>(count);
+  std::vector<vtkPolyData*> guideData(n);
+  std::vector<Guide> guide(n);
+  for (std::size_t i = 0; i < n; ++i)
   {
+    guideData[i] = vtkPolyData::GetData(inputVector[1], static_cast<int>(i));
     Guide& g = guide[i];
     const char* missing = nullptr;
     if (!guideData[i] || guideData[i]->GetNumberOfPolys() == 0)
@@ -169,32 +204,56 @@ int vtkLKGuideBarFilter::RequestData(
       return 0;
     }
   }
-  const double apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(guide[0].approach, guide[1].approach), -1.0, 1.0)));
-  if (apart > 120.0)
+  double thinnest = guide[0].thickness;
+  for (const Guide& g : guide)
+    thinnest = std::min(thinnest, g.thickness);
+  const double radius = 0.5 * (this->Diameter > 0.0 ? this->Diameter : thinnest);
+  // What the bars' errors say of the guides they join: nothing more for two
+  // guides (one bar), which two for more.
+  auto between = [&](std::size_t i) {
+    return n == 2 ? std::string() : "guides " + std::to_string(i + 1) + " and " + std::to_string(i + 2) + ": ";
+  };
+  for (std::size_t i = 0; i + 1 < n; ++i)
   {
-    vtkErrorMacro("Cannot join the guides: they are put on from directions " << apart
-      << " degrees apart (more than 120): a bar between them would go round the bone.");
-    return 0;
+    const Guide& a = guide[i];
+    const Guide& b = guide[i + 1];
+    const double apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(a.approach, b.approach), -1.0, 1.0)));
+    if (apart > 120.0)
+    {
+      vtkErrorMacro("Cannot join the guides: " << between(i) << "they are put on from directions " << apart
+        << " degrees apart (more than 120): a bar between them would go round the bone.");
+      return 0;
+    }
+    const double slotsApart = distance(a.slotCentre, b.slotCentre);
+    if (slotsApart > this->MaximumLength)
+    {
+      vtkErrorMacro("Cannot join the guides: " << between(i) << "their slots are " << slotsApart
+        << " mm apart, more than MaximumLength (" << this->MaximumLength << " mm).");
+      return 0;
+    }
+    // Room between the guides' facing edges for the bar (guides nearer each
+    // other would have it cross the other's slot, or are one guide).
+    if (slotsApart < a.reach + b.reach + 2.0 * radius)
+    {
+      vtkErrorMacro("Cannot join the guides: " << between(i) << "their slots are " << slotsApart
+        << " mm apart, too near for a bar of " << 2.0 * radius << " mm between their edges (they reach " << a.reach
+        << " and " << b.reach << " mm from their slots).");
+      return 0;
+    }
+    // A guide between two others has its bars on either side of its slot
+    // (the guides in their order along the bone): two bars on one side
+    // would meet there, and one of them would pass over the other guide.
+    if (i > 0)
+    {
+      const Guide& before = guide[i - 1];
+      if (dot(add(before.slotCentre, a.slotCentre, -1.0), a.normal) * dot(add(b.slotCentre, a.slotCentre, -1.0), a.normal) >= 0.0)
+      {
+        vtkErrorMacro("Cannot join the guides: guides " << i << " and " << i + 2 << " lie on one side of guide " << i + 1
+          << "'s slot, so their bars would leave it on one side (give the guides in their order along the bone).");
+        return 0;
+      }
+    }
   }
-  const double slotsApart = distance(guide[0].slotCentre, guide[1].slotCentre);
-  if (slotsApart > this->MaximumLength)
-  {
-    vtkErrorMacro("Cannot join the guides: their slots are " << slotsApart
-      << " mm apart, more than MaximumLength (" << this->MaximumLength << " mm).");
-    return 0;
-  }
-  const double radius = 0.5 * (this->Diameter > 0.0 ? this->Diameter : std::min(guide[0].thickness, guide[1].thickness));
-  // Room between the guides' facing edges for the bar (guides nearer each
-  // other would have it cross the other's slot, or are one guide).
-  if (slotsApart < guide[0].reach + guide[1].reach + 2.0 * radius)
-  {
-    vtkErrorMacro("Cannot join the guides: their slots are " << slotsApart << " mm apart, too near for a bar of "
-      << 2.0 * radius << " mm between their edges (they reach " << guide[0].reach << " and " << guide[1].reach
-      << " mm from their slots).");
-    return 0;
-  }
-  Vec mean = add(guide[0].approach, guide[1].approach);
-  vtkMath::Normalize(mean.data());
 
   vtkSmartPointer<vtkPolyData> bone = lkvtk::facesAsTriangles(input);
   vtkNew<vtkStaticCellLocator> locator;
@@ -228,222 +287,231 @@ int vtkLKGuideBarFilter::RequestData(
   outward->Update();
   vtkNew<vtkImplicitPolyDataDistance> away;
   away->SetInput(outward->GetOutput());
+  this->UpdateProgress(0.05);
 
-  // Each end: at the guide's edge on the other's side of its slot, clear of
-  // the screw hole, in the wall: its middle above the bone along the
-  // approach, or higher where the bar would reach into the bone there (a
-  // bar thicker than the wall, a wall on a slope).
-  Vec end[2], lead[2];
-  for (int i = 0; i < 2; ++i)
+  // Each bar's centre line, pushed off the bone; its length and its gap.
+  std::vector<lk::TriangleMesh> barSolids;
+  std::vector<double> barLengths, barGaps;
+  const double share = 0.55 / static_cast<double>(n - 1); // of the progress, for each bar
+  for (std::size_t b = 0; b + 1 < n; ++b)
   {
-    const Guide& g = guide[i];
-    const Guide& other = guide[1 - i];
-    Vec side = g.normal;
-    if (dot(add(other.slotCentre, g.slotCentre, -1.0), side) < 0.0)
-      side = { -side[0], -side[1], -side[2] };
-    const double half = g.slotWidth / 2.0;
-    const double inner = g.hole > 0.0 ? 0.5 * (half + g.reach) + g.hole / 2.0 + 0.5 : half + 0.5;
-    const double s = std::max(inner, g.reach - radius);
-    if (!(s < g.reach))
-    {
-      vtkErrorMacro("Cannot join the guides: guide " << i + 1 << " has no room for the bar beside its screw hole "
-                                                     << "(a larger Reach).");
-      return 0;
-    }
-    const Vec base = add(g.slotCentre, side, s);
-    const double height = boneHeight(base, g.approach);
-    if (!std::isfinite(height))
-    {
-      vtkErrorMacro("Cannot join the guides: no bone under guide " << i + 1 << "'s edge (is port 0 the bone the "
-                                                                   << "guides were made on?).");
-      return 0;
-    }
-    const Vec onBone = add(base, g.approach, height - dot(add(base, g.slotCentre, -1.0), g.approach));
-    end[i] = add(onBone, g.approach, g.clearance + g.thickness / 2.0);
-    for (int step = 0; step < 100 && away->EvaluateFunction(end[i].data()) < radius; ++step)
-      end[i] = add(end[i], g.approach, 0.1);
-    const double level = dot(add(end[i], onBone, -1.0), g.approach);
-    if (!(level < g.clearance + g.thickness + 0.5 * radius))
-    {
-      vtkErrorMacro("Cannot join the guides: the bar would stand " << level << " mm above the bone at guide " << i + 1
-        << "'s edge, clear of its wall (a thinner bar, or a thicker wall).");
-      return 0;
-    }
-    lead[i] = add(end[i], side, g.reach - s + radius);
-  }
-  this->UpdateProgress(0.1);
-  if (lkvtk::stopRequested(this, { output }))
-    return 1;
+    const Guide* pair[2] = { &guide[b], &guide[b + 1] };
+    const std::size_t number[2] = { b + 1, b + 2 };
+    const double apart =
+      vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(pair[0]->approach, pair[1]->approach), -1.0, 1.0)));
+    Vec mean = add(pair[0]->approach, pair[1]->approach);
+    vtkMath::Normalize(mean.data());
 
-  // The centre line: straight from end to end, then pushed off the bone.
-  const double spacing = 0.5;
-  std::vector<Vec> line{ end[0] };
-  {
-    const double length = distance(lead[0], lead[1]);
-    const int parts = std::max(2, static_cast<int>(std::ceil(length / spacing)));
-    for (int k = 0; k <= parts; ++k)
-      line.push_back(add(lead[0], add(lead[1], lead[0], -1.0), static_cast<double>(k) / parts));
-    line.push_back(end[1]);
-  }
-  const std::size_t points = line.size();
-  // The distance each point must keep from the bone: the radius at the
-  // guides, the radius and the stand-off a little beyond their edges.
-  std::vector<double> needed(points), arc(points, 0.0);
-  for (std::size_t k = 1; k < points; ++k)
-    arc[k] = arc[k - 1] + distance(line[k - 1], line[k]);
-  const double leadLength = distance(end[0], lead[0]);
-  // Over 5 mm and twice the stand-off, along a smooth step (the bar bends
-  // no tighter than it must).
-  const double ramp = 5.0 + 2.0 * this->StandOff;
-  auto neededAt = [&](double fromEnd) {
-    const double t = std::clamp((fromEnd - leadLength) / ramp, 0.0, 1.0);
-    return radius + this->StandOff * t * t * (3.0 - 2.0 * t);
-  };
-  for (std::size_t k = 0; k < points; ++k)
-    needed[k] = neededAt(std::min(arc[k], arc.back() - arc[k]));
-  // Pushes each point that is too near the bone out to its distance, level
-  // with the guides' middles (square to their mean direction along their
-  // slots, so that the bar goes in front of the bone and not over its edge:
-  // a mandible's teeth): away from the nearest point of the bone, or, inside
-  // it or where that is up or down or back, forward (the guides' mean
-  // approach, square to the line between the ends); the largest shortfall
-  // before the push.
-  Vec chord = add(end[1], end[0], -1.0);
-  vtkMath::Normalize(chord.data());
-  Vec along{ 0, 0, 0 };
-  for (const Guide& g : guide)
-  {
-    Vec axis;
-    vtkMath::Cross(g.normal.data(), g.approach.data(), axis.data());
-    along = add(along, axis, dot(axis, along) < 0.0 ? -1.0 : 1.0);
-  }
-  along = add(along, chord, -dot(along, chord));
-  Vec forward = add(mean, chord, -dot(mean, chord));
-  if (vtkMath::Normalize(along.data()) > 1e-6)
-    forward = add(forward, along, -dot(forward, along));
-  if (!(vtkMath::Normalize(forward.data()) > 1e-6))
-    forward = mean;
-  const bool level = vtkMath::Norm(along.data()) > 0.5;
-  auto push = [&]() {
-    double worst = 0.0;
-    for (std::size_t k = 1; k + 1 < points; ++k)
+    // Each end: at the guide's edge on the other's side of its slot, clear
+    // of the screw hole, in the wall: its middle above the bone along the
+    // approach, or higher where the bar would reach into the bone there (a
+    // bar thicker than the wall, a wall on a slope).
+    Vec end[2], lead[2];
+    for (int i = 0; i < 2; ++i)
     {
-      double nearest[3];
-      const double f = away->EvaluateFunctionAndGetClosestPoint(line[k].data(), nearest);
-      const double shortfall = needed[k] - f;
-      worst = std::max(worst, shortfall);
-      if (shortfall <= 0.0)
-        continue;
-      // Outside the bone: away from it, level (round a corner of the bone
-      // the guides are on), unless that is up or down, over its edge.
-      Vec way = add(line[k], { nearest[0], nearest[1], nearest[2] }, -1.0);
-      vtkMath::Normalize(way.data());
-      if (level)
-        way = add(way, along, -dot(way, along));
-      if (f <= 0.0 || !(vtkMath::Normalize(way.data()) > 0.5) || dot(way, forward) < 0.0)
-        way = forward;
-      line[k] = add(line[k], way, shortfall);
+      const Guide& g = *pair[i];
+      const Guide& other = *pair[1 - i];
+      Vec side = g.normal;
+      if (dot(add(other.slotCentre, g.slotCentre, -1.0), side) < 0.0)
+        side = { -side[0], -side[1], -side[2] };
+      const double half = g.slotWidth / 2.0;
+      const double inner = g.hole > 0.0 ? 0.5 * (half + g.reach) + g.hole / 2.0 + 0.5 : half + 0.5;
+      const double s = std::max(inner, g.reach - radius);
+      if (!(s < g.reach))
+      {
+        vtkErrorMacro("Cannot join the guides: guide " << number[i] << " has no room for the bar beside its screw "
+                                                       << "hole (a larger Reach).");
+        return 0;
+      }
+      const Vec base = add(g.slotCentre, side, s);
+      const double height = boneHeight(base, g.approach);
+      if (!std::isfinite(height))
+      {
+        vtkErrorMacro("Cannot join the guides: no bone under guide " << number[i] << "'s edge (is port 0 the bone the "
+                                                                     << "guides were made on?).");
+        return 0;
+      }
+      const Vec onBone = add(base, g.approach, height - dot(add(base, g.slotCentre, -1.0), g.approach));
+      end[i] = add(onBone, g.approach, g.clearance + g.thickness / 2.0);
+      for (int step = 0; step < 100 && away->EvaluateFunction(end[i].data()) < radius; ++step)
+        end[i] = add(end[i], g.approach, 0.1);
+      const double level = dot(add(end[i], onBone, -1.0), g.approach);
+      if (!(level < g.clearance + g.thickness + 0.5 * radius))
+      {
+        vtkErrorMacro("Cannot join the guides: the bar would stand " << level << " mm above the bone at guide "
+          << number[i] << "'s edge, clear of its wall (a thinner bar, or a thicker wall).");
+        return 0;
+      }
+      lead[i] = add(end[i], side, g.reach - s + radius);
     }
-    return worst;
-  };
-  // Pushes, then smoothing (each point toward its neighbours' middle, the
-  // ends where they are), until a round's smoothing leaves every point
-  // where it may be; then pushes alone, for what the last smoothing took.
-  const int rounds = 300;
-  for (int round = 0; round < rounds; ++round)
-  {
-    if (push() < 0.01 && round > 0)
-      break;
-    for (int pass = 0; pass < 2; ++pass)
+
+    // The centre line: straight from end to end, then pushed off the bone.
+    const double spacing = 0.5;
+    std::vector<Vec> line{ end[0] };
     {
-      std::vector<Vec> smoothed = line;
+      const double length = distance(lead[0], lead[1]);
+      const int parts = std::max(2, static_cast<int>(std::ceil(length / spacing)));
+      for (int k = 0; k <= parts; ++k)
+        line.push_back(add(lead[0], add(lead[1], lead[0], -1.0), static_cast<double>(k) / parts));
+      line.push_back(end[1]);
+    }
+    const std::size_t points = line.size();
+    // The distance each point must keep from the bone: the radius at the
+    // guides, the radius and the stand-off a little beyond their edges.
+    std::vector<double> needed(points), arc(points, 0.0);
+    for (std::size_t k = 1; k < points; ++k)
+      arc[k] = arc[k - 1] + distance(line[k - 1], line[k]);
+    const double leadLength = distance(end[0], lead[0]);
+    // Over 5 mm and twice the stand-off, along a smooth step (the bar bends
+    // no tighter than it must).
+    const double ramp = 5.0 + 2.0 * this->StandOff;
+    auto neededAt = [&](double fromEnd) {
+      const double t = std::clamp((fromEnd - leadLength) / ramp, 0.0, 1.0);
+      return radius + this->StandOff * t * t * (3.0 - 2.0 * t);
+    };
+    for (std::size_t k = 0; k < points; ++k)
+      needed[k] = neededAt(std::min(arc[k], arc.back() - arc[k]));
+    // Pushes each point that is too near the bone out to its distance, level
+    // with the guides' middles (square to their mean direction along their
+    // slots, so that the bar goes in front of the bone and not over its edge:
+    // a mandible's teeth): away from the nearest point of the bone, or, inside
+    // it or where that is up or down or back, forward (the guides' mean
+    // approach, square to the line between the ends); the largest shortfall
+    // before the push.
+    Vec chord = add(end[1], end[0], -1.0);
+    vtkMath::Normalize(chord.data());
+    Vec along{ 0, 0, 0 };
+    for (const Guide* g : pair)
+    {
+      Vec axis;
+      vtkMath::Cross(g->normal.data(), g->approach.data(), axis.data());
+      along = add(along, axis, dot(axis, along) < 0.0 ? -1.0 : 1.0);
+    }
+    along = add(along, chord, -dot(along, chord));
+    Vec forward = add(mean, chord, -dot(mean, chord));
+    if (vtkMath::Normalize(along.data()) > 1e-6)
+      forward = add(forward, along, -dot(forward, along));
+    if (!(vtkMath::Normalize(forward.data()) > 1e-6))
+      forward = mean;
+    const bool level = vtkMath::Norm(along.data()) > 0.5;
+    auto push = [&]() {
+      double worst = 0.0;
       for (std::size_t k = 1; k + 1 < points; ++k)
-        smoothed[k] = add(add(line[k], line[k], -0.5), add(line[k - 1], line[k + 1]), 0.25);
-      line = smoothed;
-    }
-    if (round % 20 == 0)
+      {
+        double nearest[3];
+        const double f = away->EvaluateFunctionAndGetClosestPoint(line[k].data(), nearest);
+        const double shortfall = needed[k] - f;
+        worst = std::max(worst, shortfall);
+        if (shortfall <= 0.0)
+          continue;
+        // Outside the bone: away from it, level (round a corner of the bone
+        // the guides are on), unless that is up or down, over its edge.
+        Vec way = add(line[k], { nearest[0], nearest[1], nearest[2] }, -1.0);
+        vtkMath::Normalize(way.data());
+        if (level)
+          way = add(way, along, -dot(way, along));
+        if (f <= 0.0 || !(vtkMath::Normalize(way.data()) > 0.5) || dot(way, forward) < 0.0)
+          way = forward;
+        line[k] = add(line[k], way, shortfall);
+      }
+      return worst;
+    };
+    // Pushes, then smoothing (each point toward its neighbours' middle, the
+    // ends where they are), until a round's smoothing leaves every point
+    // where it may be; then pushes alone, for what the last smoothing took.
+    const int rounds = 300;
+    for (int round = 0; round < rounds; ++round)
     {
-      this->UpdateProgress(0.1 + 0.5 * round / rounds);
-      if (this->GetAbortExecute())
+      if (push() < 0.01 && round > 0)
+        break;
+      for (int pass = 0; pass < 2; ++pass)
+      {
+        std::vector<Vec> smoothed = line;
+        for (std::size_t k = 1; k + 1 < points; ++k)
+          smoothed[k] = add(add(line[k], line[k], -0.5), add(line[k - 1], line[k + 1]), 0.25);
+        line = smoothed;
+      }
+      if (round % 20 == 0)
+      {
+        this->UpdateProgress(0.05 + share * (static_cast<double>(b) + static_cast<double>(round) / rounds));
+        if (this->GetAbortExecute())
+          break;
+      }
+    }
+    double worst = 0.0;
+    for (int k = 0; k < 10; ++k)
+    {
+      worst = push();
+      if (worst < 1e-3)
         break;
     }
-  }
-  double worst = 0.0;
-  for (int k = 0; k < 10; ++k)
-  {
-    worst = push();
-    if (worst < 1e-3)
-      break;
-  }
-  if (lkvtk::stopRequested(this, { output }))
-    return 1;
-  if (!(worst < 0.1))
-  {
-    vtkErrorMacro("Cannot join the guides: no bar of " << 2.0 * radius << " mm found a way " << this->StandOff
-      << " mm clear of the bone between them (" << worst << " mm short).");
-    return 0;
-  }
-  double length = 0.0, gap = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 1; k < points; ++k)
-    length += distance(line[k - 1], line[k]);
-  // The gap where the bar is farthest from both guides (past the ramps; on
-  // guides too near for the whole stand-off, at the ramps' top).
-  const double top = *std::max_element(needed.begin() + 1, needed.end() - 1);
-  for (std::size_t k = 1; k + 1 < points; ++k)
-    if (needed[k] >= top - 1e-9)
-      gap = std::min(gap, away->EvaluateFunction(line[k].data()) - radius);
-  if (length > this->MaximumLength)
-  {
-    vtkErrorMacro("Cannot join the guides: the bar would be " << length << " mm long, more than MaximumLength ("
-                                                              << this->MaximumLength << " mm).");
-    return 0;
+    if (lkvtk::stopRequested(this, { output }))
+      return 1;
+    if (!(worst < 0.1))
+    {
+      vtkErrorMacro("Cannot join the guides: " << between(b) << "no bar of " << 2.0 * radius << " mm found a way "
+        << this->StandOff << " mm clear of the bone between them (" << worst << " mm short).");
+      return 0;
+    }
+    double length = 0.0, gap = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 1; k < points; ++k)
+      length += distance(line[k - 1], line[k]);
+    // The gap where the bar is farthest from both guides (past the ramps; on
+    // guides too near for the whole stand-off, at the ramps' top).
+    const double top = *std::max_element(needed.begin() + 1, needed.end() - 1);
+    for (std::size_t k = 1; k + 1 < points; ++k)
+      if (needed[k] >= top - 1e-9)
+        gap = std::min(gap, away->EvaluateFunction(line[k].data()) - radius);
+    if (length > this->MaximumLength)
+    {
+      vtkErrorMacro("Cannot join the guides: " << between(b) << "the bar would be " << length
+        << " mm long, more than MaximumLength (" << this->MaximumLength << " mm).");
+      return 0;
+    }
+    // The tube round it, which crosses itself where its line bends tighter
+    // than its radius.
+    vtkSmartPointer<vtkPolyData> tube = tubeAround(line, radius);
+    lk::TriangleMesh solid, alone;
+    if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(tube), solid); !why.empty())
+    {
+      vtkErrorMacro("Cannot join the guides: " << between(b) << "the bar: " << why << ".");
+      return 0;
+    }
+    if (!lk::solidUnion({ solid }, alone).empty())
+    {
+      vtkErrorMacro("Cannot join the guides: " << between(b) << "the bar would bend tighter than its radius ("
+        << radius << " mm) on its way between them, where it clears the bone (a thinner bar, a smaller StandOff, "
+        << "or guides that face more alike: " << apart << " degrees apart).");
+      return 0;
+    }
+    barSolids.push_back(std::move(solid));
+    barLengths.push_back(length);
+    barGaps.push_back(gap);
   }
   this->UpdateProgress(0.6);
 
-  // The tube round it, and the union of the three.
-  vtkNew<vtkPoints> linePoints;
-  linePoints->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  lines->InsertNextCell(static_cast<vtkIdType>(points));
-  for (const Vec& x : line)
-    lines->InsertCellPoint(linePoints->InsertNextPoint(x.data()));
-  vtkNew<vtkPolyData> centre;
-  centre->SetPoints(linePoints);
-  centre->SetLines(lines);
-  vtkNew<vtkTubeFilter> tube;
-  tube->SetInputData(centre);
-  tube->SetRadius(radius);
-  tube->SetNumberOfSides(24);
-  tube->CappingOn();
-  tube->SidesShareVerticesOn();
-  vtkNew<vtkTriangleFilter> tubeTriangles;
-  tubeTriangles->SetInputConnection(tube->GetOutputPort());
-  vtkNew<vtkCleanPolyData> tubeClean;
-  tubeClean->SetInputConnection(tubeTriangles->GetOutputPort());
-  tubeClean->PointMergingOn();
-  tubeClean->SetTolerance(0.0);
-  tubeClean->Update();
-  std::vector<lk::TriangleMesh> solids(3);
-  vtkPolyData* parts[3] = { guideData[0], tubeClean->GetOutput(), guideData[1] };
-  const char* names[3] = { "guide 1", "the bar", "guide 2" };
-  for (int k = 0; k < 3; ++k)
-    if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(parts[k]), solids[k]); !why.empty())
+  // The union of the guides and the bars, in their order along the bone.
+  std::vector<lk::TriangleMesh> solids;
+  std::string names = "guide 1";
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    lk::TriangleMesh solid;
+    if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(guideData[i]), solid); !why.empty())
     {
-      vtkErrorMacro("Cannot join the guides: " << names[k] << ": " << why << ".");
+      vtkErrorMacro("Cannot join the guides: guide " << i + 1 << ": " << why << ".");
       return 0;
     }
-  lk::TriangleMesh joined;
-  if (!lk::solidUnion({ solids[1] }, joined).empty())
-  {
-    // The tube crosses itself where its line bends tighter than its radius.
-    vtkErrorMacro("Cannot join the guides: the bar would bend tighter than its radius (" << radius
-      << " mm) on its way between them, where it clears the bone (a thinner bar, a smaller StandOff, or guides "
-      << "that face more alike: " << apart << " degrees apart).");
-    return 0;
+    solids.push_back(std::move(solid));
+    if (i + 1 < n)
+    {
+      solids.push_back(std::move(barSolids[i]));
+      names += (n == 2 ? ", the bar, guide " : ", a bar, guide ") + std::to_string(i + 2);
+    }
   }
+  lk::TriangleMesh joined;
   if (const std::string why = lk::solidUnion(solids, joined); !why.empty())
   {
-    vtkErrorMacro("Cannot join the guides (guide 1, the bar, guide 2): " << why << ".");
+    vtkErrorMacro("Cannot join the guides (" << names << "): " << why << ".");
     return 0;
   }
   this->UpdateProgress(0.9);
@@ -458,17 +526,36 @@ int vtkLKGuideBarFilter::RequestData(
   output->GetPointData()->Initialize();
   output->GetCellData()->Initialize();
   output->GetFieldData()->PassData(input->GetFieldData());
-  this->BarLength = length;
+  this->BarLengths = barLengths;
+  this->BarGaps = barGaps;
+  this->BarLength = std::accumulate(barLengths.begin(), barLengths.end(), 0.0);
   this->BarDiameter = 2.0 * radius;
-  this->BarGap = gap;
+  this->BarGap = *std::min_element(barGaps.begin(), barGaps.end());
   this->Volume = mass->GetVolume();
   vtkFieldData* fd = output->GetFieldData();
-  lkvtk::addFieldValue(fd, "GuideBarLength", this->BarLength);
+  for (const auto& [name, values] :
+    { std::make_pair("GuideBarLength", &barLengths), std::make_pair("GuideBarGap", &barGaps) })
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    for (double v : *values)
+      a->InsertNextValue(v);
+    fd->AddArray(a);
+  }
   lkvtk::addFieldValue(fd, "GuideBarDiameter", this->BarDiameter);
-  lkvtk::addFieldValue(fd, "GuideBarGap", this->BarGap);
   lkvtk::addFieldValue(fd, "GuideVolume", this->Volume);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+double vtkLKGuideBarFilter::GetBarLength(int bar)
+{
+  return bar >= 0 && static_cast<std::size_t>(bar) < this->BarLengths.size() ? this->BarLengths[bar] : 0.0;
+}
+
+double vtkLKGuideBarFilter::GetBarGap(int bar)
+{
+  return bar >= 0 && static_cast<std::size_t>(bar) < this->BarGaps.size() ? this->BarGaps[bar] : 0.0;
 }
 
 void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -1,14 +1,17 @@
 /**
  * @class   vtkLKGuideBarFilter
- * @brief   Two cutting guides joined by a bar over the bone between them:
- *          a resection guide, one part to print.
+ * @brief   Cutting guides joined by bars over the bone between them: a
+ *          resection guide, one part to print.
  *
  * A segment of bone taken out between two saw cuts (a mandible's body
  * before a fibula flap) is cut through two slots. Printed apart, the two
  * guides of vtkLKCuttingGuideFilter can each be put on a little off the
  * plan; joined, they hold the two cuts at the distance and angle the plan
  * gave them, and the bar over the segment gives the surgeon something to
- * hold. This filter makes that part.
+ * hold. This filter makes that part. Three or more guides, given in their
+ * order along the bone (a segment taken out in two pieces, a chin cut between
+ * two body cuts), are joined in that order: a bar between each guide and the
+ * next, all in one part.
  *
  * Method:
  * - Each guide's place comes from its field data (GuideApproach,
@@ -36,31 +39,36 @@
  *   what it looks to be.
  *
  * Inputs: port 0, the bone surface (a closed mesh) the guides were made on;
- * port 1, the two guides (two connections, vtkLKCuttingGuideFilter's
- * outputs). Output: the joined guide, a closed triangle mesh oriented
- * outward. Field data: GuideBarLength (mm along its centre line),
- * GuideBarDiameter (mm), GuideBarGap (the least distance between the bar and
- * the bone where it is farthest from both guides: StandOff, or less for
- * guides too near each other for the bar to rise that far, mm),
- * GuideVolume (mm^3), and the bone's SPACE tag. The same values are kept
- * in the filter after an update.
+ * port 1, two or more guides (connections, vtkLKCuttingGuideFilter's
+ * outputs), in their order along the bone. Output: the joined guide, a
+ * closed triangle mesh oriented outward. Field data: GuideBarLength (mm
+ * along each bar's centre line, one value for each bar, in order),
+ * GuideBarGap (for each bar, the least distance between it and the bone
+ * where it is farthest from both its guides: StandOff, or less for guides
+ * too near each other for the bar to rise that far, mm), GuideBarDiameter
+ * (mm), GuideVolume (mm^3), and the bone's SPACE tag. The same values are
+ * kept in the filter after an update.
  *
- * Errors (a VTK error and an empty output): not two guides, or a guide
- * without the field data above (or with data that describe no guide); a
- * parameter out of range; guides put on from directions more than 120
- * degrees apart (the bar would go round the bone); guides farther apart
- * than MaximumLength, or too near for a bar between their edges (their
- * slots nearer than both reaches and the bar's diameter: it would cross a
- * slot); no room for the bar beside a screw hole; no bone under a guide's
- * edge (another bone); a bar that cannot clear the bone, or that would bend
- * tighter than its radius; a union CGAL cannot make (a guide that
- * crosses itself).
+ * Errors (a VTK error and an empty output): fewer than two guides, or a
+ * guide without the field data above (or with data that describe no
+ * guide); a parameter out of range; two guides next to each other put on
+ * from directions more than 120 degrees apart (the bar would go round the
+ * bone); two guides next to each other farther apart than MaximumLength, or
+ * too near for a bar between their edges (their slots nearer than both
+ * reaches and the bar's diameter: it would cross a slot); a guide whose
+ * neighbours before and after it lie on one side of its slot (guides not in
+ * their order along the bone: a bar would pass over a guide); no room for
+ * a bar beside a screw hole; no bone under a guide's edge (another bone); a
+ * bar that cannot clear the bone, or that would bend tighter than its
+ * radius; a union CGAL cannot make (a guide that crosses itself).
  */
 #ifndef vtkLKGuideBarFilter_h
 #define vtkLKGuideBarFilter_h
 
 #include "LatticeKitFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+
+#include <vector>
 
 class LATTICEKITFILTERS_EXPORT vtkLKGuideBarFilter : public vtkPolyDataAlgorithm
 {
@@ -69,7 +77,8 @@ public:
   vtkTypeMacro(vtkLKGuideBarFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The bone on port 0; the two guides on port 1 (AddInputData(1, guide)).
+  /// The bone on port 0; the guides on port 1 (AddInputData(1, guide)), in
+  /// their order along the bone.
   /// @{
   void SetBoneData(vtkDataObject* bone) { this->SetInputData(0, bone); }
   void AddGuideData(vtkDataObject* guide) { this->AddInputData(1, guide); }
@@ -77,26 +86,37 @@ public:
   /// @}
 
   ///@{
-  /// The bar's diameter: mm, default 0: the guides' wall thickness (the
-  /// thinner one's); otherwise 1 to 20.
+  /// The bars' diameter: mm, default 0: the guides' wall thickness (the
+  /// thinnest one's); otherwise 1 to 20.
   vtkSetMacro(Diameter, double);
   vtkGetMacro(Diameter, double);
-  /// The least gap between the bar and the bone away from the guides: mm,
+  /// The least gap between a bar and the bone away from the guides: mm,
   /// default 2 (0 to 50).
   vtkSetMacro(StandOff, double);
   vtkGetMacro(StandOff, double);
   /// The longest bar made: mm along its centre line, default 150 (1 to
-  /// 1000). Guides farther apart are refused.
+  /// 1000). Guides next to each other and farther apart are refused.
   vtkSetMacro(MaximumLength, double);
   vtkGetMacro(MaximumLength, double);
   ///@}
 
   ///@{
-  /// After an update (zeros before, or after an error).
+  /// After an update (zeros before, or after an error): the bars' length
+  /// all together (mm), their diameter, the least of their gaps, the part's
+  /// volume (mm^3).
   vtkGetMacro(BarLength, double);
   vtkGetMacro(BarDiameter, double);
   vtkGetMacro(BarGap, double);
   vtkGetMacro(Volume, double);
+  ///@}
+
+  ///@{
+  /// After an update: how many bars (guides less one; 0 before, or after an
+  /// error), and the length and gap of bar `bar` (0 is between guides 1 and
+  /// 2; 0 for a bar there is not).
+  int GetNumberOfBars() { return static_cast<int>(this->BarLengths.size()); }
+  double GetBarLength(int bar);
+  double GetBarGap(int bar);
   ///@}
 
 protected:
@@ -112,6 +132,8 @@ protected:
   double BarDiameter = 0.0;
   double BarGap = 0.0;
   double Volume = 0.0;
+  std::vector<double> BarLengths;
+  std::vector<double> BarGaps;
 
 private:
   vtkLKGuideBarFilter(const vtkLKGuideBarFilter&) = delete;

@@ -1,6 +1,7 @@
 // vtkLKGuideBarFilter: two cutting guides joined by a bar, on a long box
-// (where the bar must lie, its gap, the volume) and on the TCIA mandible
-// (one closed part outside the bone, screw holes left open), and bad input.
+// (where the bar must lie, its gap, the volume), three joined by two bars, and
+// on the TCIA mandible (one closed part outside the bone, screw holes left
+// open), and bad input.
 #include "TestSupport.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
@@ -20,6 +21,7 @@
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -248,14 +250,82 @@ TEST(GuideBarFilter, StopsWhenAsked)
   EXPECT_LT(progress.progress.back(), 1.0);
 }
 
+TEST(GuideBarFilter, ThreeGuidesInTheirOrderAlongTheBoxAreOnePartWithTwoBars)
+{
+  vtkSmartPointer<vtkPolyData> bone = longBox();
+  const double normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
+  const double xs[3] = { -40, 0, 40 };
+  vtkSmartPointer<vtkPolyData> guide[3];
+  double volumes[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const double origin[3] = { xs[i], 0, 0 };
+    guide[i] = guideOn(bone, origin, normal, front, &volumes[i]);
+    ASSERT_GT(guide[i]->GetNumberOfCells(), 0);
+  }
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  for (int i : { 0, 1, 2 })
+    bar->AddGuideData(guide[i]);
+  lktest::ProgressRecorder progress(bar);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_NEAR(lktest::signedVolume(out), bar->GetVolume(), 1e-6 * bar->GetVolume());
+  // Two bars, each from 6 mm past one slot to 6 mm before the next (28 mm
+  // between the ends, and the rise to the walls' middle), 2 mm off the face.
+  ASSERT_EQ(bar->GetNumberOfBars(), 2);
+  for (int b = 0; b < 2; ++b)
+  {
+    EXPECT_GT(bar->GetBarLength(b), 28.0) << b;
+    EXPECT_LT(bar->GetBarLength(b), 29.5) << b;
+    EXPECT_NEAR(bar->GetBarGap(b), 2.0, 0.05) << b;
+  }
+  EXPECT_NEAR(bar->GetBarLength(), bar->GetBarLength(0) + bar->GetBarLength(1), 1e-12);
+  EXPECT_DOUBLE_EQ(bar->GetBarGap(), std::min(bar->GetBarGap(0), bar->GetBarGap(1)));
+  EXPECT_EQ(bar->GetBarLength(2), 0.0);
+  EXPECT_EQ(bar->GetBarLength(-1), 0.0);
+  const double tube = 24.0 / 2.0 * std::sin(2.0 * vtkMath::Pi() / 24.0) * 4.0;
+  EXPECT_NEAR(bar->GetVolume(),
+    volumes[0] + volumes[1] + volumes[2] + tube * (bar->GetBarLength() - 8.0), 0.01 * bar->GetVolume());
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(coveredHoles(guide[i], out), 0) << i;
+  vtkDataArray* lengths = out->GetFieldData()->GetArray("GuideBarLength");
+  vtkDataArray* gaps = out->GetFieldData()->GetArray("GuideBarGap");
+  ASSERT_NE(lengths, nullptr);
+  ASSERT_NE(gaps, nullptr);
+  ASSERT_EQ(lengths->GetNumberOfTuples(), 2);
+  ASSERT_EQ(gaps->GetNumberOfTuples(), 2);
+  for (int b = 0; b < 2; ++b)
+  {
+    EXPECT_DOUBLE_EQ(lengths->GetComponent(b, 0), bar->GetBarLength(b));
+    EXPECT_DOUBLE_EQ(gaps->GetComponent(b, 0), bar->GetBarGap(b));
+  }
+  ASSERT_GE(progress.progress.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(progress.progress.begin(), progress.progress.end()));
+  EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
+
+  // Two guides make one bar again; the filter forgets the third's.
+  bar->RemoveAllInputConnections(1);
+  bar->AddGuideData(guide[0]);
+  bar->AddGuideData(guide[2]);
+  bar->Update();
+  EXPECT_EQ(bar->GetNumberOfBars(), 1);
+  EXPECT_EQ(bar->GetBarLength(1), 0.0);
+  EXPECT_GT(bar->GetBarLength(), 68.0);
+}
+
 TEST(GuideBarFilter, BadInputAndParametersAreRefused)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   vtkSmartPointer<vtkPolyData> bone = longBox();
   const double left[3] = { -30, 0, 0 }, right[3] = { 30, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 },
                back[3] = { 0, 1, 0 };
+  const double centre[3] = { 0, 0, 0 };
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, left, normal, front), b = guideOn(bone, right, normal, front),
-                               behind = guideOn(bone, right, normal, back);
+                               behind = guideOn(bone, right, normal, back), middle = guideOn(bone, centre, normal, front);
   // Round the box's corner at x = 50: a guide on the front near it and one
   // on the end face.
   const double nearCorner[3] = { 40, 0, 0 }, onEnd[3] = { 46, 0, 0 }, across[3] = { 0, 1, 0 }, end[3] = { 1, 0, 0 };
@@ -269,8 +339,15 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
   };
   const Case cases[] = {
     { "one guide", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); }, "a bar joins two guides, and port 1 has 1" },
-    { "three guides", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(b); },
-      "port 1 has 3" },
+    { "three guides, the last two one", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(b); },
+      "guides 2 and 3: their slots are 0 mm apart, too near" },
+    { "three guides out of their order",
+      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(middle); },
+      "guides 1 and 3 lie on one side of guide 2's slot, so their bars would leave it on one side (give the guides "
+      "in their order along the bone)" },
+    { "three guides, the third on the back",
+      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(middle); f->AddGuideData(behind); },
+      "guides 2 and 3: they are put on from directions 180 degrees apart" },
     { "a plain mesh", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(bone); },
       "guide 2 has no GuideApproach of finite values (guides come from vtkLKCuttingGuideFilter)" },
     { "the same guide twice", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(a); },

@@ -950,6 +950,24 @@ class PipelineTest(unittest.TestCase):
         single.Update()
         self.assertEqual(single.GetOutput().GetNumberOfCells(), 0)
         self.assertEqual(len(errors), 1)
+        # A chin cut between the two, given in its place along the bone: one
+        # part with two bars, each read back by its number.
+        chin = latticekit.vtkLKCuttingGuideFilter()
+        chin.SetInputConnection(bone.GetOutputPort())
+        chin.SetPlaneOrigin(0, 270.03, -988)
+        chin.SetPlaneNormal(1, 0, 0)
+        three = latticekit.vtkLKGuideBarFilter()
+        three.SetInputConnection(0, bone.GetOutputPort())
+        for guide in (guides[0], chin, guides[1]):
+            three.AddGuideConnection(guide.GetOutputPort())
+        three.Update()
+        self.assertEqual(three.GetNumberOfBars(), 2)
+        self.assertEqual(open_edges(three.GetOutput()).GetNumberOfCells(), 0)
+        lengths = [three.GetBarLength(b) for b in range(2)]
+        self.assertTrue(all(10.0 < length < 40.0 for length in lengths), lengths)
+        self.assertAlmostEqual(three.GetBarLength(), sum(lengths), places=9)
+        self.assertEqual(three.GetOutput().GetFieldData().GetArray("GuideBarGap").GetNumberOfTuples(), 2)
+        self.assertGreater(three.GetVolume(), bar.GetVolume())
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
