@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <regex>
 #include <set>
 #include <string>
@@ -62,11 +63,12 @@ void usage(std::ostream& os)
         "                     a shell on the bone's outer side with a slot in the line's plane,\n"
         "                     two screw holes and the line's number raised on it); guide files\n"
         "                     an earlier run left there and this one does not write are removed\n"
-        "  --join-guides      with --guides: the flat lines' guides in pairs, the two lines\n"
-        "                     either side of one piece (as they lie along the bone), joined by\n"
-        "                     a bar over the bone between them into one resection guide each\n"
-        "                     (vtkLKGuideBarFilter), written as FOLDER/guide_linesN-M.stl and\n"
-        "                     .vtp in place of the two guides' own files\n"
+        "  --join-guides      with --guides: the flat lines' guides joined, each line to the\n"
+        "                     next either side of one piece (as they lie along the bone), by\n"
+        "                     bars over the bone between them into one resection guide for\n"
+        "                     each such chain of lines (vtkLKGuideBarFilter), written as\n"
+        "                     FOLDER/guide_linesN-M.stl and .vtp (N-M-K for three, in their\n"
+        "                     order) in place of the guides' own files\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
 }
@@ -109,20 +111,21 @@ bool prepareFolder(const std::string& folder, const char* option, const char* wh
 }
 
 /// The files --guides writes: "guide_lineN.stl" and "guide_lineN.vtp"; with
-/// --join-guides "guide_linesN-M.stl" and ".vtp" for two joined.
+/// --join-guides "guide_linesN-M.stl" and ".vtp" for those joined (N-M-K
+/// for three, in their order along the bone).
 bool isGuideLineFileName(const std::string& name)
 {
-  static const std::regex guide("guide_(line[0-9]+|lines[0-9]+-[0-9]+)[.](stl|vtp)");
+  static const std::regex guide("guide_(line[0-9]+|lines[0-9]+(-[0-9]+)+)[.](stl|vtp)");
   return std::regex_match(name, guide);
 }
 
 /// A cutting guide for each line of `lines` (its line cells, in order,
 /// numbered from 1) that lies within 0.5 mm of its best-fitting plane, on
 /// `mesh`, written into `folder`; a line per guide on standard output. With
-/// `join`, those lines' guides in pairs, two lines either side of one of the
-/// cut's `pieces` (lkapp::pairLinesByPiece), joined by a bar into one part
-/// each (vtkLKGuideBarFilter), written in place of the two. False with `error`
-/// when a file cannot be written.
+/// `join`, those lines' guides joined along the bone, each line to the next
+/// across one of the cut's `pieces` (lkapp::chainLinesByPiece), by bars into
+/// one part for each chain (vtkLKGuideBarFilter), written in place of the
+/// guides' own files. False with `error` when a file cannot be written.
 bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folder, const std::string& space,
   bool join, const std::vector<vtkPolyData*>& pieces, std::vector<std::string>& written, std::string& error)
 {
@@ -136,7 +139,7 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
   struct Guide
   {
     std::size_t line = 0; // from 0
-    std::vector<std::array<double, 3>> points; // the line's, for its pair
+    std::vector<std::array<double, 3>> points; // the line's, for its chain
     vtkSmartPointer<vtkLKCuttingGuideFilter> filter;
     std::string why;         // empty when it was made
     std::string joinedStem;  // the part it is in, when joined
@@ -194,7 +197,7 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       g.why.clear();
     guides.push_back(g);
   }
-  // The joined pairs, after the lines' own reports.
+  // The joined guides, after the lines' own reports.
   std::string joinedReport;
   auto write = [&](vtkPolyData* part, const std::string& stem) {
     for (const char* ext : { ".stl", ".vtp" })
@@ -205,55 +208,60 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     }
     return true;
   };
-  // The pairs: two flat lines either side of one piece (the segment between
+  // The chains: flat lines either side of each piece (the segment between
   // two saw cuts), as they lie along the bone.
   std::vector<std::vector<std::array<double, 3>>> guideLines;
   for (const Guide& g : guides)
     guideLines.push_back(g.points);
   const std::vector<std::set<std::size_t>> piecesOf =
     lkapp::piecesAlongLines(pieces, guideLines, 1e-5 * mesh->GetLength());
-  const std::vector<std::pair<std::size_t, std::size_t>> pairs =
-    join ? lkapp::pairLinesByPiece(piecesOf) : std::vector<std::pair<std::size_t, std::size_t>>();
-  for (const auto& pair : pairs)
-  {
-    Guide& a = guides[pair.first];
-    Guide& b = guides[pair.second];
-    const std::string label = "guide lines " + std::to_string(a.line + 1) + "-" + std::to_string(b.line + 1);
-    char line[400];
-    if (!a.why.empty() || !b.why.empty())
-    {
-      std::snprintf(line, sizeof line, "%-16s not joined: guide line %zu has no guide\n", label.c_str(),
-        (a.why.empty() ? b : a).line + 1);
-      joinedReport += line;
-      continue;
-    }
-    vtkNew<vtkLKGuideBarFilter> bar;
+  const std::vector<std::vector<std::size_t>> chains =
+    join ? lkapp::chainLinesByPiece(piecesOf) : std::vector<std::vector<std::size_t>>();
+  auto lineNumber = [&](std::size_t g) { return std::to_string(guides[g].line + 1); };
+  // Each chain joined, or as much of it as can be (lkapp::joinChain).
+  std::map<std::vector<std::size_t>, vtkSmartPointer<vtkLKGuideBarFilter>> parts;
+  auto joinLines = [&](const std::vector<std::size_t>& members) {
+    auto bar = vtkSmartPointer<vtkLKGuideBarFilter>::New();
     bar->SetBoneData(faces);
-    bar->AddGuideData(a.filter->GetOutput());
-    bar->AddGuideData(b.filter->GetOutput());
+    for (std::size_t g : members)
+      bar->AddGuideData(guides[g].filter->GetOutput());
     const std::string why = lkapp::updateKeepingErrors(bar);
-    if (bar->GetOutput()->GetNumberOfPolys() == 0)
+    parts[members] = bar;
+    return bar->GetOutput()->GetNumberOfPolys() > 0 ? std::string() : why.empty() ? "no bar was made" : why;
+  };
+  for (const auto& chain : chains)
+  {
+    char line[600];
+    for (std::size_t g : chain)
+      if (!guides[g].why.empty())
+        joinedReport += labelOf(guides[g].line) + " is left out of the resection guide: it has no guide\n";
+    for (const lkapp::JoinedRun& run :
+      lkapp::joinChain(chain, [&](std::size_t g) { return guides[g].why.empty(); }, joinLines))
     {
-      std::snprintf(line, sizeof line, "%-16s not joined: %s\n", label.c_str(), why.empty() ? "no bar was made" : why.c_str());
+      const std::string label = "guide lines " + lkapp::chainNumbers(run.lines, lineNumber, "-", "-");
+      if (!run.error.empty())
+      {
+        std::snprintf(line, sizeof line, "%-16s not joined: %s\n", label.c_str(), run.error.c_str());
+        joinedReport += line;
+        continue;
+      }
+      vtkLKGuideBarFilter* bar = parts[run.lines];
+      const std::string stem = "guide_lines" + lkapp::chainNumbers(run.lines, lineNumber, "-", "-");
+      if (!write(bar->GetOutput(), stem))
+        return false;
+      for (std::size_t g : run.lines)
+        guides[g].joinedStem = stem;
+      std::snprintf(line, sizeof line, "%-16s joined by %s; %.0f mm^3 in one part: %s.stl, .vtp\n", label.c_str(),
+        lkapp::barsText(bar).c_str(), bar->GetVolume(), stem.c_str());
       joinedReport += line;
-      continue;
     }
-    const std::string stem = "guide_lines" + std::to_string(a.line + 1) + "-" + std::to_string(b.line + 1);
-    if (!write(bar->GetOutput(), stem))
-      return false;
-    a.joinedStem = b.joinedStem = stem;
-    std::snprintf(line, sizeof line,
-      "%-16s joined by a bar of %.1f mm, %.0f mm long and %.1f mm clear of the bone between them; %.0f mm^3 in one "
-      "part: %s.stl, .vtp\n",
-      label.c_str(), bar->GetBarDiameter(), bar->GetBarLength(), bar->GetBarGap(), bar->GetVolume(), stem.c_str());
-    joinedReport += line;
   }
   for (std::size_t i = 0; join && i < guides.size(); ++i)
   {
-    if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == i || p.second == i; }))
+    if (std::any_of(chains.begin(), chains.end(),
+          [&](const auto& c) { return std::find(c.begin(), c.end(), i) != c.end(); }))
       continue;
-    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, pairs, "flat line", "line",
-      [&](std::size_t g) { return std::to_string(guides[g].line + 1); });
+    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, chains, "flat line", "line", lineNumber);
     joinedReport += labelOf(guides[i].line) + " stays apart: " + why + "\n";
   }
   for (const Guide& g : guides)
@@ -408,7 +416,7 @@ int main(int argc, char* argv[])
       .c_str());
   std::vector<std::string> pieceStems; // the files' names, piece0, piece1, ...
   std::vector<std::string> cutLinesFiles; // piece0_cut_lines.vtp, ...
-  std::vector<vtkSmartPointer<vtkPolyData>> pieces; // for the guides' pairs
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces; // for joining the guides along the bone
   vtkNew<vtkLKExtractCutPieceFilter> extract;
   extract->SetInputConnection(cut->GetOutputPort());
   for (int p = 0; p < cut->GetNumberOfPieces(); ++p)

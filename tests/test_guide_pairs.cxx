@@ -1,5 +1,5 @@
-// Which saw lines' guides are joined (apps/common/GuidePairs): the lines on
-// either side of one piece, as they lie along the bone, not as drawn.
+// Which saw lines' guides are joined (apps/common/GuidePairs): chains of the
+// lines either side of each piece, as they lie along the bone, not as drawn.
 #include "common/GuidePairs.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@
 
 namespace
 {
-using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
+using Chains = std::vector<std::vector<std::size_t>>;
 
 /// The pieces along each line of a bone cut across in a chain: `order`
 /// gives the lines as they lie along it (line order[k] between pieces k and
@@ -41,43 +41,56 @@ vtkSmartPointer<vtkPolyData> cloud(const std::vector<std::array<double, 3>>& poi
 }
 } // namespace
 
-TEST(GuidePairs, LinesDrawnInOrderAlongTheBonePairAsDrawn)
+TEST(GuidePairs, LinesDrawnInOrderAlongTheBoneJoinAsDrawn)
 {
-  EXPECT_EQ(lkapp::pairLinesByPiece(chain({ 0, 1, 2, 3 })), (Pairs{ { 0, 1 }, { 2, 3 } }));
-  // Three: the first two; the third has no partner left.
-  EXPECT_EQ(lkapp::pairLinesByPiece(chain({ 0, 1, 2 })), (Pairs{ { 0, 1 } }));
+  EXPECT_EQ(lkapp::chainLinesByPiece(chain({ 0, 1 })), (Chains{ { 0, 1 } }));
+  EXPECT_EQ(lkapp::chainLinesByPiece(chain({ 0, 1, 2 })), (Chains{ { 0, 1, 2 } }));
+  EXPECT_EQ(lkapp::chainLinesByPiece(chain({ 0, 1, 2, 3 })), (Chains{ { 0, 1, 2, 3 } }));
 }
 
-TEST(GuidePairs, LinesDrawnOutOfOrderPairAsTheyLie)
+TEST(GuidePairs, LinesDrawnOutOfOrderJoinAsTheyLie)
 {
-  // A chin cut (the 3rd line) drawn after the two body cuts: the 1st joins
-  // the chin's, the 2nd stays apart, beside the chin's line.
+  // A chin cut (the 3rd line) drawn after the two body cuts: in the middle.
   const auto piecesOf = chain({ 0, 2, 1 });
-  EXPECT_EQ(lkapp::pairLinesByPiece(piecesOf), (Pairs{ { 0, 2 } }));
+  EXPECT_EQ(lkapp::chainLinesByPiece(piecesOf), (Chains{ { 0, 2, 1 } }));
   EXPECT_EQ(lkapp::lineNeighbours(1, piecesOf), (std::vector<std::size_t>{ 2 }));
   EXPECT_EQ(lkapp::lineNeighbours(2, piecesOf), (std::vector<std::size_t>{ 0, 1 }));
-  // Four in the order 3 1 2 4 along the bone: pairing the 1st with its first
-  // neighbour (the 2nd) would leave the 3rd and the 4th without one; the
-  // chain's ends go first, so both pairs are made.
-  EXPECT_EQ(lkapp::pairLinesByPiece(chain({ 2, 0, 1, 3 })), (Pairs{ { 0, 2 }, { 1, 3 } }));
-  EXPECT_EQ(lkapp::pairLinesByPiece(chain({ 3, 1, 0, 2 })), (Pairs{ { 0, 2 }, { 1, 3 } }));
+  // Four in the order 3 1 2 4 along the bone, and 4 2 1 3: from the end with
+  // the smaller number.
+  EXPECT_EQ(lkapp::chainLinesByPiece(chain({ 2, 0, 1, 3 })), (Chains{ { 2, 0, 1, 3 } }));
+  EXPECT_EQ(lkapp::chainLinesByPiece(chain({ 3, 1, 0, 2 })), (Chains{ { 2, 0, 1, 3 } }));
 }
 
-TEST(GuidePairs, WithoutACutEveryLineIsOnTheBoneAndTheyPairInOrder)
+TEST(GuidePairs, APieceBetweenThreeLinesJoinsTwoAndARingIsNotClosed)
+{
+  // A ramus (piece 0) with its condyle (line 1) and coronoid (line 2) cut
+  // off and the body cut at line 3, the body cut again further on (line 4):
+  // the body's piece joins lines 3 and 4; the ramus one more pair, 1 and 2.
+  const std::vector<std::set<std::size_t>> ramus{ { 0, 1 }, { 0, 2 }, { 0, 3 }, { 3, 4 } };
+  EXPECT_EQ(lkapp::chainLinesByPiece(ramus), (Chains{ { 0, 1 }, { 2, 3 } }));
+  // A ring cut at three places: one chain of all three, not closed.
+  const std::vector<std::set<std::size_t>> ring{ { 0, 1 }, { 1, 2 }, { 2, 0 } };
+  const Chains rings = lkapp::chainLinesByPiece(ring);
+  ASSERT_EQ(rings.size(), 1u);
+  EXPECT_EQ(rings[0].size(), 3u);
+  EXPECT_EQ(rings[0], (std::vector<std::size_t>{ 1, 0, 2 }));
+}
+
+TEST(GuidePairs, WithoutACutEveryLineIsOnTheBoneAndTheyJoinInPairsInOrder)
 {
   const std::vector<std::set<std::size_t>> whole(5, std::set<std::size_t>{ 0 });
-  EXPECT_EQ(lkapp::pairLinesByPiece(whole), (Pairs{ { 0, 1 }, { 2, 3 } }));
+  EXPECT_EQ(lkapp::chainLinesByPiece(whole), (Chains{ { 0, 1 }, { 2, 3 } }));
   EXPECT_EQ(lkapp::lineNeighbours(4, whole), (std::vector<std::size_t>{ 0, 1, 2, 3 }));
 }
 
-TEST(GuidePairs, ALineOnNoPieceOrAloneIsNeverPaired)
+TEST(GuidePairs, ALineOnNoPieceOrAloneIsNeverJoined)
 {
   // Line 1 failed (on no piece); lines 0 and 2 bound pieces that share none.
   const std::vector<std::set<std::size_t>> piecesOf{ { 0, 1 }, {}, { 2, 3 } };
-  EXPECT_TRUE(lkapp::pairLinesByPiece(piecesOf).empty());
+  EXPECT_TRUE(lkapp::chainLinesByPiece(piecesOf).empty());
   EXPECT_TRUE(lkapp::lineNeighbours(1, piecesOf).empty());
   EXPECT_TRUE(lkapp::lineNeighbours(0, piecesOf).empty());
-  EXPECT_TRUE(lkapp::pairLinesByPiece({}).empty());
+  EXPECT_TRUE(lkapp::chainLinesByPiece({}).empty());
 }
 
 TEST(GuidePairs, ALineIsOnThePiecesThatHoldMostOfItsPoints)
@@ -104,11 +117,6 @@ TEST(GuidePairs, ALineIsOnThePiecesThatHoldMostOfItsPoints)
 TEST(GuidePairs, ALineLeftApartIsToldWhy)
 {
   auto number = [](std::size_t line) { return std::to_string(line + 1); };
-  // Drawn 1, 3, 2 along the bone: the 2nd stays apart beside the 3rd.
-  const auto piecesOf = chain({ 0, 2, 1 });
-  const Pairs pairs = lkapp::pairLinesByPiece(piecesOf);
-  EXPECT_EQ(lkapp::whyLineStaysApart(1, piecesOf, pairs, "saw line", "stroke", number),
-    "the saw line beside it (stroke 3) is joined to stroke 1");
   // Alone on its pieces.
   const std::vector<std::set<std::size_t>> apart{ { 0, 1 }, { 2, 3 } };
   EXPECT_EQ(lkapp::whyLineStaysApart(1, apart, {}, "flat line", "line", number),
@@ -116,6 +124,86 @@ TEST(GuidePairs, ALineLeftApartIsToldWhy)
     "one piece)");
   // Without a cut, five lines: the 5th beside all four, each joined.
   const std::vector<std::set<std::size_t>> whole(5, std::set<std::size_t>{ 0 });
-  EXPECT_EQ(lkapp::whyLineStaysApart(4, whole, lkapp::pairLinesByPiece(whole), "saw line", "stroke", number),
-    "the saw lines beside it (strokes 1, 2, 3 and 4) are joined to others");
+  EXPECT_EQ(lkapp::whyLineStaysApart(4, whole, lkapp::chainLinesByPiece(whole), "saw line", "stroke", number),
+    "the saw lines beside it (strokes 1, 2, 3 and 4) are joined to others there");
+  // Three lines on one piece, the third left over.
+  const std::vector<std::set<std::size_t>> three(3, std::set<std::size_t>{ 0 });
+  EXPECT_EQ(lkapp::chainLinesByPiece(three), (Chains{ { 0, 1 } }));
+  EXPECT_EQ(lkapp::whyLineStaysApart(2, three, lkapp::chainLinesByPiece(three), "saw line", "stroke", number),
+    "the saw lines beside it (strokes 1 and 2) are joined to others there");
+  EXPECT_EQ(lkapp::chainNumbers({ 0, 2, 1 }, number), "1, 3 and 2");
+  EXPECT_EQ(lkapp::chainNumbers({ 3 }, number), "4");
+}
+
+namespace
+{
+using Runs = std::vector<std::pair<std::vector<std::size_t>, std::string>>;
+
+Runs runsOf(const std::vector<lkapp::JoinedRun>& runs)
+{
+  Runs out;
+  for (const auto& r : runs)
+    out.emplace_back(r.lines, r.error);
+  return out;
+}
+
+bool hasNeighbours(const std::vector<std::size_t>& lines, std::size_t a, std::size_t b)
+{
+  for (std::size_t k = 0; k + 1 < lines.size(); ++k)
+    if (lines[k] == a && lines[k + 1] == b)
+      return true;
+  return false;
+}
+} // namespace
+
+TEST(GuidePairs, AChainIsJoinedWholeOrSplitWhereTwoNeighboursCannotBe)
+{
+  std::vector<std::vector<std::size_t>> calls;
+  auto all = [](std::size_t) { return true; };
+  // Joined whole: one try.
+  auto joins = [&](const std::vector<std::size_t>& lines) {
+    calls.push_back(lines);
+    return std::string();
+  };
+  EXPECT_EQ(runsOf(lkapp::joinChain({ 0, 2, 1 }, all, joins)), (Runs{ { { 0, 2, 1 }, "" } }));
+  EXPECT_EQ(calls.size(), 1u);
+
+  // Lines 1 and 2 too far apart: the whole fails, each two are tried, and
+  // the chain is joined either side of them.
+  calls.clear();
+  auto farApart = [&](const std::vector<std::size_t>& lines) {
+    calls.push_back(lines);
+    return hasNeighbours(lines, 1, 2) ? std::string("too far") : std::string();
+  };
+  EXPECT_EQ(runsOf(lkapp::joinChain({ 0, 1, 2, 3 }, all, farApart)),
+    (Runs{ { { 0, 1 }, "" }, { { 1, 2 }, "too far" }, { { 2, 3 }, "" } }));
+  EXPECT_EQ(calls, (std::vector<std::vector<std::size_t>>{ { 0, 1, 2, 3 }, { 0, 1 }, { 1, 2 }, { 2, 3 } }));
+  // The first two: the rest joined whole, tried once more.
+  calls.clear();
+  auto firstTwo = [&](const std::vector<std::size_t>& lines) {
+    calls.push_back(lines);
+    return hasNeighbours(lines, 0, 1) ? std::string("facing apart") : std::string();
+  };
+  EXPECT_EQ(runsOf(lkapp::joinChain({ 0, 1, 2, 3 }, all, firstTwo)),
+    (Runs{ { { 0, 1 }, "facing apart" }, { { 1, 2, 3 }, "" } }));
+  EXPECT_EQ(calls.back(), (std::vector<std::size_t>{ 1, 2, 3 }));
+  // Two at a time but not three (a union that fails): the whole with its
+  // reason, then pairs, not tried whole again.
+  calls.clear();
+  auto pairsOnly = [&](const std::vector<std::size_t>& lines) {
+    calls.push_back(lines);
+    return lines.size() > 2 ? std::string("union") : std::string();
+  };
+  EXPECT_EQ(runsOf(lkapp::joinChain({ 3, 0, 1, 2, 4 }, all, pairsOnly)),
+    (Runs{ { { 3, 0, 1, 2, 4 }, "union" }, { { 3, 0 }, "" }, { { 1, 2 }, "" } }));
+  EXPECT_EQ(calls.size(), 5u);
+  // A line without a guide splits the chain; a run of one is no part.
+  calls.clear();
+  EXPECT_EQ(runsOf(lkapp::joinChain({ 0, 1, 2, 3, 4 }, [](std::size_t l) { return l != 2; }, joins)),
+    (Runs{ { { 0, 1 }, "" }, { { 3, 4 }, "" } }));
+  EXPECT_TRUE(lkapp::joinChain({ 0, 1, 2 }, [](std::size_t l) { return l == 1; }, joins).empty());
+  // Two that cannot be joined: one try, its reason.
+  calls.clear();
+  EXPECT_EQ(runsOf(lkapp::joinChain({ 1, 2 }, all, farApart)), (Runs{ { { 1, 2 }, "too far" } }));
+  EXPECT_EQ(calls.size(), 1u);
 }

@@ -1,9 +1,15 @@
 #include "common/GuidePairs.h"
 
+#include "vtkLKGuideBarFilter.h"
+
 #include <vtkNew.h>
 #include <vtkStaticPointLocator.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <numeric>
 
 namespace lkapp
 {
@@ -51,62 +57,174 @@ std::vector<std::size_t> lineNeighbours(std::size_t line, const std::vector<std:
   return neighbours;
 }
 
-std::vector<std::pair<std::size_t, std::size_t>> pairLinesByPiece(
-  const std::vector<std::set<std::size_t>>& piecesOfLine)
+std::vector<std::vector<std::size_t>> chainLinesByPiece(const std::vector<std::set<std::size_t>>& piecesOfLine)
 {
   const std::size_t n = piecesOfLine.size();
-  std::vector<std::vector<std::size_t>> neighbours(n);
+  // The lines on each piece, in order.
+  std::map<std::size_t, std::vector<std::size_t>> linesOn;
   for (std::size_t l = 0; l < n; ++l)
-    neighbours[l] = lineNeighbours(l, piecesOfLine);
-  std::vector<bool> paired(n, false);
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (;;)
+    for (std::size_t p : piecesOfLine[l])
+      linesOn[p].push_back(l);
+  // Pieces with fewer lines first (a piece between two lines joins them
+  // whatever else), then in order.
+  std::vector<std::size_t> order;
+  for (const auto& [p, lines] : linesOn)
+    if (lines.size() >= 2)
+      order.push_back(p);
+  std::stable_sort(order.begin(), order.end(),
+    [&](std::size_t a, std::size_t b) { return linesOn[a].size() < linesOn[b].size(); });
+  // The joins: each line's side (a piece it is on) used once, each line
+  // joined twice at most, no ring (union-find on the chains so far).
+  std::vector<std::size_t> root(n);
+  std::iota(root.begin(), root.end(), 0);
+  std::function<std::size_t(std::size_t)> find = [&](std::size_t l) {
+    return root[l] == l ? l : root[l] = find(root[l]);
+  };
+  std::vector<std::vector<std::size_t>> joined(n);
+  for (std::size_t p : order)
   {
-    // The unpaired line with the fewest unpaired neighbours (at least one).
-    std::size_t best = n, bestCount = n + 1;
-    for (std::size_t l = 0; l < n; ++l)
+    std::vector<std::size_t> lines = linesOn[p];
+    // Lines on one piece only (an end of the chain there) before those on two.
+    std::stable_sort(lines.begin(), lines.end(),
+      [&](std::size_t a, std::size_t b) { return piecesOfLine[a].size() < piecesOfLine[b].size(); });
+    std::vector<bool> used(lines.size(), false);
+    for (std::size_t i = 0; i < lines.size(); ++i)
     {
-      if (paired[l])
+      if (used[i] || joined[lines[i]].size() >= 2)
         continue;
-      const auto count = static_cast<std::size_t>(std::count_if(
-        neighbours[l].begin(), neighbours[l].end(), [&](std::size_t m) { return !paired[m]; }));
-      if (count > 0 && count < bestCount)
+      for (std::size_t k = i + 1; k < lines.size(); ++k)
       {
-        best = l;
-        bestCount = count;
+        const std::size_t a = lines[i], b = lines[k];
+        if (used[k] || joined[b].size() >= 2 || find(a) == find(b))
+          continue;
+        joined[a].push_back(b);
+        joined[b].push_back(a);
+        root[find(a)] = find(b);
+        used[i] = used[k] = true;
+        break;
       }
     }
-    if (best == n)
-      break;
-    const std::size_t with =
-      *std::find_if(neighbours[best].begin(), neighbours[best].end(), [&](std::size_t m) { return !paired[m]; });
-    paired[best] = paired[with] = true;
-    pairs.emplace_back(std::min(best, with), std::max(best, with));
   }
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
+  // Each chain from its end with the smaller index.
+  std::vector<std::vector<std::size_t>> chains;
+  std::vector<bool> placed(n, false);
+  for (std::size_t l = 0; l < n; ++l)
+  {
+    if (placed[l] || joined[l].size() != 1)
+      continue;
+    std::vector<std::size_t> chain{ l };
+    placed[l] = true;
+    for (std::size_t at = l;;)
+    {
+      const auto next =
+        std::find_if(joined[at].begin(), joined[at].end(), [&](std::size_t m) { return !placed[m]; });
+      if (next == joined[at].end())
+        break;
+      at = *next;
+      placed[at] = true;
+      chain.push_back(at);
+    }
+    chains.push_back(chain);
+  }
+  std::sort(chains.begin(), chains.end(), [](const auto& a, const auto& b) {
+    return *std::min_element(a.begin(), a.end()) < *std::min_element(b.begin(), b.end());
+  });
+  return chains;
+}
+
+std::vector<JoinedRun> joinChain(const std::vector<std::size_t>& chain,
+  const std::function<bool(std::size_t)>& usable,
+  const std::function<std::string(const std::vector<std::size_t>&)>& join)
+{
+  std::vector<JoinedRun> runs;
+  // Split at the lines without a guide.
+  std::vector<std::vector<std::size_t>> pieces(1);
+  for (std::size_t line : chain)
+    if (usable(line))
+      pieces.back().push_back(line);
+    else if (!pieces.back().empty())
+      pieces.emplace_back();
+  for (const auto& run : pieces)
+  {
+    if (run.size() < 2)
+      continue;
+    std::string why = join(run);
+    if (why.empty() || run.size() == 2)
+    {
+      runs.push_back({ run, why });
+      continue;
+    }
+    // Each line with the next, alone; the run split where they fail.
+    std::vector<std::size_t> part{ run[0] };
+    auto finish = [&]() {
+      if (part.size() == 2)
+        runs.push_back({ part, std::string() }); // made above, alone
+      else if (part.size() > 2)
+      {
+        const std::string whole = part == run ? why : join(part);
+        runs.push_back({ part, whole });
+        if (!whole.empty())
+          for (std::size_t k = 0; k + 1 < part.size(); k += 2)
+            runs.push_back({ { part[k], part[k + 1] }, std::string() });
+      }
+    };
+    for (std::size_t k = 0; k + 1 < run.size(); ++k)
+    {
+      const std::string pair = join({ run[k], run[k + 1] });
+      if (pair.empty())
+      {
+        part.push_back(run[k + 1]);
+        continue;
+      }
+      finish();
+      runs.push_back({ { run[k], run[k + 1] }, pair });
+      part = { run[k + 1] };
+    }
+    finish();
+  }
+  return runs;
+}
+
+std::string barsText(vtkLKGuideBarFilter* bar)
+{
+  const int bars = bar->GetNumberOfBars();
+  std::string lengths;
+  for (int b = 0; b < bars; ++b)
+  {
+    char length[32];
+    std::snprintf(length, sizeof length, "%.0f", bar->GetBarLength(b));
+    lengths += (b == 0 ? "" : b + 1 == bars ? " and " : ", ") + std::string(length);
+  }
+  char text[300];
+  std::snprintf(text, sizeof text, "%s of %.1f mm, %s mm long and %s%.1f mm clear of the bone between them",
+    bars == 1 ? "a bar" : (std::to_string(bars) + " bars").c_str(), bar->GetBarDiameter(), lengths.c_str(),
+    bars == 1 ? "" : "at least ", bar->GetBarGap());
+  return text;
+}
+
+std::string chainNumbers(const std::vector<std::size_t>& chain, const std::function<std::string(std::size_t)>& number,
+  const std::string& separator, const std::string& last)
+{
+  std::string text;
+  for (std::size_t k = 0; k < chain.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == chain.size() ? last : separator) + number(chain[k]);
+  return text;
 }
 
 std::string whyLineStaysApart(std::size_t line, const std::vector<std::set<std::size_t>>& piecesOfLine,
-  const std::vector<std::pair<std::size_t, std::size_t>>& pairs, const std::string& lineWord,
-  const std::string& numberWord, const std::function<std::string(std::size_t)>& number)
+  const std::vector<std::vector<std::size_t>>& chains, const std::string& lineWord, const std::string& numberWord,
+  const std::function<std::string(std::size_t)>& number)
 {
   const std::vector<std::size_t> beside = lineNeighbours(line, piecesOfLine);
   if (beside.empty())
     return "no other " + lineWord + " bounds a piece of the cut with it (a resection guide joins the " + lineWord +
       "s either side of one piece)";
+  (void)chains; // a line beside it that is in no chain would have been joined to it
   if (beside.size() == 1)
-  {
-    const auto pair = std::find_if(pairs.begin(), pairs.end(),
-      [&](const auto& q) { return q.first == beside[0] || q.second == beside[0]; });
-    if (pair != pairs.end())
-      return "the " + lineWord + " beside it (" + numberWord + " " + number(beside[0]) + ") is joined to " +
-        numberWord + " " + number(pair->first == beside[0] ? pair->second : pair->first);
-  }
-  std::string why = "the " + lineWord + "s beside it (" + numberWord + "s ";
-  for (std::size_t k = 0; k < beside.size(); ++k)
-    why += (k == 0 ? "" : k + 1 == beside.size() ? " and " : ", ") + number(beside[k]);
-  return why + ") are joined to others";
+    return "the " + lineWord + " beside it (" + numberWord + " " + number(beside[0]) +
+      ") is joined to another there";
+  return "the " + lineWord + "s beside it (" + numberWord + "s " + chainNumbers(beside, number) +
+    ") are joined to others there";
 }
 
 } // namespace lkapp

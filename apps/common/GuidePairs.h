@@ -1,18 +1,20 @@
 #pragma once
 /// \file GuidePairs.h
 /// Which saw lines' cutting guides are joined into one resection guide: the
-/// two lines that bound one piece of the cut (the segment a resection takes
-/// out lies between its two saw cuts), whatever order they were drawn in.
+/// lines that bound one piece of the cut (the segment a resection takes out
+/// lies between its two saw cuts), each with the next along the bone,
+/// whatever order they were drawn in.
 /// Shared by the planner (j) and latticekit-cut --join-guides.
 
 #include <vtkPolyData.h>
+
+class vtkLKGuideBarFilter;
 
 #include <array>
 #include <cstddef>
 #include <functional>
 #include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace lkapp
@@ -26,30 +28,64 @@ namespace lkapp
 std::vector<std::set<std::size_t>> piecesAlongLines(const std::vector<vtkPolyData*>& pieces,
   const std::vector<std::vector<std::array<double, 3>>>& lines, double tolerance);
 
-/// The lines' pairs: two lines are paired when they are both on one piece,
-/// and each line is in one pair at most. A maximum matching on a chain of
-/// pieces (a bone cut across several times): the line with the fewest
-/// unpaired neighbours goes first (the first such line in order on a tie),
-/// with its first unpaired neighbour, so lines drawn in order along the bone
-/// pair as drawn (1 with 2, 3 with 4) and lines drawn out of order pair as
-/// they lie. Each pair has its smaller index first, and the pairs are in the
-/// order of their first lines.
-std::vector<std::pair<std::size_t, std::size_t>> pairLinesByPiece(
-  const std::vector<std::set<std::size_t>>& piecesOfLine);
+/// The lines joined into one part each: chains of lines, each in its order
+/// along the bone, where each line and the next bound one piece of the cut
+/// (the segment between them). A line is joined on each of its sides at most
+/// once (to one other line of the piece there), and no chain closes on
+/// itself (a ring of bone cut all round): so a bone cut across several times
+/// gives one chain of all its lines, in their order along it, whatever order
+/// they were drawn in. A piece bounded by more than two lines (a ramus with
+/// its condyle and coronoid cut off) joins two of them, in stroke order
+/// (those on the fewest pieces first); without a cut (one piece, the whole
+/// bone) lines join in pairs in stroke order (1 with 2, 3 with 4). Each
+/// chain starts at its end with the smaller index; chains are in the order of
+/// their smallest lines, and lines joined to none are in none.
+std::vector<std::vector<std::size_t>> chainLinesByPiece(const std::vector<std::set<std::size_t>>& piecesOfLine);
+
+/// A run of lines joined into one part, or why it could not be (`error`
+/// empty when it was).
+struct JoinedRun
+{
+  std::vector<std::size_t> lines; ///< in their order along the bone
+  std::string error;
+};
+
+/// Joins a chain of lines (chainLinesByPiece), or as much of it as can be:
+/// `join(lines)` makes the part of `lines` and says why it could not (empty
+/// when it did). Lines that are not `usable` (no guide was made for them)
+/// split the chain, and are in no run. When a run cannot be joined whole,
+/// each line and the next are tried alone, and the run is split where they
+/// cannot be (two guides too far apart, facing apart): those two are a
+/// failed run with its reason, and the runs either side are joined on their
+/// own. Should a run whose every two neighbours can be joined still fail
+/// whole (a union CGAL cannot make), it is given with its reason and its
+/// lines are joined in pairs. The runs are in the chain's order.
+std::vector<JoinedRun> joinChain(const std::vector<std::size_t>& chain,
+  const std::function<bool(std::size_t)>& usable,
+  const std::function<std::string(const std::vector<std::size_t>&)>& join);
 
 /// The other lines that share a piece with line `line` (its neighbours, in
 /// order): for a line left out of every pair, empty when no other line bounds
 /// a piece with it, else the lines beside it (each paired with another).
 std::vector<std::size_t> lineNeighbours(std::size_t line, const std::vector<std::set<std::size_t>>& piecesOfLine);
 
-/// Why line `line`, in none of `pairs`, stays apart, in words: "no other
+/// Why line `line`, in none of `chains`, stays apart, in words: "no other
 /// saw line bounds a piece of the cut with it (...)", "the saw line beside it
-/// (stroke 3) is joined to stroke 1" or "the saw lines beside it (strokes 1
-/// and 3) are joined to others", with `lineWord` ("saw line") and
-/// `numberWord` ("stroke") as the caller names them, and `number` giving a
-/// line's number as the user knows it.
+/// (stroke 3) is joined to another there" or "the saw lines beside it
+/// (strokes 1, 2 and 3) are joined to others there", with `lineWord` ("saw
+/// line") and `numberWord` ("stroke") as the caller names them, and `number`
+/// giving a line's number as the user knows it.
 std::string whyLineStaysApart(std::size_t line, const std::vector<std::set<std::size_t>>& piecesOfLine,
-  const std::vector<std::pair<std::size_t, std::size_t>>& pairs, const std::string& lineWord,
-  const std::string& numberWord, const std::function<std::string(std::size_t)>& number);
+  const std::vector<std::vector<std::size_t>>& chains, const std::string& lineWord, const std::string& numberWord,
+  const std::function<std::string(std::size_t)>& number);
+
+/// The bars of a resection guide in words: "a bar of 4.0 mm, 22 mm long and
+/// 1.8 mm clear of the bone between them", or for more "2 bars of 4.0 mm, 22
+/// and 30 mm long and at least 1.8 mm clear of the bone between them".
+std::string barsText(vtkLKGuideBarFilter* bar);
+
+/// "1, 3 and 2": the lines of `chain` by `number`, in its order.
+std::string chainNumbers(const std::vector<std::size_t>& chain, const std::function<std::string(std::size_t)>& number,
+  const std::string& separator = ", ", const std::string& last = " and ");
 
 } // namespace lkapp

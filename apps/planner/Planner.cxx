@@ -812,11 +812,15 @@ void Planner::updateStatus()
     for (const CuttingGuide& g : guides)
       shown += g.surface ? 1 : 0;
     s << " | cutting guides: " << shown;
-    std::size_t joined = 0;
+    std::size_t joined = 0, bars = 0;
     for (const JoinedGuide& j : joinedGuides)
-      joined += j.surface ? 1 : 0;
+      if (j.surface)
+      {
+        joined += j.members.size();
+        bars += j.members.size() - 1;
+      }
     if (joined > 0)
-      s << " (" << 2 * joined << " joined by " << (joined == 1 ? "a bar" : std::to_string(joined) + " bars") << ")";
+      s << " (" << joined << " joined by " << (bars == 1 ? "a bar" : std::to_string(bars) + " bars") << ")";
   }
   if (tool != NO_TOOL)
   {

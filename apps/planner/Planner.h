@@ -267,36 +267,43 @@ public:
   /// Makes the guides the session asks for (anew only where a saw line or
   /// the bone changed), shows them and says in `message` why one failed.
   void updateGuides();
-  /// Joins the guides in pairs when the session asks (anew only where a
-  /// guide changed), and says in `message` why a pair stays apart.
+  /// Joins the guides along the bone when the session asks (anew only where
+  /// a guide changed), and says in `message` why a guide stays apart.
   void updateJoinedGuides();
   /// The plan's lines on the guides (empty when they are not shown).
   std::string guidesText() const;
   /// "guide_stroke<n>", the stem of a guide's files (n from 1).
   static std::string guideFileStem(std::size_t stroke);
   /// The resection guides (j, the session's "guidesJoined"): the guides of
-  /// the saw lines in pairs, the two lines either side of one piece of
-  /// the cut (lkapp::pairLinesByPiece: as they lie along the bone, not as
-  /// they were drawn; without a cut, in stroke order), each pair joined by a bar over the bone
-  /// between them (vtkLKGuideBarFilter) into one part; made anew only when
-  /// one of its guides was.
+  /// the saw lines joined along the bone, each line to the next across one
+  /// piece of the cut (lkapp::chainLinesByPiece: as they lie along the bone,
+  /// not as they were drawn; without a cut, in pairs in stroke order), by
+  /// bars over the bone between them (vtkLKGuideBarFilter) into one part for
+  /// each chain; made anew only when one of its guides was.
   struct JoinedGuide
   {
-    std::size_t first = 0, second = 0; ///< its guides, indices into `guides`
-    vtkSmartPointer<vtkPolyData> firstSurface, secondSurface; ///< what it was made of
-    vtkSmartPointer<vtkLKGuideBarFilter> filter;             ///< its bar's settings and sizes
+    std::vector<std::size_t> members; ///< its guides, indices into `guides`, in their order along the bone
+    std::vector<vtkSmartPointer<vtkPolyData>> made; ///< the guides' surfaces it was made of
+    vtkSmartPointer<vtkLKGuideBarFilter> filter;    ///< its bars' settings and sizes
     vtkSmartPointer<vtkPolyData> surface; ///< null when it could not be made (error)
     std::string error;
   };
   std::vector<JoinedGuide> joinedGuides;
+  /// Every part tried at the last update (joined or not; lkapp::joinChain
+  /// tries a chain's neighbours alone where the whole cannot be joined),
+  /// kept so that the next update makes anew only what changed.
+  std::vector<JoinedGuide> joinAttempts;
+  /// "1, 3 and 2": the strokes of a joined guide's lines, in its order.
+  std::string joinedStrokes(const JoinedGuide& joined, const std::string& separator = ", ",
+    const std::string& last = " and ") const;
   /// The joined guide made with guides[i], or null (apart, or the join
   /// failed).
   const JoinedGuide* joinedGuideOf(std::size_t i) const;
-  /// A part to print: a joined pair (one part), or a guide joined to none.
+  /// A part to print: a joined guide (one part), or a guide joined to none.
   struct GuidePart
   {
     vtkPolyData* surface = nullptr;
-    std::string stem;    ///< its files' stem: guide_strokeN, guide_strokesN-M
+    std::string stem;    ///< its files' stem: guide_strokeN, guide_strokesN-M(-K...)
     std::string roiName; ///< its ROI in the exported structure set
   };
   /// The guides made, as they are printed: the joined pairs, then the

@@ -30,16 +30,22 @@ std::string Planner::guideFileStem(std::size_t stroke)
   return "guide_stroke" + std::to_string(stroke + 1);
 }
 
+std::string Planner::joinedStrokes(const JoinedGuide& joined, const std::string& separator,
+  const std::string& last) const
+{
+  return lkapp::chainNumbers(
+    joined.members, [&](std::size_t i) { return std::to_string(guides[i].stroke + 1); }, separator, last);
+}
+
 std::string Planner::joinedGuideFileStem(const JoinedGuide& joined) const
 {
-  return "guide_strokes" + std::to_string(guides[joined.first].stroke + 1) + "-" +
-    std::to_string(guides[joined.second].stroke + 1);
+  return "guide_strokes" + joinedStrokes(joined, "-", "-");
 }
 
 const Planner::JoinedGuide* Planner::joinedGuideOf(std::size_t i) const
 {
   for (const JoinedGuide& j : joinedGuides)
-    if (j.surface && (j.first == i || j.second == i))
+    if (j.surface && std::find(j.members.begin(), j.members.end(), i) != j.members.end())
       return &j;
   return nullptr;
 }
@@ -49,9 +55,7 @@ std::vector<Planner::GuidePart> Planner::guideParts() const
   std::vector<GuidePart> parts;
   for (const JoinedGuide& j : joinedGuides)
     if (j.surface)
-      parts.push_back({ j.surface, joinedGuideFileStem(j),
-        "resection guide (strokes " + std::to_string(guides[j.first].stroke + 1) + " and " +
-          std::to_string(guides[j.second].stroke + 1) + ")" });
+      parts.push_back({ j.surface, joinedGuideFileStem(j), "resection guide (strokes " + joinedStrokes(j) + ")" });
   for (std::size_t i = 0; i < guides.size(); ++i)
     if (guides[i].surface && !joinedGuideOf(i))
       parts.push_back({ guides[i].surface, guideFileStem(guides[i].stroke),
@@ -111,6 +115,7 @@ void Planner::updateGuides()
   if (guides.empty())
   {
     joinedGuides.clear();
+    joinAttempts.clear();
     addLine(message, "cutting guides (k) are made for saw lines (p): this plan has none");
     return;
   }
@@ -135,16 +140,19 @@ void Planner::updateJoinedGuides()
   if (!session.guidesJoined)
   {
     joinedGuides.clear();
+    joinAttempts.clear();
     return;
   }
   if (guides.size() < 2)
   {
     joinedGuides.clear();
-    addLine(message, "cutting guides are joined (j) in pairs of saw lines: this plan has one");
+    joinAttempts.clear();
+    addLine(message, "cutting guides are joined (j) along the bone, saw line to saw line: this plan has one");
     return;
   }
-  // The pairs: two saw lines that bound one piece of the cut (the segment
-  // between them), as they lie along the bone, not as they were drawn.
+  // The chains: each saw line joined to the next that bounds one piece of
+  // the cut with it (the segment between them), as they lie along the bone,
+  // not as they were drawn.
   std::vector<std::vector<std::array<double, 3>>> lines(guides.size());
   for (std::size_t i = 0; i < guides.size(); ++i)
     for (std::size_t k = 0; k < cut.lineStrokes.size(); ++k)
@@ -166,62 +174,71 @@ void Planner::updateJoinedGuides()
     size = std::max(size, piece->GetLength());
   }
   const std::vector<std::set<std::size_t>> piecesOf = lkapp::piecesAlongLines(pieces, lines, 1e-6 * size);
-  const std::vector<std::pair<std::size_t, std::size_t>> pairs = lkapp::pairLinesByPiece(piecesOf);
-  std::vector<JoinedGuide> made;
-  for (const auto& pair : pairs)
-  {
-    const std::size_t i = pair.first, i2 = pair.second;
-    const CuttingGuide& a = guides[i];
-    const CuttingGuide& b = guides[i2];
-    const std::string which =
-      "strokes " + std::to_string(a.stroke + 1) + " and " + std::to_string(b.stroke + 1);
-    if (!a.surface || !b.surface)
+  const std::vector<std::vector<std::size_t>> chains = lkapp::chainLinesByPiece(piecesOf);
+  // Each chain joined, or as much of it as can be (lkapp::joinChain), each
+  // part made anew only when one of its guides was.
+  std::vector<JoinedGuide> tried; // this update's parts, made or not: the next one's to keep
+  auto join = [&](const std::vector<std::size_t>& members) {
+    JoinedGuide j;
+    j.members = members;
+    for (std::size_t i : members)
+      j.made.push_back(guides[i].surface);
+    const auto kept = std::find_if(joinAttempts.begin(), joinAttempts.end(), [&](const JoinedGuide& old) {
+      return old.made.size() == j.made.size() && std::equal(old.made.begin(), old.made.end(), j.made.begin());
+    });
+    if (kept != joinAttempts.end())
     {
-      addLine(message, "the cutting guides of " + which + " are not joined: the guide of stroke " +
-          std::to_string((a.surface ? b : a).stroke + 1) + " could not be made");
-      continue;
+      j = *kept;
+      j.members = members;
     }
-    bool kept = false;
-    for (const JoinedGuide& j : joinedGuides)
-      if (j.firstSurface == a.surface && j.secondSurface == b.surface)
-      {
-        made.push_back(j);
-        made.back().first = i;
-        made.back().second = i2;
-        kept = true;
-        break;
-      }
-    if (!kept)
+    else
     {
-      JoinedGuide j;
-      j.first = i;
-      j.second = i2;
-      j.firstSurface = a.surface;
-      j.secondSurface = b.surface;
       j.filter = vtkSmartPointer<vtkLKGuideBarFilter>::New();
       j.filter->SetBoneData(facesOnly(bone));
-      j.filter->AddGuideData(a.surface);
-      j.filter->AddGuideData(b.surface);
+      for (std::size_t i : members)
+        j.filter->AddGuideData(guides[i].surface);
       j.error = lkapp::updateKeepingErrors(j.filter); // the guides stay apart; its message says why
       if (j.filter->GetOutput()->GetNumberOfPolys() > 0)
         j.surface = j.filter->GetOutput();
       else if (j.error.empty())
         j.error = "no bar was made";
-      made.push_back(j);
     }
-    if (!made.back().surface)
-      addLine(message, "the cutting guides of " + which + " are not joined: " + made.back().error);
+    tried.push_back(j);
+    return j.surface ? std::string() : j.error;
+  };
+  std::vector<JoinedGuide> made;
+  auto strokeOf = [&](std::size_t g) { return std::to_string(guides[g].stroke + 1); };
+  for (const auto& chain : chains)
+  {
+    for (std::size_t i : chain)
+      if (!guides[i].surface)
+        addLine(message, "the resection guide leaves out stroke " + strokeOf(i) + ": its cutting guide could not be made");
+    for (const lkapp::JoinedRun& run :
+      lkapp::joinChain(chain, [&](std::size_t i) { return guides[i].surface != nullptr; }, join))
+    {
+      if (!run.error.empty())
+      {
+        addLine(message, "the cutting guides of strokes " + lkapp::chainNumbers(run.lines, strokeOf) +
+            " are not joined: " + run.error);
+        continue;
+      }
+      const auto part = std::find_if(
+        tried.rbegin(), tried.rend(), [&](const JoinedGuide& j) { return j.members == run.lines; });
+      if (part != tried.rend())
+        made.push_back(*part);
+    }
   }
-  // The guides in no pair, and why.
+  // The guides in no chain, and why.
   for (std::size_t i = 0; i < guides.size(); ++i)
   {
-    if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == i || p.second == i; }))
+    if (std::any_of(chains.begin(), chains.end(),
+          [&](const auto& c) { return std::find(c.begin(), c.end(), i) != c.end(); }))
       continue;
-    auto strokeOf = [&](std::size_t g) { return std::to_string(guides[g].stroke + 1); };
-    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, pairs, "saw line", "stroke", strokeOf);
+    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, chains, "saw line", "stroke", strokeOf);
     addLine(message, "the cutting guide of stroke " + strokeOf(i) + " stays apart: " + why);
   }
   joinedGuides = made;
+  joinAttempts = tried;
 }
 
 std::string Planner::guidesText() const
@@ -261,12 +278,11 @@ std::string Planner::guidesText() const
   {
     if (!j.surface)
       continue; // its message says why
-    char line[400];
+    char line[600];
     std::snprintf(line, sizeof line,
-      "resection guide: the cutting guides of strokes %zu and %zu joined by a bar of %.1f mm, %.0f mm long and "
-      "%.1f mm clear of the bone between them; %.0f mm^3 in one part (%s.stl)\n",
-      guides[j.first].stroke + 1, guides[j.second].stroke + 1, j.filter->GetBarDiameter(), j.filter->GetBarLength(),
-      j.filter->GetBarGap(), j.filter->GetVolume(), joinedGuideFileStem(j).c_str());
+      "resection guide: the cutting guides of strokes %s joined by %s; %.0f mm^3 in one part (%s.stl)\n",
+      joinedStrokes(j).c_str(), lkapp::barsText(j.filter).c_str(), j.filter->GetVolume(),
+      joinedGuideFileStem(j).c_str());
     text += line;
   }
   return text;

@@ -209,10 +209,10 @@ struct Session
   /// The guides on the other side of the bone (K): the side the filter
   /// chooses (a mandible's outer side) reversed.
   bool guidesOtherSide = false;
-  /// The guides of the saw lines taken in pairs, two lines either side of
-  /// one piece of the cut (lkapp::pairLinesByPiece), joined by a bar over the
-  /// bone between them (j): a resection guide each, one part to print
-  /// (vtkLKGuideBarFilter).
+  /// The guides of the saw lines joined along the bone, each line to the
+  /// next either side of one piece of the cut (lkapp::chainLinesByPiece), by
+  /// bars over the bone between them (j): a resection guide for each chain,
+  /// one part to print (vtkLKGuideBarFilter).
   bool guidesJoined = false;
   /// The scan on cut line k's plane (c), k from 1 (the plan's numbering of
   /// the cut lines); 0: not shown.

@@ -1044,13 +1044,13 @@ void PlannerStyle::OnChar()
   }
   else if (key == "j")
   {
-    // The guides joined in pairs by a bar (and apart again); shown, if they
-    // were not.
+    // The guides joined along the bone by bars (and apart again); shown, if
+    // they were not.
     planner->remember();
     s.guidesJoined = !s.guidesJoined;
     s.guides = true;
-    planner->notice = s.guidesJoined ? "cutting guides: joined in pairs by a bar (j: apart)"
-                                     : "cutting guides: apart (j: joined in pairs)";
+    planner->notice = s.guidesJoined ? "cutting guides: joined along the bone by bars (j: apart)"
+                                     : "cutting guides: apart (j: joined)";
   }
   else if (key == "x" || key == "l" || key == "m" || key == "o" || key == "k")
   {
