@@ -4,7 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <vtkCleanPolyData.h>
+#include <vtkCubeSource.h>
+#include <vtkDoubleArray.h>
+#include <vtkLinearSubdivisionFilter.h>
+#include <vtkFieldData.h>
 #include <vtkNew.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkTriangleFilter.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -206,4 +214,59 @@ TEST(GuidePairs, AChainIsJoinedWholeOrSplitWhereTwoNeighboursCannotBe)
   calls.clear();
   EXPECT_EQ(runsOf(lkapp::joinChain({ 1, 2 }, all, farApart)), (Runs{ { { 1, 2 }, "too far" } }));
   EXPECT_EQ(calls.size(), 1u);
+}
+
+namespace
+{
+/// A 10 mm cube, finely triangulated, its centre at x = `centre`.
+vtkSmartPointer<vtkPolyData> cubeAt(double centre)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(10);
+  cube->SetYLength(10);
+  cube->SetZLength(10);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkCleanPolyData> merged; // one closed surface, its faces outward
+  merged->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> fine;
+  fine->SetInputConnection(merged->GetOutputPort());
+  fine->SetNumberOfSubdivisions(4);
+  vtkNew<vtkTransform> move;
+  move->Translate(centre, 0, 0);
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetInputConnection(fine->GetOutputPort());
+  moved->SetTransform(move);
+  moved->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(moved->GetOutput());
+  return out;
+}
+} // namespace
+
+TEST(GuidePairs, TwoGuidesThatOverlapAreMeasuredAlongTheBone)
+{
+  // Cubes 7 mm apart overlap over 3 mm along x; 10 mm apart they touch; 12
+  // mm apart they are apart.
+  EXPECT_NEAR(lkapp::guidesOverlap(cubeAt(0), cubeAt(7)), 3.0, 1e-9);
+  EXPECT_NEAR(lkapp::guidesOverlap(cubeAt(7), cubeAt(0)), 3.0, 1e-9);
+  EXPECT_EQ(lkapp::guidesOverlap(cubeAt(0), cubeAt(10)), 0.0);
+  EXPECT_EQ(lkapp::guidesOverlap(cubeAt(0), cubeAt(12)), 0.0);
+  // Along the saw planes' normal, when the guides give it: here z, across
+  // which the cubes (side by side along x) overlap over all 10 mm (less a
+  // grid step, 0.625 mm, at each end: the points measured are the faces').
+  auto a = cubeAt(0), b = cubeAt(7);
+  for (vtkPolyData* part : { a.Get(), b.Get() })
+  {
+    vtkNew<vtkDoubleArray> normal;
+    normal->SetName("GuidePlaneNormal");
+    normal->SetNumberOfComponents(3);
+    const double z[3] = { 0, 0, part == a.Get() ? 1.0 : -1.0 }; // either way round
+    normal->InsertNextTuple(z);
+    part->GetFieldData()->AddArray(normal);
+  }
+  EXPECT_NEAR(lkapp::guidesOverlap(a, b), 10.0 - 2 * 0.625, 1e-9);
+  // Nothing to measure.
+  EXPECT_EQ(lkapp::guidesOverlap(a, nullptr), 0.0);
+  EXPECT_EQ(lkapp::guidesOverlap(vtkSmartPointer<vtkPolyData>::New(), b), 0.0);
 }

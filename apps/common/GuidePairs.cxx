@@ -2,14 +2,20 @@
 
 #include "vtkLKGuideBarFilter.h"
 
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImplicitPolyDataDistance.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkStaticPointLocator.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numeric>
+#include <tuple>
 
 namespace lkapp
 {
@@ -183,6 +189,65 @@ std::vector<JoinedRun> joinChain(const std::vector<std::size_t>& chain,
     finish();
   }
   return runs;
+}
+
+double guidesOverlap(vtkPolyData* a, vtkPolyData* b)
+{
+  if (!a || !b || a->GetNumberOfPolys() == 0 || b->GetNumberOfPolys() == 0)
+    return 0.0;
+  double boxA[6], boxB[6];
+  a->GetBounds(boxA);
+  b->GetBounds(boxB);
+  for (int k = 0; k < 3; ++k)
+    if (boxA[2 * k + 1] < boxB[2 * k] || boxB[2 * k + 1] < boxA[2 * k])
+      return 0.0;
+  // The direction along the bone: the guides' saw planes' mean normal
+  // (their field data), else from one part's centre to the other's.
+  std::array<double, 3> axis{ 0.0, 0.0, 0.0 };
+  for (vtkPolyData* part : { a, b })
+  {
+    vtkDataArray* n = part->GetFieldData() ? part->GetFieldData()->GetArray("GuidePlaneNormal") : nullptr;
+    if (!n || n->GetNumberOfComponents() != 3 || n->GetNumberOfTuples() < 1)
+      continue;
+    std::array<double, 3> normal;
+    n->GetTuple(0, normal.data());
+    if (!(vtkMath::Normalize(normal.data()) > 0.0))
+      continue;
+    const double sign = vtkMath::Dot(axis.data(), normal.data()) < 0.0 ? -1.0 : 1.0;
+    for (int k = 0; k < 3; ++k)
+      axis[k] += sign * normal[k];
+  }
+  if (!(vtkMath::Normalize(axis.data()) > 0.0))
+  {
+    double from[3], to[3];
+    a->GetCenter(from);
+    b->GetCenter(to);
+    vtkMath::Subtract(to, from, axis.data());
+    if (!(vtkMath::Normalize(axis.data()) > 0.0))
+      axis = { 1.0, 0.0, 0.0 };
+  }
+  // The points of each inside the other (by more than a touch), and how far
+  // they spread along that direction.
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const auto& [part, other, box] : { std::make_tuple(a, b, boxB), std::make_tuple(b, a, boxA) })
+  {
+    vtkNew<vtkImplicitPolyDataDistance> inside; // negative inside: the parts face outward
+    inside->SetInput(other);
+    for (vtkIdType i = 0; i < part->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      part->GetPoint(i, x);
+      if (x[0] < box[0] || x[0] > box[1] || x[1] < box[2] || x[1] > box[3] || x[2] < box[4] || x[2] > box[5])
+        continue;
+      if (inside->EvaluateFunction(x) < -guidesOverlapTolerance)
+      {
+        const double along = vtkMath::Dot(x, axis.data());
+        low = std::min(low, along);
+        high = std::max(high, along);
+      }
+    }
+  }
+  return high >= low ? std::max(high - low, guidesOverlapTolerance) : 0.0;
 }
 
 std::string barsText(vtkLKGuideBarFilter* bar)

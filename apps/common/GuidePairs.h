@@ -79,6 +79,17 @@ std::string whyLineStaysApart(std::size_t line, const std::vector<std::set<std::
   const std::vector<std::vector<std::size_t>>& chains, const std::string& lineWord, const std::string& numberWord,
   const std::function<std::string(std::size_t)>& number);
 
+/// Less than this (mm) inside another part is touching it, not overlapping.
+constexpr double guidesOverlapTolerance = 0.05;
+
+/// How far two closed parts overlap along the bone (mm: the spread, along
+/// the mean of their saw planes' normals (GuidePlaneNormal; else from one's
+/// centre to the other's), of the points of either inside the other by more
+/// than guidesOverlapTolerance), 0 where they do not: two cutting guides on
+/// saw lines nearer than their reaches, which cannot be on the bone
+/// together. Moving a saw line about that much farther parts them.
+double guidesOverlap(vtkPolyData* a, vtkPolyData* b);
+
 /// The bars of a resection guide in words: "a bar of 4.0 mm, 22 mm long and
 /// 1.8 mm clear of the bone between them", or for more "2 bars of 4.0 mm, 22
 /// and 30 mm long and at least 1.8 mm clear of the bone between them".
