@@ -564,6 +564,7 @@ void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Diameter: " << this->Diameter << "\n";
   os << indent << "StandOff: " << this->StandOff << "\n";
   os << indent << "MaximumLength: " << this->MaximumLength << "\n";
+  os << indent << "NumberOfBars: " << this->BarLengths.size() << "\n";
   os << indent << "BarLength: " << this->BarLength << "\n";
   os << indent << "BarDiameter: " << this->BarDiameter << "\n";
   os << indent << "BarGap: " << this->BarGap << "\n";
