@@ -227,7 +227,9 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       bar->AddGuideData(guides[g].filter->GetOutput());
     const std::string why = lkapp::updateKeepingErrors(bar);
     parts[members] = bar;
-    return bar->GetOutput()->GetNumberOfPolys() > 0 ? std::string() : why.empty() ? "no bar was made" : why;
+    return bar->GetOutput()->GetNumberOfPolys() > 0 ? std::string()
+      : why.empty()                                  ? "no bar was made"
+                                                     : lkapp::guidesByLine(why, members, "line", lineNumber);
   };
   for (const auto& chain : chains)
   {
@@ -241,7 +243,8 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       const std::string label = "guide lines " + lkapp::chainNumbers(run.lines, lineNumber, "-", "-");
       if (!run.error.empty())
       {
-        std::snprintf(line, sizeof line, "%-16s not joined: %s\n", label.c_str(), run.error.c_str());
+        std::snprintf(line, sizeof line, "%-16s not joined%s: %s\n", label.c_str(),
+          run.lines.size() > 2 ? " in one part" : "", run.error.c_str());
         joinedReport += line;
         continue;
       }
@@ -251,8 +254,12 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
         return false;
       for (std::size_t g : run.lines)
         guides[g].joinedStem = stem;
-      std::snprintf(line, sizeof line, "%-16s joined by %s; %.0f mm^3 in one part: %s.stl, .vtp\n", label.c_str(),
-        lkapp::barsText(bar).c_str(), bar->GetVolume(), stem.c_str());
+      const std::array<double, 3> along = lkapp::guideDirection(bar->GetApproachUsed());
+      std::snprintf(line, sizeof line,
+        "%-16s joined by %s; put on along (%.3f, %.3f, %.3f), its steepest contact %.1f degrees short of square to "
+        "that; %.0f mm^3 in one part: %s.stl, .vtp\n",
+        label.c_str(), lkapp::barsText(bar).c_str(), along[0], along[1], along[2], bar->GetInsertionMargin(),
+        bar->GetVolume(), stem.c_str());
       joinedReport += line;
     }
   }

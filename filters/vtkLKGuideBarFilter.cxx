@@ -12,6 +12,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkGenericCell.h>
+#include <vtkIdList.h>
 #include <vtkImplicitPolyDataDistance.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -25,12 +26,14 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
 #include <vtkTubeFilter.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -78,6 +81,62 @@ bool readField(vtkPolyData* guide, const char* name, double* values, int compone
       return false;
   }
   return true;
+}
+
+/// The direction a part with these contacts is best put on along (its
+/// motion toward the bone): the unit d that makes the least n . d over every
+/// contact face's outward normal n the largest, searched over the half
+/// sphere round `start` (every 3 degrees, then every 0.25 degrees round the
+/// best). `worst` is that least n . d; `guide` the contact it belongs to.
+struct Insertion
+{
+  Vec motion{};
+  double worst = -1.0;
+  std::size_t guide = 0;
+};
+
+Insertion commonInsertion(const std::vector<std::vector<Vec>>& normals, const Vec& start)
+{
+  Insertion best;
+  // The least n . d, or any value under `floor` as soon as one is found (d
+  // cannot be the best then).
+  auto leastAlong = [&](const Vec& d, double floor, std::size_t& which) {
+    double least = 1.0;
+    for (std::size_t g = 0; g < normals.size(); ++g)
+      for (const Vec& n : normals[g])
+        if (const double v = dot(n, d); v < least)
+        {
+          least = v;
+          which = g;
+          if (least <= floor)
+            return least;
+        }
+    return least;
+  };
+  auto search = [&](const Vec& centre, double radius, double step) {
+    Vec u, w;
+    vtkMath::Perpendiculars(centre.data(), u.data(), w.data(), 0.0);
+    for (double theta = 0.0; theta <= radius + 1e-9; theta += step)
+    {
+      const int around =
+        theta == 0.0 ? 1 : std::max(6, static_cast<int>(std::ceil(2.0 * vtkMath::Pi() * std::sin(theta) / step)));
+      for (int k = 0; k < around; ++k)
+      {
+        const double phi = 2.0 * vtkMath::Pi() * k / around;
+        Vec d{ 0.0, 0.0, 0.0 };
+        d = add(d, centre, std::cos(theta));
+        d = add(d, u, std::sin(theta) * std::cos(phi));
+        d = add(d, w, std::sin(theta) * std::sin(phi));
+        vtkMath::Normalize(d.data());
+        std::size_t which = 0;
+        if (const double v = leastAlong(d, best.worst, which); v > best.worst)
+          best = { d, v, which };
+      }
+    }
+  };
+  search(start, vtkMath::Pi() / 2.0, vtkMath::RadiansFromDegrees(3.0));
+  search(best.motion, vtkMath::RadiansFromDegrees(3.0), vtkMath::RadiansFromDegrees(0.25));
+  return best;
 }
 
 /// The bar: a capped tube of `radius` round `line`, its sides sharing their
@@ -131,6 +190,8 @@ int vtkLKGuideBarFilter::RequestData(
   this->BarLength = this->BarDiameter = this->BarGap = this->Volume = 0.0;
   this->BarLengths.clear();
   this->BarGaps.clear();
+  this->ApproachUsed[0] = this->ApproachUsed[1] = this->ApproachUsed[2] = 0.0;
+  this->InsertionMargin = 0.0;
 
   struct Range
   {
@@ -287,6 +348,52 @@ int vtkLKGuideBarFilter::RequestData(
   outward->Update();
   vtkNew<vtkImplicitPolyDataDistance> away;
   away->SetInput(outward->GetOutput());
+  // One direction must put every guide on the bone at once (the part is
+  // rigid): each guide's contact (its faces on the bone, within its
+  // clearance) must face it, as the contact of one guide faces its own
+  // approach. Guides far round the bone (a ramus on each side) have none.
+  std::vector<std::vector<Vec>> contactNormals(n);
+  Vec start{ 0.0, 0.0, 0.0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    start = add(start, guide[i].approach, -1.0);
+    vtkPolyData* g = guideData[i];
+    std::vector<char> pointOnBone(static_cast<std::size_t>(g->GetNumberOfPoints()));
+    for (vtkIdType p = 0; p < g->GetNumberOfPoints(); ++p)
+      pointOnBone[p] = std::abs(away->EvaluateFunction(g->GetPoint(p))) <= guide[i].clearance + 0.05;
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
+    {
+      g->GetCellPoints(c, ids);
+      if (ids->GetNumberOfIds() != 3)
+        continue;
+      Vec corner[3];
+      bool onBone = true;
+      for (int k = 0; k < 3; ++k)
+      {
+        g->GetPoint(ids->GetId(k), corner[k].data());
+        onBone = onBone && pointOnBone[ids->GetId(k)];
+      }
+      if (!onBone || vtkTriangle::TriangleArea(corner[0].data(), corner[1].data(), corner[2].data()) < 1e-3)
+        continue;
+      Vec normal;
+      vtkTriangle::ComputeNormal(corner[0].data(), corner[1].data(), corner[2].data(), normal.data());
+      contactNormals[i].push_back(normal);
+    }
+  }
+  if (!(vtkMath::Normalize(start.data()) > 1e-6))
+    start = { -guide[0].approach[0], -guide[0].approach[1], -guide[0].approach[2] };
+  const Insertion insertion = commonInsertion(contactNormals, start);
+  if (!(insertion.worst > 0.0))
+  {
+    char back[40];
+    std::snprintf(back, sizeof back, "%.1f",
+      vtkMath::DegreesFromRadians(std::acos(std::clamp(insertion.worst, -1.0, 1.0))) - 90.0);
+    vtkErrorMacro("Cannot join the guides: no one direction puts them all on the bone at once: along the best, "
+      << "guide " << insertion.guide + 1 << "'s contact still faces " << back
+      << " degrees back from it (the part would reach round the bone; join fewer guides).");
+    return 0;
+  }
   this->UpdateProgress(0.05);
 
   // Each bar's centre line, pushed off the bone; its length and its gap.
@@ -527,6 +634,9 @@ int vtkLKGuideBarFilter::RequestData(
   output->GetCellData()->Initialize();
   output->GetFieldData()->PassData(input->GetFieldData());
   this->BarLengths = barLengths;
+  for (int k = 0; k < 3; ++k)
+    this->ApproachUsed[k] = -insertion.motion[k];
+  this->InsertionMargin = 90.0 - vtkMath::DegreesFromRadians(std::acos(std::clamp(insertion.worst, -1.0, 1.0)));
   this->BarGaps = barGaps;
   this->BarLength = std::accumulate(barLengths.begin(), barLengths.end(), 0.0);
   this->BarDiameter = 2.0 * radius;
@@ -543,6 +653,8 @@ int vtkLKGuideBarFilter::RequestData(
     fd->AddArray(a);
   }
   lkvtk::addFieldValue(fd, "GuideBarDiameter", this->BarDiameter);
+  lkvtk::addFieldValues(fd, "GuideApproach", this->ApproachUsed, 3);
+  lkvtk::addFieldValue(fd, "GuideInsertionMargin", this->InsertionMargin);
   lkvtk::addFieldValue(fd, "GuideVolume", this->Volume);
   this->UpdateProgress(1.0);
   return 1;
@@ -569,4 +681,7 @@ void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BarDiameter: " << this->BarDiameter << "\n";
   os << indent << "BarGap: " << this->BarGap << "\n";
   os << indent << "Volume: " << this->Volume << "\n";
+  os << indent << "ApproachUsed: " << this->ApproachUsed[0] << " " << this->ApproachUsed[1] << " "
+     << this->ApproachUsed[2] << "\n";
+  os << indent << "InsertionMargin: " << this->InsertionMargin << "\n";
 }

@@ -33,6 +33,12 @@
  *   arches over the bone (the chin between two cuts beside it) and touches
  *   nothing it does not have to: the periosteum is not pressed, and the
  *   guide seats on the guides' contact only.
+ * - One direction must put the whole part on the bone, as it is rigid: the
+ *   guides' contacts (their faces on the bone) must all face it, as each
+ *   guide's contact faces its own approach. The direction that leaves the
+ *   steepest contact face the most room (searched over the half sphere
+ *   round the guides' mean approach) is the part's approach; guides with
+ *   none (far round the bone: a ramus guide on each side) are refused.
  * - The bar is a tube round that line (vtkTubeFilter, capped), and the two
  *   guides and the bar are joined into one closed surface (CGAL's
  *   corefinement, lk::solidUnion): one part, facing outward, its volume
@@ -46,7 +52,9 @@
  * GuideBarGap (for each bar, the least distance between it and the bone
  * where it is farthest from both its guides: StandOff, or less for guides
  * too near each other for the bar to rise that far, mm), GuideBarDiameter
- * (mm), GuideVolume (mm^3), and the bone's SPACE tag. The same values are
+ * (mm), GuideVolume (mm^3), GuideApproach (the part's, unit, away from the
+ * bone), GuideInsertionMargin (degrees: how far short of square to it the
+ * steepest contact face stays), and the bone's SPACE tag. The same values are
  * kept in the filter after an update.
  *
  * Errors (a VTK error and an empty output): fewer than two guides, or a
@@ -57,7 +65,9 @@
  * too near for a bar between their edges (their slots nearer than both
  * reaches and the bar's diameter: it would cross a slot); a guide whose
  * neighbours before and after it lie on one side of its slot (guides not in
- * their order along the bone: a bar would pass over a guide); no room for
+ * their order along the bone: a bar would pass over a guide); guides no one
+ * direction puts on the bone at once (their contacts face too far apart);
+ * no room for
  * a bar beside a screw hole; no bone under a guide's edge (another bone); a
  * bar that cannot clear the bone, or that would bend tighter than its
  * radius; a union CGAL cannot make (a guide that crosses itself).
@@ -111,6 +121,16 @@ public:
   ///@}
 
   ///@{
+  /// After an update (zeros before, or after an error): the direction the
+  /// part is put on from (unit, away from the bone, as each guide's
+  /// GuideApproach), and how far short of square to it (degrees) the
+  /// steepest face of the guides' contacts stays: the room the part has to
+  /// go on along it without reaching under the bone.
+  vtkGetVector3Macro(ApproachUsed, double);
+  vtkGetMacro(InsertionMargin, double);
+  ///@}
+
+  ///@{
   /// After an update: how many bars (guides less one; 0 before, or after an
   /// error), and the length and gap of bar `bar` (0 is between guides 1 and
   /// 2; 0 for a bar there is not).
@@ -132,6 +152,8 @@ protected:
   double BarDiameter = 0.0;
   double BarGap = 0.0;
   double Volume = 0.0;
+  double ApproachUsed[3] = { 0.0, 0.0, 0.0 };
+  double InsertionMargin = 0.0;
   std::vector<double> BarLengths;
   std::vector<double> BarGaps;
 

@@ -233,6 +233,18 @@ TEST(GuideBarFilter, RoundACornerOfTheBoneTheBarStaysClearOfBothFaces)
   EXPECT_GE(bounds[4], -15.0 - 1e-6);
   EXPECT_LE(bounds[5], 15.0 + 1e-6);
   EXPECT_GT(bounds[1], 50.0 + 4.0); // beyond the end face: the guide there and the bar round to it
+  // Put on along the corner's diagonal, between the two faces' directions:
+  // each contact (a flat face) 45 degrees from it.
+  const double* approach = bar->GetApproachUsed();
+  EXPECT_NEAR(approach[0], std::sqrt(0.5), 0.01);
+  EXPECT_NEAR(approach[1], -std::sqrt(0.5), 0.01);
+  EXPECT_NEAR(approach[2], 0.0, 0.01);
+  EXPECT_NEAR(bar->GetInsertionMargin(), 45.0, 0.5);
+  vtkDataArray* fields = out->GetFieldData()->GetArray("GuideApproach");
+  ASSERT_NE(fields, nullptr);
+  EXPECT_DOUBLE_EQ(fields->GetComponent(0, 0), approach[0]);
+  EXPECT_DOUBLE_EQ(out->GetFieldData()->GetArray("GuideInsertionMargin")->GetComponent(0, 0),
+    bar->GetInsertionMargin());
 }
 
 TEST(GuideBarFilter, StopsWhenAsked)
@@ -345,6 +357,9 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
       [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(middle); },
       "guides 1 and 3 lie on one side of guide 2's slot, so their bars would leave it on one side (give the guides "
       "in their order along the bone)" },
+    { "round the end, from the front to the back",
+      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(cornerEnd); f->AddGuideData(behind); },
+      "no one direction puts them all on the bone at once: along the best, guide 1's contact still faces" },
     { "three guides, the third on the back",
       [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(middle); f->AddGuideData(behind); },
       "guides 2 and 3: they are put on from directions 180 degrees apart" },

@@ -195,16 +195,24 @@ TEST(GuidePairs, AChainIsJoinedWholeOrSplitWhereTwoNeighboursCannotBe)
   EXPECT_EQ(runsOf(lkapp::joinChain({ 0, 1, 2, 3 }, all, firstTwo)),
     (Runs{ { { 0, 1 }, "facing apart" }, { { 1, 2, 3 }, "" } }));
   EXPECT_EQ(calls.back(), (std::vector<std::size_t>{ 1, 2, 3 }));
-  // Two at a time but not three (a union that fails): the whole with its
-  // reason, then pairs, not tried whole again.
+  // Two at a time but not three (no one direction to put three on): the
+  // whole with its reason, not tried whole again, then pairs.
   calls.clear();
   auto pairsOnly = [&](const std::vector<std::size_t>& lines) {
     calls.push_back(lines);
-    return lines.size() > 2 ? std::string("union") : std::string();
+    return lines.size() > 2 ? std::string("round the bone") : std::string();
   };
   EXPECT_EQ(runsOf(lkapp::joinChain({ 3, 0, 1, 2, 4 }, all, pairsOnly)),
-    (Runs{ { { 3, 0, 1, 2, 4 }, "union" }, { { 3, 0 }, "" }, { { 1, 2 }, "" } }));
-  EXPECT_EQ(calls.size(), 5u);
+    (Runs{ { { 3, 0, 1, 2, 4 }, "round the bone" }, { { 3, 0 }, "" }, { { 1, 2 }, "" } }));
+  EXPECT_EQ(calls.size(), 1u + 4u + 2u); // the whole, the four pairs, 3-0-1 and 1-2-4
+  // Up to three at a time: 3-0-1, then 2-4.
+  calls.clear();
+  auto upToThree = [&](const std::vector<std::size_t>& lines) {
+    calls.push_back(lines);
+    return lines.size() > 3 ? std::string("round the bone") : std::string();
+  };
+  EXPECT_EQ(runsOf(lkapp::joinChain({ 3, 0, 1, 2, 4 }, all, upToThree)),
+    (Runs{ { { 3, 0, 1, 2, 4 }, "round the bone" }, { { 3, 0, 1 }, "" }, { { 2, 4 }, "" } }));
   // A line without a guide splits the chain; a run of one is no part.
   calls.clear();
   EXPECT_EQ(runsOf(lkapp::joinChain({ 0, 1, 2, 3, 4 }, [](std::size_t l) { return l != 2; }, joins)),
@@ -269,4 +277,23 @@ TEST(GuidePairs, TwoGuidesThatOverlapAreMeasuredAlongTheBone)
   // Nothing to measure.
   EXPECT_EQ(lkapp::guidesOverlap(a, nullptr), 0.0);
   EXPECT_EQ(lkapp::guidesOverlap(vtkSmartPointer<vtkPolyData>::New(), b), 0.0);
+}
+
+TEST(GuidePairs, TheBarFiltersGuideNumbersAreSaidAsTheLinesTheyAreOn)
+{
+  auto number = [](std::size_t line) { return std::to_string(line + 1); };
+  const std::vector<std::size_t> lines{ 3, 0, 2 }; // strokes 4, 1 and 3, in that order
+  EXPECT_EQ(lkapp::guidesByLine("Cannot join the guides: guide 1's contact still faces 19.6 degrees back", lines,
+              "stroke", number),
+    "Cannot join the guides: guide of stroke 4's contact still faces 19.6 degrees back");
+  EXPECT_EQ(lkapp::guidesByLine("guides 1 and 3 lie on one side of guide 2's slot", lines, "line", number),
+    "guides of lines 4 and 3 lie on one side of guide of line 1's slot");
+  EXPECT_EQ(lkapp::guidesByLine("guides 2 and 3: their slots are 0 mm apart (they reach 8 and 8 mm)", lines, "stroke",
+              number),
+    "guides of strokes 1 and 3: their slots are 0 mm apart (they reach 8 and 8 mm)");
+  // Nothing to name, or a number it has no line for.
+  EXPECT_EQ(lkapp::guidesByLine("a bar joins two guides, and port 1 has 1", lines, "stroke", number),
+    "a bar joins two guides, and port 1 has 1");
+  EXPECT_EQ(lkapp::guidesByLine("guide 7 has no GuideApproach", lines, "stroke", number),
+    "guide of stroke ? has no GuideApproach");
 }

@@ -15,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <regex>
 #include <tuple>
 
 namespace lkapp
@@ -169,9 +170,17 @@ std::vector<JoinedRun> joinChain(const std::vector<std::size_t>& chain,
       {
         const std::string whole = part == run ? why : join(part);
         runs.push_back({ part, whole });
-        if (!whole.empty())
-          for (std::size_t k = 0; k + 1 < part.size(); k += 2)
-            runs.push_back({ { part[k], part[k + 1] }, std::string() });
+        // Whole it cannot be (no one direction puts it all on): runs from
+        // its start, each as long as can be joined.
+        for (std::size_t first = 0; !whole.empty() && first + 1 < part.size();)
+        {
+          std::size_t last = first + 1; // two neighbours join
+          while (last + 1 < part.size() &&
+            join(std::vector<std::size_t>(part.begin() + first, part.begin() + last + 2)).empty())
+            ++last;
+          runs.push_back({ std::vector<std::size_t>(part.begin() + first, part.begin() + last + 1), std::string() });
+          first = last + 1;
+        }
       }
     };
     for (std::size_t k = 0; k + 1 < run.size(); ++k)
@@ -264,6 +273,32 @@ std::string barsText(vtkLKGuideBarFilter* bar)
   std::snprintf(text, sizeof text, "%s of %.1f mm, %s mm long and %s%.1f mm clear of the bone between them",
     bars == 1 ? "a bar" : (std::to_string(bars) + " bars").c_str(), bar->GetBarDiameter(), lengths.c_str(),
     bars == 1 ? "" : "at least ", bar->GetBarGap());
+  return text;
+}
+
+std::string guidesByLine(const std::string& error, const std::vector<std::size_t>& lines, const std::string& numberWord,
+  const std::function<std::string(std::size_t)>& number)
+{
+  static const std::regex guides("\\bguide(s?) ([0-9]+)( and ([0-9]+))?");
+  auto line = [&](const std::string& k) {
+    const std::size_t at = static_cast<std::size_t>(std::stoul(k));
+    return at >= 1 && at <= lines.size() ? number(lines[at - 1]) : "?";
+  };
+  std::string text;
+  auto from = error.cbegin();
+  for (std::sregex_iterator it(error.begin(), error.end(), guides), end; it != end; ++it)
+  {
+    const std::smatch& m = *it;
+    text.append(from, m[0].first);
+    if (m[1].length() > 0 && m[4].matched)
+      text += "guides of " + numberWord + "s " + line(m[2].str()) + " and " + line(m[4].str());
+    else if (m[1].length() == 0)
+      text += "guide of " + numberWord + " " + line(m[2].str()) + m[3].str();
+    else
+      text += m[0].str();
+    from = m[0].second;
+  }
+  text.append(from, error.cend());
   return text;
 }
 

@@ -58,8 +58,9 @@ struct JoinedRun
 /// cannot be (two guides too far apart, facing apart): those two are a
 /// failed run with its reason, and the runs either side are joined on their
 /// own. Should a run whose every two neighbours can be joined still fail
-/// whole (a union CGAL cannot make), it is given with its reason and its
-/// lines are joined in pairs. The runs are in the chain's order.
+/// whole (no one direction puts all its guides on the bone), it is given
+/// with its reason, and then split into runs from its start, each as long
+/// as can be joined. The runs are in the chain's order.
 std::vector<JoinedRun> joinChain(const std::vector<std::size_t>& chain,
   const std::function<bool(std::size_t)>& usable,
   const std::function<std::string(const std::vector<std::size_t>&)>& join);
@@ -94,6 +95,13 @@ double guidesOverlap(vtkPolyData* a, vtkPolyData* b);
 /// 1.8 mm clear of the bone between them", or for more "2 bars of 4.0 mm, 22
 /// and 30 mm long and at least 1.8 mm clear of the bone between them".
 std::string barsText(vtkLKGuideBarFilter* bar);
+
+/// vtkLKGuideBarFilter's `error` with its guides, numbered by their place
+/// among its inputs ("guide 2", "guides 1 and 3"), named by the lines they
+/// are on: "guide of stroke 4", "guides of strokes 4 and 3", for the
+/// guides of `lines` in that order.
+std::string guidesByLine(const std::string& error, const std::vector<std::size_t>& lines, const std::string& numberWord,
+  const std::function<std::string(std::size_t)>& number);
 
 /// "1, 3 and 2": the lines of `chain` by `number`, in its order.
 std::string chainNumbers(const std::vector<std::size_t>& chain, const std::function<std::string(std::size_t)>& number,

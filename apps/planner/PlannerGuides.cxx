@@ -192,6 +192,7 @@ void Planner::updateJoinedGuides()
   // Each chain joined, or as much of it as can be (lkapp::joinChain), each
   // part made anew only when one of its guides was.
   std::vector<JoinedGuide> tried; // this update's parts, made or not: the next one's to keep
+  auto strokeOf = [&](std::size_t g) { return std::to_string(guides[g].stroke + 1); };
   auto join = [&](const std::vector<std::size_t>& members) {
     JoinedGuide j;
     j.members = members;
@@ -218,10 +219,9 @@ void Planner::updateJoinedGuides()
         j.error = "no bar was made";
     }
     tried.push_back(j);
-    return j.surface ? std::string() : j.error;
+    return j.surface ? std::string() : lkapp::guidesByLine(j.error, members, "stroke", strokeOf);
   };
   std::vector<JoinedGuide> made;
-  auto strokeOf = [&](std::size_t g) { return std::to_string(guides[g].stroke + 1); };
   for (const auto& chain : chains)
   {
     for (std::size_t i : chain)
@@ -233,7 +233,7 @@ void Planner::updateJoinedGuides()
       if (!run.error.empty())
       {
         addLine(message, "the cutting guides of strokes " + lkapp::chainNumbers(run.lines, strokeOf) +
-            " are not joined: " + run.error);
+            (run.lines.size() > 2 ? " are not joined in one part: " : " are not joined: ") + run.error);
         continue;
       }
       const auto part = std::find_if(
@@ -292,11 +292,18 @@ std::string Planner::guidesText() const
   {
     if (!j.surface)
       continue; // its message says why
-    char line[600];
+    // One part, put on along one direction (each guide's contact faces it).
+    const double* approach = j.filter->GetApproachUsed();
+    const std::array<double, 3> along = lkapp::guideDirection(approach);
+    const std::string side = lkapp::coordinateSpace(bone) == "LPS"
+      ? std::string("from ") + lkapp::directionWord({ approach[0], approach[1], approach[2] }) + " "
+      : std::string();
+    char line[700];
     std::snprintf(line, sizeof line,
-      "resection guide: the cutting guides of strokes %s joined by %s; %.0f mm^3 in one part (%s.stl)\n",
-      joinedStrokes(j).c_str(), lkapp::barsText(j.filter).c_str(), j.filter->GetVolume(),
-      joinedGuideFileStem(j).c_str());
+      "resection guide: the cutting guides of strokes %s joined by %s; put on %s(along (%.3f, %.3f, %.3f), its "
+      "steepest contact %.1f degrees short of square to that); %.0f mm^3 in one part (%s.stl)\n",
+      joinedStrokes(j).c_str(), lkapp::barsText(j.filter).c_str(), side.c_str(), along[0], along[1], along[2],
+      j.filter->GetInsertionMargin(), j.filter->GetVolume(), joinedGuideFileStem(j).c_str());
     text += line;
   }
   return text;

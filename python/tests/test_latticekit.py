@@ -968,6 +968,10 @@ class PipelineTest(unittest.TestCase):
         self.assertAlmostEqual(three.GetBarLength(), sum(lengths), places=9)
         self.assertEqual(three.GetOutput().GetFieldData().GetArray("GuideBarGap").GetNumberOfTuples(), 2)
         self.assertGreater(three.GetVolume(), bar.GetVolume())
+        # Put on from the front (-y in LPS), every contact facing that way.
+        self.assertLess(three.GetApproachUsed()[1], -0.9)
+        self.assertGreater(three.GetInsertionMargin(), 0.0)
+        self.assertLess(three.GetInsertionMargin(), 45.0)
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
