@@ -254,12 +254,9 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
         return false;
       for (std::size_t g : run.lines)
         guides[g].joinedStem = stem;
-      const std::array<double, 3> along = lkapp::guideDirection(bar->GetApproachUsed());
-      std::snprintf(line, sizeof line,
-        "%-16s joined by %s; put on along (%.3f, %.3f, %.3f), its steepest contact %.1f degrees short of square to "
-        "that; %.0f mm^3 in one part: %s.stl, .vtp\n",
-        label.c_str(), lkapp::barsText(bar).c_str(), along[0], along[1], along[2], bar->GetInsertionMargin(),
-        bar->GetVolume(), stem.c_str());
+      std::snprintf(line, sizeof line, "%-16s joined by %s; put on %s; %.0f mm^3 in one part: %s.stl, .vtp\n",
+        label.c_str(), lkapp::barsText(bar).c_str(), lkapp::insertionText(bar).c_str(), bar->GetVolume(),
+        stem.c_str());
       joinedReport += line;
     }
   }

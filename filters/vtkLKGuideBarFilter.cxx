@@ -83,6 +83,11 @@ bool readField(vtkPolyData* guide, const char* name, double* values, int compone
   return true;
 }
 
+/// The most a joined part's contact may face back from the one direction it
+/// goes on along (degrees), and the most of the contact's area that may.
+constexpr double MaximumUndercutAngle = 10.0;
+constexpr double MaximumUndercutShare = 0.05;
+
 /// The direction a part with these contacts is best put on along (its
 /// motion toward the bone): the unit d that makes the least n . d over every
 /// contact face's outward normal n the largest, searched over the half
@@ -192,6 +197,7 @@ int vtkLKGuideBarFilter::RequestData(
   this->BarGaps.clear();
   this->ApproachUsed[0] = this->ApproachUsed[1] = this->ApproachUsed[2] = 0.0;
   this->InsertionMargin = 0.0;
+  this->UndercutArea = 0.0;
 
   struct Range
   {
@@ -353,6 +359,7 @@ int vtkLKGuideBarFilter::RequestData(
   // clearance) must face it, as the contact of one guide faces its own
   // approach. Guides far round the bone (a ramus on each side) have none.
   std::vector<std::vector<Vec>> contactNormals(n);
+  std::vector<std::vector<double>> contactAreas(n);
   Vec start{ 0.0, 0.0, 0.0 };
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -374,24 +381,40 @@ int vtkLKGuideBarFilter::RequestData(
         g->GetPoint(ids->GetId(k), corner[k].data());
         onBone = onBone && pointOnBone[ids->GetId(k)];
       }
-      if (!onBone || vtkTriangle::TriangleArea(corner[0].data(), corner[1].data(), corner[2].data()) < 1e-3)
+      const double area = vtkTriangle::TriangleArea(corner[0].data(), corner[1].data(), corner[2].data());
+      if (!onBone || area < 1e-3)
         continue;
       Vec normal;
       vtkTriangle::ComputeNormal(corner[0].data(), corner[1].data(), corner[2].data(), normal.data());
       contactNormals[i].push_back(normal);
+      contactAreas[i].push_back(area);
     }
   }
   if (!(vtkMath::Normalize(start.data()) > 1e-6))
     start = { -guide[0].approach[0], -guide[0].approach[1], -guide[0].approach[2] };
   const Insertion insertion = commonInsertion(contactNormals, start);
-  if (!(insertion.worst > 0.0))
+  // A little undercut (faces a few degrees past square to it, a sliver of
+  // the contact: a label map's steps) is what printing's tolerance and the
+  // periosteum take up; more is a part that cannot go on.
+  double contactArea = 0.0, undercutArea = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t f = 0; f < contactNormals[i].size(); ++f)
+    {
+      contactArea += contactAreas[i][f];
+      if (dot(contactNormals[i][f], insertion.motion) < 0.0)
+        undercutArea += contactAreas[i][f];
+    }
+  const double back =
+    vtkMath::DegreesFromRadians(std::acos(std::clamp(insertion.worst, -1.0, 1.0))) - 90.0; // < 0: none
+  if (!(back <= MaximumUndercutAngle && undercutArea <= MaximumUndercutShare * contactArea))
   {
-    char back[40];
-    std::snprintf(back, sizeof back, "%.1f",
-      vtkMath::DegreesFromRadians(std::acos(std::clamp(insertion.worst, -1.0, 1.0))) - 90.0);
+    char text[200];
+    std::snprintf(text, sizeof text, "%.1f degrees back from it, over %.1f mm^2 of the guides' %.0f mm^2", back,
+      undercutArea, contactArea);
     vtkErrorMacro("Cannot join the guides: no one direction puts them all on the bone at once: along the best, "
-      << "guide " << insertion.guide + 1 << "'s contact still faces " << back
-      << " degrees back from it (the part would reach round the bone; join fewer guides).");
+      << "guide " << insertion.guide + 1 << "'s contact still faces " << text << " (more than "
+      << MaximumUndercutAngle << " degrees or " << 100.0 * MaximumUndercutShare
+      << " % of the contact: the part would reach round the bone; join fewer guides).");
     return 0;
   }
   this->UpdateProgress(0.05);
@@ -636,7 +659,8 @@ int vtkLKGuideBarFilter::RequestData(
   this->BarLengths = barLengths;
   for (int k = 0; k < 3; ++k)
     this->ApproachUsed[k] = -insertion.motion[k];
-  this->InsertionMargin = 90.0 - vtkMath::DegreesFromRadians(std::acos(std::clamp(insertion.worst, -1.0, 1.0)));
+  this->InsertionMargin = -back;
+  this->UndercutArea = undercutArea;
   this->BarGaps = barGaps;
   this->BarLength = std::accumulate(barLengths.begin(), barLengths.end(), 0.0);
   this->BarDiameter = 2.0 * radius;
@@ -655,6 +679,7 @@ int vtkLKGuideBarFilter::RequestData(
   lkvtk::addFieldValue(fd, "GuideBarDiameter", this->BarDiameter);
   lkvtk::addFieldValues(fd, "GuideApproach", this->ApproachUsed, 3);
   lkvtk::addFieldValue(fd, "GuideInsertionMargin", this->InsertionMargin);
+  lkvtk::addFieldValue(fd, "GuideUndercutArea", this->UndercutArea);
   lkvtk::addFieldValue(fd, "GuideVolume", this->Volume);
   this->UpdateProgress(1.0);
   return 1;
@@ -684,4 +709,5 @@ void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ApproachUsed: " << this->ApproachUsed[0] << " " << this->ApproachUsed[1] << " "
      << this->ApproachUsed[2] << "\n";
   os << indent << "InsertionMargin: " << this->InsertionMargin << "\n";
+  os << indent << "UndercutArea: " << this->UndercutArea << "\n";
 }

@@ -37,8 +37,11 @@
  *   guides' contacts (their faces on the bone) must all face it, as each
  *   guide's contact faces its own approach. The direction that leaves the
  *   steepest contact face the most room (searched over the half sphere
- *   round the guides' mean approach) is the part's approach; guides with
- *   none (far round the bone: a ramus guide on each side) are refused.
+ *   round the guides' mean approach) is the part's approach. Along it a
+ *   few contact faces may still face back a little (a label map's steps):
+ *   up to 10 degrees, over up to 5 % of the contact's area, is an undercut
+ *   that printing's tolerance and the periosteum take up, and is reported;
+ *   more (far round the bone: a ramus guide on each side) is refused.
  * - The bar is a tube round that line (vtkTubeFilter, capped), and the two
  *   guides and the bar are joined into one closed surface (CGAL's
  *   corefinement, lk::solidUnion): one part, facing outward, its volume
@@ -54,7 +57,8 @@
  * too near each other for the bar to rise that far, mm), GuideBarDiameter
  * (mm), GuideVolume (mm^3), GuideApproach (the part's, unit, away from the
  * bone), GuideInsertionMargin (degrees: how far short of square to it the
- * steepest contact face stays), and the bone's SPACE tag. The same values are
+ * steepest contact face stays; negative, past it), GuideUndercutArea (mm^2
+ * of contact facing back from it), and the bone's SPACE tag. The same values are
  * kept in the filter after an update.
  *
  * Errors (a VTK error and an empty output): fewer than two guides, or a
@@ -66,7 +70,8 @@
  * reaches and the bar's diameter: it would cross a slot); a guide whose
  * neighbours before and after it lie on one side of its slot (guides not in
  * their order along the bone: a bar would pass over a guide); guides no one
- * direction puts on the bone at once (their contacts face too far apart);
+ * direction puts on the bone at once (their contacts face too far apart:
+ * more undercut than above);
  * no room for
  * a bar beside a screw hole; no bone under a guide's edge (another bone); a
  * bar that cannot clear the bone, or that would bend tighter than its
@@ -123,11 +128,14 @@ public:
   ///@{
   /// After an update (zeros before, or after an error): the direction the
   /// part is put on from (unit, away from the bone, as each guide's
-  /// GuideApproach), and how far short of square to it (degrees) the
-  /// steepest face of the guides' contacts stays: the room the part has to
-  /// go on along it without reaching under the bone.
+  /// GuideApproach); how far short of square to it (degrees) the steepest
+  /// face of the guides' contacts stays (the room the part has to go on
+  /// along it; negative: that face reaches under the bone, by 10 degrees at
+  /// most); and the contact's area (mm^2) that faces back from it, an
+  /// undercut (5 % of the contact at most) that may need trimming.
   vtkGetVector3Macro(ApproachUsed, double);
   vtkGetMacro(InsertionMargin, double);
+  vtkGetMacro(UndercutArea, double);
   ///@}
 
   ///@{
@@ -154,6 +162,7 @@ protected:
   double Volume = 0.0;
   double ApproachUsed[3] = { 0.0, 0.0, 0.0 };
   double InsertionMargin = 0.0;
+  double UndercutArea = 0.0;
   std::vector<double> BarLengths;
   std::vector<double> BarGaps;
 

@@ -585,7 +585,7 @@ std::array<double, 3> guideDirection(const double approach[3])
 
 bool isGuideFileName(const std::string& name)
 {
-  static const std::regex guide("guide_(stroke[0-9]+|strokes[0-9]+-[0-9]+)[.](stl|vtp)");
+  static const std::regex guide("guide_(stroke[0-9]+|strokes[0-9]+(-[0-9]+)+)[.](stl|vtp)");
   return std::regex_match(name, guide);
 }
 

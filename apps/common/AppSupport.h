@@ -133,8 +133,9 @@ bool isLatticeFileName(const std::string& name);
 /// rounding's dust (below 5e-4) made 0, so that a report gives no "-0.000".
 std::array<double, 3> guideDirection(const double approach[3]);
 /// Whether a file's name (no folder) is one the planner's export writes for
-/// a cutting guide: "guide_stroke", digits, ".stl" or ".vtp"; or for two joined:
-/// "guide_strokes", digits, "-", digits, ".stl" or ".vtp".
+/// a cutting guide: "guide_stroke", digits, ".stl" or ".vtp"; or for two or
+/// more joined: "guide_strokes", digits, then "-" and digits once or more,
+/// ".stl" or ".vtp".
 bool isGuideFileName(const std::string& name);
 /// Whether `path` names a file directly in `folder` (both taken as full
 /// paths, so "./a/b.vtp" is in "a").

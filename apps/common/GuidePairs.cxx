@@ -1,4 +1,5 @@
 #include "common/GuidePairs.h"
+#include "common/AppSupport.h"
 
 #include "vtkLKGuideBarFilter.h"
 
@@ -299,6 +300,21 @@ std::string guidesByLine(const std::string& error, const std::vector<std::size_t
     from = m[0].second;
   }
   text.append(from, error.cend());
+  return text;
+}
+
+std::string insertionText(vtkLKGuideBarFilter* bar)
+{
+  const std::array<double, 3> toward = guideDirection(bar->GetApproachUsed()); // as the guides' "along"
+  char text[300];
+  if (bar->GetInsertionMargin() >= 0.0)
+    std::snprintf(text, sizeof text, "along (%.3f, %.3f, %.3f), its steepest contact %.1f degrees short of square to that",
+      toward[0], toward[1], toward[2], bar->GetInsertionMargin());
+  else
+    std::snprintf(text, sizeof text,
+      "along (%.3f, %.3f, %.3f), its contact up to %.1f degrees past square to that over %.1f mm^2 (an undercut: "
+      "trim there if it binds)",
+      toward[0], toward[1], toward[2], -bar->GetInsertionMargin(), bar->GetUndercutArea());
   return text;
 }
 

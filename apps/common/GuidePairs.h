@@ -103,6 +103,12 @@ std::string barsText(vtkLKGuideBarFilter* bar);
 std::string guidesByLine(const std::string& error, const std::vector<std::size_t>& lines, const std::string& numberWord,
   const std::function<std::string(std::size_t)>& number);
 
+/// How a resection guide goes on, in words: "along (0.092, 0.983, -0.157),
+/// its steepest contact 4.6 degrees short of square to that", or, with an
+/// undercut, "..., its contact up to 8.3 degrees past square to that over
+/// 6.4 mm^2 (an undercut: trim there if it binds)".
+std::string insertionText(vtkLKGuideBarFilter* bar);
+
 /// "1, 3 and 2": the lines of `chain` by `number`, in its order.
 std::string chainNumbers(const std::vector<std::size_t>& chain, const std::function<std::string(std::size_t)>& number,
   const std::string& separator = ", ", const std::string& last = " and ");

@@ -294,16 +294,14 @@ std::string Planner::guidesText() const
       continue; // its message says why
     // One part, put on along one direction (each guide's contact faces it).
     const double* approach = j.filter->GetApproachUsed();
-    const std::array<double, 3> along = lkapp::guideDirection(approach);
     const std::string side = lkapp::coordinateSpace(bone) == "LPS"
       ? std::string("from ") + lkapp::directionWord({ approach[0], approach[1], approach[2] }) + " "
       : std::string();
-    char line[700];
+    char line[800];
     std::snprintf(line, sizeof line,
-      "resection guide: the cutting guides of strokes %s joined by %s; put on %s(along (%.3f, %.3f, %.3f), its "
-      "steepest contact %.1f degrees short of square to that); %.0f mm^3 in one part (%s.stl)\n",
-      joinedStrokes(j).c_str(), lkapp::barsText(j.filter).c_str(), side.c_str(), along[0], along[1], along[2],
-      j.filter->GetInsertionMargin(), j.filter->GetVolume(), joinedGuideFileStem(j).c_str());
+      "resection guide: the cutting guides of strokes %s joined by %s; put on %s(%s); %.0f mm^3 in one part (%s.stl)\n",
+      joinedStrokes(j).c_str(), lkapp::barsText(j.filter).c_str(), side.c_str(), lkapp::insertionText(j.filter).c_str(),
+      j.filter->GetVolume(), joinedGuideFileStem(j).c_str());
     text += line;
   }
   return text;
