@@ -285,9 +285,12 @@ std::string guidesByLine(const std::string& error, const std::vector<std::size_t
     const std::size_t at = static_cast<std::size_t>(std::stoul(k));
     return at >= 1 && at <= lines.size() ? number(lines[at - 1]) : "?";
   };
+  // The filter's opening words: the apps say "... are not joined: " first.
+  static const std::string opening = "Cannot join the guides: ";
+  const std::string said = error.rfind(opening, 0) == 0 ? error.substr(opening.size()) : error;
   std::string text;
-  auto from = error.cbegin();
-  for (std::sregex_iterator it(error.begin(), error.end(), guides), end; it != end; ++it)
+  auto from = said.cbegin();
+  for (std::sregex_iterator it(said.begin(), said.end(), guides), end; it != end; ++it)
   {
     const std::smatch& m = *it;
     text.append(from, m[0].first);
@@ -299,7 +302,7 @@ std::string guidesByLine(const std::string& error, const std::vector<std::size_t
       text += m[0].str();
     from = m[0].second;
   }
-  text.append(from, error.cend());
+  text.append(from, said.cend());
   return text;
 }
 

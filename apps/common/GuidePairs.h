@@ -96,10 +96,11 @@ double guidesOverlap(vtkPolyData* a, vtkPolyData* b);
 /// and 30 mm long and at least 1.8 mm clear of the bone between them".
 std::string barsText(vtkLKGuideBarFilter* bar);
 
-/// vtkLKGuideBarFilter's `error` with its guides, numbered by their place
-/// among its inputs ("guide 2", "guides 1 and 3"), named by the lines they
-/// are on: "guide of stroke 4", "guides of strokes 4 and 3", for the
-/// guides of `lines` in that order.
+/// vtkLKGuideBarFilter's `error` as the apps say it, after "... are not
+/// joined: ": without its opening "Cannot join the guides: ", and with its
+/// guides, numbered by their place among its inputs ("guide 2", "guides 1
+/// and 3"), named by the lines they are on: "guide of stroke 4", "guides of
+/// strokes 4 and 3", for the guides of `lines` in that order.
 std::string guidesByLine(const std::string& error, const std::vector<std::size_t>& lines, const std::string& numberWord,
   const std::function<std::string(std::size_t)>& number);
 
