@@ -1,18 +1,20 @@
 #!/usr/bin/python3
-"""CT (or label map) -> bone surface -> a resection guide for two plane cuts, from Python.
+"""CT (or label map) -> bone surface -> a resection guide for two or more plane cuts, from Python.
 
 usage: PYTHONPATH=build/python xvfb-run -a /usr/bin/python3 python/examples/resection_guide.py \\
-           INPUT OX OY OZ NX NY NZ OX OY OZ NX NY NZ OUT_FOLDER
+           INPUT OX OY OZ NX NY NZ OX OY OZ NX NY NZ [OX OY OZ NX NY NZ ...] OUT_FOLDER
 
-Two cuts' planes, each through (OX, OY, OZ) with normal (NX, NY, NZ), patient
-mm as the surface is (a segment of bone taken out between them). Each gets a
-cutting guide with a slot for the saw blade and its number, 1 or 2, raised on
-it (vtkLKCuttingGuideFilter), and
-vtkLKGuideBarFilter joins the two by a bar in front of the bone into one
-part, so the two slots keep the distance and angle of the plan. OUT_FOLDER
-gets resection_guide.stl (to print), resection_guide.vtp (the bar's facts in
-its field data) and resection_guide.png (the part on the bone, from the
-front of the bar).
+The cuts' planes, each through (OX, OY, OZ) with normal (NX, NY, NZ), patient
+mm as the surface is, in their order along the bone (a segment of bone taken
+out between two of them; a chin cut between two body cuts). Each gets a
+cutting guide with a slot for the saw blade and its number raised on it
+(vtkLKCuttingGuideFilter), and vtkLKGuideBarFilter joins them, each to the
+next, by bars in front of the bone into one part, so the slots keep the
+distances and angles of the plan. The part is rigid: it goes on along one
+direction, which the filter finds and this prints. OUT_FOLDER gets
+resection_guide.stl (to print), resection_guide.vtp (the bars' facts in its
+field data) and resection_guide.png (the part on the bone, seen from the
+direction it goes on along).
 """
 import os
 import sys
@@ -24,15 +26,16 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 
 def main(argv):
-    if len(argv) < 15:
+    if len(argv) < 15 or (len(argv) - 3) % 6 != 0:
         print(__doc__)
         return 2
     try:
-        numbers = [float(v) for v in argv[2:14]]
+        numbers = [float(v) for v in argv[2:-1]]
     except ValueError:
         print("error: each plane needs six numbers: OX OY OZ NX NY NZ", file=sys.stderr)
         return 2
-    folder = argv[14]
+    folder = argv[-1]
+    planes = len(numbers) // 6
     reader = latticekit.vtkLKMedicalImageReader()
     reader.SetFileName(argv[1])
     bone = latticekit.vtkLKBoneSurfaceFilter()
@@ -42,7 +45,7 @@ def main(argv):
     bar = latticekit.vtkLKGuideBarFilter()
     bar.SetInputConnection(0, bone.GetOutputPort())
     guides = []  # kept alive: a connection does not hold its producer
-    for k in range(2):
+    for k in range(planes):
         guide = latticekit.vtkLKCuttingGuideFilter()
         guide.SetInputConnection(bone.GetOutputPort())
         guide.SetPlaneOrigin(numbers[6 * k:6 * k + 3])
@@ -56,8 +59,17 @@ def main(argv):
         return 1
     for k, guide in enumerate(guides):
         print("cutting guide %d: slot %.1f mm long, %.0f mm^3" % (k + 1, guide.GetSlotLength(), guide.GetVolume()))
-    print("resection guide: a bar of %.1f mm, %.0f mm long and %.1f mm clear of the bone between the guides; "
-          "%.0f mm^3 in one part" % (bar.GetBarDiameter(), bar.GetBarLength(), bar.GetBarGap(), bar.GetVolume()))
+    lengths = " and ".join("%.0f" % bar.GetBarLength(b) for b in range(bar.GetNumberOfBars()))
+    one = bar.GetNumberOfBars() == 1
+    print("resection guide: %s of %.1f mm, %s mm long and %s%.1f mm clear of the bone between the guides; "
+          "%.0f mm^3 in one part" % ("a bar" if one else "%d bars" % bar.GetNumberOfBars(), bar.GetBarDiameter(),
+                                     lengths, "" if one else "at least ", bar.GetBarGap(), bar.GetVolume()))
+    approach = bar.GetApproachUsed()  # away from the bone: the part goes on the other way
+    print("put on along (%.3f, %.3f, %.3f): its contact %.1f degrees %s square to that%s" % (
+        -approach[0], -approach[1], -approach[2], abs(bar.GetInsertionMargin()),
+        "short of" if bar.GetInsertionMargin() >= 0 else "past",
+        "" if bar.GetUndercutArea() == 0 else " over %.1f mm^2 (an undercut: trim there if it binds)"
+        % bar.GetUndercutArea()))
 
     os.makedirs(folder, exist_ok=True)
     stl = vtkSTLWriter()
@@ -71,8 +83,7 @@ def main(argv):
         print("error: cannot write the guide's files in %r" % folder, file=sys.stderr)
         return 1
 
-    # From the guides' mean approach (the front of the bar).
-    approach = [sum(g.GetApproachUsed()[k] for g in guides) for k in range(3)]
+    # From the direction the part goes on along (the front of the bars).
     save_part_on_bone(bone, bar, approach, os.path.join(folder, "resection_guide.png"), zoom=0.8)
     return 0
 
