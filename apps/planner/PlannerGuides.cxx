@@ -81,9 +81,12 @@ void Planner::updateGuides()
     // The plane through a point of the section the saw line cut along: the
     // guide goes on that part of the bone.
     const std::array<double, 3> origin = st.points.empty() ? st.sawOrigin : st.points.front();
+    // The side: the filter's, the other with K (all guides), and each
+    // guide's own turn (K on it) on top.
+    const bool otherSide = session.guidesOtherSide != st.guideOtherSide;
     bool kept = false;
     for (const CuttingGuide& g : guides)
-      if (g.stroke == i && g.origin == origin && g.normal == st.sawNormal && g.otherSide == session.guidesOtherSide)
+      if (g.stroke == i && g.origin == origin && g.normal == st.sawNormal && g.otherSide == otherSide)
       {
         made.push_back(g);
         kept = true;
@@ -95,12 +98,12 @@ void Planner::updateGuides()
     g.stroke = i;
     g.origin = origin;
     g.normal = st.sawNormal;
-    g.otherSide = session.guidesOtherSide;
+    g.otherSide = otherSide;
     g.filter = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
     g.filter->SetInputData(facesOnly(bone));
     g.filter->SetPlaneOrigin(origin.data());
     g.filter->SetPlaneNormal(st.sawNormal.data());
-    g.filter->SetOtherSide(session.guidesOtherSide);
+    g.filter->SetOtherSide(otherSide);
     g.filter->SetLabel(std::to_string(i + 1).c_str()); // the stroke's number, as the plan and the file name give it
     const int warningsBefore = lkapp::warningCount();
     g.error = lkapp::updateKeepingErrors(g.filter); // the plan goes on without it; its message says why

@@ -91,6 +91,8 @@ std::string sessionText(const Session& s)
     {
       js["saw"]["origin"] = triple(st.sawOrigin);
       js["saw"]["normal"] = triple(st.sawNormal);
+      if (st.guideOtherSide)
+        js["guideOtherSide"] = true;
     }
     root["strokes"].append(js);
   }
@@ -351,7 +353,7 @@ bool readSession(
       error = where + " is not an object ({\"mode\": ..., \"points\": [...]})";
       return false;
     }
-    noteUnknownMembers(js, { "mode", "points", "saw" }, where, notes);
+    noteUnknownMembers(js, { "mode", "points", "saw", "guideOtherSide" }, where, notes);
     noteUnknownMembers(js["saw"], { "origin", "normal" }, "the saw line of " + where, notes);
     if (!jsonMember(js, "mode", mode, jsonString, where, "a string", error))
       return false;
@@ -393,6 +395,13 @@ bool readSession(
         return false;
       }
       st.saw = true;
+    }
+    if (!jsonMember(js, "guideOtherSide", st.guideOtherSide, jsonBool, where, "true or false", error))
+      return false;
+    if (st.guideOtherSide && !st.saw)
+    {
+      error = where + " has \"guideOtherSide\", but only a saw line has a cutting guide";
+      return false;
     }
     s.strokes.push_back(st);
   }

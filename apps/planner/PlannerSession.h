@@ -8,8 +8,10 @@
 //   "strokes":  [{"mode": "paint" | "nearest" | "snap" | "split",
 //                 "points": [[x, y, z], ...],         patient mm, on the surface
 //                 "saw": {"origin": [x, y, z],        a saw line (split mode): its
-//                         "normal": [x, y, z]}}, ...] plane; the points are the
+//                         "normal": [x, y, z]},       plane; the points are the
 //                                                     bone's section there
+//                 "guideOtherSide": bool}, ...]       a saw line's guide on the
+//                                                     side other than the rest's
 //   "cut": bool, "capping": bool (default true)       the closed lines cut, capped
 //   "lattice": bool, "latticeVertices": 4 to 1e8      a lattice per piece (600)
 //   "metro": bool                                     Metro colours on the lattices
@@ -18,10 +20,10 @@
 //                                                     distance to it
 //   "guides": bool                                    a cutting guide for each saw line
 //   "guidesOtherSide": bool                           on the bone's other side (inner)
-//   "guidesJoined": bool                              the guides of the saw lines in
-//                                                     pairs (two lines either side of
-//                                                     one piece) joined by a bar:
-//                                                     resection guides
+//   "guidesJoined": bool                              the guides of the saw lines
+//                                                     joined along the bone (each to
+//                                                     the next across one piece) by
+//                                                     bars: resection guides
 //   "mirrorPlane": [[x, y, z], [x, y, z], [x, y, z]]  the plane to mirror across, set by
 //                                                     three points (midline landmarks;
 //                                                     none: the fitted plane)
@@ -98,6 +100,10 @@ struct Stroke
   /// again with other settings. The points are the section when it was drawn.
   bool saw = false;
   std::array<double, 3> sawOrigin{ 0, 0, 0 }, sawNormal{ 0, 0, 1 };
+  /// A saw line's cutting guide on the side other than the rest's (K with
+  /// the mouse on it): the side the filter chooses, or with
+  /// Session::guidesOtherSide its other side, reversed for this guide alone.
+  bool guideOtherSide = false;
 };
 
 /// One deformation of the adaptive micro planar patches (seed 002) on a

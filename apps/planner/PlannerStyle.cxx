@@ -8,6 +8,7 @@
 
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellPicker.h>
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
 #include <vtkInteractorStyleTrackballCamera.h>
@@ -17,6 +18,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <vtkStaticCellLocator.h>
 #include <vtkTransform.h>
 #include <vtkMatrix4x4.h>
 #include <vtksys/SystemTools.hxx>
@@ -31,6 +33,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -122,6 +125,51 @@ void PlannerStyle::pick()
     planner->showStroke();
     this->Interactor->Render();
   }
+}
+
+int PlannerStyle::guideAt(int x, int y)
+{
+  if (!planner->guideActor->GetVisibility())
+    return -1;
+  // The guides and the bone (a guide behind the bone is not under the
+  // mouse); the guides are not pickable otherwise (strokes are drawn through
+  // them onto the bone).
+  vtkNew<vtkCellPicker> picker;
+  picker->SetTolerance(0.0005);
+  picker->PickFromListOn();
+  picker->AddPickList(planner->guideActor);
+  for (auto& actors : planner->pieceActors)
+    for (auto& a : actors)
+      picker->AddPickList(a);
+  planner->guideActor->PickableOn();
+  const bool picked = picker->Pick(x, y, 0, planner->renderer) && picker->GetCellId() >= 0 &&
+    picker->GetProp3D() == planner->guideActor.GetPointer();
+  planner->guideActor->PickableOff();
+  if (!picked)
+    return -1;
+  double at[3];
+  picker->GetPickPosition(at);
+  int nearest = -1;
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < planner->guides.size(); ++i)
+  {
+    vtkPolyData* surface = planner->guides[i].surface;
+    if (!surface)
+      continue;
+    vtkNew<vtkStaticCellLocator> locator;
+    locator->SetDataSet(surface);
+    locator->BuildLocator();
+    double closest[3], d2 = 0.0;
+    vtkIdType cell = -1;
+    int subId = 0;
+    locator->FindClosestPoint(at, closest, cell, subId, d2);
+    if (cell >= 0 && d2 < least)
+    {
+      least = d2;
+      nearest = static_cast<int>(i);
+    }
+  }
+  return nearest;
 }
 
 int PlannerStyle::pickPiece(int x, int y, std::array<double, 3>& point, std::array<double, 3>& normal)
@@ -1034,13 +1082,27 @@ void PlannerStyle::OnChar()
   }
   else if (key == "K")
   {
-    // The guides to the bone's other side (and back); shown, if they were
-    // not.
+    // With the mouse on a guide, that guide alone to the bone's other side
+    // (and back); elsewhere all of them; shown, if they were not.
     planner->remember();
-    s.guidesOtherSide = !s.guidesOtherSide;
+    const int* pos = this->Interactor->GetEventPosition();
+    const int guide = s.guides ? guideAt(pos[0], pos[1]) : -1;
+    if (guide >= 0)
+    {
+      const std::size_t stroke = planner->guides[static_cast<std::size_t>(guide)].stroke;
+      Stroke& st = s.strokes[stroke];
+      st.guideOtherSide = !st.guideOtherSide;
+      planner->notice = "the cutting guide of stroke " + std::to_string(stroke + 1) +
+        (st.guideOtherSide ? ": on the other side from the rest (K on it: back)"
+                           : ": on the same side as the rest (K on it: the other)");
+    }
+    else
+    {
+      s.guidesOtherSide = !s.guidesOtherSide;
+      planner->notice = s.guidesOtherSide ? "cutting guides: on the bone's other side (K: back; K on one: that one)"
+                                          : "cutting guides: on the side chosen for them (K: the other; K on one: that one)";
+    }
     s.guides = true;
-    planner->notice = s.guidesOtherSide ? "cutting guides: on the bone's other side (K: back)"
-                                        : "cutting guides: on the side chosen for them (K: the other)";
   }
   else if (key == "j")
   {

@@ -82,6 +82,11 @@ public:
   /// when no piece is there.
   int pickPiece(int x, int y, std::array<double, 3>& point, std::array<double, 3>& normal);
 
+  /// The cutting guide (an index into planner->guides) under display (x,
+  /// y): the one nearest the point picked on the guides shown, the bar of a
+  /// resection guide counting for its nearest guide; -1 when none is there.
+  int guideAt(int x, int y);
+
   /// Naming (t): a click picks the piece, then the keys type its name.
   void pickPieceToName();
   /// Measuring (u): a click's point on the bone, the first or the second of
