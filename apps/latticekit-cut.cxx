@@ -29,6 +29,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -69,6 +70,9 @@ void usage(std::ostream& os)
         "                     each such chain of lines (vtkLKGuideBarFilter), written as\n"
         "                     FOLDER/guide_linesN-M.stl and .vtp (N-M-K for three, in their\n"
         "                     order) in place of the guides' own files\n"
+        "  --guide-other-side N[,M...]\n"
+        "                     with --guides: those lines' guides on the bone's other side (the\n"
+        "                     inner, lingual one: the planner's K with the mouse on a guide)\n"
         "  -q, --quiet        no progress bar\n"
         "  -h, --help         this help\n";
 }
@@ -121,13 +125,15 @@ bool isGuideLineFileName(const std::string& name)
 
 /// A cutting guide for each line of `lines` (its line cells, in order,
 /// numbered from 1) that lies within 0.5 mm of its best-fitting plane, on
-/// `mesh`, written into `folder`; a line per guide on standard output. With
+/// `mesh`, written into `folder`, on the bone's other side for the lines
+/// numbered in `otherSide` (from 1); a line per guide on standard output. With
 /// `join`, those lines' guides joined along the bone, each line to the next
 /// across one of the cut's `pieces` (lkapp::chainLinesByPiece), by bars into
 /// one part for each chain (vtkLKGuideBarFilter), written in place of the
 /// guides' own files. False with `error` when a file cannot be written.
 bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folder, const std::string& space,
-  bool join, const std::vector<vtkPolyData*>& pieces, std::vector<std::string>& written, std::string& error)
+  bool join, const std::set<std::size_t>& otherSide, const std::vector<vtkPolyData*>& pieces,
+  std::vector<std::string>& written, std::string& error)
 {
   const std::vector<lkapp::LineFacts> facts = lkapp::lineFacts(lines);
   vtkNew<vtkPolyData> faces; // the bone, without its line cells
@@ -188,6 +194,7 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     g.filter->SetPlaneOrigin(origin);
     g.filter->SetPlaneNormal(f.normal[0], f.normal[1], f.normal[2]);
     g.filter->SetLabel(std::to_string(k + 1).c_str()); // the line's number, as its file name gives it
+    g.filter->SetOtherSide(otherSide.count(k + 1) > 0);
     // The cut stands without a guide: why one is not made is this line's
     // report, not an error of the run.
     g.why = lkapp::updateKeepingErrors(g.filter);
@@ -313,6 +320,8 @@ int main(int argc, char* argv[])
   lkapp::installCrashReport("latticekit-cut");
   std::string input, output, linesPath, piecesFolder, guidesFolder;
   bool quiet = false, capping = true, innerWalls = true, joinGuides = false;
+  std::set<std::size_t> otherSide; // lines (from 1) whose guides go on the bone's other side
+  std::string otherSideText;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -331,6 +340,8 @@ int main(int argc, char* argv[])
       guidesFolder = args.value(a);
     else if (a == "--join-guides")
       joinGuides = true;
+    else if (a == "--guide-other-side")
+      otherSideText = args.value(a);
     else if (a == "-q" || a == "--quiet")
       quiet = true;
     else if (lkapp::Arguments::isOption(a))
@@ -348,6 +359,24 @@ int main(int argc, char* argv[])
   {
     std::cerr << "error: --join-guides joins the guides --guides FOLDER makes: give --guides too\n";
     return 2;
+  }
+  if (!otherSideText.empty())
+  {
+    if (guidesFolder.empty())
+    {
+      std::cerr << "error: --guide-other-side turns guides --guides FOLDER makes: give --guides too\n";
+      return 2;
+    }
+    static const std::regex numbers("[1-9][0-9]{0,8}(,[1-9][0-9]{0,8})*");
+    if (!std::regex_match(otherSideText, numbers))
+    {
+      std::cerr << "error: --guide-other-side takes line numbers from 1, with commas between (1,3), not '"
+                << otherSideText << "'\n";
+      return 2;
+    }
+    std::stringstream list(otherSideText);
+    for (std::string number; std::getline(list, number, ',');)
+      otherSide.insert(static_cast<std::size_t>(std::stoul(number)));
   }
   lkapp::installMessageHandler(quiet);
   if (!lkapp::checkAllWritable({ output }, { input, linesPath }))
@@ -392,6 +421,13 @@ int main(int argc, char* argv[])
     std::cerr << "error: '" << input
               << "' has no line cells to cut along: give the closed lines with --lines LINES\n";
     return 1;
+  }
+  if (const vtkIdType count = (lines ? lines.Get() : mesh.Get())->GetNumberOfLines();
+      !otherSide.empty() && static_cast<vtkIdType>(*otherSide.rbegin()) > count)
+  {
+    std::cerr << "error: --guide-other-side names line " << *otherSide.rbegin() << ", but there "
+              << (count == 1 ? "is 1 line" : "are " + std::to_string(count) + " lines") << "\n";
+    return 2;
   }
 
   const auto start = std::chrono::steady_clock::now();
@@ -479,7 +515,8 @@ int main(int argc, char* argv[])
     for (const auto& piece : pieces)
       piecesMade.push_back(piece);
     if (!writeGuides(
-          mesh, lines ? lines.Get() : mesh.Get(), guidesFolder, space, joinGuides, piecesMade, guideFiles, error))
+          mesh, lines ? lines.Get() : mesh.Get(), guidesFolder, space, joinGuides, otherSide, piecesMade, guideFiles,
+          error))
     {
       std::cerr << "error: " << error << "\n";
       return 1;
