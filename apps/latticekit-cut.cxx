@@ -303,13 +303,12 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     std::fputs(line.c_str(), stdout);
   std::fputs(joinedReport.c_str(), stdout);
   // Guides on lines nearer than their reaches cannot be on the bone together.
-  for (std::size_t i = 0; i < guides.size(); ++i)
-    for (std::size_t k = i + 1; k < guides.size(); ++k)
-      if (guides[i].why.empty() && guides[k].why.empty())
-        if (const double depth = lkapp::guidesOverlap(guides[i].filter->GetOutput(), guides[k].filter->GetOutput());
-            depth > lkapp::guidesOverlapTolerance)
-          std::printf("guide lines %zu and %zu overlap over %.1f mm along the bone: they cannot be on it together\n",
-            guides[i].line + 1, guides[k].line + 1, depth);
+  std::vector<vtkPolyData*> made;
+  for (const Guide& g : guides)
+    made.push_back(g.why.empty() ? g.filter->GetOutput() : nullptr);
+  for (const lkapp::GuideOverlap& o : lkapp::overlappingGuides(made))
+    std::printf("guide lines %zu and %zu overlap over %.1f mm along the bone: they cannot be on it together\n",
+      guides[o.first].line + 1, guides[o.second].line + 1, o.along);
   return true;
 }
 

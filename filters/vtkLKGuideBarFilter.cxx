@@ -280,11 +280,13 @@ int vtkLKGuideBarFilter::RequestData(
   auto between = [&](std::size_t i) {
     return n == 2 ? std::string() : "guides " + std::to_string(i + 1) + " and " + std::to_string(i + 2) + ": ";
   };
+  std::vector<double> facingApart(n - 1); // degrees between each guide's approach and the next's
   for (std::size_t i = 0; i + 1 < n; ++i)
   {
     const Guide& a = guide[i];
     const Guide& b = guide[i + 1];
-    const double apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(a.approach, b.approach), -1.0, 1.0)));
+    const double apart = facingApart[i] =
+      vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(a.approach, b.approach), -1.0, 1.0)));
     if (apart > 120.0)
     {
       vtkErrorMacro("Cannot join the guides: " << between(i) << "they are put on from directions " << apart
@@ -427,8 +429,7 @@ int vtkLKGuideBarFilter::RequestData(
   {
     const Guide* pair[2] = { &guide[b], &guide[b + 1] };
     const std::size_t number[2] = { b + 1, b + 2 };
-    const double apart =
-      vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(pair[0]->approach, pair[1]->approach), -1.0, 1.0)));
+    const double apart = facingApart[b];
     Vec mean = add(pair[0]->approach, pair[1]->approach);
     vtkMath::Normalize(mean.data());
 

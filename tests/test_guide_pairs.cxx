@@ -274,6 +274,14 @@ TEST(GuidePairs, TwoGuidesThatOverlapAreMeasuredAlongTheBone)
     part->GetFieldData()->AddArray(normal);
   }
   EXPECT_NEAR(lkapp::guidesOverlap(a, b), 10.0 - 2 * 0.625, 1e-9);
+  // A plan's guides, one not made: the pair that overlaps, by index.
+  auto c = cubeAt(0), d = cubeAt(7), e = cubeAt(30);
+  const std::vector<lkapp::GuideOverlap> overlaps = lkapp::overlappingGuides({ c, nullptr, d, e });
+  ASSERT_EQ(overlaps.size(), 1u);
+  EXPECT_EQ(overlaps[0].first, 0u);
+  EXPECT_EQ(overlaps[0].second, 2u);
+  EXPECT_NEAR(overlaps[0].along, 3.0, 1e-9);
+  EXPECT_TRUE(lkapp::overlappingGuides({ c, e }).empty());
   // Nothing to measure.
   EXPECT_EQ(lkapp::guidesOverlap(a, nullptr), 0.0);
   EXPECT_EQ(lkapp::guidesOverlap(vtkSmartPointer<vtkPolyData>::New(), b), 0.0);

@@ -257,7 +257,17 @@ double guidesOverlap(vtkPolyData* a, vtkPolyData* b)
       }
     }
   }
-  return high >= low ? std::max(high - low, guidesOverlapTolerance) : 0.0;
+  return high >= low ? high - low : 0.0;
+}
+
+std::vector<GuideOverlap> overlappingGuides(const std::vector<vtkPolyData*>& guides)
+{
+  std::vector<GuideOverlap> overlaps;
+  for (std::size_t i = 0; i < guides.size(); ++i)
+    for (std::size_t k = i + 1; k < guides.size(); ++k)
+      if (const double along = guidesOverlap(guides[i], guides[k]); along > guidesOverlapTolerance)
+        overlaps.push_back({ i, k, along });
+  return overlaps;
 }
 
 std::string barsText(vtkLKGuideBarFilter* bar)

@@ -86,10 +86,22 @@ constexpr double guidesOverlapTolerance = 0.05;
 /// How far two closed parts overlap along the bone (mm: the spread, along
 /// the mean of their saw planes' normals (GuidePlaneNormal; else from one's
 /// centre to the other's), of the points of either inside the other by more
-/// than guidesOverlapTolerance), 0 where they do not: two cutting guides on
+/// than guidesOverlapTolerance), 0 where no point is: two cutting guides on
 /// saw lines nearer than their reaches, which cannot be on the bone
 /// together. Moving a saw line about that much farther parts them.
 double guidesOverlap(vtkPolyData* a, vtkPolyData* b);
+
+/// Two of a plan's guides that overlap (guidesOverlap over
+/// guidesOverlapTolerance), by their indices, first < second.
+struct GuideOverlap
+{
+  std::size_t first = 0, second = 0;
+  double along = 0.0; ///< mm along the bone
+};
+
+/// Every two of `guides` that overlap, in order (null or empty guides,
+/// ones not made, are in none). The planner and latticekit-cut say each.
+std::vector<GuideOverlap> overlappingGuides(const std::vector<vtkPolyData*>& guides);
 
 /// The bars of a resection guide in words: "a bar of 4.0 mm, 22 mm long and
 /// 1.8 mm clear of the bone between them", or for more "2 bars of 4.0 mm, 22

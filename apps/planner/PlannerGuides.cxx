@@ -129,18 +129,18 @@ void Planner::updateGuides()
       addLines(message, "the cutting guide of stroke " + std::to_string(g.stroke + 1) + ": ", g.warning);
   // Guides on saw lines nearer than their reaches cannot be on the bone
   // together (nor be joined by a bar).
-  for (std::size_t i = 0; i < guides.size(); ++i)
-    for (std::size_t k = i + 1; k < guides.size(); ++k)
-      if (const double depth = lkapp::guidesOverlap(guides[i].surface, guides[k].surface);
-          depth > lkapp::guidesOverlapTolerance)
-      {
-        char line[300];
-        std::snprintf(line, sizeof line,
-          "the cutting guides of strokes %zu and %zu overlap over %.1f mm along the bone: they cannot be on it "
-          "together; put them on one after the other, or move a saw line that much farther",
-          guides[i].stroke + 1, guides[k].stroke + 1, depth);
-        addLine(message, line);
-      }
+  std::vector<vtkPolyData*> surfaces;
+  for (const CuttingGuide& g : guides)
+    surfaces.push_back(g.surface);
+  for (const lkapp::GuideOverlap& o : lkapp::overlappingGuides(surfaces))
+  {
+    char line[300];
+    std::snprintf(line, sizeof line,
+      "the cutting guides of strokes %zu and %zu overlap over %.1f mm along the bone: they cannot be on it "
+      "together; put them on one after the other, or move a saw line that much farther",
+      guides[o.first].stroke + 1, guides[o.second].stroke + 1, o.along);
+    addLine(message, line);
+  }
   updateJoinedGuides();
   vtkNew<vtkAppendPolyData> all;
   for (const GuidePart& part : guideParts())
