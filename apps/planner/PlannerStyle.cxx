@@ -132,16 +132,19 @@ int PlannerStyle::guideAt(int x, int y)
   if (!planner->guideActor->GetVisibility())
     return -1;
   // The guides and the bone (a guide behind the bone is not under the
-  // mouse); the guides are not pickable otherwise (strokes are drawn through
-  // them onto the bone).
-  vtkNew<vtkCellPicker> picker;
-  picker->SetTolerance(0.0005);
+  // mouse), with the pieces' picker and its locators (a skull's surface);
+  // the guides are not pickable otherwise (strokes are drawn through them
+  // onto the bone).
+  vtkCellPicker* picker = piecePicker;
+  picker->InitializePickList();
   picker->PickFromListOn();
+  picker->SetTolerance(0.0005);
   picker->AddPickList(planner->guideActor);
   for (auto& actors : planner->pieceActors)
     for (auto& a : actors)
       picker->AddPickList(a);
   planner->guideActor->PickableOn();
+  locators.update(planner->renderer, picker);
   const bool picked = picker->Pick(x, y, 0, planner->renderer) && picker->GetCellId() >= 0 &&
     picker->GetProp3D() == planner->guideActor.GetPointer();
   planner->guideActor->PickableOff();
