@@ -1,4 +1,5 @@
 #include "vtkLKCuttingGuideFilter.h"
+#include "latticekit/ConvexHull.h"
 #include "latticekit/SolidUnion.h"
 #include "vtkLKAbort.h"
 #include "vtkLKFieldValues.h"
@@ -196,31 +197,68 @@ int vtkLKCuttingGuideFilter::RequestData(
         break;
       }
     }
-    // Away from the centre of the bone round the cut (within twice the
-    // section's size of its centre, 30 mm at least): a mandible's arch
-    // curves in on both sides of a cut, so that centre lies inside it, on a
-    // mandible alone as on a whole skull (whose own centre is the
-    // cranium's, above and behind).
-    double size = 0.0;
-    for (const Vec& x : *loop)
-      size = std::max(size, std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), centre.data())));
-    const double near2 = std::pow(std::max(30.0, 4.0 * size), 2);
-    Vec around{ 0, 0, 0 };
-    vtkIdType counted = 0;
+    // The bone's outer side: the side of the section that lies on the
+    // bone's convex hull, where the other faces the inside of an arch (a
+    // mandible's lingual side, its ramus' medial side), on a mandible alone
+    // as on a whole skull. It is judged where the cut crosses such an arch:
+    // where one of the section's two outermost points along the axis lies 2
+    // mm or more inside the hull, the half of the section (either side of
+    // its centre along the axis) that lies on average the shallower inside
+    // the hull, by 1 mm at least, is the outer side. Otherwise (both ends on
+    // the hull: a bone with no inner side, or a cut along the arch, such as
+    // a horizontal cut through the chin), away from the centre of the bone
+    // round the cut (within twice the section's size of its centre, 30 mm
+    // at least): a mandible's arch curves in on both sides of a cut, so
+    // that centre lies inside it.
+    std::vector<lk::Vec3> bonePoints(static_cast<std::size_t>(bone->GetNumberOfPoints()));
     for (vtkIdType i = 0; i < bone->GetNumberOfPoints(); ++i)
+      bone->GetPoint(i, bonePoints[static_cast<std::size_t>(i)].data());
+    const lk::ConvexHull hull(bonePoints);
+    auto depth = [&](const Vec& x) { return hull.depth({ x[0], x[1], x[2] }); };
+    const auto [lowest, highest] =
+      std::minmax_element(loop->begin(), loop->end(), [&](const Vec& a, const Vec& b) { return dot(a, d) < dot(b, d); });
+    const double deepestEnd = std::max(depth(*lowest), depth(*highest));
+    double depthSum[2] = { 0.0, 0.0 }, lengthSum[2] = { 0.0, 0.0 }; // behind, ahead of the centre along d
+    for (std::size_t i = 0; i + 1 < loop->size(); ++i)
     {
-      Vec x;
-      bone->GetPoint(i, x.data());
-      if (vtkMath::Distance2BetweenPoints(x.data(), centre.data()) <= near2)
-      {
-        around = add(around, x);
-        ++counted;
-      }
+      const Vec& x = (*loop)[i];
+      const Vec& y = (*loop)[i + 1];
+      const Vec middle = add(x, add(y, x, -1.0), 0.5);
+      const double length = std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), y.data()));
+      const int side = dot(add(middle, centre, -1.0), d) > 0.0 ? 1 : 0;
+      depthSum[side] += length * depth(middle);
+      lengthSum[side] += length;
     }
-    if (counted > 0)
-      around = { around[0] / counted, around[1] / counted, around[2] / counted };
-    if (dot(add(centre, around, -1.0), d) < 0.0)
-      d = { -d[0], -d[1], -d[2] };
+    const double meanBehind = lengthSum[0] > 0.0 ? depthSum[0] / lengthSum[0] : 0.0;
+    const double meanAhead = lengthSum[1] > 0.0 ? depthSum[1] / lengthSum[1] : 0.0;
+    if (deepestEnd >= 2.0 && std::abs(meanAhead - meanBehind) >= 1.0)
+    {
+      if (meanAhead > meanBehind)
+        d = { -d[0], -d[1], -d[2] };
+    }
+    else
+    {
+      double size = 0.0;
+      for (const Vec& x : *loop)
+        size = std::max(size, std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), centre.data())));
+      const double near2 = std::pow(std::max(30.0, 4.0 * size), 2);
+      Vec around{ 0, 0, 0 };
+      vtkIdType counted = 0;
+      for (vtkIdType i = 0; i < bone->GetNumberOfPoints(); ++i)
+      {
+        Vec x;
+        bone->GetPoint(i, x.data());
+        if (vtkMath::Distance2BetweenPoints(x.data(), centre.data()) <= near2)
+        {
+          around = add(around, x);
+          ++counted;
+        }
+      }
+      if (counted > 0)
+        around = { around[0] / counted, around[1] / counted, around[2] / counted };
+      if (dot(add(centre, around, -1.0), d) < 0.0)
+        d = { -d[0], -d[1], -d[2] };
+    }
   }
   vtkMath::Normalize(d.data());
   if (this->OtherSide)

@@ -14,11 +14,18 @@
  *   the cut's plane toward the surgeon. Given (Approach), it is projected
  *   into the plane. Left at 0, 0, 0 it is the short axis of the bone's
  *   section in the plane (the loop of vtkCutter's section nearest
- *   PlaneOrigin), turned away from the centre of the bone round the cut
- *   (within twice the section's size, 30 mm at least): a mandible's arch
- *   curves in on both sides of a cut, so its body or ramus gets the guide
- *   on the outer (buccal) side, the chin on its front, on a mandible alone
- *   or on a whole skull.
+ *   PlaneOrigin), turned to the bone's outer side: the half of the
+ *   section that lies the shallower inside the bone's convex hull
+ *   (lk::ConvexHull, CGAL's), by 1 mm on average at least, where one of
+ *   the section's ends along that axis lies 2 mm or more inside it. A
+ *   mandible's lingual side and its ramus' medial side face the inside of
+ *   its arch, so its body and ramus get the guide on the outer (buccal,
+ *   lateral) side and the chin on its front, on a mandible alone or on a
+ *   whole skull, however the cut is slanted. Where both ends lie on the
+ *   hull (a bone with no inner side, a cut along the arch such as a
+ *   horizontal cut through the chin), away from the centre of the bone
+ *   round the cut instead (within twice the section's size, 30 mm at
+ *   least).
  * - Its extent along the plane: the run of the section around its point
  *   farthest along the approach that faces the approach within
  *   MaximumContactAngle (the outward normal of the section's chord over 3
@@ -124,7 +131,7 @@ public:
   ///@{
   /// The side the guide goes on: a direction from the bone toward the
   /// surgeon, projected into the plane. Default 0, 0, 0: the section's short
-  /// axis, away from the centre of the bone round the cut (see above).
+  /// axis, toward the bone's outer side (see above).
   vtkSetVector3Macro(Approach, double);
   vtkGetVector3Macro(Approach, double);
   /// The guide on the other side of the bone: the approach (given or

@@ -62,12 +62,13 @@ inline std::string sampleData(const std::string& relative)
   return std::string(LATTICEKIT_SAMPLE_DATA) + "/" + relative;
 }
 
-/// The bundled TCIA mandible (0522c0017) as vtkLKBoneSurfaceFilter makes it
-/// with its defaults (12,212 points); empty if it cannot be read.
-inline vtkSmartPointer<vtkPolyData> tciaMandibleSurface()
+/// A bundled TCIA mandible (0522c0017 or TCGA-CV-7236) as
+/// vtkLKBoneSurfaceFilter makes it with its defaults (12,212 points for the
+/// first); empty if it cannot be read.
+inline vtkSmartPointer<vtkPolyData> tciaMandibleSurface(const std::string& patient = "0522c0017")
 {
   vtkNew<vtkLKMedicalImageReader> reader;
-  reader->SetFileName(sampleData("mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd").c_str());
+  reader->SetFileName(sampleData("mandible-tcia/test_oncologist_" + patient + "_Mandible.nrrd").c_str());
   vtkNew<vtkLKBoneSurfaceFilter> bone;
   bone->SetInputConnection(reader->GetOutputPort());
   bone->Update();

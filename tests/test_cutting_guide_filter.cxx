@@ -9,6 +9,7 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKRaisedLabel.h"
+#include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -20,6 +21,7 @@
 #include <vtkImplicitPolyDataDistance.h>
 #include <vtkLinearSubdivisionFilter.h>
 #include <vtkMath.h>
+#include <vtkPlane.h>
 #include <vtkPoints.h>
 #include <vtkCellData.h>
 #include <vtkIdList.h>
@@ -475,6 +477,79 @@ TEST(CuttingGuideFilter, AcrossTheMandibleEachGuideIsOneSolidWithItsLabel)
       EXPECT_TRUE(guide->GetLabelPlaced()) << where;
     }
   EXPECT_EQ(made, 42);
+}
+
+TEST(CuttingGuideFilter, OnBothMandiblesItGoesOnTheOuterSideHoweverTheCutIsSlanted)
+{
+  // Saw planes across both TCIA mandibles (z up): the body and chin saws of
+  // the sessions, slanted body saws, cuts across the rami at slants, and
+  // horizontal cuts through the chin. Each guide goes on the bone's outer
+  // side: its approach points away from the bone's centre (across, in the
+  // horizontal), buccal on the body, lateral on the ramus, in front at the
+  // chin. The side was once chosen away from the centre of the bone within
+  // twice the section's size alone: on slanted cuts the ramus above and the
+  // chin in front pulled that centre outside the arch, and seven of these
+  // guides went on the inner side (the second mandible's body saw at x =
+  // -18.6 among them). The horizontal chin cuts have both ends of their
+  // section on the bone's convex hull and keep that rule.
+  struct Cut
+  {
+    const char* patient;
+    double origin[3], normal[3];
+  };
+  const Cut cuts[] = {
+    { "0522c0017", { -30, 276.64, -982.1 }, { 1, -0.3, 0 } },       // body saws and chin
+    { "0522c0017", { 30, 276.64, -982.1 }, { 1, 0.3, 0 } },
+    { "0522c0017", { 0, 270.03, -988 }, { 1, 0, 0 } },
+    { "0522c0017", { -40, 325, -955 }, { 0, 0.3, 1 } },              // rami
+    { "0522c0017", { 40, 325, -955 }, { 0, 0.3, 1 } },
+    { "0522c0017", { 33.5, 319.3, -945.5 }, { 0.5, 0.41, 0.77 } },  // slanted, on the inner side before
+    { "0522c0017", { 41.5, 337.9, -953.0 }, { 0.19, 0.05, 0.98 } },
+    { "0522c0017", { -39.7, 326.8, -938.0 }, { 0.41, -0.5, -0.77 } },
+    { "0522c0017", { -36.8, 316.9, -975.5 }, { 0.44, -0.76, -0.47 } },
+    { "0522c0017", { -0.5, 275.9, -988 }, { 0, 0, 1 } },             // horizontal through the chin
+    { "TCGA-CV-7236", { -18.6, -14.5, -978.0 }, { 1, -0.3, 0 } },    // on the inner side before
+    { "TCGA-CV-7236", { -23.5, 7.1, -948.0 }, { 0.39, -0.41, -0.82 } },
+    { "TCGA-CV-7236", { 45.9, 14.9, -948.9 }, { 0.39, 0.4, 0.83 } },
+    { "TCGA-CV-7236", { -33.0, 13.9, -930.5 }, { 0.04, 0.8, -0.6 } },
+    { "TCGA-CV-7236", { 9.8, -27.6, -980.5 }, { 0.29, -0.22, -0.93 } }, // horizontal through the chin
+    { "TCGA-CV-7236", { 11.7, -36.5, -985.5 }, { 0, 0, 1 } },
+  };
+  std::map<std::string, vtkSmartPointer<vtkPolyData>> bones;
+  for (const Cut& cut : cuts)
+  {
+    vtkSmartPointer<vtkPolyData>& bone = bones[cut.patient];
+    if (!bone)
+      bone = lktest::tciaMandibleSurface(cut.patient);
+    ASSERT_GT(bone->GetNumberOfCells(), 0) << cut.patient;
+    double centre[3] = { 0, 0, 0 };
+    for (vtkIdType i = 0; i < bone->GetNumberOfPoints(); ++i)
+      for (int k = 0; k < 3; ++k)
+        centre[k] += bone->GetPoint(i)[k] / static_cast<double>(bone->GetNumberOfPoints());
+    vtkNew<vtkPlane> plane;
+    plane->SetOrigin(cut.origin);
+    plane->SetNormal(cut.normal);
+    const auto sections = lkvtk::sectionPolylines(bone, plane);
+    const int nearest = lkvtk::nearestPolyline(sections, { cut.origin[0], cut.origin[1], cut.origin[2] });
+    ASSERT_GE(nearest, 0);
+    double sectionCentre[3] = { 0, 0, 0 };
+    const auto& loop = sections[static_cast<std::size_t>(nearest)];
+    for (const auto& x : loop)
+      for (int k = 0; k < 3; ++k)
+        sectionCentre[k] += x[k] / static_cast<double>(loop.size());
+
+    vtkNew<vtkLKCuttingGuideFilter> guide;
+    guide->SetInputData(bone);
+    guide->SetPlaneOrigin(cut.origin);
+    guide->SetPlaneNormal(cut.normal);
+    guide->Update();
+    const std::string where = std::string(cut.patient) + " at (" + std::to_string(cut.origin[0]) + ", " +
+      std::to_string(cut.origin[1]) + ", " + std::to_string(cut.origin[2]) + ")";
+    ASSERT_GT(guide->GetOutput()->GetNumberOfCells(), 0) << where;
+    const double* d = guide->GetApproachUsed();
+    const double outward = (sectionCentre[0] - centre[0]) * d[0] + (sectionCentre[1] - centre[1]) * d[1];
+    EXPECT_GT(outward, 5.0) << where << ": approach (" << d[0] << ", " << d[1] << ", " << d[2] << ")";
+  }
 }
 
 TEST(CuttingGuideFilter, StopsWhenAsked)
