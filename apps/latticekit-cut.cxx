@@ -268,13 +268,9 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     }
   }
   for (std::size_t i = 0; join && i < guides.size(); ++i)
-  {
-    if (std::any_of(chains.begin(), chains.end(),
-          [&](const auto& c) { return std::find(c.begin(), c.end(), i) != c.end(); }))
-      continue;
-    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, chains, "flat line", "line", lineNumber);
-    joinedReport += labelOf(guides[i].line) + " stays apart: " + why + "\n";
-  }
+    if (const std::string why = lkapp::whyLineStaysApart(i, piecesOf, chains, "flat line", "line", lineNumber);
+        !why.empty())
+      joinedReport += labelOf(guides[i].line) + " stays apart: " + why + "\n";
   for (const Guide& g : guides)
   {
     char line[600];

@@ -34,8 +34,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -172,6 +174,378 @@ vtkSmartPointer<vtkPolyData> tubeAround(const std::vector<Vec>& line, double rad
   clean->Update();
   return clean->GetOutput();
 }
+
+/// Reads guide `number`'s place from its field data: empty, or why it is
+/// not a guide.
+std::string readGuide(vtkPolyData* data, std::size_t number, Guide& g)
+{
+  const char* missing = nullptr;
+  if (!data || data->GetNumberOfPolys() == 0)
+    missing = "polygons";
+  else if (!readField(data, "GuideApproach", g.approach.data(), 3))
+    missing = "GuideApproach";
+  else if (!readField(data, "GuidePlaneNormal", g.normal.data(), 3))
+    missing = "GuidePlaneNormal";
+  else if (!readField(data, "GuideSlotCentre", g.slotCentre.data(), 3))
+    missing = "GuideSlotCentre";
+  else if (!readField(data, "GuideSlotWidth", &g.slotWidth, 1))
+    missing = "GuideSlotWidth";
+  else if (!readField(data, "GuideThickness", &g.thickness, 1))
+    missing = "GuideThickness";
+  else if (!readField(data, "GuideReach", &g.reach, 1))
+    missing = "GuideReach";
+  else if (!readField(data, "GuideClearance", &g.clearance, 1))
+    missing = "GuideClearance";
+  else if (!readField(data, "GuideScrewHoleDiameter", &g.hole, 1))
+    missing = "GuideScrewHoleDiameter";
+  if (missing)
+    return "guide " + std::to_string(number) + " has no " + missing + (missing[0] == 'p' ? "" : " of finite values") +
+      " (guides come from vtkLKCuttingGuideFilter)";
+  if (!(vtkMath::Normalize(g.approach.data()) > 0.0) || !(vtkMath::Normalize(g.normal.data()) > 0.0) ||
+    !(g.thickness > 0.0) || !(g.reach > g.slotWidth / 2.0) || !(g.slotWidth > 0.0) || !(g.clearance >= 0.0) ||
+    !(g.hole >= 0.0))
+    return "guide " + std::to_string(number) +
+      "'s field data do not describe a guide (a zero approach or normal, or sizes out of their ranges)";
+  return {};
+}
+
+/// Whether guide i and the next can be joined by a bar of `radius`: empty,
+/// or why not (after `between`, which names them where there are more than
+/// two). `apart` is set to the angle between their approaches (degrees).
+std::string neighbourProblem(const std::vector<Guide>& guide, std::size_t i, double radius, double maximumLength,
+  const std::string& between, double& apart)
+{
+  std::ostringstream why;
+  const Guide& a = guide[i];
+  const Guide& b = guide[i + 1];
+  apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(a.approach, b.approach), -1.0, 1.0)));
+  const double slotsApart = distance(a.slotCentre, b.slotCentre);
+  if (apart > 120.0)
+    why << between << "they are put on from directions " << apart
+        << " degrees apart (more than 120): a bar between them would go round the bone";
+  else if (slotsApart > maximumLength)
+    why << between << "their slots are " << slotsApart << " mm apart, more than MaximumLength (" << maximumLength
+        << " mm)";
+  // Room between the guides' facing edges for the bar (guides nearer each
+  // other would have it cross the other's slot, or are one guide).
+  else if (slotsApart < a.reach + b.reach + 2.0 * radius)
+    why << between << "their slots are " << slotsApart << " mm apart, too near for a bar of " << 2.0 * radius
+        << " mm between their edges (they reach " << a.reach << " and " << b.reach << " mm from their slots)";
+  // A guide between two others has its bars on either side of its slot
+  // (the guides in their order along the bone): two bars on one side
+  // would meet there, and one of them would pass over the other guide.
+  else if (i > 0 &&
+    dot(add(guide[i - 1].slotCentre, a.slotCentre, -1.0), a.normal) * dot(add(b.slotCentre, a.slotCentre, -1.0), a.normal) >=
+      0.0)
+    why << "guides " << i << " and " << i + 2 << " lie on one side of guide " << i + 1
+        << "'s slot, so their bars would leave it on one side (give the guides in their order along the bone)";
+  return why.str();
+}
+
+/// The bone as the bars see it: how high it is under a point along a
+/// direction, and how far a point is from it.
+class BoneQueries
+{
+public:
+  explicit BoneQueries(vtkPolyData* input)
+    : bone(lkvtk::facesAsTriangles(input))
+  {
+    locator->SetDataSet(bone);
+    locator->BuildLocator();
+    double bounds[6];
+    bone->GetBounds(bounds);
+    diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+    vtkNew<vtkPolyDataNormals> outward; // the distance's sign needs faces facing out
+    outward->SetInputData(bone);
+    outward->ConsistencyOn();
+    outward->AutoOrientNormalsOn();
+    outward->SplittingOff();
+    outward->ComputeCellNormalsOn();
+    outward->ComputePointNormalsOff();
+    outward->Update();
+    away->SetInput(outward->GetOutput());
+  }
+
+  /// How high the bone is along `d` under `x` (the first face a ray down
+  /// along -d from far above meets), or -infinity where it meets none.
+  double height(const Vec& x, const Vec& d)
+  {
+    const Vec from = add(x, d, diagonal), to = add(x, d, -diagonal);
+    double t = 0.0, hit[3], pcoords[3];
+    int subId = 0;
+    vtkIdType cellId = -1;
+    if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
+      return -std::numeric_limits<double>::infinity();
+    return dot(add({ hit[0], hit[1], hit[2] }, x, -1.0), d);
+  }
+
+  /// The distance to the bone, signed (negative inside).
+  double distance(const Vec& x) { return away->EvaluateFunction(const_cast<double*>(x.data())); }
+  /// The same, and the nearest point of the bone.
+  double distance(const Vec& x, Vec& nearest)
+  {
+    return away->EvaluateFunctionAndGetClosestPoint(const_cast<double*>(x.data()), nearest.data());
+  }
+
+private:
+  vtkSmartPointer<vtkPolyData> bone;
+  vtkNew<vtkStaticCellLocator> locator;
+  vtkNew<vtkGenericCell> cell;
+  vtkNew<vtkImplicitPolyDataDistance> away;
+  double diagonal = 0.0;
+};
+
+/// A guide's contact: its faces on the bone (all three corners within its
+/// clearance and 0.05 mm; none under 0.001 mm^2), their outward normals and
+/// areas.
+void contactFaces(vtkPolyData* g, double clearance, BoneQueries& bone, std::vector<Vec>& normals,
+  std::vector<double>& areas)
+{
+  std::vector<char> pointOnBone(static_cast<std::size_t>(g->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < g->GetNumberOfPoints(); ++p)
+  {
+    Vec x;
+    g->GetPoint(p, x.data());
+    pointOnBone[static_cast<std::size_t>(p)] = std::abs(bone.distance(x)) <= clearance + 0.05;
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
+  {
+    g->GetCellPoints(c, ids);
+    if (ids->GetNumberOfIds() != 3)
+      continue;
+    Vec corner[3];
+    bool onBone = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      g->GetPoint(ids->GetId(k), corner[k].data());
+      onBone = onBone && pointOnBone[static_cast<std::size_t>(ids->GetId(k))];
+    }
+    const double area = vtkTriangle::TriangleArea(corner[0].data(), corner[1].data(), corner[2].data());
+    if (!onBone || area < 1e-3)
+      continue;
+    Vec normal;
+    vtkTriangle::ComputeNormal(corner[0].data(), corner[1].data(), corner[2].data(), normal.data());
+    normals.push_back(normal);
+    areas.push_back(area);
+  }
+}
+
+/// One bar: its centre line, length, gap to the bone (where it is farthest
+/// from both guides) and solid.
+struct Bar
+{
+  std::vector<Vec> line;
+  double length = 0.0, gap = 0.0;
+  lk::TriangleMesh solid;
+  bool stopped = false; ///< `progress` asked to stop: the rest is not made
+};
+
+/// What a bar between two guides needs to know besides them.
+struct BarSettings
+{
+  double radius, standOff, maximumLength;
+  double apart;                ///< degrees between the guides' approaches
+  std::size_t number[2];       ///< the guides' numbers, for messages
+  std::string between;         ///< "guides 2 and 3: ", or empty for two guides
+};
+
+/// Routes the bar from guide a to guide b: from the edge of each, on the
+/// other's side of its slot, a centre line pushed off the bone by its radius
+/// and the stand-off and smoothed, then its tube. Empty, or why there is
+/// none (after "Cannot join the guides: "). `progress(fraction of this bar)`
+/// returns false to stop; `bar.stopped` then says so and the bar is not
+/// finished.
+std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings, BoneQueries& bone,
+  const std::function<bool(double)>& progress, Bar& bar)
+{
+  const Guide* pair[2] = { &a, &b };
+  const double radius = settings.radius;
+  std::ostringstream why;
+  Vec mean = add(a.approach, b.approach);
+  vtkMath::Normalize(mean.data());
+
+  // Each end: at the guide's edge on the other's side of its slot, clear
+  // of the screw hole, in the wall: its middle above the bone along the
+  // approach, or higher where the bar would reach into the bone there (a
+  // bar thicker than the wall, a wall on a slope).
+  Vec end[2], lead[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    const Guide& g = *pair[i];
+    const Guide& other = *pair[1 - i];
+    Vec side = g.normal;
+    if (dot(add(other.slotCentre, g.slotCentre, -1.0), side) < 0.0)
+      side = { -side[0], -side[1], -side[2] };
+    const double half = g.slotWidth / 2.0;
+    const double inner = g.hole > 0.0 ? 0.5 * (half + g.reach) + g.hole / 2.0 + 0.5 : half + 0.5;
+    const double s = std::max(inner, g.reach - radius);
+    if (!(s < g.reach))
+    {
+      why << "guide " << settings.number[i] << " has no room for the bar beside its screw hole (a larger Reach)";
+      return why.str();
+    }
+    const Vec base = add(g.slotCentre, side, s);
+    const double height = bone.height(base, g.approach);
+    if (!std::isfinite(height))
+    {
+      why << "no bone under guide " << settings.number[i]
+          << "'s edge (is port 0 the bone the guides were made on?)";
+      return why.str();
+    }
+    const Vec onBone = add(base, g.approach, height - dot(add(base, g.slotCentre, -1.0), g.approach));
+    end[i] = add(onBone, g.approach, g.clearance + g.thickness / 2.0);
+    for (int step = 0; step < 100 && bone.distance(end[i]) < radius; ++step)
+      end[i] = add(end[i], g.approach, 0.1);
+    const double level = dot(add(end[i], onBone, -1.0), g.approach);
+    if (!(level < g.clearance + g.thickness + 0.5 * radius))
+    {
+      why << "the bar would stand " << level << " mm above the bone at guide " << settings.number[i]
+          << "'s edge, clear of its wall (a thinner bar, or a thicker wall)";
+      return why.str();
+    }
+    lead[i] = add(end[i], side, g.reach - s + radius);
+  }
+
+  // The centre line: straight from end to end, then pushed off the bone.
+  const double spacing = 0.5;
+  std::vector<Vec>& line = bar.line;
+  line = { end[0] };
+  {
+    const double length = distance(lead[0], lead[1]);
+    const int parts = std::max(2, static_cast<int>(std::ceil(length / spacing)));
+    for (int k = 0; k <= parts; ++k)
+      line.push_back(add(lead[0], add(lead[1], lead[0], -1.0), static_cast<double>(k) / parts));
+    line.push_back(end[1]);
+  }
+  const std::size_t points = line.size();
+  // The distance each point must keep from the bone: the radius at the
+  // guides, the radius and the stand-off a little beyond their edges.
+  std::vector<double> needed(points), arc(points, 0.0);
+  for (std::size_t k = 1; k < points; ++k)
+    arc[k] = arc[k - 1] + distance(line[k - 1], line[k]);
+  const double leadLength = distance(end[0], lead[0]);
+  // Over 5 mm and twice the stand-off, along a smooth step (the bar bends
+  // no tighter than it must).
+  const double ramp = 5.0 + 2.0 * settings.standOff;
+  auto neededAt = [&](double fromEnd) {
+    const double t = std::clamp((fromEnd - leadLength) / ramp, 0.0, 1.0);
+    return radius + settings.standOff * t * t * (3.0 - 2.0 * t);
+  };
+  for (std::size_t k = 0; k < points; ++k)
+    needed[k] = neededAt(std::min(arc[k], arc.back() - arc[k]));
+  // Pushes each point that is too near the bone out to its distance, level
+  // with the guides' middles (square to their mean direction along their
+  // slots, so that the bar goes in front of the bone and not over its edge:
+  // a mandible's teeth): away from the nearest point of the bone, or, inside
+  // it or where that is up or down or back, forward (the guides' mean
+  // approach, square to the line between the ends); the largest shortfall
+  // before the push.
+  Vec chord = add(end[1], end[0], -1.0);
+  vtkMath::Normalize(chord.data());
+  Vec along{ 0, 0, 0 };
+  for (const Guide* g : pair)
+  {
+    Vec axis;
+    vtkMath::Cross(g->normal.data(), g->approach.data(), axis.data());
+    along = add(along, axis, dot(axis, along) < 0.0 ? -1.0 : 1.0);
+  }
+  along = add(along, chord, -dot(along, chord));
+  Vec forward = add(mean, chord, -dot(mean, chord));
+  if (vtkMath::Normalize(along.data()) > 1e-6)
+    forward = add(forward, along, -dot(forward, along));
+  if (!(vtkMath::Normalize(forward.data()) > 1e-6))
+    forward = mean;
+  const bool level = vtkMath::Norm(along.data()) > 0.5;
+  auto push = [&]() {
+    double worst = 0.0;
+    for (std::size_t k = 1; k + 1 < points; ++k)
+    {
+      Vec nearest;
+      const double f = bone.distance(line[k], nearest);
+      const double shortfall = needed[k] - f;
+      worst = std::max(worst, shortfall);
+      if (shortfall <= 0.0)
+        continue;
+      // Outside the bone: away from it, level (round a corner of the bone
+      // the guides are on), unless that is up or down, over its edge.
+      Vec way = add(line[k], nearest, -1.0);
+      vtkMath::Normalize(way.data());
+      if (level)
+        way = add(way, along, -dot(way, along));
+      if (f <= 0.0 || !(vtkMath::Normalize(way.data()) > 0.5) || dot(way, forward) < 0.0)
+        way = forward;
+      line[k] = add(line[k], way, shortfall);
+    }
+    return worst;
+  };
+  // Pushes, then smoothing (each point toward its neighbours' middle, the
+  // ends where they are), until a round's smoothing leaves every point
+  // where it may be; then pushes alone, for what the last smoothing took.
+  const int rounds = 300;
+  for (int round = 0; round < rounds; ++round)
+  {
+    if (push() < 0.01 && round > 0)
+      break;
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      std::vector<Vec> smoothed = line;
+      for (std::size_t k = 1; k + 1 < points; ++k)
+        smoothed[k] = add(add(line[k], line[k], -0.5), add(line[k - 1], line[k + 1]), 0.25);
+      line = smoothed;
+    }
+    if (round % 20 == 0 && !progress(static_cast<double>(round) / rounds))
+    {
+      bar.stopped = true;
+      break;
+    }
+  }
+  double worst = 0.0;
+  for (int k = 0; k < 10; ++k)
+  {
+    worst = push();
+    if (worst < 1e-3)
+      break;
+  }
+  if (bar.stopped)
+    return {};
+  if (!(worst < 0.1))
+  {
+    why << settings.between << "no bar of " << 2.0 * radius << " mm found a way " << settings.standOff
+        << " mm clear of the bone between them (" << worst << " mm short)";
+    return why.str();
+  }
+  bar.length = 0.0;
+  bar.gap = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < points; ++k)
+    bar.length += distance(line[k - 1], line[k]);
+  // The gap where the bar is farthest from both guides (past the ramps; on
+  // guides too near for the whole stand-off, at the ramps' top).
+  const double top = *std::max_element(needed.begin() + 1, needed.end() - 1);
+  for (std::size_t k = 1; k + 1 < points; ++k)
+    if (needed[k] >= top - 1e-9)
+      bar.gap = std::min(bar.gap, bone.distance(line[k]) - radius);
+  if (bar.length > settings.maximumLength)
+  {
+    why << settings.between << "the bar would be " << bar.length << " mm long, more than MaximumLength ("
+        << settings.maximumLength << " mm)";
+    return why.str();
+  }
+  // The tube round it, which crosses itself where its line bends tighter
+  // than its radius.
+  vtkSmartPointer<vtkPolyData> tube = tubeAround(line, radius);
+  if (const std::string problem = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(tube), bar.solid); !problem.empty())
+    return settings.between + "the bar: " + problem;
+  lk::TriangleMesh alone;
+  if (!lk::solidUnion({ bar.solid }, alone).empty())
+  {
+    why << settings.between << "the bar would bend tighter than its radius (" << radius
+        << " mm) on its way between them, where it clears the bone (a thinner bar, a smaller StandOff, or guides "
+        << "that face more alike: " << settings.apart << " degrees apart)";
+    return why.str();
+  }
+  return {};
+}
 } // namespace
 
 vtkLKGuideBarFilter::vtkLKGuideBarFilter()
@@ -235,39 +609,9 @@ int vtkLKGuideBarFilter::RequestData(
   for (std::size_t i = 0; i < n; ++i)
   {
     guideData[i] = vtkPolyData::GetData(inputVector[1], static_cast<int>(i));
-    Guide& g = guide[i];
-    const char* missing = nullptr;
-    if (!guideData[i] || guideData[i]->GetNumberOfPolys() == 0)
-      missing = "polygons";
-    else if (!readField(guideData[i], "GuideApproach", g.approach.data(), 3))
-      missing = "GuideApproach";
-    else if (!readField(guideData[i], "GuidePlaneNormal", g.normal.data(), 3))
-      missing = "GuidePlaneNormal";
-    else if (!readField(guideData[i], "GuideSlotCentre", g.slotCentre.data(), 3))
-      missing = "GuideSlotCentre";
-    else if (!readField(guideData[i], "GuideSlotWidth", &g.slotWidth, 1))
-      missing = "GuideSlotWidth";
-    else if (!readField(guideData[i], "GuideThickness", &g.thickness, 1))
-      missing = "GuideThickness";
-    else if (!readField(guideData[i], "GuideReach", &g.reach, 1))
-      missing = "GuideReach";
-    else if (!readField(guideData[i], "GuideClearance", &g.clearance, 1))
-      missing = "GuideClearance";
-    else if (!readField(guideData[i], "GuideScrewHoleDiameter", &g.hole, 1))
-      missing = "GuideScrewHoleDiameter";
-    if (missing)
+    if (const std::string why = readGuide(guideData[i], i + 1, guide[i]); !why.empty())
     {
-      vtkErrorMacro("Cannot join the guides: guide " << i + 1 << " has no " << missing
-                                                      << (missing[0] == 'p' ? "" : " of finite values")
-                                                      << " (guides come from vtkLKCuttingGuideFilter).");
-      return 0;
-    }
-    if (!(vtkMath::Normalize(g.approach.data()) > 0.0) || !(vtkMath::Normalize(g.normal.data()) > 0.0) ||
-      !(g.thickness > 0.0) || !(g.reach > g.slotWidth / 2.0) || !(g.slotWidth > 0.0) || !(g.clearance >= 0.0) ||
-      !(g.hole >= 0.0))
-    {
-      vtkErrorMacro("Cannot join the guides: guide " << i + 1 << "'s field data do not describe a guide (a zero "
-                                                      << "approach or normal, or sizes out of their ranges).");
+      vtkErrorMacro("Cannot join the guides: " << why << ".");
       return 0;
     }
   }
@@ -282,80 +626,14 @@ int vtkLKGuideBarFilter::RequestData(
   };
   std::vector<double> facingApart(n - 1); // degrees between each guide's approach and the next's
   for (std::size_t i = 0; i + 1 < n; ++i)
-  {
-    const Guide& a = guide[i];
-    const Guide& b = guide[i + 1];
-    const double apart = facingApart[i] =
-      vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(a.approach, b.approach), -1.0, 1.0)));
-    if (apart > 120.0)
+    if (const std::string why = neighbourProblem(guide, i, radius, this->MaximumLength, between(i), facingApart[i]);
+        !why.empty())
     {
-      vtkErrorMacro("Cannot join the guides: " << between(i) << "they are put on from directions " << apart
-        << " degrees apart (more than 120): a bar between them would go round the bone.");
+      vtkErrorMacro("Cannot join the guides: " << why << ".");
       return 0;
     }
-    const double slotsApart = distance(a.slotCentre, b.slotCentre);
-    if (slotsApart > this->MaximumLength)
-    {
-      vtkErrorMacro("Cannot join the guides: " << between(i) << "their slots are " << slotsApart
-        << " mm apart, more than MaximumLength (" << this->MaximumLength << " mm).");
-      return 0;
-    }
-    // Room between the guides' facing edges for the bar (guides nearer each
-    // other would have it cross the other's slot, or are one guide).
-    if (slotsApart < a.reach + b.reach + 2.0 * radius)
-    {
-      vtkErrorMacro("Cannot join the guides: " << between(i) << "their slots are " << slotsApart
-        << " mm apart, too near for a bar of " << 2.0 * radius << " mm between their edges (they reach " << a.reach
-        << " and " << b.reach << " mm from their slots).");
-      return 0;
-    }
-    // A guide between two others has its bars on either side of its slot
-    // (the guides in their order along the bone): two bars on one side
-    // would meet there, and one of them would pass over the other guide.
-    if (i > 0)
-    {
-      const Guide& before = guide[i - 1];
-      if (dot(add(before.slotCentre, a.slotCentre, -1.0), a.normal) * dot(add(b.slotCentre, a.slotCentre, -1.0), a.normal) >= 0.0)
-      {
-        vtkErrorMacro("Cannot join the guides: guides " << i << " and " << i + 2 << " lie on one side of guide " << i + 1
-          << "'s slot, so their bars would leave it on one side (give the guides in their order along the bone).");
-        return 0;
-      }
-    }
-  }
 
-  vtkSmartPointer<vtkPolyData> bone = lkvtk::facesAsTriangles(input);
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(bone);
-  locator->BuildLocator();
-  double bounds[6];
-  bone->GetBounds(bounds);
-  const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
-  vtkNew<vtkGenericCell> cell;
-  // How high the bone is along `d` under `x` (the first face a ray down
-  // along -d from far above meets), or -infinity where it meets none.
-  auto boneHeight = [&](const Vec& x, const Vec& d) {
-    const Vec from = add(x, d, diagonal), to = add(x, d, -diagonal);
-    double t = 0.0, hit[3], pcoords[3];
-    int subId = 0;
-    vtkIdType cellId = -1;
-    if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
-      return -std::numeric_limits<double>::infinity();
-    return dot(add({ hit[0], hit[1], hit[2] }, x, -1.0), d);
-  };
-
-  // The distance to the bone, signed (negative inside), and the nearest
-  // point of it.
-  vtkNew<vtkPolyDataNormals> outward; // the sign needs faces facing out
-  outward->SetInputData(bone);
-  outward->ConsistencyOn();
-  outward->AutoOrientNormalsOn();
-  outward->SplittingOff();
-  outward->ComputeCellNormalsOn();
-  outward->ComputePointNormalsOff();
-  outward->Update();
-  vtkNew<vtkImplicitPolyDataDistance> away;
-  away->SetInput(outward->GetOutput());
+  BoneQueries bone(input);
   // One direction must put every guide on the bone at once (the part is
   // rigid): each guide's contact (its faces on the bone, within its
   // clearance) must face it, as the contact of one guide faces its own
@@ -366,31 +644,7 @@ int vtkLKGuideBarFilter::RequestData(
   for (std::size_t i = 0; i < n; ++i)
   {
     start = add(start, guide[i].approach, -1.0);
-    vtkPolyData* g = guideData[i];
-    std::vector<char> pointOnBone(static_cast<std::size_t>(g->GetNumberOfPoints()));
-    for (vtkIdType p = 0; p < g->GetNumberOfPoints(); ++p)
-      pointOnBone[p] = std::abs(away->EvaluateFunction(g->GetPoint(p))) <= guide[i].clearance + 0.05;
-    vtkNew<vtkIdList> ids;
-    for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
-    {
-      g->GetCellPoints(c, ids);
-      if (ids->GetNumberOfIds() != 3)
-        continue;
-      Vec corner[3];
-      bool onBone = true;
-      for (int k = 0; k < 3; ++k)
-      {
-        g->GetPoint(ids->GetId(k), corner[k].data());
-        onBone = onBone && pointOnBone[ids->GetId(k)];
-      }
-      const double area = vtkTriangle::TriangleArea(corner[0].data(), corner[1].data(), corner[2].data());
-      if (!onBone || area < 1e-3)
-        continue;
-      Vec normal;
-      vtkTriangle::ComputeNormal(corner[0].data(), corner[1].data(), corner[2].data(), normal.data());
-      contactNormals[i].push_back(normal);
-      contactAreas[i].push_back(area);
-    }
+    contactFaces(guideData[i], guide[i].clearance, bone, contactNormals[i], contactAreas[i]);
   }
   if (!(vtkMath::Normalize(start.data()) > 1e-6))
     start = { -guide[0].approach[0], -guide[0].approach[1], -guide[0].approach[2] };
@@ -427,197 +681,25 @@ int vtkLKGuideBarFilter::RequestData(
   const double share = 0.55 / static_cast<double>(n - 1); // of the progress, for each bar
   for (std::size_t b = 0; b + 1 < n; ++b)
   {
-    const Guide* pair[2] = { &guide[b], &guide[b + 1] };
-    const std::size_t number[2] = { b + 1, b + 2 };
-    const double apart = facingApart[b];
-    Vec mean = add(pair[0]->approach, pair[1]->approach);
-    vtkMath::Normalize(mean.data());
-
-    // Each end: at the guide's edge on the other's side of its slot, clear
-    // of the screw hole, in the wall: its middle above the bone along the
-    // approach, or higher where the bar would reach into the bone there (a
-    // bar thicker than the wall, a wall on a slope).
-    Vec end[2], lead[2];
-    for (int i = 0; i < 2; ++i)
-    {
-      const Guide& g = *pair[i];
-      const Guide& other = *pair[1 - i];
-      Vec side = g.normal;
-      if (dot(add(other.slotCentre, g.slotCentre, -1.0), side) < 0.0)
-        side = { -side[0], -side[1], -side[2] };
-      const double half = g.slotWidth / 2.0;
-      const double inner = g.hole > 0.0 ? 0.5 * (half + g.reach) + g.hole / 2.0 + 0.5 : half + 0.5;
-      const double s = std::max(inner, g.reach - radius);
-      if (!(s < g.reach))
-      {
-        vtkErrorMacro("Cannot join the guides: guide " << number[i] << " has no room for the bar beside its screw "
-                                                       << "hole (a larger Reach).");
-        return 0;
-      }
-      const Vec base = add(g.slotCentre, side, s);
-      const double height = boneHeight(base, g.approach);
-      if (!std::isfinite(height))
-      {
-        vtkErrorMacro("Cannot join the guides: no bone under guide " << number[i] << "'s edge (is port 0 the bone the "
-                                                                     << "guides were made on?).");
-        return 0;
-      }
-      const Vec onBone = add(base, g.approach, height - dot(add(base, g.slotCentre, -1.0), g.approach));
-      end[i] = add(onBone, g.approach, g.clearance + g.thickness / 2.0);
-      for (int step = 0; step < 100 && away->EvaluateFunction(end[i].data()) < radius; ++step)
-        end[i] = add(end[i], g.approach, 0.1);
-      const double level = dot(add(end[i], onBone, -1.0), g.approach);
-      if (!(level < g.clearance + g.thickness + 0.5 * radius))
-      {
-        vtkErrorMacro("Cannot join the guides: the bar would stand " << level << " mm above the bone at guide "
-          << number[i] << "'s edge, clear of its wall (a thinner bar, or a thicker wall).");
-        return 0;
-      }
-      lead[i] = add(end[i], side, g.reach - s + radius);
-    }
-
-    // The centre line: straight from end to end, then pushed off the bone.
-    const double spacing = 0.5;
-    std::vector<Vec> line{ end[0] };
-    {
-      const double length = distance(lead[0], lead[1]);
-      const int parts = std::max(2, static_cast<int>(std::ceil(length / spacing)));
-      for (int k = 0; k <= parts; ++k)
-        line.push_back(add(lead[0], add(lead[1], lead[0], -1.0), static_cast<double>(k) / parts));
-      line.push_back(end[1]);
-    }
-    const std::size_t points = line.size();
-    // The distance each point must keep from the bone: the radius at the
-    // guides, the radius and the stand-off a little beyond their edges.
-    std::vector<double> needed(points), arc(points, 0.0);
-    for (std::size_t k = 1; k < points; ++k)
-      arc[k] = arc[k - 1] + distance(line[k - 1], line[k]);
-    const double leadLength = distance(end[0], lead[0]);
-    // Over 5 mm and twice the stand-off, along a smooth step (the bar bends
-    // no tighter than it must).
-    const double ramp = 5.0 + 2.0 * this->StandOff;
-    auto neededAt = [&](double fromEnd) {
-      const double t = std::clamp((fromEnd - leadLength) / ramp, 0.0, 1.0);
-      return radius + this->StandOff * t * t * (3.0 - 2.0 * t);
-    };
-    for (std::size_t k = 0; k < points; ++k)
-      needed[k] = neededAt(std::min(arc[k], arc.back() - arc[k]));
-    // Pushes each point that is too near the bone out to its distance, level
-    // with the guides' middles (square to their mean direction along their
-    // slots, so that the bar goes in front of the bone and not over its edge:
-    // a mandible's teeth): away from the nearest point of the bone, or, inside
-    // it or where that is up or down or back, forward (the guides' mean
-    // approach, square to the line between the ends); the largest shortfall
-    // before the push.
-    Vec chord = add(end[1], end[0], -1.0);
-    vtkMath::Normalize(chord.data());
-    Vec along{ 0, 0, 0 };
-    for (const Guide* g : pair)
-    {
-      Vec axis;
-      vtkMath::Cross(g->normal.data(), g->approach.data(), axis.data());
-      along = add(along, axis, dot(axis, along) < 0.0 ? -1.0 : 1.0);
-    }
-    along = add(along, chord, -dot(along, chord));
-    Vec forward = add(mean, chord, -dot(mean, chord));
-    if (vtkMath::Normalize(along.data()) > 1e-6)
-      forward = add(forward, along, -dot(forward, along));
-    if (!(vtkMath::Normalize(forward.data()) > 1e-6))
-      forward = mean;
-    const bool level = vtkMath::Norm(along.data()) > 0.5;
-    auto push = [&]() {
-      double worst = 0.0;
-      for (std::size_t k = 1; k + 1 < points; ++k)
-      {
-        double nearest[3];
-        const double f = away->EvaluateFunctionAndGetClosestPoint(line[k].data(), nearest);
-        const double shortfall = needed[k] - f;
-        worst = std::max(worst, shortfall);
-        if (shortfall <= 0.0)
-          continue;
-        // Outside the bone: away from it, level (round a corner of the bone
-        // the guides are on), unless that is up or down, over its edge.
-        Vec way = add(line[k], { nearest[0], nearest[1], nearest[2] }, -1.0);
-        vtkMath::Normalize(way.data());
-        if (level)
-          way = add(way, along, -dot(way, along));
-        if (f <= 0.0 || !(vtkMath::Normalize(way.data()) > 0.5) || dot(way, forward) < 0.0)
-          way = forward;
-        line[k] = add(line[k], way, shortfall);
-      }
-      return worst;
-    };
-    // Pushes, then smoothing (each point toward its neighbours' middle, the
-    // ends where they are), until a round's smoothing leaves every point
-    // where it may be; then pushes alone, for what the last smoothing took.
-    const int rounds = 300;
-    for (int round = 0; round < rounds; ++round)
-    {
-      if (push() < 0.01 && round > 0)
-        break;
-      for (int pass = 0; pass < 2; ++pass)
-      {
-        std::vector<Vec> smoothed = line;
-        for (std::size_t k = 1; k + 1 < points; ++k)
-          smoothed[k] = add(add(line[k], line[k], -0.5), add(line[k - 1], line[k + 1]), 0.25);
-        line = smoothed;
-      }
-      if (round % 20 == 0)
-      {
-        this->UpdateProgress(0.05 + share * (static_cast<double>(b) + static_cast<double>(round) / rounds));
-        if (this->GetAbortExecute())
-          break;
-      }
-    }
-    double worst = 0.0;
-    for (int k = 0; k < 10; ++k)
-    {
-      worst = push();
-      if (worst < 1e-3)
-        break;
-    }
+    const BarSettings settings{ radius, this->StandOff, this->MaximumLength, facingApart[b], { b + 1, b + 2 },
+      between(b) };
+    Bar bar;
+    const std::string why = routeBar(guide[b], guide[b + 1], settings, bone,
+      [&](double done) {
+        this->UpdateProgress(0.05 + share * (static_cast<double>(b) + done));
+        return !this->GetAbortExecute();
+      },
+      bar);
     if (lkvtk::stopRequested(this, { output }))
       return 1;
-    if (!(worst < 0.1))
+    if (!why.empty())
     {
-      vtkErrorMacro("Cannot join the guides: " << between(b) << "no bar of " << 2.0 * radius << " mm found a way "
-        << this->StandOff << " mm clear of the bone between them (" << worst << " mm short).");
+      vtkErrorMacro("Cannot join the guides: " << why << ".");
       return 0;
     }
-    double length = 0.0, gap = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 1; k < points; ++k)
-      length += distance(line[k - 1], line[k]);
-    // The gap where the bar is farthest from both guides (past the ramps; on
-    // guides too near for the whole stand-off, at the ramps' top).
-    const double top = *std::max_element(needed.begin() + 1, needed.end() - 1);
-    for (std::size_t k = 1; k + 1 < points; ++k)
-      if (needed[k] >= top - 1e-9)
-        gap = std::min(gap, away->EvaluateFunction(line[k].data()) - radius);
-    if (length > this->MaximumLength)
-    {
-      vtkErrorMacro("Cannot join the guides: " << between(b) << "the bar would be " << length
-        << " mm long, more than MaximumLength (" << this->MaximumLength << " mm).");
-      return 0;
-    }
-    // The tube round it, which crosses itself where its line bends tighter
-    // than its radius.
-    vtkSmartPointer<vtkPolyData> tube = tubeAround(line, radius);
-    lk::TriangleMesh solid, alone;
-    if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(tube), solid); !why.empty())
-    {
-      vtkErrorMacro("Cannot join the guides: " << between(b) << "the bar: " << why << ".");
-      return 0;
-    }
-    if (!lk::solidUnion({ solid }, alone).empty())
-    {
-      vtkErrorMacro("Cannot join the guides: " << between(b) << "the bar would bend tighter than its radius ("
-        << radius << " mm) on its way between them, where it clears the bone (a thinner bar, a smaller StandOff, "
-        << "or guides that face more alike: " << apart << " degrees apart).");
-      return 0;
-    }
-    barSolids.push_back(std::move(solid));
-    barLengths.push_back(length);
-    barGaps.push_back(gap);
+    barSolids.push_back(std::move(bar.solid));
+    barLengths.push_back(bar.length);
+    barGaps.push_back(bar.gap);
   }
   this->UpdateProgress(0.6);
 

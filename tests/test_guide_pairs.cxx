@@ -139,6 +139,8 @@ TEST(GuidePairs, ALineLeftApartIsToldWhy)
   EXPECT_EQ(lkapp::chainLinesByPiece(three), (Chains{ { 0, 1 } }));
   EXPECT_EQ(lkapp::whyLineStaysApart(2, three, lkapp::chainLinesByPiece(three), "saw line", "stroke", number),
     "the saw lines beside it (strokes 1 and 2) are joined to others there");
+  // A line in a chain does not stay apart.
+  EXPECT_EQ(lkapp::whyLineStaysApart(1, three, lkapp::chainLinesByPiece(three), "saw line", "stroke", number), "");
   EXPECT_EQ(lkapp::chainNumbers({ 0, 2, 1 }, number), "1, 3 and 2");
   EXPECT_EQ(lkapp::chainNumbers({ 3 }, number), "4");
 }

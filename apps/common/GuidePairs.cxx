@@ -344,11 +344,14 @@ std::string whyLineStaysApart(std::size_t line, const std::vector<std::set<std::
   const std::vector<std::vector<std::size_t>>& chains, const std::string& lineWord, const std::string& numberWord,
   const std::function<std::string(std::size_t)>& number)
 {
+  for (const std::vector<std::size_t>& chain : chains)
+    if (std::find(chain.begin(), chain.end(), line) != chain.end())
+      return {};
   const std::vector<std::size_t> beside = lineNeighbours(line, piecesOfLine);
   if (beside.empty())
     return "no other " + lineWord + " bounds a piece of the cut with it (a resection guide joins the " + lineWord +
       "s either side of one piece)";
-  (void)chains; // a line beside it that is in no chain would have been joined to it
+  // A line beside it in no chain would have been joined to it.
   if (beside.size() == 1)
     return "the " + lineWord + " beside it (" + numberWord + " " + number(beside[0]) +
       ") is joined to another there";

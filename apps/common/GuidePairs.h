@@ -70,7 +70,8 @@ std::vector<JoinedRun> joinChain(const std::vector<std::size_t>& chain,
 /// a piece with it, else the lines beside it (each paired with another).
 std::vector<std::size_t> lineNeighbours(std::size_t line, const std::vector<std::set<std::size_t>>& piecesOfLine);
 
-/// Why line `line`, in none of `chains`, stays apart, in words: "no other
+/// Why line `line` stays apart, in words, or empty when it is in one of
+/// `chains` (it is joined): "no other
 /// saw line bounds a piece of the cut with it (...)", "the saw line beside it
 /// (stroke 3) is joined to another there" or "the saw lines beside it
 /// (strokes 1, 2 and 3) are joined to others there", with `lineWord` ("saw

@@ -247,13 +247,9 @@ void Planner::updateJoinedGuides()
   }
   // The guides in no chain, and why.
   for (std::size_t i = 0; i < guides.size(); ++i)
-  {
-    if (std::any_of(chains.begin(), chains.end(),
-          [&](const auto& c) { return std::find(c.begin(), c.end(), i) != c.end(); }))
-      continue;
-    const std::string why = lkapp::whyLineStaysApart(i, piecesOf, chains, "saw line", "stroke", strokeOf);
-    addLine(message, "the cutting guide of stroke " + strokeOf(i) + " stays apart: " + why);
-  }
+    if (const std::string why = lkapp::whyLineStaysApart(i, piecesOf, chains, "saw line", "stroke", strokeOf);
+        !why.empty())
+      addLine(message, "the cutting guide of stroke " + strokeOf(i) + " stays apart: " + why);
   joinedGuides = made;
   joinAttempts = tried;
 }
