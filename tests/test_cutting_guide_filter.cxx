@@ -515,17 +515,25 @@ TEST(CuttingGuideFilter, OnBothMandiblesItGoesOnTheOuterSideHoweverTheCutIsSlant
     { "TCGA-CV-7236", { 9.8, -27.6, -980.5 }, { 0.29, -0.22, -0.93 } }, // horizontal through the chin
     { "TCGA-CV-7236", { 11.7, -36.5, -985.5 }, { 0, 0, 1 } },
   };
-  std::map<std::string, vtkSmartPointer<vtkPolyData>> bones;
+  struct Bone
+  {
+    vtkSmartPointer<vtkPolyData> surface;
+    double centre[3] = { 0, 0, 0 }; ///< of its points
+  };
+  std::map<std::string, Bone> bones;
   for (const Cut& cut : cuts)
   {
-    vtkSmartPointer<vtkPolyData>& bone = bones[cut.patient];
-    if (!bone)
-      bone = lktest::tciaMandibleSurface(cut.patient);
+    Bone& b = bones[cut.patient];
+    if (!b.surface)
+    {
+      b.surface = lktest::tciaMandibleSurface(cut.patient);
+      for (vtkIdType i = 0; i < b.surface->GetNumberOfPoints(); ++i)
+        for (int k = 0; k < 3; ++k)
+          b.centre[k] += b.surface->GetPoint(i)[k] / static_cast<double>(b.surface->GetNumberOfPoints());
+    }
+    vtkPolyData* bone = b.surface;
+    const double* centre = b.centre;
     ASSERT_GT(bone->GetNumberOfCells(), 0) << cut.patient;
-    double centre[3] = { 0, 0, 0 };
-    for (vtkIdType i = 0; i < bone->GetNumberOfPoints(); ++i)
-      for (int k = 0; k < 3; ++k)
-        centre[k] += bone->GetPoint(i)[k] / static_cast<double>(bone->GetNumberOfPoints());
     vtkNew<vtkPlane> plane;
     plane->SetOrigin(cut.origin);
     plane->SetNormal(cut.normal);

@@ -5,7 +5,6 @@
 #include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
-#include <array>
 #include <limits>
 
 namespace lk
@@ -24,67 +23,41 @@ ConvexHull::ConvexHull(const std::vector<Vec3>& points)
   for (const Vec3& p : points)
     if (p.allFinite())
       input.emplace_back(p.x(), p.y(), p.z());
-  // Four points not on one plane, or no volume: a hull without volume has
-  // no inside. (CGAL 5.5 gives points on one plane a flat polygon, which as
-  // an indexed triangle set numbers its corners from 1, one past its
-  // points.)
-  auto differs = std::find_if(input.begin(), input.end(), [&](const Point& p) { return p != input.front(); });
-  if (differs == input.end())
-    return;
-  auto offLine = std::find_if(input.begin(), input.end(),
-    [&](const Point& p) { return !CGAL::collinear(input.front(), *differs, p); });
-  if (offLine == input.end())
-    return;
-  if (std::none_of(input.begin(), input.end(),
-        [&](const Point& p) { return CGAL::orientation(input.front(), *differs, *offLine, p) != CGAL::COPLANAR; }))
-    return;
   // Into a surface mesh, as CGAL's own examples do: its indexed triangle
   // set output (vertices and index triples) corrupted the heap inside the
   // planner and latticekit-cut on mandibles ("free(): invalid pointer", in
-  // most runs of two tests; not reproduced outside them).
+  // most runs of two tests; not reproduced outside them). Points on a line
+  // give isolated vertices, points on one plane a flat polygon: no volume,
+  // left empty below.
   Mesh hull;
   CGAL::convex_hull_3(input.begin(), input.end(), hull);
-  std::vector<Point> vertices;
-  for (const Mesh::Vertex_index v : hull.vertices())
-    vertices.push_back(hull.point(v));
-  std::vector<std::array<Point, 3>> triangles;
-  for (const Mesh::Face_index f : hull.faces())
-  {
-    std::array<Point, 3> corners;
-    int k = 0;
-    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(hull.halfedge(f), hull))
-    {
-      if (k < 3)
-        corners[static_cast<std::size_t>(k)] = hull.point(v);
-      ++k;
-    }
-    if (k == 3)
-      triangles.push_back(corners);
-  }
-  if (triangles.size() < 4 || vertices.empty())
+  if (hull.number_of_vertices() < 4)
     return;
+  auto vec = [](const Point& p) { return Vec3(p.x(), p.y(), p.z()); };
 
   // Each face's plane, turned to face away from the hull's vertices' centre
   // (inside any convex hull with volume).
   Vec3 centre = Vec3::Zero();
-  for (const Point& v : vertices)
-    centre += Vec3(v.x(), v.y(), v.z());
-  centre /= static_cast<double>(vertices.size());
+  for (const Mesh::Vertex_index v : hull.vertices())
+    centre += vec(hull.point(v));
+  centre /= static_cast<double>(hull.number_of_vertices());
   double size = 0.0;
-  for (const Point& v : vertices)
-    size = std::max(size, (Vec3(v.x(), v.y(), v.z()) - centre).norm());
+  for (const Mesh::Vertex_index v : hull.vertices())
+    size = std::max(size, (vec(hull.point(v)) - centre).norm());
   double thickest = 0.0;
-  for (const auto& t : triangles)
+  for (const Mesh::Face_index f : hull.faces())
   {
-    const Vec3 a(t[0].x(), t[0].y(), t[0].z());
-    const Vec3 b(t[1].x(), t[1].y(), t[1].z());
-    const Vec3 c(t[2].x(), t[2].y(), t[2].z());
-    Vec3 n = (b - a).cross(c - a);
+    std::vector<Vec3> corners;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(hull.halfedge(f), hull))
+      corners.push_back(vec(hull.point(v)));
+    if (corners.size() != 3)
+      continue; // a flat hull's polygon
+    Vec3 n = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
     const double length = n.norm();
     if (!(length > 0.0))
       continue; // a sliver of the quickhull's output: its neighbours bound the hull
     n /= length;
-    double offset = n.dot(a);
+    double offset = n.dot(corners[0]);
     if (offset - n.dot(centre) < 0.0)
     {
       n = -n;
