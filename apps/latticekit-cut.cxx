@@ -261,8 +261,8 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
         return false;
       for (std::size_t g : run.lines)
         guides[g].joinedStem = stem;
-      std::snprintf(line, sizeof line, "%-16s joined by %s; put on %s; %.0f mm^3 in one part: %s.stl, .vtp\n",
-        label.c_str(), lkapp::barsText(bar).c_str(), lkapp::insertionText(bar).c_str(), bar->GetVolume(),
+      std::snprintf(line, sizeof line, "%-16s %s; put on %s; %.0f mm^3 in one part: %s.stl, .vtp\n", label.c_str(),
+        lkapp::joinText(bar, run.lines, "line", lineNumber).c_str(), lkapp::insertionText(bar).c_str(), bar->GetVolume(),
         stem.c_str());
       joinedReport += line;
     }
@@ -303,8 +303,10 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
   for (const Guide& g : guides)
     made.push_back(g.why.empty() ? g.filter->GetOutput() : nullptr);
   for (const lkapp::GuideOverlap& o : lkapp::overlappingGuides(made))
-    std::printf("guide lines %zu and %zu overlap over %.1f mm along the bone: they cannot be on it together\n",
-      guides[o.first].line + 1, guides[o.second].line + 1, o.along);
+    if (guides[o.first].joinedStem.empty() || guides[o.first].joinedStem != guides[o.second].joinedStem)
+      std::printf("guide lines %zu and %zu overlap over %.1f mm along the bone: they cannot be on it together%s\n",
+        guides[o.first].line + 1, guides[o.second].line + 1, o.along,
+        join ? "" : " (--join-guides merges them into one block with both slots)");
   return true;
 }
 

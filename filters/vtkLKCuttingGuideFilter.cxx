@@ -1,6 +1,6 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "latticekit/ConvexHull.h"
-#include "latticekit/SolidUnion.h"
+#include "latticekit/SolidBooleans.h"
 #include "vtkLKAbort.h"
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"

@@ -3,7 +3,7 @@
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
 
-#include "latticekit/SolidUnion.h"
+#include "latticekit/SolidBooleans.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -23,9 +23,11 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataConnectivityFilter.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStaticPointLocator.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
 #include <vtkTubeFilter.h>
@@ -66,7 +68,8 @@ double distance(const Vec& a, const Vec& b)
 struct Guide
 {
   Vec approach{}, normal{}, slotCentre{};
-  double slotWidth = 0.0, thickness = 0.0, reach = 0.0, clearance = 0.0, hole = 0.0;
+  double slotWidth = 0.0, slotLength = 0.0, thickness = 0.0, reach = 0.0, clearance = 0.0, hole = 0.0;
+  std::vector<Vec> holes; ///< where each screw hole's axis meets the bone
 };
 
 /// Reads `name` (`components` finite values) from the guide's field data;
@@ -190,6 +193,8 @@ std::string readGuide(vtkPolyData* data, std::size_t number, Guide& g)
     missing = "GuideSlotCentre";
   else if (!readField(data, "GuideSlotWidth", &g.slotWidth, 1))
     missing = "GuideSlotWidth";
+  else if (!readField(data, "GuideSlotLength", &g.slotLength, 1))
+    missing = "GuideSlotLength";
   else if (!readField(data, "GuideThickness", &g.thickness, 1))
     missing = "GuideThickness";
   else if (!readField(data, "GuideReach", &g.reach, 1))
@@ -202,35 +207,57 @@ std::string readGuide(vtkPolyData* data, std::size_t number, Guide& g)
     return "guide " + std::to_string(number) + " has no " + missing + (missing[0] == 'p' ? "" : " of finite values") +
       " (guides come from vtkLKCuttingGuideFilter)";
   if (!(vtkMath::Normalize(g.approach.data()) > 0.0) || !(vtkMath::Normalize(g.normal.data()) > 0.0) ||
-    !(g.thickness > 0.0) || !(g.reach > g.slotWidth / 2.0) || !(g.slotWidth > 0.0) || !(g.clearance >= 0.0) ||
-    !(g.hole >= 0.0))
+    !(g.thickness > 0.0) || !(g.reach > g.slotWidth / 2.0) || !(g.slotWidth > 0.0) || !(g.slotLength > 0.0) ||
+    !(g.clearance >= 0.0) || !(g.hole >= 0.0))
     return "guide " + std::to_string(number) +
       "'s field data do not describe a guide (a zero approach or normal, or sizes out of their ranges)";
+  if (vtkDataArray* holes = data->GetFieldData()->GetArray("GuideScrewHoles");
+      holes && holes->GetNumberOfComponents() == 3 && g.hole > 0.0)
+    for (vtkIdType h = 0; h < holes->GetNumberOfTuples(); ++h)
+    {
+      Vec x;
+      holes->GetTuple(h, x.data());
+      if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+        g.holes.push_back(x);
+    }
   return {};
 }
 
-/// Whether guide i and the next can be joined by a bar of `radius`: empty,
-/// or why not (after `between`, which names them where there are more than
-/// two). `apart` is set to the angle between their approaches (degrees).
+/// The least guide wall between two slots merged into one block (mm).
+constexpr double MinimumWallBetweenSlots = 2.0;
+
+/// Whether guide i and the next can be joined: empty, or why not (after
+/// `between`, which names them where there are more than two). `apart` is
+/// set to the angle between their approaches (degrees); `merged` to whether
+/// they are joined as one block (their slots nearer than their reaches: the
+/// guides overlap, and no bar fits between them) rather than by a bar of
+/// `radius`.
 std::string neighbourProblem(const std::vector<Guide>& guide, std::size_t i, double radius, double maximumLength,
-  const std::string& between, double& apart)
+  const std::string& between, double& apart, bool& merged)
 {
   std::ostringstream why;
   const Guide& a = guide[i];
   const Guide& b = guide[i + 1];
   apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(a.approach, b.approach), -1.0, 1.0)));
   const double slotsApart = distance(a.slotCentre, b.slotCentre);
+  merged = slotsApart < a.reach + b.reach;
   if (apart > 120.0)
     why << between << "they are put on from directions " << apart
         << " degrees apart (more than 120): a bar between them would go round the bone";
   else if (slotsApart > maximumLength)
     why << between << "their slots are " << slotsApart << " mm apart, more than MaximumLength (" << maximumLength
         << " mm)";
+  // Two slots in one block need a wall between them.
+  else if (slotsApart < 0.5 * (a.slotWidth + b.slotWidth) + MinimumWallBetweenSlots)
+    why << between << "their slots are " << slotsApart << " mm apart, too near for a wall of "
+        << MinimumWallBetweenSlots << " mm between them (one saw cut?)";
   // Room between the guides' facing edges for the bar (guides nearer each
-  // other would have it cross the other's slot, or are one guide).
-  else if (slotsApart < a.reach + b.reach + 2.0 * radius)
+  // other would have it cross the other's slot; nearer still, they overlap
+  // and are one block).
+  else if (!merged && slotsApart < a.reach + b.reach + 2.0 * radius)
     why << between << "their slots are " << slotsApart << " mm apart, too near for a bar of " << 2.0 * radius
-        << " mm between their edges (they reach " << a.reach << " and " << b.reach << " mm from their slots)";
+        << " mm between their edges (they reach " << a.reach << " and " << b.reach
+        << " mm from their slots) and too far apart to overlap as one block";
   // A guide between two others has its bars on either side of its slot
   // (the guides in their order along the bone): two bars on one side
   // would meet there, and one of them would pass over the other guide.
@@ -239,6 +266,129 @@ std::string neighbourProblem(const std::vector<Guide>& guide, std::size_t i, dou
       0.0)
     why << "guides " << i << " and " << i + 2 << " lie on one side of guide " << i + 1
         << "'s slot, so their bars would leave it on one side (give the guides in their order along the bone)";
+  return why.str();
+}
+
+/// Guide `g`'s frame: its plane's normal, the direction along its slot and
+/// its approach, unit and square to each other ((n, d, e) is right-handed).
+void frameOf(const Guide& g, Vec& n, Vec& e, Vec& d)
+{
+  n = g.normal;
+  vtkMath::Cross(n.data(), g.approach.data(), e.data());
+  vtkMath::Normalize(e.data());
+  vtkMath::Cross(e.data(), n.data(), d.data());
+}
+
+/// A box: corner k is `centre` plus, along each axis j, `low[j]` or
+/// `high[j]` (bit j of k) times axis j (a right-handed frame).
+lk::TriangleMesh boxSolid(const Vec& centre, const Vec axis[3], const Vec& low, const Vec& high)
+{
+  lk::TriangleMesh box;
+  for (int k = 0; k < 8; ++k)
+  {
+    Vec x = centre;
+    for (int j = 0; j < 3; ++j)
+      x = add(x, axis[j], (k >> j) & 1 ? high[j] : low[j]);
+    box.points.emplace_back(x[0], x[1], x[2]);
+  }
+  box.triangles = { { 0, 4, 6 }, { 0, 6, 2 }, { 1, 3, 7 }, { 1, 7, 5 }, { 0, 1, 5 }, { 0, 5, 4 }, { 2, 6, 7 },
+    { 2, 7, 3 }, { 0, 2, 3 }, { 0, 3, 1 }, { 4, 5, 7 }, { 4, 7, 6 } };
+  return box;
+}
+
+/// A closed cylinder of `radius` (48 sides, outside the circle) round the
+/// axis through `base` along unit `d`, from `from` to `to` along it.
+lk::TriangleMesh cylinderSolid(const Vec& base, const Vec& d, double radius, double from, double to)
+{
+  constexpr int sides = 48;
+  Vec u, w;
+  vtkMath::Perpendiculars(d.data(), u.data(), w.data(), 0.0);
+  const double r = radius / std::cos(vtkMath::Pi() / sides); // the circle inside the polygon
+  lk::TriangleMesh c;
+  for (const double at : { from, to })
+    for (int k = 0; k < sides; ++k)
+    {
+      const double phi = 2.0 * vtkMath::Pi() * k / sides;
+      const Vec x = add(add(add(base, d, at), u, r * std::cos(phi)), w, r * std::sin(phi));
+      c.points.emplace_back(x[0], x[1], x[2]);
+    }
+  for (const double at : { from, to })
+  {
+    const Vec x = add(base, d, at);
+    c.points.emplace_back(x[0], x[1], x[2]);
+  }
+  for (std::int64_t k = 0; k < sides; ++k)
+  {
+    const std::int64_t next = (k + 1) % sides;
+    c.triangles.push_back({ k, next, sides + next });
+    c.triangles.push_back({ k, sides + next, sides + k });
+    c.triangles.push_back({ 2 * sides, next, k });
+    c.triangles.push_back({ 2 * sides + 1, sides + k, sides + next });
+  }
+  return c;
+}
+
+/// What guide `k` cuts out of a guide merged with it, so that its slot and
+/// screw holes stay open through that guide: its slot (a box a hair wider
+/// and longer than the slot, so that the faces left do not meet the slot's
+/// own walls) from `lowest` to `highest` along its approach (from its slot
+/// centre), and its screw holes (0.05 mm wider) from 2 mm into the bone to
+/// `highest`.
+std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double highest)
+{
+  constexpr double hair = 0.01;
+  Vec n, e, d;
+  frameOf(k, n, e, d);
+  const Vec box[3] = { n, d, e };
+  const double halfWidth = k.slotWidth / 2.0 + hair, halfLength = k.slotLength / 2.0 + hair;
+  std::vector<lk::TriangleMesh> cutters{ boxSolid(
+    k.slotCentre, box, { -halfWidth, lowest, -halfLength }, { halfWidth, highest, halfLength }) };
+  for (const Vec& h : k.holes)
+  {
+    const double at = dot(add(h, k.slotCentre, -1.0), d);
+    cutters.push_back(cylinderSolid(h, d, k.hole / 2.0 + 0.05, -2.0, highest - at));
+  }
+  return cutters;
+}
+
+/// Why `part` is not one piece, or empty: merged guides (`merged[i]`:
+/// guide i and the next) that do not meet, named after `between(i)`, or
+/// else how many pieces.
+std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, const std::vector<char>& merged,
+  double radius, const std::function<std::string(std::size_t)>& between)
+{
+  vtkNew<vtkPolyDataConnectivityFilter> regions;
+  regions->SetInputData(part);
+  regions->SetExtractionModeToAllRegions();
+  regions->ColorRegionsOn();
+  regions->Update();
+  const int count = regions->GetNumberOfExtractedRegions();
+  if (count <= 1)
+    return {};
+  vtkPolyData* coloured = regions->GetOutput();
+  vtkDataArray* region = coloured->GetPointData()->GetArray("RegionId");
+  vtkNew<vtkStaticPointLocator> points;
+  points->SetDataSet(coloured);
+  points->BuildLocator();
+  // A guide's piece: the one nearest a point inside its wall, beside its
+  // slot (no other guide's slot is that near: a wall between them).
+  auto regionOf = [&](const Guide& g) {
+    Vec n, e, d;
+    frameOf(g, n, e, d);
+    const Vec x = add(add(g.slotCentre, n, g.slotWidth / 2.0 + 0.5), d, g.clearance + g.thickness / 2.0);
+    const vtkIdType nearest = points->FindClosestPoint(x.data());
+    return region && nearest >= 0 ? region->GetTuple1(nearest) : -1.0;
+  };
+  std::ostringstream why;
+  for (std::size_t i = 0; i + 1 < guide.size(); ++i)
+    if (merged[i] && regionOf(guide[i]) != regionOf(guide[i + 1]))
+    {
+      why << between(i) << "their slots are " << distance(guide[i].slotCentre, guide[i + 1].slotCentre)
+          << " mm apart, too near for a bar of " << 2.0 * radius
+          << " mm between their edges, and the guides do not meet to be one block";
+      return why.str();
+    }
+  why << "the part would be " << count << " pieces (a guide cut apart by the slot of a guide merged with it)";
   return why.str();
 }
 
@@ -568,6 +718,7 @@ int vtkLKGuideBarFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->BarLength = this->BarDiameter = this->BarGap = this->Volume = 0.0;
   this->BarLengths.clear();
+  this->Merged.clear();
   this->BarGaps.clear();
   this->ApproachUsed[0] = this->ApproachUsed[1] = this->ApproachUsed[2] = 0.0;
   this->InsertionMargin = 0.0;
@@ -625,13 +776,19 @@ int vtkLKGuideBarFilter::RequestData(
     return n == 2 ? std::string() : "guides " + std::to_string(i + 1) + " and " + std::to_string(i + 2) + ": ";
   };
   std::vector<double> facingApart(n - 1); // degrees between each guide's approach and the next's
+  std::vector<char> merged(n - 1, 0);      // guide i and the next are one block, not joined by a bar
   for (std::size_t i = 0; i + 1 < n; ++i)
-    if (const std::string why = neighbourProblem(guide, i, radius, this->MaximumLength, between(i), facingApart[i]);
+  {
+    bool oneBlock = false;
+    if (const std::string why =
+          neighbourProblem(guide, i, radius, this->MaximumLength, between(i), facingApart[i], oneBlock);
         !why.empty())
     {
       vtkErrorMacro("Cannot join the guides: " << why << ".");
       return 0;
     }
+    merged[i] = oneBlock;
+  }
 
   BoneQueries bone(input);
   // One direction must put every guide on the bone at once (the part is
@@ -681,6 +838,8 @@ int vtkLKGuideBarFilter::RequestData(
   const double share = 0.55 / static_cast<double>(n - 1); // of the progress, for each bar
   for (std::size_t b = 0; b + 1 < n; ++b)
   {
+    if (merged[b])
+      continue;
     const BarSettings settings{ radius, this->StandOff, this->MaximumLength, facingApart[b], { b + 1, b + 2 },
       between(b) };
     Bar bar;
@@ -703,21 +862,68 @@ int vtkLKGuideBarFilter::RequestData(
   }
   this->UpdateProgress(0.6);
 
-  // The union of the guides and the bars, in their order along the bone.
-  std::vector<lk::TriangleMesh> solids;
-  std::string names = "guide 1";
+  // Guides merged into one block: each less the slots and screw holes of
+  // the others in its block, so that every slot and hole stays open through
+  // the whole block (a guide's wall over its neighbour's slot would stop
+  // the saw).
+  std::vector<std::size_t> block(n, 0);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    block[i + 1] = merged[i] ? block[i] : block[i] + 1;
+  std::vector<lk::TriangleMesh> guideSolids(n);
   for (std::size_t i = 0; i < n; ++i)
-  {
-    lk::TriangleMesh solid;
-    if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(guideData[i]), solid); !why.empty())
+    if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(guideData[i]), guideSolids[i]);
+        !why.empty())
     {
       vtkErrorMacro("Cannot join the guides: guide " << i + 1 << ": " << why << ".");
       return 0;
     }
-    solids.push_back(std::move(solid));
-    if (i + 1 < n)
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    std::vector<lk::TriangleMesh> cutters;
+    for (std::size_t k = 0; k < n; ++k)
     {
-      solids.push_back(std::move(barSolids[i]));
+      if (k == j || block[k] != block[j])
+        continue;
+      Vec axisN, axisE, axisD;
+      frameOf(guide[k], axisN, axisE, axisD);
+      double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+      for (const lk::Vec3& p : guideSolids[k].points)
+        lowest = std::min(lowest, dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), axisD));
+      for (std::size_t m = 0; m < n; ++m)
+        if (block[m] == block[j])
+          for (const lk::Vec3& p : guideSolids[m].points)
+            highest = std::max(highest, dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), axisD));
+      for (lk::TriangleMesh& c : cuttersOf(guide[k], lowest - 1.0, highest + 1.0))
+        cutters.push_back(std::move(c));
+    }
+    if (cutters.empty())
+      continue;
+    lk::TriangleMesh rest;
+    if (const std::string why = lk::solidDifference(guideSolids[j], cutters, rest); !why.empty())
+    {
+      vtkErrorMacro("Cannot join the guides: guide " << j + 1 << " with the slots of those merged with it: " << why
+                                                     << ".");
+      return 0;
+    }
+    guideSolids[j] = std::move(rest);
+    this->UpdateProgress(0.6 + 0.1 * static_cast<double>(j + 1) / static_cast<double>(n));
+    if (lkvtk::stopRequested(this, { output }))
+      return 1;
+  }
+
+  // The union of the guides and the bars, in their order along the bone.
+  std::vector<lk::TriangleMesh> solids;
+  std::string names = "guide 1";
+  std::size_t nextBar = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!guideSolids[i].triangles.empty())
+      solids.push_back(std::move(guideSolids[i]));
+    if (i + 1 < n && merged[i])
+      names += ", guide " + std::to_string(i + 2);
+    else if (i + 1 < n)
+    {
+      solids.push_back(std::move(barSolids[nextBar++]));
       names += (n == 2 ? ", the bar, guide " : ", a bar, guide ") + std::to_string(i + 2);
     }
   }
@@ -732,6 +938,13 @@ int vtkLKGuideBarFilter::RequestData(
     return 1;
 
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(joined);
+  // One part: merged guides that do not meet (slots offset along each
+  // other, the guides on different faces) would be two.
+  if (const std::string why = apartPieces(result, guide, merged, radius, between); !why.empty())
+  {
+    vtkErrorMacro("Cannot join the guides: " << why << ".");
+    return 0;
+  }
   vtkNew<vtkMassProperties> mass;
   mass->SetInputData(result);
   mass->Update();
@@ -746,8 +959,9 @@ int vtkLKGuideBarFilter::RequestData(
   this->UndercutArea = undercutArea;
   this->BarGaps = barGaps;
   this->BarLength = std::accumulate(barLengths.begin(), barLengths.end(), 0.0);
-  this->BarDiameter = 2.0 * radius;
-  this->BarGap = *std::min_element(barGaps.begin(), barGaps.end());
+  this->BarDiameter = barLengths.empty() ? 0.0 : 2.0 * radius;
+  this->BarGap = barGaps.empty() ? 0.0 : *std::min_element(barGaps.begin(), barGaps.end());
+  this->Merged.assign(merged.begin(), merged.end());
   this->Volume = mass->GetVolume();
   vtkFieldData* fd = output->GetFieldData();
   for (const auto& [name, values] :
@@ -757,6 +971,13 @@ int vtkLKGuideBarFilter::RequestData(
     a->SetName(name);
     for (double v : *values)
       a->InsertNextValue(v);
+    fd->AddArray(a);
+  }
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName("GuideMerged");
+    for (char m : merged)
+      a->InsertNextValue(m ? 1.0 : 0.0);
     fd->AddArray(a);
   }
   lkvtk::addFieldValue(fd, "GuideBarDiameter", this->BarDiameter);
@@ -773,6 +994,16 @@ double vtkLKGuideBarFilter::GetBarLength(int bar)
   return bar >= 0 && static_cast<std::size_t>(bar) < this->BarLengths.size() ? this->BarLengths[bar] : 0.0;
 }
 
+bool vtkLKGuideBarFilter::GetMerged(int pair)
+{
+  return pair >= 0 && static_cast<std::size_t>(pair) < this->Merged.size() && this->Merged[pair];
+}
+
+int vtkLKGuideBarFilter::GetNumberOfMerges()
+{
+  return static_cast<int>(std::count(this->Merged.begin(), this->Merged.end(), 1));
+}
+
 double vtkLKGuideBarFilter::GetBarGap(int bar)
 {
   return bar >= 0 && static_cast<std::size_t>(bar) < this->BarGaps.size() ? this->BarGaps[bar] : 0.0;
@@ -785,6 +1016,7 @@ void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StandOff: " << this->StandOff << "\n";
   os << indent << "MaximumLength: " << this->MaximumLength << "\n";
   os << indent << "NumberOfBars: " << this->BarLengths.size() << "\n";
+  os << indent << "NumberOfMerges: " << this->GetNumberOfMerges() << "\n";
   os << indent << "BarLength: " << this->BarLength << "\n";
   os << indent << "BarDiameter: " << this->BarDiameter << "\n";
   os << indent << "BarGap: " << this->BarGap << "\n";

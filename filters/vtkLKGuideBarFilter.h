@@ -42,16 +42,28 @@
  *   up to 10 degrees, over up to 5 % of the contact's area, is an undercut
  *   that printing's tolerance and the periosteum take up, and is reported;
  *   more (far round the bone: a ramus guide on each side) is refused.
- * - The bar is a tube round that line (vtkTubeFilter, capped), and the two
- *   guides and the bar are joined into one closed surface (CGAL's
- *   corefinement, lk::solidUnion): one part, facing outward, its volume
- *   what it looks to be.
+ * - Guides next to each other whose slots are nearer than their two reaches
+ *   overlap on the bone (two saw lines 12 mm apart across a short segment,
+ *   a wedge): no bar fits between them, and printed apart they could not be
+ *   on the bone together. They are merged into one block instead: each
+ *   guide less the other's slot (a box a hundredth of a millimetre wider
+ *   and longer, through the whole block along that guide's approach) and
+ *   screw holes (0.05 mm wider), then joined, so that every slot and hole
+ *   stays open through the block. Their slots must leave a wall of 2 mm
+ *   between them; merged guides that do not meet (their slots offset along
+ *   each other) are refused.
+ * - The bar is a tube round that line (vtkTubeFilter, capped), and the
+ *   guides and the bars are joined into one closed surface (CGAL's
+ *   corefinement, lk::solidUnion; the slots cut by lk::solidDifference):
+ *   one part, facing outward, its volume what it looks to be.
  *
  * Inputs: port 0, the bone surface (a closed mesh) the guides were made on;
  * port 1, two or more guides (connections, vtkLKCuttingGuideFilter's
  * outputs), in their order along the bone. Output: the joined guide, a
  * closed triangle mesh oriented outward. Field data: GuideBarLength (mm
- * along each bar's centre line, one value for each bar, in order),
+ * along each bar's centre line, one value for each bar, in order; merged
+ * guides have none between them), GuideMerged (for each guide and the
+ * next, 1 where they were merged into one block, else 0),
  * GuideBarGap (for each bar, the least distance between it and the bone
  * where it is farthest from both its guides: StandOff, or less for guides
  * too near each other for the bar to rise that far, mm), GuideBarDiameter
@@ -65,9 +77,11 @@
  * guide without the field data above (or with data that describe no
  * guide); a parameter out of range; two guides next to each other put on
  * from directions more than 120 degrees apart (the bar would go round the
- * bone); two guides next to each other farther apart than MaximumLength, or
- * too near for a bar between their edges (their slots nearer than both
- * reaches and the bar's diameter: it would cross a slot); a guide whose
+ * bone); two guides next to each other farther apart than MaximumLength,
+ * too near for a bar between their edges yet too far apart to overlap
+ * (their slots nearer than both reaches and the bar's diameter, but not
+ * nearer than both reaches), with slots too near for a wall of 2 mm
+ * between them (one saw cut twice), or merged without meeting; a guide whose
  * neighbours before and after it lie on one side of its slot (guides not in
  * their order along the bone: a bar would pass over a guide); guides no one
  * direction puts on the bone at once (their contacts face too far apart:
@@ -117,8 +131,8 @@ public:
 
   ///@{
   /// After an update (zeros before, or after an error): the bars' length
-  /// all together (mm), their diameter, the least of their gaps, the part's
-  /// volume (mm^3).
+  /// all together (mm), their diameter, the least of their gaps (these
+  /// three 0 where every pair was merged: no bar), the part's volume (mm^3).
   vtkGetMacro(BarLength, double);
   vtkGetMacro(BarDiameter, double);
   vtkGetMacro(BarGap, double);
@@ -139,12 +153,21 @@ public:
   ///@}
 
   ///@{
-  /// After an update: how many bars (guides less one; 0 before, or after an
-  /// error), and the length and gap of bar `bar` (0 is between guides 1 and
-  /// 2; 0 for a bar there is not).
+  /// After an update: how many bars (guides less one, less the pairs
+  /// merged; 0 before, or after an error), and the length and gap of bar
+  /// `bar` (in their order along the guides, merged pairs having none; 0
+  /// for a bar there is not).
   int GetNumberOfBars() { return static_cast<int>(this->BarLengths.size()); }
   double GetBarLength(int bar);
   double GetBarGap(int bar);
+  ///@}
+
+  ///@{
+  /// After an update: whether guide `pair` + 1 and the next (0 is guides 1
+  /// and 2) were merged into one block rather than joined by a bar (false
+  /// for a pair there is not), and how many pairs were.
+  bool GetMerged(int pair);
+  int GetNumberOfMerges();
   ///@}
 
 protected:
@@ -165,6 +188,7 @@ protected:
   double UndercutArea = 0.0;
   std::vector<double> BarLengths;
   std::vector<double> BarGaps;
+  std::vector<char> Merged;
 
 private:
   vtkLKGuideBarFilter(const vtkLKGuideBarFilter&) = delete;

@@ -3,7 +3,7 @@
 // come off along its approach), and on bad input.
 #include "TestSupport.h"
 
-#include "latticekit/SolidUnion.h"
+#include "latticekit/SolidBooleans.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKCuttingGuideFilter.h"

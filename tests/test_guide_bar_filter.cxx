@@ -1,5 +1,6 @@
 // vtkLKGuideBarFilter: two cutting guides joined by a bar, on a long box
-// (where the bar must lie, its gap, the volume), three joined by two bars, and
+// (where the bar must lie, its gap, the volume), three joined by two bars,
+// overlapping guides merged into one block with their slots open, and
 // on the TCIA mandible (one closed part outside the bone, screw holes left
 // open), and bad input.
 #include "TestSupport.h"
@@ -331,6 +332,77 @@ TEST(GuideBarFilter, ThreeGuidesInTheirOrderAlongTheBoxAreOnePartWithTwoBars)
   EXPECT_GT(bar->GetBarLength(), 68.0);
 }
 
+TEST(GuideBarFilter, OverlappingGuidesAreMergedIntoOneBlockWithEverySlotAndHoleOpen)
+{
+  vtkSmartPointer<vtkPolyData> bone = longBox();
+  const double normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
+  // Saw lines 12 mm apart (the guides overlap over 4 mm), then 6 mm apart
+  // (each slot and the hole beside it within the other guide's reach).
+  for (const double apart : { 12.0, 6.0 })
+  {
+    const double left[3] = { -apart / 2.0, 0, 0 }, right[3] = { apart / 2.0, 0, 0 };
+    double volumes[2];
+    vtkSmartPointer<vtkPolyData> guide[2] = { guideOn(bone, left, normal, front, &volumes[0]),
+      guideOn(bone, right, normal, front, &volumes[1]) };
+    ASSERT_GT(guide[0]->GetNumberOfCells(), 0);
+    ASSERT_GT(guide[1]->GetNumberOfCells(), 0);
+    vtkNew<vtkLKGuideBarFilter> bar;
+    bar->SetBoneData(bone);
+    bar->AddGuideData(guide[0]);
+    bar->AddGuideData(guide[1]);
+    lktest::ProgressRecorder progress(bar);
+    bar->Update();
+    vtkPolyData* out = bar->GetOutput();
+    ASSERT_GT(out->GetNumberOfCells(), 0) << apart;
+    // One closed block, no bar.
+    EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0) << apart;
+    EXPECT_EQ(regions(out), 1) << apart;
+    EXPECT_TRUE(bar->GetMerged(0));
+    EXPECT_FALSE(bar->GetMerged(1));
+    EXPECT_EQ(bar->GetNumberOfMerges(), 1);
+    EXPECT_EQ(bar->GetNumberOfBars(), 0);
+    EXPECT_EQ(bar->GetBarLength(), 0.0);
+    EXPECT_EQ(bar->GetBarDiameter(), 0.0);
+    vtkDataArray* merged = out->GetFieldData()->GetArray("GuideMerged");
+    ASSERT_NE(merged, nullptr);
+    ASSERT_EQ(merged->GetNumberOfTuples(), 1);
+    EXPECT_EQ(merged->GetComponent(0, 0), 1.0);
+    EXPECT_EQ(out->GetFieldData()->GetArray("GuideBarLength")->GetNumberOfTuples(), 0);
+    // Less than the two guides apart (they overlap), more than either.
+    EXPECT_NEAR(lktest::signedVolume(out), bar->GetVolume(), 1e-6 * bar->GetVolume());
+    EXPECT_LT(bar->GetVolume(), volumes[0] + volumes[1] - 1.0) << apart;
+    EXPECT_GT(bar->GetVolume(), std::max(volumes[0], volumes[1])) << apart;
+    // Outside the box.
+    vtkNew<vtkImplicitPolyDataDistance> inBone;
+    inBone->SetInput(bone);
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      ASSERT_GT(inBone->EvaluateFunction(out->GetPoint(i)), -1e-6) << "point " << i << " inside the bone";
+    // Each slot open from end to end through the whole block: its middle
+    // plane, at the wall's middle height and just under the top, is 0.6
+    // mm (half the slot) from the part, or its distance to the slot's end;
+    // and each screw hole is open from the bone out.
+    vtkNew<vtkImplicitPolyDataDistance> inPart;
+    inPart->SetInput(out);
+    for (int g = 0; g < 2; ++g)
+    {
+      vtkFieldData* fd = guide[g]->GetFieldData();
+      const double length = fd->GetArray("GuideSlotLength")->GetComponent(0, 0);
+      double centre[3];
+      fd->GetArray("GuideSlotCentre")->GetTuple(0, centre);
+      for (const double height : { 2.0, 3.9 })
+        for (double t = -length / 2.0 + 0.3; t <= length / 2.0 - 0.3; t += 0.5)
+        {
+          double x[3] = { centre[0], centre[1] - height, t };
+          EXPECT_GT(inPart->EvaluateFunction(x), std::min(0.55, length / 2.0 - std::abs(t) - 0.05)) << apart << " mm apart, slot " << g << " at z = " << t
+                                                        << ", " << height << " mm out";
+        }
+      EXPECT_EQ(coveredHoles(guide[g], out), 0) << apart << " mm apart, guide " << g;
+    }
+    ASSERT_GE(progress.progress.size(), 3u);
+    EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
+  }
+}
+
 TEST(GuideBarFilter, RoundARingNoOneDirectionPutsThreeGuidesOn)
 {
   // A ring (a torus, 40 mm round, its tube 10 mm), guides on its outside at
@@ -390,6 +462,11 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
   const double nearCorner[3] = { 40, 0, 0 }, onEnd[3] = { 46, 0, 0 }, across[3] = { 0, 1, 0 }, end[3] = { 1, 0, 0 };
   vtkSmartPointer<vtkPolyData> cornerFront = guideOn(bone, nearCorner, normal, front),
                                cornerEnd = guideOn(bone, onEnd, across, end);
+  // Saw lines too near for two slots in one block, and too near for a bar
+  // but too far for the guides to overlap.
+  const double x1[3] = { -1.5, 0, 0 }, x2[3] = { 1.5, 0, 0 }, x3[3] = { -9, 0, 0 }, x4[3] = { 9, 0, 0 };
+  vtkSmartPointer<vtkPolyData> threeLeft = guideOn(bone, x1, normal, front), threeRight = guideOn(bone, x2, normal, front),
+                               gapLeft = guideOn(bone, x3, normal, front), gapRight = guideOn(bone, x4, normal, front);
   struct Case
   {
     const char* why;
@@ -410,7 +487,13 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
     { "a plain mesh", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(bone); },
       "guide 2 has no GuideApproach of finite values (guides come from vtkLKCuttingGuideFilter)" },
     { "the same guide twice", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(a); },
-      "their slots are 0 mm apart, too near for a bar of 4 mm between their edges" },
+      "their slots are 0 mm apart, too near for a wall of 2 mm between them (one saw cut?)" },
+    { "slots 3 mm apart", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(threeLeft); f->AddGuideData(threeRight); },
+      "their slots are 3 mm apart, too near for a wall of 2 mm between them" },
+    { "guides 18 mm apart",
+      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(gapLeft); f->AddGuideData(gapRight); },
+      "their slots are 18 mm apart, too near for a bar of 4 mm between their edges (they reach 8 and 8 mm from "
+      "their slots) and too far apart to overlap as one block" },
     { "a guide of no thickness",
       [&](vtkLKGuideBarFilter* f) {
         auto odd = vtkSmartPointer<vtkPolyData>::New();
@@ -428,9 +511,10 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
       "Diameter must be 1 to 20 mm" },
     { "NaN stand-off", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetStandOff(nan); },
       "StandOff must be 0 to 50 mm" },
-    { "guides too near",
+    { "guides too near for a bar, round a corner from each other",
       [&](vtkLKGuideBarFilter* f) { f->AddGuideData(cornerFront); f->AddGuideData(cornerEnd); },
-      "their slots are 14.1421 mm apart, too near for a bar of 4 mm between their edges" },
+      "their slots are 14.1421 mm apart, too near for a bar of 4 mm between their edges, and the guides do not "
+      "meet to be one block" },
     { "a bar to stand 50 mm off the bone",
       [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetStandOff(50); },
       "the bar would bend tighter than its radius (2 mm) on its way between them" },

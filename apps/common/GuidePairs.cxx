@@ -270,21 +270,45 @@ std::vector<GuideOverlap> overlappingGuides(const std::vector<vtkPolyData*>& gui
   return overlaps;
 }
 
-std::string barsText(vtkLKGuideBarFilter* bar)
+std::string joinText(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& lines, const std::string& numberWord,
+  const std::function<std::string(std::size_t)>& number)
 {
   const int bars = bar->GetNumberOfBars();
-  std::string lengths;
-  for (int b = 0; b < bars; ++b)
+  std::string text;
+  if (bars > 0)
   {
-    char length[32];
-    std::snprintf(length, sizeof length, "%.0f", bar->GetBarLength(b));
-    lengths += (b == 0 ? "" : b + 1 == bars ? " and " : ", ") + std::string(length);
+    std::string lengths;
+    for (int b = 0; b < bars; ++b)
+    {
+      char length[32];
+      std::snprintf(length, sizeof length, "%.0f", bar->GetBarLength(b));
+      lengths += (b == 0 ? "" : b + 1 == bars ? " and " : ", ") + std::string(length);
+    }
+    char said[300];
+    std::snprintf(said, sizeof said, "joined by %s of %.1f mm, %s mm long and %s%.1f mm clear of the bone between them",
+      bars == 1 ? "a bar" : (std::to_string(bars) + " bars").c_str(), bar->GetBarDiameter(), lengths.c_str(),
+      bars == 1 ? "" : "at least ", bar->GetBarGap());
+    text = said;
   }
-  char text[300];
-  std::snprintf(text, sizeof text, "%s of %.1f mm, %s mm long and %s%.1f mm clear of the bone between them",
-    bars == 1 ? "a bar" : (std::to_string(bars) + " bars").c_str(), bar->GetBarDiameter(), lengths.c_str(),
-    bars == 1 ? "" : "at least ", bar->GetBarGap());
-  return text;
+  if (bar->GetNumberOfMerges() == 0)
+    return text;
+  // The runs of guides merged into one block, by their lines.
+  std::vector<std::vector<std::size_t>> blocks;
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i)
+    if (bar->GetMerged(static_cast<int>(i)))
+    {
+      if (blocks.empty() || blocks.back().back() != lines[i])
+        blocks.push_back({ lines[i] });
+      blocks.back().push_back(lines[i + 1]);
+    }
+  const std::string slots = " (they overlap; every slot and screw hole open through it)";
+  if (bars == 0 && blocks.size() == 1)
+    return "merged into one block" + slots;
+  std::string merged;
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    merged += (b == 0 ? "" : b + 1 == blocks.size() ? " and " : ", ") + chainNumbers(blocks[b], number);
+  return text + (text.empty() ? "" : ", ") + "those of " + numberWord + "s " + merged +
+    (blocks.size() == 1 ? " merged into one block" : " merged into a block each") + slots;
 }
 
 std::string guidesByLine(const std::string& error, const std::vector<std::size_t>& lines, const std::string& numberWord,

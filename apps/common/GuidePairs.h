@@ -104,10 +104,16 @@ struct GuideOverlap
 /// ones not made, are in none). The planner and latticekit-cut say each.
 std::vector<GuideOverlap> overlappingGuides(const std::vector<vtkPolyData*>& guides);
 
-/// The bars of a resection guide in words: "a bar of 4.0 mm, 22 mm long and
-/// 1.8 mm clear of the bone between them", or for more "2 bars of 4.0 mm, 22
-/// and 30 mm long and at least 1.8 mm clear of the bone between them".
-std::string barsText(vtkLKGuideBarFilter* bar);
+/// How a resection guide's guides (those of `lines`, in its order) are
+/// joined, in words: "joined by a bar of 4.0 mm, 22 mm long and 1.8 mm clear
+/// of the bone between them", for more "joined by 2 bars of 4.0 mm, 22 and
+/// 30 mm long and at least 1.8 mm clear of the bone between them"; guides
+/// that overlap "merged into one block (they overlap; every slot and screw
+/// hole open through it)"; and both: "joined by a bar of ..., those of
+/// strokes 1 and 4 merged into one block (...)", with `numberWord` ("stroke")
+/// and `number` giving a line's number as the user knows it.
+std::string joinText(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& lines, const std::string& numberWord,
+  const std::function<std::string(std::size_t)>& number);
 
 /// vtkLKGuideBarFilter's `error` as the apps say it, after "... are not
 /// joined: ": without its opening "Cannot join the guides: ", and with its

@@ -812,15 +812,24 @@ void Planner::updateStatus()
     for (const CuttingGuide& g : guides)
       shown += g.surface ? 1 : 0;
     s << " | cutting guides: " << shown;
-    std::size_t joined = 0, bars = 0;
+    std::size_t joined = 0;
+    int bars = 0, merges = 0;
     for (const JoinedGuide& j : joinedGuides)
       if (j.surface)
       {
         joined += j.members.size();
-        bars += j.members.size() - 1;
+        bars += j.filter->GetNumberOfBars();
+        merges += j.filter->GetNumberOfMerges();
       }
     if (joined > 0)
-      s << " (" << joined << " joined by " << (bars == 1 ? "a bar" : std::to_string(bars) + " bars") << ")";
+    {
+      s << " (" << joined << " joined";
+      if (bars > 0)
+        s << " by " << (bars == 1 ? "a bar" : std::to_string(bars) + " bars");
+      if (merges > 0)
+        s << (bars > 0 ? ", " : " ") << merges << (merges == 1 ? " pair" : " pairs") << " merged";
+      s << ")";
+    }
   }
   if (tool != NO_TOOL)
   {

@@ -132,16 +132,21 @@ void Planner::updateGuides()
   std::vector<vtkPolyData*> surfaces;
   for (const CuttingGuide& g : guides)
     surfaces.push_back(g.surface);
-  for (const lkapp::GuideOverlap& o : lkapp::overlappingGuides(surfaces))
+  const std::vector<lkapp::GuideOverlap> overlaps = lkapp::overlappingGuides(surfaces);
+  updateJoinedGuides();
+  for (const lkapp::GuideOverlap& o : overlaps)
   {
-    char line[300];
+    // Merged into one block (j): one part with both slots.
+    if (const JoinedGuide* part = joinedGuideOf(o.first); part && part == joinedGuideOf(o.second))
+      continue;
+    char line[400];
     std::snprintf(line, sizeof line,
       "the cutting guides of strokes %zu and %zu overlap over %.1f mm along the bone: they cannot be on it "
-      "together; put them on one after the other, or move a saw line that much farther",
-      guides[o.first].stroke + 1, guides[o.second].stroke + 1, o.along);
+      "together; put them on one after the other,%s or move a saw line that much farther",
+      guides[o.first].stroke + 1, guides[o.second].stroke + 1, o.along,
+      session.guidesJoined ? "" : " join them into one block with both slots (j),");
     addLine(message, line);
   }
-  updateJoinedGuides();
   vtkNew<vtkAppendPolyData> all;
   for (const GuidePart& part : guideParts())
     all->AddInputData(part.surface);
@@ -298,8 +303,11 @@ std::string Planner::guidesText() const
       : std::string();
     char line[800];
     std::snprintf(line, sizeof line,
-      "resection guide: the cutting guides of strokes %s joined by %s; put on %s(%s); %.0f mm^3 in one part (%s.stl)\n",
-      joinedStrokes(j).c_str(), lkapp::barsText(j.filter).c_str(), side.c_str(), lkapp::insertionText(j.filter).c_str(),
+      "resection guide: the cutting guides of strokes %s %s; put on %s(%s); %.0f mm^3 in one part (%s.stl)\n",
+      joinedStrokes(j).c_str(),
+      lkapp::joinText(j.filter, j.members, "stroke", [&](std::size_t i) { return std::to_string(guides[i].stroke + 1); })
+        .c_str(),
+      side.c_str(), lkapp::insertionText(j.filter).c_str(),
       j.filter->GetVolume(), joinedGuideFileStem(j).c_str());
     text += line;
   }

@@ -972,6 +972,25 @@ class PipelineTest(unittest.TestCase):
         self.assertLess(three.GetApproachUsed()[1], -0.9)
         self.assertGreater(three.GetInsertionMargin(), 0.0)
         self.assertLess(three.GetInsertionMargin(), 45.0)
+        self.assertEqual(three.GetNumberOfMerges(), 0)
+        # A saw line 9 mm from the right body's: the two guides overlap and
+        # are merged into one block, no bar, both slots open through it.
+        near = latticekit.vtkLKCuttingGuideFilter()
+        near.SetInputConnection(bone.GetOutputPort())
+        near.SetPlaneOrigin(-21, 273.5, -984)
+        near.SetPlaneNormal(1, -0.25, 0)
+        block = latticekit.vtkLKGuideBarFilter()
+        block.SetInputConnection(0, bone.GetOutputPort())
+        for guide in (guides[0], near):
+            block.AddGuideConnection(guide.GetOutputPort())
+        block.Update()
+        self.assertEqual(block.GetNumberOfMerges(), 1)
+        self.assertTrue(block.GetMerged(0))
+        self.assertEqual(block.GetNumberOfBars(), 0)
+        self.assertEqual(open_edges(block.GetOutput()).GetNumberOfCells(), 0)
+        self.assertEqual(block.GetOutput().GetFieldData().GetArray("GuideMerged").GetValue(0), 1.0)
+        self.assertLess(block.GetVolume(), guides[0].GetVolume() + near.GetVolume())
+        self.assertGreater(block.GetVolume(), max(guides[0].GetVolume(), near.GetVolume()))
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of

@@ -1,5 +1,5 @@
 #pragma once
-/// \file SolidUnion.h
+/// \file SolidBooleans.h
 /// The union of solids given by their closed surfaces: one surface round
 /// all of them, where they overlap none of their faces inside the others.
 /// A printed part made of several overlapping pieces (a resection guide's
@@ -22,5 +22,13 @@ namespace lk
 /// reason as a sentence naming the solid (1-based); `result` is then left
 /// empty. Solids that do not overlap stay apart in one mesh.
 std::string solidUnion(const std::vector<TriangleMesh>& solids, TriangleMesh& result);
+
+/// `solid` less each of `cutters` in turn, into `result`, a closed triangle
+/// mesh oriented outward (several pieces where the cutters part it; empty
+/// where they take it all). Each solid must be as for solidUnion. Empty, or
+/// the reason ("cannot cut the solid: ...", "cannot cut with cutter 2 of 3:
+/// ..."); `result` is then left empty.
+std::string solidDifference(
+  const TriangleMesh& solid, const std::vector<TriangleMesh>& cutters, TriangleMesh& result);
 
 } // namespace lk

@@ -1,6 +1,8 @@
 // lk::solidUnion: overlapping cubes (exact volumes), inward-facing and
 // degenerate input accepted, open or crossing solids refused.
-#include "latticekit/SolidUnion.h"
+// lk::solidDifference: a slot through a block, a block cut in two, the
+// same refusals.
+#include "latticekit/SolidBooleans.h"
 
 #include "TestMeshes.h"
 
@@ -106,4 +108,50 @@ TEST(SolidUnion, OpenOrCrossingSolidsAreRefused)
   lk::TriangleMesh nan = lktest::cube();
   nan.points[3].x() = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(lk::solidUnion({ nan }, joined).find("not finite"), std::string::npos);
+}
+
+TEST(SolidDifference, ASlotThroughABlockAndABlockCutInTwoHaveTheirExactVolumes)
+{
+  // A 4 x 2 x 1 block less a 1-wide slot through its height, 2 long,
+  // open at neither end: a ring of volume 8 - 2.
+  lk::TriangleMesh wide = lktest::cube();
+  for (lk::Vec3& p : wide.points)
+    p = { 4.0 * p.x(), 2.0 * p.y(), p.z() };
+  lk::TriangleMesh slot = lktest::cube();
+  for (lk::Vec3& p : slot.points)
+    p = { 1.0 + 2.0 * p.x(), 0.5 + p.y(), -0.5 + 2.0 * p.z() };
+  lk::TriangleMesh left;
+  ASSERT_EQ(lk::solidDifference(wide, { slot }, left), "");
+  EXPECT_NEAR(volume(left), 8.0 - 2.0, 1e-12);
+  EXPECT_EQ(badEdges(left), 0);
+  // A second cutter across the whole width parts the ring in two; a cutter
+  // apart from the block takes nothing.
+  lk::TriangleMesh across = lktest::cube();
+  for (lk::Vec3& p : across.points)
+    p = { 3.25 + 0.5 * p.x(), -1.0 + 4.0 * p.y(), -0.5 + 2.0 * p.z() };
+  ASSERT_EQ(lk::solidDifference(wide, { slot, across, moved(lktest::cube(), { 10.0, 0.0, 0.0 }) }, left), "");
+  EXPECT_NEAR(volume(left), 8.0 - 2.0 - 1.0, 1e-12);
+  EXPECT_EQ(badEdges(left), 0);
+  // Everything taken: nothing left, and that is no error.
+  ASSERT_EQ(lk::solidDifference(lktest::cube(), { moved(lktest::cube(), { -1, -1, -1 }, 3.0) }, left), "");
+  EXPECT_TRUE(left.triangles.empty());
+}
+
+TEST(SolidDifference, OpenOrBrokenSolidsAndCuttersAreRefusedByName)
+{
+  lk::TriangleMesh open = lktest::cube();
+  open.triangles.pop_back();
+  lk::TriangleMesh left;
+  EXPECT_NE(lk::solidDifference(open, { lktest::cube() }, left).find("cannot cut the solid: it is not closed"),
+    std::string::npos);
+  EXPECT_NE(lk::solidDifference(lktest::cube(), { lktest::cube(), open }, left)
+              .find("cannot cut with cutter 2 of 2: it is not closed"),
+    std::string::npos);
+  EXPECT_TRUE(left.triangles.empty());
+  lk::TriangleMesh nan = lktest::cube();
+  nan.points[0].x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(lk::solidDifference(nan, {}, left).find("not finite"), std::string::npos);
+  // No cutter: the solid itself, oriented outward.
+  ASSERT_EQ(lk::solidDifference(lktest::cube(), {}, left), "");
+  EXPECT_NEAR(volume(left), 1.0, 1e-12);
 }
