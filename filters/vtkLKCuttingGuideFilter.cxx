@@ -31,6 +31,7 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStaticPointLocator.h>
 #include <vtkStringArray.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
@@ -727,7 +728,10 @@ int vtkLKCuttingGuideFilter::RequestData(
   merged->SetTolerance(0.0);
   merged->ConvertPolysToLinesOff();
   merged->ConvertLinesToPointsOff();
-  // A sliver the line cut off from the rest (under 1 mm^2, scaled) goes.
+  // What the line cut off from the rest goes: a part with neither of the
+  // cells the contact grew from (nearest the cut's outermost point, either
+  // side of the slot) would be loose in the printed guide. Slivers under 1
+  // mm^2 (scaled) go in any case.
   vtkNew<vtkPolyDataConnectivityFilter> parts;
   parts->SetInputConnection(merged->GetOutputPort());
   parts->SetExtractionModeToAllRegions();
@@ -750,11 +754,37 @@ int vtkLKCuttingGuideFilter::RequestData(
       area[static_cast<std::size_t>(region->GetComponent(ids->GetId(0), 0))] +=
         vtkTriangle::TriangleArea(p[0], p[1], p[2]);
     }
+    // The parts holding the cells the contact grew from: those of the
+    // points at their corners (the clip keeps the grid's points inside it).
+    std::vector<char> grown(area.size(), 0);
+    if (region && clipped->GetNumberOfPoints() > 0)
+    {
+      vtkNew<vtkStaticPointLocator> points;
+      points->SetDataSet(clipped);
+      points->BuildLocator();
+      for (const std::size_t first : start)
+      {
+        if (first >= usable.size())
+          continue;
+        const std::size_t r = first / cellColumns, c = first % cellColumns;
+        double x[3];
+        gridPoints->GetPoint(gridId[r * columns + c], x);
+        const vtkIdType nearest = points->FindClosestPoint(x);
+        double y[3];
+        clipped->GetPoint(nearest, y);
+        if (nearest >= 0 && vtkMath::Distance2BetweenPoints(x, y) < 1e-12 * diagonal * diagonal)
+          grown[static_cast<std::size_t>(region->GetComponent(nearest, 0))] = 1;
+      }
+    }
+    const bool anyGrown = std::find(grown.begin(), grown.end(), 1) != grown.end();
     vtkNew<vtkCellArray> kept;
     for (vtkIdType i = 0; region && i < clipped->GetNumberOfCells(); ++i)
     {
       clipped->GetCellPoints(i, ids);
-      if (ids->GetNumberOfIds() == 3 && area[static_cast<std::size_t>(region->GetComponent(ids->GetId(0), 0))] >= scale * scale)
+      if (ids->GetNumberOfIds() != 3)
+        continue;
+      const std::size_t part = static_cast<std::size_t>(region->GetComponent(ids->GetId(0), 0));
+      if (area[part] >= scale * scale && (grown[part] || !anyGrown))
         kept->InsertNextCell(ids);
     }
     vtkNew<vtkPolyData> whole;

@@ -51,7 +51,9 @@
  *   (vtkClipPolyData of the cells' distance to the edge, averaged over 1 mm
  *   each way), its new points put back on the bone along their rays. These
  *   lengths shrink in proportion with a Reach under 8 mm (a small model),
- *   and a contact the line would take whole stays as the grid gave it.
+ *   and a contact the line would take whole stays as the grid gave it. A
+ *   part the line cuts off across a narrow neck of the contact (on a
+ *   ramus' edge) goes, as it would be loose in the printed guide.
  * - The slot: the grid's cells within SlotWidth / 2 of the plane, except
  *   for Bridge millimetres at each of the extent's ends, which keep the
  *   guide in one piece (the saw starts the cut in the slot; the last

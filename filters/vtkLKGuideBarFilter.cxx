@@ -223,24 +223,47 @@ std::string readGuide(vtkPolyData* data, std::size_t number, Guide& g)
   return {};
 }
 
+/// How far apart guides a and b lie along the bone (mm): the farther of
+/// each slot centre's distances from the other guide's plane, the way each
+/// guide reaches from its slot (guides round a corner of the bone from
+/// each other are far apart along one of them). Slots offset along each
+/// other (one guide higher on the bone than the other) are no farther apart
+/// for that: the guides still overlap where their reaches do.
+double apartAlongBone(const Guide& a, const Guide& b)
+{
+  const Vec between = add(b.slotCentre, a.slotCentre, -1.0);
+  return std::max(std::abs(dot(between, a.normal)), std::abs(dot(between, b.normal)));
+}
+
 /// The least guide wall between two slots merged into one block (mm).
 constexpr double MinimumWallBetweenSlots = 2.0;
 
+/// How two guides next to each other are joined.
+enum class Join
+{
+  Bar,         ///< a bar arched out over the bone between their edges
+  StraightBar, ///< edges nearer than the bar's diameter: a straight bar from wall to wall
+  Merged       ///< they overlap: one block, each less the other's slot and screw holes
+};
+
 /// Whether guide i and the next can be joined: empty, or why not (after
 /// `between`, which names them where there are more than two). `apart` is
-/// set to the angle between their approaches (degrees); `merged` to whether
-/// they are joined as one block (their slots nearer than their reaches: the
-/// guides overlap, and no bar fits between them) rather than by a bar of
-/// `radius`.
+/// set to the angle between their approaches (degrees); `join` to how they
+/// are joined: as one block where their slots are nearer along the bone
+/// than their reaches (the guides overlap), by a straight bar of `radius`
+/// where their edges are nearer than its diameter, else by a bar arched
+/// over the bone.
 std::string neighbourProblem(const std::vector<Guide>& guide, std::size_t i, double radius, double maximumLength,
-  const std::string& between, double& apart, bool& merged)
+  const std::string& between, double& apart, Join& join)
 {
   std::ostringstream why;
   const Guide& a = guide[i];
   const Guide& b = guide[i + 1];
   apart = vtkMath::DegreesFromRadians(std::acos(std::clamp(dot(a.approach, b.approach), -1.0, 1.0)));
-  const double slotsApart = distance(a.slotCentre, b.slotCentre);
-  merged = slotsApart < a.reach + b.reach;
+  const double slotsApart = distance(a.slotCentre, b.slotCentre), alongBone = apartAlongBone(a, b);
+  join = alongBone < a.reach + b.reach ? Join::Merged
+    : alongBone < a.reach + b.reach + 2.0 * radius ? Join::StraightBar
+                                                   : Join::Bar;
   if (apart > 120.0)
     why << between << "they are put on from directions " << apart
         << " degrees apart (more than 120): a bar between them would go round the bone";
@@ -248,16 +271,9 @@ std::string neighbourProblem(const std::vector<Guide>& guide, std::size_t i, dou
     why << between << "their slots are " << slotsApart << " mm apart, more than MaximumLength (" << maximumLength
         << " mm)";
   // Two slots in one block need a wall between them.
-  else if (slotsApart < 0.5 * (a.slotWidth + b.slotWidth) + MinimumWallBetweenSlots)
-    why << between << "their slots are " << slotsApart << " mm apart, too near for a wall of "
+  else if (alongBone < 0.5 * (a.slotWidth + b.slotWidth) + MinimumWallBetweenSlots)
+    why << between << "their slots are " << alongBone << " mm apart along the bone, too near for a wall of "
         << MinimumWallBetweenSlots << " mm between them (one saw cut?)";
-  // Room between the guides' facing edges for the bar (guides nearer each
-  // other would have it cross the other's slot; nearer still, they overlap
-  // and are one block).
-  else if (!merged && slotsApart < a.reach + b.reach + 2.0 * radius)
-    why << between << "their slots are " << slotsApart << " mm apart, too near for a bar of " << 2.0 * radius
-        << " mm between their edges (they reach " << a.reach << " and " << b.reach
-        << " mm from their slots) and too far apart to overlap as one block";
   // A guide between two others has its bars on either side of its slot
   // (the guides in their order along the bone): two bars on one side
   // would meet there, and one of them would pass over the other guide.
@@ -355,7 +371,7 @@ std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double hi
 /// guide i and the next) that do not meet, named after `between(i)`, or
 /// else how many pieces.
 std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, const std::vector<char>& merged,
-  double radius, const std::function<std::string(std::size_t)>& between)
+  const std::function<std::string(std::size_t)>& between)
 {
   vtkNew<vtkPolyDataConnectivityFilter> regions;
   regions->SetInputData(part);
@@ -383,9 +399,9 @@ std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, cons
   for (std::size_t i = 0; i + 1 < guide.size(); ++i)
     if (merged[i] && regionOf(guide[i]) != regionOf(guide[i + 1]))
     {
-      why << between(i) << "their slots are " << distance(guide[i].slotCentre, guide[i + 1].slotCentre)
-          << " mm apart, too near for a bar of " << 2.0 * radius
-          << " mm between their edges, and the guides do not meet to be one block";
+      why << between(i) << "their slots are " << apartAlongBone(guide[i], guide[i + 1])
+          << " mm apart along the bone, nearer than their reaches, so no bar fits between them, and the guides "
+             "do not meet to be one block (one beside the other on the bone, or round an edge of it)";
       return why.str();
     }
   why << "the part would be " << count << " pieces (a guide cut apart by the slot of a guide merged with it)";
@@ -498,7 +514,28 @@ struct BarSettings
   double apart;                ///< degrees between the guides' approaches
   std::size_t number[2];       ///< the guides' numbers, for messages
   std::string between;         ///< "guides 2 and 3: ", or empty for two guides
+  bool straight = false;       ///< edges nearer than the bar's diameter: straight from wall to wall
 };
+
+/// The bar's solid round its line, into `bar.solid`: empty, or why there
+/// is none (its tube crosses itself where the line bends tighter than the
+/// radius).
+std::string tubeSolid(const BarSettings& settings, Bar& bar)
+{
+  vtkSmartPointer<vtkPolyData> tube = tubeAround(bar.line, settings.radius);
+  if (const std::string problem = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(tube), bar.solid); !problem.empty())
+    return settings.between + "the bar: " + problem;
+  lk::TriangleMesh alone;
+  if (!lk::solidUnion({ bar.solid }, alone).empty())
+  {
+    std::ostringstream why;
+    why << settings.between << "the bar would bend tighter than its radius (" << settings.radius
+        << " mm) on its way between them, where it clears the bone (a thinner bar, a smaller StandOff, or guides "
+        << "that face more alike: " << settings.apart << " degrees apart)";
+    return why.str();
+  }
+  return {};
+}
 
 /// Routes the bar from guide a to guide b: from the edge of each, on the
 /// other's side of its slot, a centre line pushed off the bone by its radius
@@ -557,9 +594,33 @@ std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings
     lead[i] = add(end[i], side, g.reach - s + radius);
   }
 
+  std::vector<Vec>& line = bar.line;
+  if (settings.straight)
+  {
+    // Guides whose edges are nearer than the bar's diameter: no room to
+    // arch out, so a straight bar from wall to wall, which must not reach
+    // into the bone between them.
+    const double length = distance(end[0], end[1]);
+    const int parts = std::max(2, static_cast<int>(std::ceil(length / 0.25)));
+    line.clear();
+    for (int k = 0; k <= parts; ++k)
+      line.push_back(add(end[0], add(end[1], end[0], -1.0), static_cast<double>(k) / parts));
+    bar.length = length;
+    bar.gap = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 1; k + 1 < line.size(); ++k)
+      bar.gap = std::min(bar.gap, bone.distance(line[k]) - radius);
+    if (!(bar.gap > -0.05))
+    {
+      why << settings.between << "their edges are too near for a bar to arch between them, and a straight one "
+          << "would reach " << -bar.gap << " mm into the bone";
+      return why.str();
+    }
+    bar.gap = std::max(bar.gap, 0.0);
+    return tubeSolid(settings, bar);
+  }
+
   // The centre line: straight from end to end, then pushed off the bone.
   const double spacing = 0.5;
-  std::vector<Vec>& line = bar.line;
   line = { end[0] };
   {
     const double length = distance(lead[0], lead[1]);
@@ -683,18 +744,7 @@ std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings
   }
   // The tube round it, which crosses itself where its line bends tighter
   // than its radius.
-  vtkSmartPointer<vtkPolyData> tube = tubeAround(line, radius);
-  if (const std::string problem = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(tube), bar.solid); !problem.empty())
-    return settings.between + "the bar: " + problem;
-  lk::TriangleMesh alone;
-  if (!lk::solidUnion({ bar.solid }, alone).empty())
-  {
-    why << settings.between << "the bar would bend tighter than its radius (" << radius
-        << " mm) on its way between them, where it clears the bone (a thinner bar, a smaller StandOff, or guides "
-        << "that face more alike: " << settings.apart << " degrees apart)";
-    return why.str();
-  }
-  return {};
+  return tubeSolid(settings, bar);
 }
 } // namespace
 
@@ -776,18 +826,18 @@ int vtkLKGuideBarFilter::RequestData(
     return n == 2 ? std::string() : "guides " + std::to_string(i + 1) + " and " + std::to_string(i + 2) + ": ";
   };
   std::vector<double> facingApart(n - 1); // degrees between each guide's approach and the next's
-  std::vector<char> merged(n - 1, 0);      // guide i and the next are one block, not joined by a bar
+  std::vector<Join> joins(n - 1, Join::Bar); // how guide i and the next are joined
+  std::vector<char> merged(n - 1, 0);        // guide i and the next are one block, not joined by a bar
   for (std::size_t i = 0; i + 1 < n; ++i)
   {
-    bool oneBlock = false;
     if (const std::string why =
-          neighbourProblem(guide, i, radius, this->MaximumLength, between(i), facingApart[i], oneBlock);
+          neighbourProblem(guide, i, radius, this->MaximumLength, between(i), facingApart[i], joins[i]);
         !why.empty())
     {
       vtkErrorMacro("Cannot join the guides: " << why << ".");
       return 0;
     }
-    merged[i] = oneBlock;
+    merged[i] = joins[i] == Join::Merged;
   }
 
   BoneQueries bone(input);
@@ -841,7 +891,7 @@ int vtkLKGuideBarFilter::RequestData(
     if (merged[b])
       continue;
     const BarSettings settings{ radius, this->StandOff, this->MaximumLength, facingApart[b], { b + 1, b + 2 },
-      between(b) };
+      between(b), joins[b] == Join::StraightBar };
     Bar bar;
     const std::string why = routeBar(guide[b], guide[b + 1], settings, bone,
       [&](double done) {
@@ -940,7 +990,7 @@ int vtkLKGuideBarFilter::RequestData(
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(joined);
   // One part: merged guides that do not meet (slots offset along each
   // other, the guides on different faces) would be two.
-  if (const std::string why = apartPieces(result, guide, merged, radius, between); !why.empty())
+  if (const std::string why = apartPieces(result, guide, merged, between); !why.empty())
   {
     vtkErrorMacro("Cannot join the guides: " << why << ".");
     return 0;

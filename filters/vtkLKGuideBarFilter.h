@@ -42,10 +42,14 @@
  *   up to 10 degrees, over up to 5 % of the contact's area, is an undercut
  *   that printing's tolerance and the periosteum take up, and is reported;
  *   more (far round the bone: a ramus guide on each side) is refused.
- * - Guides next to each other whose slots are nearer than their two reaches
- *   overlap on the bone (two saw lines 12 mm apart across a short segment,
- *   a wedge): no bar fits between them, and printed apart they could not be
- *   on the bone together. They are merged into one block instead: each
+ * - Guides next to each other whose edges are nearer than the bar's
+ *   diameter have no room for it to arch out: it runs straight from wall
+ *   to wall (refused where that would reach into the bone).
+ * - Guides next to each other whose slots are nearer along the bone (along
+ *   their planes' mean normal) than their two reaches overlap on it (two
+ *   saw lines 12 mm apart across a short segment, a wedge): no bar fits
+ *   between them, and printed apart they could not be on the bone
+ *   together. They are merged into one block instead: each
  *   guide less the other's slot (a box a hundredth of a millimetre wider
  *   and longer, through the whole block along that guide's approach) and
  *   screw holes (0.05 mm wider), then joined, so that every slot and hole
@@ -78,10 +82,9 @@
  * guide); a parameter out of range; two guides next to each other put on
  * from directions more than 120 degrees apart (the bar would go round the
  * bone); two guides next to each other farther apart than MaximumLength,
- * too near for a bar between their edges yet too far apart to overlap
- * (their slots nearer than both reaches and the bar's diameter, but not
- * nearer than both reaches), with slots too near for a wall of 2 mm
- * between them (one saw cut twice), or merged without meeting; a guide whose
+ * with slots too near for a wall of 2 mm between them (one saw cut twice),
+ * merged without meeting (one beside the other on the bone), or joined by
+ * a straight bar that would reach into the bone; a guide whose
  * neighbours before and after it lie on one side of its slot (guides not in
  * their order along the bone: a bar would pass over a guide); guides no one
  * direction puts on the bone at once (their contacts face too far apart:

@@ -479,6 +479,31 @@ TEST(CuttingGuideFilter, AcrossTheMandibleEachGuideIsOneSolidWithItsLabel)
   EXPECT_EQ(made, 42);
 }
 
+TEST(CuttingGuideFilter, OnTheRamusEdgeWhatTheSmoothEdgeCutsOffIsLeftOut)
+{
+  // A cut across the back edge of the TCIA mandible's left ramus: on the
+  // wing beside the slot toward the edge, the smooth edge's line crossed a
+  // narrow neck of the contact and left a piece of 37 mm^3 loose, which a
+  // printed guide would drop (and which made a part of two pieces when the
+  // guide was merged with a neighbour). The guide is one piece.
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  ASSERT_GT(bone->GetNumberOfCells(), 0);
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputData(bone);
+  guide->SetPlaneOrigin(-52.32, 342.55, -927.37);
+  guide->SetPlaneNormal(-0.264, 0.964, -0.119);
+  guide->SetLabel("2");
+  guide->Update();
+  vtkPolyData* out = guide->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  vtkNew<vtkPolyDataConnectivityFilter> parts;
+  parts->SetInputData(out);
+  parts->SetExtractionModeToAllRegions();
+  parts->Update();
+  EXPECT_EQ(parts->GetNumberOfExtractedRegions(), 1);
+}
+
 TEST(CuttingGuideFilter, OnBothMandiblesItGoesOnTheOuterSideHoweverTheCutIsSlanted)
 {
   // Saw planes across both TCIA mandibles (z up): the body and chin saws of

@@ -403,6 +403,36 @@ TEST(GuideBarFilter, OverlappingGuidesAreMergedIntoOneBlockWithEverySlotAndHoleO
   }
 }
 
+TEST(GuideBarFilter, GuidesWhoseEdgesAreNearerThanTheBarAreJoinedByAStraightOne)
+{
+  // Saw lines 18 mm apart: the guides' edges 2 mm apart, less than the bar's
+  // 4 mm, so no room to arch out. A straight bar from 6 mm past each slot
+  // (inside each wall, clear of the holes) to the other: 6 mm long, on the
+  // face (no gap), one part, every slot and hole open.
+  vtkSmartPointer<vtkPolyData> bone = longBox();
+  const double normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 }, left[3] = { -9, 0, 0 }, right[3] = { 9, 0, 0 };
+  double volumes[2];
+  vtkSmartPointer<vtkPolyData> a = guideOn(bone, left, normal, front, &volumes[0]);
+  vtkSmartPointer<vtkPolyData> b = guideOn(bone, right, normal, front, &volumes[1]);
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(a);
+  bar->AddGuideData(b);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_EQ(bar->GetNumberOfMerges(), 0);
+  ASSERT_EQ(bar->GetNumberOfBars(), 1);
+  EXPECT_NEAR(bar->GetBarLength(), 6.0, 1e-6);
+  EXPECT_NEAR(bar->GetBarGap(), 0.0, 1e-6);
+  const double tube = 24.0 / 2.0 * std::sin(2.0 * vtkMath::Pi() / 24.0) * 4.0;
+  EXPECT_NEAR(bar->GetVolume(), volumes[0] + volumes[1] + tube * 2.0, 0.01 * bar->GetVolume());
+  EXPECT_EQ(coveredHoles(a, out), 0);
+  EXPECT_EQ(coveredHoles(b, out), 0);
+}
+
 TEST(GuideBarFilter, RoundARingNoOneDirectionPutsThreeGuidesOn)
 {
   // A ring (a torus, 40 mm round, its tube 10 mm), guides on its outside at
@@ -462,11 +492,9 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
   const double nearCorner[3] = { 40, 0, 0 }, onEnd[3] = { 46, 0, 0 }, across[3] = { 0, 1, 0 }, end[3] = { 1, 0, 0 };
   vtkSmartPointer<vtkPolyData> cornerFront = guideOn(bone, nearCorner, normal, front),
                                cornerEnd = guideOn(bone, onEnd, across, end);
-  // Saw lines too near for two slots in one block, and too near for a bar
-  // but too far for the guides to overlap.
-  const double x1[3] = { -1.5, 0, 0 }, x2[3] = { 1.5, 0, 0 }, x3[3] = { -9, 0, 0 }, x4[3] = { 9, 0, 0 };
-  vtkSmartPointer<vtkPolyData> threeLeft = guideOn(bone, x1, normal, front), threeRight = guideOn(bone, x2, normal, front),
-                               gapLeft = guideOn(bone, x3, normal, front), gapRight = guideOn(bone, x4, normal, front);
+  // Saw lines too near for two slots in one block.
+  const double x1[3] = { -1.5, 0, 0 }, x2[3] = { 1.5, 0, 0 };
+  vtkSmartPointer<vtkPolyData> threeLeft = guideOn(bone, x1, normal, front), threeRight = guideOn(bone, x2, normal, front);
   struct Case
   {
     const char* why;
@@ -476,7 +504,7 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
   const Case cases[] = {
     { "one guide", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); }, "a bar joins two guides, and port 1 has 1" },
     { "three guides, the last two one", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(b); },
-      "guides 2 and 3: their slots are 0 mm apart, too near" },
+      "guides 2 and 3: their slots are 0 mm apart along the bone, too near" },
     { "three guides out of their order",
       [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->AddGuideData(middle); },
       "guides 1 and 3 lie on one side of guide 2's slot, so their bars would leave it on one side (give the guides "
@@ -487,13 +515,10 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
     { "a plain mesh", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(bone); },
       "guide 2 has no GuideApproach of finite values (guides come from vtkLKCuttingGuideFilter)" },
     { "the same guide twice", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(a); },
-      "their slots are 0 mm apart, too near for a wall of 2 mm between them (one saw cut?)" },
+      "their slots are 0 mm apart along the bone, too near for a wall of 2 mm between them (one saw cut?)" },
     { "slots 3 mm apart", [&](vtkLKGuideBarFilter* f) { f->AddGuideData(threeLeft); f->AddGuideData(threeRight); },
-      "their slots are 3 mm apart, too near for a wall of 2 mm between them" },
-    { "guides 18 mm apart",
-      [&](vtkLKGuideBarFilter* f) { f->AddGuideData(gapLeft); f->AddGuideData(gapRight); },
-      "their slots are 18 mm apart, too near for a bar of 4 mm between their edges (they reach 8 and 8 mm from "
-      "their slots) and too far apart to overlap as one block" },
+      "their slots are 3 mm apart along the bone, too near for a wall of 2 mm between them" },
+
     { "a guide of no thickness",
       [&](vtkLKGuideBarFilter* f) {
         auto odd = vtkSmartPointer<vtkPolyData>::New();
@@ -513,8 +538,8 @@ TEST(GuideBarFilter, BadInputAndParametersAreRefused)
       "StandOff must be 0 to 50 mm" },
     { "guides too near for a bar, round a corner from each other",
       [&](vtkLKGuideBarFilter* f) { f->AddGuideData(cornerFront); f->AddGuideData(cornerEnd); },
-      "their slots are 14.1421 mm apart, too near for a bar of 4 mm between their edges, and the guides do not "
-      "meet to be one block" },
+      "their slots are 10 mm apart along the bone, nearer than their reaches, so no bar fits between them, "
+      "and the guides do not meet to be one block" },
     { "a bar to stand 50 mm off the bone",
       [&](vtkLKGuideBarFilter* f) { f->AddGuideData(a); f->AddGuideData(b); f->SetStandOff(50); },
       "the bar would bend tighter than its radius (2 mm) on its way between them" },
