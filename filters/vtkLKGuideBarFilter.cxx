@@ -557,6 +557,7 @@ std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings
   // approach, or higher where the bar would reach into the bone there (a
   // bar thicker than the wall, a wall on a slope).
   Vec end[2], lead[2];
+  double endHeight[2]; // each end's height above the bone, along its guide's approach
   for (int i = 0; i < 2; ++i)
   {
     const Guide& g = *pair[i];
@@ -584,10 +585,10 @@ std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings
     end[i] = add(onBone, g.approach, g.clearance + g.thickness / 2.0);
     for (int step = 0; step < 100 && bone.distance(end[i]) < radius; ++step)
       end[i] = add(end[i], g.approach, 0.1);
-    const double level = dot(add(end[i], onBone, -1.0), g.approach);
-    if (!(level < g.clearance + g.thickness + 0.5 * radius))
+    endHeight[i] = dot(add(end[i], onBone, -1.0), g.approach);
+    if (!(endHeight[i] < g.clearance + g.thickness + 0.5 * radius))
     {
-      why << "the bar would stand " << level << " mm above the bone at guide " << settings.number[i]
+      why << "the bar would stand " << endHeight[i] << " mm above the bone at guide " << settings.number[i]
           << "'s edge, clear of its wall (a thinner bar, or a thicker wall)";
       return why.str();
     }
@@ -598,22 +599,36 @@ std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings
   if (settings.straight)
   {
     // Guides whose edges are nearer than the bar's diameter: no room to
-    // arch out, so a straight bar from wall to wall, which must not reach
-    // into the bone between them.
+    // arch out, so a straight bar from wall to wall, raised (both ends
+    // along their approaches, in their walls) until it clears the bone
+    // between them by its radius.
     const double length = distance(end[0], end[1]);
     const int parts = std::max(2, static_cast<int>(std::ceil(length / 0.25)));
-    line.clear();
-    for (int k = 0; k <= parts; ++k)
-      line.push_back(add(end[0], add(end[1], end[0], -1.0), static_cast<double>(k) / parts));
-    bar.length = length;
-    bar.gap = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 1; k + 1 < line.size(); ++k)
-      bar.gap = std::min(bar.gap, bone.distance(line[k]) - radius);
-    if (!(bar.gap > -0.05))
+    double lift = 0.0;
+    for (int step = 0; step < 50; ++step)
     {
-      why << settings.between << "their edges are too near for a bar to arch between them, and a straight one "
-          << "would reach " << -bar.gap << " mm into the bone";
-      return why.str();
+      const Vec from = add(end[0], a.approach, lift), to = add(end[1], b.approach, lift);
+      line.clear();
+      for (int k = 0; k <= parts; ++k)
+        line.push_back(add(from, add(to, from, -1.0), static_cast<double>(k) / parts));
+      bar.gap = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 1; k + 1 < line.size(); ++k)
+        bar.gap = std::min(bar.gap, bone.distance(line[k]) - radius);
+      if (bar.gap > -1e-3)
+        break;
+      lift += 0.02 - bar.gap;
+    }
+    bar.length = distance(line.front(), line.back());
+    for (int i = 0; i < 2; ++i)
+    {
+      const Guide& g = *pair[i];
+      if (!(bar.gap > -1e-3) || !(endHeight[i] + lift < g.clearance + g.thickness + 0.5 * radius))
+      {
+        why << settings.between << "their edges are too near for a bar to arch between them, and a straight one "
+            << "clear of the bone between them would stand " << endHeight[i] + lift << " mm above it at guide "
+            << settings.number[i] << "'s edge, clear of its wall";
+        return why.str();
+      }
     }
     bar.gap = std::max(bar.gap, 0.0);
     return tubeSolid(settings, bar);
@@ -912,10 +927,11 @@ int vtkLKGuideBarFilter::RequestData(
   }
   this->UpdateProgress(0.6);
 
-  // Guides merged into one block: each less the slots and screw holes of
-  // the others in its block, so that every slot and hole stays open through
-  // the whole block (a guide's wall over its neighbour's slot would stop
-  // the saw).
+  // Every slot and screw hole open through the whole part: guides merged
+  // into one block each less the slots and screw holes of the others in
+  // its block (a guide's wall over its neighbour's slot would stop the
+  // saw), and each bar less those of the two guides it joins (its end,
+  // tilted where it rises off the bone, can reach into a hole beside it).
   std::vector<std::size_t> block(n, 0);
   for (std::size_t i = 0; i + 1 < n; ++i)
     block[i + 1] = merged[i] ? block[i] : block[i] + 1;
@@ -927,38 +943,64 @@ int vtkLKGuideBarFilter::RequestData(
       vtkErrorMacro("Cannot join the guides: guide " << i + 1 << ": " << why << ".");
       return 0;
     }
+  // Guide k's cutters, from below its lowest point to above the highest of
+  // `over`, along its approach.
+  std::vector<double> lowest(n, std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < n; ++k)
+    for (const lk::Vec3& p : guideSolids[k].points)
+      lowest[k] = std::min(lowest[k], dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), guide[k].approach));
+  auto cutsOf = [&](std::size_t k, const std::vector<const lk::TriangleMesh*>& over) {
+    double highest = -std::numeric_limits<double>::infinity();
+    for (const lk::TriangleMesh* solid : over)
+      for (const lk::Vec3& p : solid->points)
+        highest = std::max(highest, dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), guide[k].approach));
+    return cuttersOf(guide[k], lowest[k] - 1.0, highest + 1.0);
+  };
+  auto cut = [&](lk::TriangleMesh& solid, const std::vector<lk::TriangleMesh>& cutters, const std::string& what) {
+    if (cutters.empty())
+      return true;
+    lk::TriangleMesh rest;
+    if (const std::string why = lk::solidDifference(solid, cutters, rest); !why.empty())
+    {
+      vtkErrorMacro("Cannot join the guides: " << what << " with the slots and screw holes beside it: " << why << ".");
+      return false;
+    }
+    solid = std::move(rest);
+    return true;
+  };
+  std::vector<lk::TriangleMesh> cutGuides(n);
   for (std::size_t j = 0; j < n; ++j)
   {
+    std::vector<const lk::TriangleMesh*> inBlock;
+    for (std::size_t m = 0; m < n; ++m)
+      if (block[m] == block[j])
+        inBlock.push_back(&guideSolids[m]);
     std::vector<lk::TriangleMesh> cutters;
     for (std::size_t k = 0; k < n; ++k)
-    {
-      if (k == j || block[k] != block[j])
-        continue;
-      Vec axisN, axisE, axisD;
-      frameOf(guide[k], axisN, axisE, axisD);
-      double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-      for (const lk::Vec3& p : guideSolids[k].points)
-        lowest = std::min(lowest, dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), axisD));
-      for (std::size_t m = 0; m < n; ++m)
-        if (block[m] == block[j])
-          for (const lk::Vec3& p : guideSolids[m].points)
-            highest = std::max(highest, dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), axisD));
-      for (lk::TriangleMesh& c : cuttersOf(guide[k], lowest - 1.0, highest + 1.0))
-        cutters.push_back(std::move(c));
-    }
-    if (cutters.empty())
-      continue;
-    lk::TriangleMesh rest;
-    if (const std::string why = lk::solidDifference(guideSolids[j], cutters, rest); !why.empty())
-    {
-      vtkErrorMacro("Cannot join the guides: guide " << j + 1 << " with the slots of those merged with it: " << why
-                                                     << ".");
+      if (k != j && block[k] == block[j])
+        for (lk::TriangleMesh& c : cutsOf(k, inBlock))
+          cutters.push_back(std::move(c));
+    cutGuides[j] = guideSolids[j];
+    if (!cut(cutGuides[j], cutters, "guide " + std::to_string(j + 1)))
       return 0;
-    }
-    guideSolids[j] = std::move(rest);
     this->UpdateProgress(0.6 + 0.1 * static_cast<double>(j + 1) / static_cast<double>(n));
     if (lkvtk::stopRequested(this, { output }))
       return 1;
+  }
+  {
+    std::size_t b = 0;
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      if (!merged[i])
+      {
+        lk::TriangleMesh& barSolid = barSolids[b++];
+        std::vector<lk::TriangleMesh> cutters;
+        for (const std::size_t k : { i, i + 1 })
+          for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolid }))
+            cutters.push_back(std::move(c));
+        if (!cut(barSolid, cutters, n == 2 ? std::string("the bar") : "the bar between guides " +
+                std::to_string(i + 1) + " and " + std::to_string(i + 2)))
+          return 0;
+      }
   }
 
   // The union of the guides and the bars, in their order along the bone.
@@ -967,8 +1009,8 @@ int vtkLKGuideBarFilter::RequestData(
   std::size_t nextBar = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (!guideSolids[i].triangles.empty())
-      solids.push_back(std::move(guideSolids[i]));
+    if (!cutGuides[i].triangles.empty())
+      solids.push_back(std::move(cutGuides[i]));
     if (i + 1 < n && merged[i])
       names += ", guide " + std::to_string(i + 2);
     else if (i + 1 < n)

@@ -90,6 +90,47 @@ int coveredHoles(vtkPolyData* guide, vtkPolyData* part)
   }
   return covered;
 }
+/// Points of `part` inside a screw hole of `guide` (nearer its axis than
+/// its radius less 0.02 mm, from 0.5 mm under the bone out), or inside its
+/// slot (nearer its plane than half its width less 0.02 mm, within its
+/// length less 0.02 mm): what would stop a screw or the saw.
+int pointsInHolesOrSlot(vtkPolyData* guide, vtkPolyData* part)
+{
+  vtkFieldData* fd = guide->GetFieldData();
+  double n[3], d[3], c[3], e[3];
+  fd->GetArray("GuidePlaneNormal")->GetTuple(0, n);
+  fd->GetArray("GuideApproach")->GetTuple(0, d);
+  fd->GetArray("GuideSlotCentre")->GetTuple(0, c);
+  vtkMath::Cross(n, d, e);
+  vtkMath::Normalize(e);
+  const double width = fd->GetArray("GuideSlotWidth")->GetComponent(0, 0);
+  const double length = fd->GetArray("GuideSlotLength")->GetComponent(0, 0);
+  const double radius = fd->GetArray("GuideScrewHoleDiameter")->GetComponent(0, 0) / 2.0;
+  vtkDataArray* holes = fd->GetArray("GuideScrewHoles");
+  int inside = 0;
+  for (vtkIdType i = 0; i < part->GetNumberOfPoints(); ++i)
+  {
+    double x[3], q[3];
+    part->GetPoint(i, x);
+    for (int k = 0; k < 3; ++k)
+      q[k] = x[k] - c[k];
+    if (std::abs(vtkMath::Dot(q, n)) < width / 2.0 - 0.02 && std::abs(vtkMath::Dot(q, e)) < length / 2.0 - 0.02)
+      ++inside;
+    for (vtkIdType h = 0; holes && h < holes->GetNumberOfTuples(); ++h)
+    {
+      double axis[3];
+      holes->GetTuple(h, axis);
+      for (int k = 0; k < 3; ++k)
+        q[k] = x[k] - axis[k];
+      const double up = vtkMath::Dot(q, d);
+      for (int k = 0; k < 3; ++k)
+        q[k] -= up * d[k];
+      if (up > -0.5 && vtkMath::Norm(q) < radius - 0.02)
+        ++inside;
+    }
+  }
+  return inside;
+}
 } // namespace
 
 TEST(GuideBarFilter, OnALongBoxTheBarArchesItsStandOffAboveTheFace)
@@ -397,6 +438,7 @@ TEST(GuideBarFilter, OverlappingGuidesAreMergedIntoOneBlockWithEverySlotAndHoleO
                                                         << ", " << height << " mm out";
         }
       EXPECT_EQ(coveredHoles(guide[g], out), 0) << apart << " mm apart, guide " << g;
+      EXPECT_EQ(pointsInHolesOrSlot(guide[g], out), 0) << apart << " mm apart, guide " << g;
     }
     ASSERT_GE(progress.progress.size(), 3u);
     EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
@@ -431,6 +473,34 @@ TEST(GuideBarFilter, GuidesWhoseEdgesAreNearerThanTheBarAreJoinedByAStraightOne)
   EXPECT_NEAR(bar->GetVolume(), volumes[0] + volumes[1] + tube * 2.0, 0.01 * bar->GetVolume());
   EXPECT_EQ(coveredHoles(a, out), 0);
   EXPECT_EQ(coveredHoles(b, out), 0);
+}
+
+TEST(GuideBarFilter, ABarRisingSteeplyOffTheBoneLeavesTheScrewHolesBesideItOpen)
+{
+  // Two cuts 17 mm apart across mandible 1's left ramus, the second tilted
+  // 8 degrees: the bar rises off the bone at once, its end tilts, and its
+  // cap reached into the screw hole beside it in each wall (30 and 21 points
+  // of the part inside them). Every hole and slot is open.
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  ASSERT_GT(bone->GetNumberOfCells(), 0);
+  const double first[3] = { -48.362, 328.09, -928.0 }, across[3] = { -0.264, 0.964, 0.042 };
+  const double second[3] = { first[0] + 17 * across[0], first[1] + 17 * across[1], first[2] + 17 * across[2] },
+               tilted[3] = { -0.264, 0.964, 0.183 };
+  vtkSmartPointer<vtkPolyData> a = guideOn(bone, first, across), b = guideOn(bone, second, tilted);
+  ASSERT_GT(a->GetNumberOfCells(), 0);
+  ASSERT_GT(b->GetNumberOfCells(), 0);
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(a);
+  bar->AddGuideData(b);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(bar->GetNumberOfBars(), 1);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_EQ(pointsInHolesOrSlot(a, out), 0);
+  EXPECT_EQ(pointsInHolesOrSlot(b, out), 0);
 }
 
 TEST(GuideBarFilter, RoundARingNoOneDirectionPutsThreeGuidesOn)
