@@ -55,6 +55,17 @@ vtkSmartPointer<vtkPolyData> guideOn(vtkPolyData* bone, const double origin[3], 
   return out;
 }
 
+/// The part joining guides `a` and `b` on `bone`, updated.
+vtkSmartPointer<vtkLKGuideBarFilter> joined(vtkPolyData* bone, vtkPolyData* a, vtkPolyData* b)
+{
+  auto bar = vtkSmartPointer<vtkLKGuideBarFilter>::New();
+  bar->SetBoneData(bone);
+  bar->AddGuideData(a);
+  bar->AddGuideData(b);
+  bar->Update();
+  return bar;
+}
+
 vtkIdType regions(vtkPolyData* pd)
 {
   vtkNew<vtkPolyDataConnectivityFilter> parts;
@@ -223,11 +234,7 @@ TEST(GuideBarFilter, OnTheMandibleTheChinAndTheLeftBodyMakeOnePartOutsideTheBone
   vtkSmartPointer<vtkPolyData> b = guideOn(bone, body, across, nullptr, &volumes[1]);
   ASSERT_GT(a->GetNumberOfCells(), 0);
   ASSERT_GT(b->GetNumberOfCells(), 0);
-  vtkNew<vtkLKGuideBarFilter> bar;
-  bar->SetBoneData(bone);
-  bar->AddGuideData(a);
-  bar->AddGuideData(b);
-  bar->Update();
+  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
   vtkPolyData* out = bar->GetOutput();
   ASSERT_GT(out->GetNumberOfCells(), 0);
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
@@ -256,11 +263,7 @@ TEST(GuideBarFilter, RoundACornerOfTheBoneTheBarStaysClearOfBothFaces)
   const double onFront[3] = { -30, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
   const double onEnd[3] = { 46, 0, 0 }, across[3] = { 0, 1, 0 }, end[3] = { 1, 0, 0 };
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, onFront, normal, front), b = guideOn(bone, onEnd, across, end);
-  vtkNew<vtkLKGuideBarFilter> bar;
-  bar->SetBoneData(bone);
-  bar->AddGuideData(a);
-  bar->AddGuideData(b);
-  bar->Update();
+  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
   vtkPolyData* out = bar->GetOutput();
   ASSERT_GT(out->GetNumberOfCells(), 0);
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
@@ -456,11 +459,7 @@ TEST(GuideBarFilter, GuidesWhoseEdgesAreNearerThanTheBarAreJoinedByAStraightOne)
   double volumes[2];
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, left, normal, front, &volumes[0]);
   vtkSmartPointer<vtkPolyData> b = guideOn(bone, right, normal, front, &volumes[1]);
-  vtkNew<vtkLKGuideBarFilter> bar;
-  bar->SetBoneData(bone);
-  bar->AddGuideData(a);
-  bar->AddGuideData(b);
-  bar->Update();
+  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
   vtkPolyData* out = bar->GetOutput();
   ASSERT_GT(out->GetNumberOfCells(), 0);
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
@@ -489,11 +488,7 @@ TEST(GuideBarFilter, ABarRisingSteeplyOffTheBoneLeavesTheScrewHolesBesideItOpen)
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, first, across), b = guideOn(bone, second, tilted);
   ASSERT_GT(a->GetNumberOfCells(), 0);
   ASSERT_GT(b->GetNumberOfCells(), 0);
-  vtkNew<vtkLKGuideBarFilter> bar;
-  bar->SetBoneData(bone);
-  bar->AddGuideData(a);
-  bar->AddGuideData(b);
-  bar->Update();
+  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
   vtkPolyData* out = bar->GetOutput();
   ASSERT_GT(out->GetNumberOfCells(), 0);
   EXPECT_EQ(bar->GetNumberOfBars(), 1);

@@ -2,6 +2,9 @@
 // lines either side of each piece, as they lie along the bone, not as drawn.
 #include "common/GuidePairs.h"
 
+#include "vtkLKCuttingGuideFilter.h"
+#include "vtkLKGuideBarFilter.h"
+
 #include <gtest/gtest.h>
 
 #include <vtkCleanPolyData.h>
@@ -306,4 +309,64 @@ TEST(GuidePairs, TheBarFiltersGuideNumbersAreSaidAsTheLinesTheyAreOn)
     "a bar joins two guides, and port 1 has 1");
   EXPECT_EQ(lkapp::guidesByLine("guide 7 has no GuideApproach", lines, "stroke", number),
     "guide of stroke ? has no GuideApproach");
+}
+
+TEST(GuidePairs, AJoinIsSaidAsItsBarsItsMergedBlocksOrBoth)
+{
+  // A 100 x 20 x 30 mm box, saw planes across it at x = -40, -3 and 3: the
+  // first guide joined to the second by a bar, the second and third (6 mm
+  // apart, overlapping) merged into one block.
+  vtkNew<vtkCubeSource> box;
+  box->SetXLength(100);
+  box->SetYLength(20);
+  box->SetZLength(30);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(box->GetOutputPort());
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> fine;
+  fine->SetInputConnection(merged->GetOutputPort());
+  fine->SetNumberOfSubdivisions(3);
+  fine->Update();
+  std::vector<vtkSmartPointer<vtkLKCuttingGuideFilter>> guides;
+  for (const double x : { -40.0, -3.0, 3.0 })
+  {
+    auto guide = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
+    guide->SetInputConnection(fine->GetOutputPort());
+    guide->SetPlaneOrigin(x, 0, 0);
+    guide->SetPlaneNormal(1, 0, 0);
+    guide->SetApproach(0, -1, 0);
+    guide->Update();
+    ASSERT_GT(guide->GetOutput()->GetNumberOfCells(), 0) << x;
+    guides.push_back(guide);
+  }
+  auto number = [](std::size_t line) { return std::to_string(line + 1); };
+  vtkNew<vtkLKGuideBarFilter> all;
+  all->SetInputConnection(0, fine->GetOutputPort());
+  for (const auto& guide : guides)
+    all->AddGuideConnection(guide->GetOutputPort());
+  all->Update();
+  ASSERT_EQ(all->GetNumberOfBars(), 1);
+  ASSERT_EQ(all->GetNumberOfMerges(), 1);
+  const std::string both = lkapp::joinText(all, { 0, 1, 2 }, "stroke", number);
+  EXPECT_EQ(both.rfind("joined by a bar of 4.0 mm, ", 0), 0u) << both;
+  EXPECT_NE(both.find(" mm clear of the bone between them, those of strokes 2 and 3 merged into one block (they "
+                      "overlap; every slot and screw hole open through it)"),
+    std::string::npos)
+    << both;
+  vtkNew<vtkLKGuideBarFilter> pair;
+  pair->SetInputConnection(0, fine->GetOutputPort());
+  pair->AddGuideConnection(guides[1]->GetOutputPort());
+  pair->AddGuideConnection(guides[2]->GetOutputPort());
+  pair->Update();
+  EXPECT_EQ(lkapp::joinText(pair, { 4, 2 }, "line", number),
+    "merged into one block (they overlap; every slot and screw hole open through it)");
+  vtkNew<vtkLKGuideBarFilter> barred;
+  barred->SetInputConnection(0, fine->GetOutputPort());
+  barred->AddGuideConnection(guides[0]->GetOutputPort());
+  barred->AddGuideConnection(guides[1]->GetOutputPort());
+  barred->Update();
+  const std::string bar = lkapp::joinText(barred, { 0, 1 }, "stroke", number);
+  EXPECT_EQ(bar.rfind("joined by a bar of 4.0 mm, ", 0), 0u) << bar;
+  EXPECT_EQ(bar.find("merged"), std::string::npos) << bar;
 }
