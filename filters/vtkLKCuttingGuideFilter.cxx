@@ -770,9 +770,11 @@ int vtkLKCuttingGuideFilter::RequestData(
         double x[3];
         gridPoints->GetPoint(gridId[r * columns + c], x);
         const vtkIdType nearest = points->FindClosestPoint(x);
+        if (nearest < 0)
+          continue;
         double y[3];
         clipped->GetPoint(nearest, y);
-        if (nearest >= 0 && vtkMath::Distance2BetweenPoints(x, y) < 1e-12 * diagonal * diagonal)
+        if (vtkMath::Distance2BetweenPoints(x, y) < 1e-12 * diagonal * diagonal)
           grown[static_cast<std::size_t>(region->GetComponent(nearest, 0))] = 1;
       }
     }

@@ -367,10 +367,10 @@ std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double hi
   return cutters;
 }
 
-/// Why `part` is not one piece, or empty: merged guides (`merged[i]`:
-/// guide i and the next) that do not meet, named after `between(i)`, or
-/// else how many pieces.
-std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, const std::vector<char>& merged,
+/// Why `part` is not one piece, or empty: merged guides (`joins[i]`: guide
+/// i and the next) that do not meet, named after `between(i)`, or else how
+/// many pieces.
+std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, const std::vector<Join>& joins,
   const std::function<std::string(std::size_t)>& between)
 {
   vtkNew<vtkPolyDataConnectivityFilter> regions;
@@ -397,7 +397,7 @@ std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, cons
   };
   std::ostringstream why;
   for (std::size_t i = 0; i + 1 < guide.size(); ++i)
-    if (merged[i] && regionOf(guide[i]) != regionOf(guide[i + 1]))
+    if (joins[i] == Join::Merged && regionOf(guide[i]) != regionOf(guide[i + 1]))
     {
       why << between(i) << "their slots are " << apartAlongBone(guide[i], guide[i + 1])
           << " mm apart along the bone, nearer than their reaches, so no bar fits between them, and the guides "
@@ -842,7 +842,6 @@ int vtkLKGuideBarFilter::RequestData(
   };
   std::vector<double> facingApart(n - 1); // degrees between each guide's approach and the next's
   std::vector<Join> joins(n - 1, Join::Bar); // how guide i and the next are joined
-  std::vector<char> merged(n - 1, 0);        // guide i and the next are one block, not joined by a bar
   for (std::size_t i = 0; i + 1 < n; ++i)
   {
     if (const std::string why =
@@ -852,7 +851,6 @@ int vtkLKGuideBarFilter::RequestData(
       vtkErrorMacro("Cannot join the guides: " << why << ".");
       return 0;
     }
-    merged[i] = joins[i] == Join::Merged;
   }
 
   BoneQueries bone(input);
@@ -903,7 +901,7 @@ int vtkLKGuideBarFilter::RequestData(
   const double share = 0.55 / static_cast<double>(n - 1); // of the progress, for each bar
   for (std::size_t b = 0; b + 1 < n; ++b)
   {
-    if (merged[b])
+    if (joins[b] == Join::Merged)
       continue;
     const BarSettings settings{ radius, this->StandOff, this->MaximumLength, facingApart[b], { b + 1, b + 2 },
       between(b), joins[b] == Join::StraightBar };
@@ -934,7 +932,7 @@ int vtkLKGuideBarFilter::RequestData(
   // tilted where it rises off the bone, can reach into a hole beside it).
   std::vector<std::size_t> block(n, 0);
   for (std::size_t i = 0; i + 1 < n; ++i)
-    block[i + 1] = merged[i] ? block[i] : block[i] + 1;
+    block[i + 1] = joins[i] == Join::Merged ? block[i] : block[i] + 1;
   std::vector<lk::TriangleMesh> guideSolids(n);
   for (std::size_t i = 0; i < n; ++i)
     if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(guideData[i]), guideSolids[i]);
@@ -968,40 +966,44 @@ int vtkLKGuideBarFilter::RequestData(
     solid = std::move(rest);
     return true;
   };
-  std::vector<lk::TriangleMesh> cutGuides(n);
+  // What each guide and bar is cut by, from them as they are; then the cuts.
+  std::vector<std::vector<lk::TriangleMesh>> guideCutters(n), barCutters;
   for (std::size_t j = 0; j < n; ++j)
   {
     std::vector<const lk::TriangleMesh*> inBlock;
     for (std::size_t m = 0; m < n; ++m)
       if (block[m] == block[j])
         inBlock.push_back(&guideSolids[m]);
-    std::vector<lk::TriangleMesh> cutters;
     for (std::size_t k = 0; k < n; ++k)
       if (k != j && block[k] == block[j])
         for (lk::TriangleMesh& c : cutsOf(k, inBlock))
-          cutters.push_back(std::move(c));
-    cutGuides[j] = guideSolids[j];
-    if (!cut(cutGuides[j], cutters, "guide " + std::to_string(j + 1)))
+          guideCutters[j].push_back(std::move(c));
+  }
+  for (std::size_t i = 0, b = 0; i + 1 < n; ++i)
+    if (joins[i] != Join::Merged)
+    {
+      barCutters.emplace_back();
+      for (const std::size_t k : { i, i + 1 })
+        for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolids[b] }))
+          barCutters.back().push_back(std::move(c));
+      ++b;
+    }
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    if (!cut(guideSolids[j], guideCutters[j], "guide " + std::to_string(j + 1)))
       return 0;
     this->UpdateProgress(0.6 + 0.1 * static_cast<double>(j + 1) / static_cast<double>(n));
     if (lkvtk::stopRequested(this, { output }))
       return 1;
   }
-  {
-    std::size_t b = 0;
-    for (std::size_t i = 0; i + 1 < n; ++i)
-      if (!merged[i])
-      {
-        lk::TriangleMesh& barSolid = barSolids[b++];
-        std::vector<lk::TriangleMesh> cutters;
-        for (const std::size_t k : { i, i + 1 })
-          for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolid }))
-            cutters.push_back(std::move(c));
-        if (!cut(barSolid, cutters, n == 2 ? std::string("the bar") : "the bar between guides " +
-                std::to_string(i + 1) + " and " + std::to_string(i + 2)))
-          return 0;
-      }
-  }
+  for (std::size_t i = 0, b = 0; i + 1 < n; ++i)
+    if (joins[i] != Join::Merged)
+    {
+      if (!cut(barSolids[b], barCutters[b], n == 2 ? std::string("the bar") : "the bar between guides " +
+              std::to_string(i + 1) + " and " + std::to_string(i + 2)))
+        return 0;
+      ++b;
+    }
 
   // The union of the guides and the bars, in their order along the bone.
   std::vector<lk::TriangleMesh> solids;
@@ -1009,9 +1011,9 @@ int vtkLKGuideBarFilter::RequestData(
   std::size_t nextBar = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (!cutGuides[i].triangles.empty())
-      solids.push_back(std::move(cutGuides[i]));
-    if (i + 1 < n && merged[i])
+    if (!guideSolids[i].triangles.empty())
+      solids.push_back(std::move(guideSolids[i]));
+    if (i + 1 < n && joins[i] == Join::Merged)
       names += ", guide " + std::to_string(i + 2);
     else if (i + 1 < n)
     {
@@ -1032,7 +1034,7 @@ int vtkLKGuideBarFilter::RequestData(
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(joined);
   // One part: merged guides that do not meet (slots offset along each
   // other, the guides on different faces) would be two.
-  if (const std::string why = apartPieces(result, guide, merged, between); !why.empty())
+  if (const std::string why = apartPieces(result, guide, joins, between); !why.empty())
   {
     vtkErrorMacro("Cannot join the guides: " << why << ".");
     return 0;
@@ -1053,7 +1055,8 @@ int vtkLKGuideBarFilter::RequestData(
   this->BarLength = std::accumulate(barLengths.begin(), barLengths.end(), 0.0);
   this->BarDiameter = barLengths.empty() ? 0.0 : 2.0 * radius;
   this->BarGap = barGaps.empty() ? 0.0 : *std::min_element(barGaps.begin(), barGaps.end());
-  this->Merged.assign(merged.begin(), merged.end());
+  for (const Join j : joins)
+    this->Merged.push_back(j == Join::Merged);
   this->Volume = mass->GetVolume();
   vtkFieldData* fd = output->GetFieldData();
   for (const auto& [name, values] :
@@ -1068,7 +1071,7 @@ int vtkLKGuideBarFilter::RequestData(
   {
     vtkNew<vtkDoubleArray> a;
     a->SetName("GuideMerged");
-    for (char m : merged)
+    for (const char m : this->Merged)
       a->InsertNextValue(m ? 1.0 : 0.0);
     fd->AddArray(a);
   }

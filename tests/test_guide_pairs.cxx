@@ -2,20 +2,17 @@
 // lines either side of each piece, as they lie along the bone, not as drawn.
 #include "common/GuidePairs.h"
 
+#include "TestSupport.h"
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKGuideBarFilter.h"
 
 #include <gtest/gtest.h>
 
-#include <vtkCleanPolyData.h>
-#include <vtkCubeSource.h>
 #include <vtkDoubleArray.h>
-#include <vtkLinearSubdivisionFilter.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
-#include <vtkTriangleFilter.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -234,21 +231,10 @@ namespace
 /// A 10 mm cube, finely triangulated, its centre at x = `centre`.
 vtkSmartPointer<vtkPolyData> cubeAt(double centre)
 {
-  vtkNew<vtkCubeSource> cube;
-  cube->SetXLength(10);
-  cube->SetYLength(10);
-  cube->SetZLength(10);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(cube->GetOutputPort());
-  vtkNew<vtkCleanPolyData> merged; // one closed surface, its faces outward
-  merged->SetInputConnection(triangles->GetOutputPort());
-  vtkNew<vtkLinearSubdivisionFilter> fine;
-  fine->SetInputConnection(merged->GetOutputPort());
-  fine->SetNumberOfSubdivisions(4);
   vtkNew<vtkTransform> move;
   move->Translate(centre, 0, 0);
   vtkNew<vtkTransformPolyDataFilter> moved;
-  moved->SetInputConnection(fine->GetOutputPort());
+  moved->SetInputData(lktest::triangulatedBox(10, 10, 10, 4));
   moved->SetTransform(move);
   moved->Update();
   auto out = vtkSmartPointer<vtkPolyData>::New();
@@ -316,23 +302,12 @@ TEST(GuidePairs, AJoinIsSaidAsItsBarsItsMergedBlocksOrBoth)
   // A 100 x 20 x 30 mm box, saw planes across it at x = -40, -3 and 3: the
   // first guide joined to the second by a bar, the second and third (6 mm
   // apart, overlapping) merged into one block.
-  vtkNew<vtkCubeSource> box;
-  box->SetXLength(100);
-  box->SetYLength(20);
-  box->SetZLength(30);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(box->GetOutputPort());
-  vtkNew<vtkCleanPolyData> merged;
-  merged->SetInputConnection(triangles->GetOutputPort());
-  vtkNew<vtkLinearSubdivisionFilter> fine;
-  fine->SetInputConnection(merged->GetOutputPort());
-  fine->SetNumberOfSubdivisions(3);
-  fine->Update();
+  vtkSmartPointer<vtkPolyData> box = lktest::triangulatedBox(100, 20, 30, 3);
   std::vector<vtkSmartPointer<vtkLKCuttingGuideFilter>> guides;
   for (const double x : { -40.0, -3.0, 3.0 })
   {
     auto guide = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
-    guide->SetInputConnection(fine->GetOutputPort());
+    guide->SetInputData(box);
     guide->SetPlaneOrigin(x, 0, 0);
     guide->SetPlaneNormal(1, 0, 0);
     guide->SetApproach(0, -1, 0);
@@ -342,7 +317,7 @@ TEST(GuidePairs, AJoinIsSaidAsItsBarsItsMergedBlocksOrBoth)
   }
   auto number = [](std::size_t line) { return std::to_string(line + 1); };
   vtkNew<vtkLKGuideBarFilter> all;
-  all->SetInputConnection(0, fine->GetOutputPort());
+  all->SetInputData(0, box);
   for (const auto& guide : guides)
     all->AddGuideConnection(guide->GetOutputPort());
   all->Update();
@@ -355,14 +330,14 @@ TEST(GuidePairs, AJoinIsSaidAsItsBarsItsMergedBlocksOrBoth)
     std::string::npos)
     << both;
   vtkNew<vtkLKGuideBarFilter> pair;
-  pair->SetInputConnection(0, fine->GetOutputPort());
+  pair->SetInputData(0, box);
   pair->AddGuideConnection(guides[1]->GetOutputPort());
   pair->AddGuideConnection(guides[2]->GetOutputPort());
   pair->Update();
   EXPECT_EQ(lkapp::joinText(pair, { 4, 2 }, "line", number),
     "merged into one block (they overlap; every slot and screw hole open through it)");
   vtkNew<vtkLKGuideBarFilter> barred;
-  barred->SetInputConnection(0, fine->GetOutputPort());
+  barred->SetInputData(0, box);
   barred->AddGuideConnection(guides[0]->GetOutputPort());
   barred->AddGuideConnection(guides[1]->GetOutputPort());
   barred->Update();

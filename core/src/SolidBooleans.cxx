@@ -1,22 +1,18 @@
 #include "latticekit/SolidBooleans.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "SurfaceMeshConversion.h"
+
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
-
-#include <map>
 
 namespace lk
 {
 namespace
 {
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using Mesh = cgal::SurfaceMesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 /// The solid as a CGAL surface, or the reason it is none.
@@ -24,24 +20,19 @@ std::string toSurface(const TriangleMesh& solid, Mesh& mesh)
 {
   if (solid.triangles.empty())
     return "it has no triangles";
-  std::vector<Mesh::Vertex_index> id(solid.points.size());
-  for (std::size_t i = 0; i < solid.points.size(); ++i)
-  {
-    const Vec3& p = solid.points[i];
+  for (const Vec3& p : solid.points)
     if (!p.allFinite())
       return "a point is not finite";
-    id[i] = mesh.add_vertex(Point(p.x(), p.y(), p.z()));
-  }
   for (const Triangle& t : solid.triangles)
   {
     for (const std::int64_t v : t)
       if (v < 0 || static_cast<std::size_t>(v) >= solid.points.size())
         return "a triangle's vertex is out of range";
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
-      mesh.add_face(id[static_cast<std::size_t>(t[0])], id[static_cast<std::size_t>(t[1])],
-        id[static_cast<std::size_t>(t[2])]) == Mesh::null_face())
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
       return "its triangles do not make a manifold, consistently oriented surface";
   }
+  if (!cgal::toSurfaceMesh(solid, mesh))
+    return "its triangles do not make a manifold, consistently oriented surface";
   return {};
 }
 
@@ -67,30 +58,6 @@ std::string prepared(const TriangleMesh& solid, Mesh& mesh)
   return {};
 }
 
-/// The CGAL surface as a triangle mesh.
-TriangleMesh fromSurface(Mesh& mesh)
-{
-  TriangleMesh result;
-  mesh.collect_garbage();
-  std::map<Mesh::Vertex_index, std::int64_t> index;
-  for (const Mesh::Vertex_index v : mesh.vertices())
-  {
-    const Point& p = mesh.point(v);
-    index[v] = static_cast<std::int64_t>(result.points.size());
-    result.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (const Mesh::Face_index f : mesh.faces())
-  {
-    Triangle t{};
-    std::size_t k = 0;
-    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      if (k < 3)
-        t[k++] = index[v];
-    if (k == 3)
-      result.triangles.push_back(t);
-  }
-  return result;
-}
 } // namespace
 
 std::string solidUnion(const std::vector<TriangleMesh>& solids, TriangleMesh& result)
@@ -115,7 +82,7 @@ std::string solidUnion(const std::vector<TriangleMesh>& solids, TriangleMesh& re
       return "cannot join " + which + " to the solids before it: CGAL's union failed";
     all = std::move(joined);
   }
-  result = fromSurface(all);
+  result = cgal::fromSurfaceMesh(all);
   return {};
 }
 
@@ -137,7 +104,7 @@ std::string solidDifference(
       return "cannot cut with " + which + ": CGAL's difference failed";
     left = std::move(rest);
   }
-  result = fromSurface(left);
+  result = cgal::fromSurfaceMesh(left);
   return {};
 }
 
