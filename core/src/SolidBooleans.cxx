@@ -93,15 +93,31 @@ std::string solidDifference(
   Mesh left;
   if (const std::string why = prepared(solid, left); !why.empty())
     return "cannot cut the solid: " + why;
+  // The cutters joined first (small, and the solid is usually the large
+  // one), then one cut: each corefinement with the solid costs about as
+  // much as the solid is large.
+  Mesh cutter;
   for (std::size_t k = 0; k < cutters.size(); ++k)
   {
-    Mesh cutter;
+    Mesh mesh;
     const std::string which = "cutter " + std::to_string(k + 1) + " of " + std::to_string(cutters.size());
-    if (const std::string why = prepared(cutters[k], cutter); !why.empty())
+    if (const std::string why = prepared(cutters[k], mesh); !why.empty())
       return "cannot cut with " + which + ": " + why;
+    if (k == 0)
+    {
+      cutter = std::move(mesh);
+      continue;
+    }
+    Mesh joined;
+    if (!PMP::corefine_and_compute_union(cutter, mesh, joined))
+      return "cannot cut with " + which + ": CGAL's union of the cutters failed";
+    cutter = std::move(joined);
+  }
+  if (!cutters.empty())
+  {
     Mesh rest;
     if (!PMP::corefine_and_compute_difference(left, cutter, rest))
-      return "cannot cut with " + which + ": CGAL's difference failed";
+      return "cannot cut the solid: CGAL's difference failed";
     left = std::move(rest);
   }
   result = cgal::fromSurfaceMesh(left);

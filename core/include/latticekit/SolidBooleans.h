@@ -23,7 +23,7 @@ namespace lk
 /// empty. Solids that do not overlap stay apart in one mesh.
 std::string solidUnion(const std::vector<TriangleMesh>& solids, TriangleMesh& result);
 
-/// `solid` less each of `cutters` in turn, into `result`, a closed triangle
+/// `solid` less all of `cutters` (joined first, then cut out at once), into `result`, a closed triangle
 /// mesh oriented outward (several pieces where the cutters part it; empty
 /// where they take it all). Each solid must be as for solidUnion. Empty, or
 /// the reason ("cannot cut the solid: ...", "cannot cut with cutter 2 of 3:
