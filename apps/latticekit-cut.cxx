@@ -16,6 +16,8 @@
 #include <vtkFieldData.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
+#include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtksys/SystemTools.hxx>
@@ -62,8 +64,9 @@ void usage(std::ostream& os)
         "                     its plane, as a saw line or a plane's section is) as\n"
         "                     FOLDER/guide_lineN.stl and .vtp (vtkLKCuttingGuideFilter on MESH:\n"
         "                     a shell on the bone's outer side with a slot in the line's plane,\n"
-        "                     two screw holes and the line's number raised on it); guide files\n"
-        "                     an earlier run left there and this one does not write are removed\n"
+        "                     two screw holes and the line's number raised on it, both clear\n"
+        "                     of the other flat lines' guides and saws); guide files an\n"
+        "                     earlier run left there and this one does not write are removed\n"
         "  --join-guides      with --guides: the flat lines' guides joined, each line to the\n"
         "                     next either side of one piece (as they lie along the bone), by\n"
         "                     bars over the bone between them into one resection guide for\n"
@@ -153,9 +156,48 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
   std::vector<Guide> guides;
   std::vector<std::string> report(facts.size());
   auto labelOf = [](std::size_t line) { return "guide line " + std::to_string(line + 1); };
-  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
-  std::size_t k = 0;
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && k < facts.size(); it->GoToNextCell(), ++k)
+  // Each flat line's plane (origin, normal) and points: the plane through
+  // the line's first point, moved onto its best plane, so that the guide
+  // goes on the part of the bone the line runs round (not on an inner wall
+  // nearer the line's centre).
+  struct Flat
+  {
+    std::array<double, 6> plane{};
+    std::vector<std::array<double, 3>> points;
+  };
+  std::map<std::size_t, Flat> flats;
+  {
+    auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+    std::size_t k = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal() && k < facts.size(); it->GoToNextCell(), ++k)
+    {
+      const lkapp::LineFacts& f = facts[k];
+      if (!f.closed || f.flatness > 0.5)
+        continue;
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      it->GetCurrentCell(n, ids);
+      Flat flat;
+      double* origin = flat.plane.data();
+      lines->GetPoint(ids[0], origin);
+      double apart[3];
+      vtkMath::Subtract(origin, f.centre, apart);
+      const double off = vtkMath::Dot(apart, f.normal);
+      for (int c = 0; c < 3; ++c)
+      {
+        origin[c] -= off * f.normal[c];
+        flat.plane[3 + c] = f.normal[c];
+      }
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        double x[3];
+        lines->GetPoint(ids[i], x);
+        flat.points.push_back({ x[0], x[1], x[2] });
+      }
+      flats[k] = flat;
+    }
+  }
+  for (std::size_t k = 0; k < facts.size(); ++k)
   {
     const lkapp::LineFacts& f = facts[k];
     if (!f.closed || f.flatness > 0.5)
@@ -168,32 +210,27 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
       report[k] = line;
       continue;
     }
-    // The plane through the line's first point, moved onto its best plane:
-    // the guide goes on the part of the bone the line runs round (not on an
-    // inner wall nearer the line's centre).
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    double origin[3];
-    lines->GetPoint(ids[0], origin);
-    double apart[3];
-    vtkMath::Subtract(origin, f.centre, apart);
-    const double off = vtkMath::Dot(apart, f.normal);
-    for (int c = 0; c < 3; ++c)
-      origin[c] -= off * f.normal[c];
+    const Flat& flat = flats.at(k);
     Guide g;
     g.line = k;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double x[3];
-      lines->GetPoint(ids[i], x);
-      g.points.push_back({ x[0], x[1], x[2] });
-    }
+    g.points = flat.points;
     g.filter = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
     g.filter->SetInputData(faces);
-    g.filter->SetPlaneOrigin(origin);
-    g.filter->SetPlaneNormal(f.normal[0], f.normal[1], f.normal[2]);
+    g.filter->SetPlaneOrigin(flat.plane.data());
+    g.filter->SetPlaneNormal(flat.plane.data() + 3);
     g.filter->SetLabel(std::to_string(k + 1).c_str()); // the line's number, as its file name gives it
+    // The other flat lines' planes: the label and screw holes keep clear of
+    // their guides and saws (the filter passes over those far away).
+    vtkNew<vtkPlaneCollection> others;
+    for (const auto& [j, other] : flats)
+      if (j != k)
+      {
+        vtkNew<vtkPlane> plane;
+        plane->SetOrigin(other.plane.data());
+        plane->SetNormal(other.plane.data() + 3);
+        others->AddItem(plane);
+      }
+    g.filter->SetOtherCutPlanes(others);
     g.filter->SetOtherSide(otherSide.count(k + 1) > 0);
     // The cut stands without a guide: why one is not made is this line's
     // report, not an error of the run.

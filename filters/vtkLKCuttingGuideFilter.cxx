@@ -24,6 +24,8 @@
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
+#include <vtkCutter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -42,15 +44,33 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkLKCuttingGuideFilter);
 
+vtkCxxSetObjectMacro(vtkLKCuttingGuideFilter, OtherCutPlanes, vtkPlaneCollection);
+
 vtkLKCuttingGuideFilter::~vtkLKCuttingGuideFilter()
 {
   this->SetLabel(nullptr);
+  this->SetOtherCutPlanes(nullptr);
+}
+
+vtkMTimeType vtkLKCuttingGuideFilter::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->OtherCutPlanes)
+  {
+    time = std::max(time, this->OtherCutPlanes->GetMTime());
+    vtkCollectionSimpleIterator it;
+    this->OtherCutPlanes->InitTraversal(it);
+    while (vtkPlane* plane = this->OtherCutPlanes->GetNextPlane(it))
+      time = std::max(time, plane->GetMTime());
+  }
+  return time;
 }
 
 namespace
@@ -72,6 +92,95 @@ bool finiteVector(const double v[3])
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
+/// Where another saw line's guide would lie: its plane, and the points
+/// where that plane cuts the bone.
+struct OtherGuide
+{
+  Vec origin, normal; // normal: unit
+  vtkSmartPointer<vtkPolyData> section;
+  vtkSmartPointer<vtkStaticPointLocator> locator;
+};
+
+/// The guides of `planes` on `bone`, less the plane (o, n) itself and
+/// planes that miss the bone.
+std::vector<OtherGuide> otherGuides(vtkPlaneCollection* planes, vtkPolyData* bone, const Vec& o, const Vec& n)
+{
+  std::vector<OtherGuide> others;
+  if (!planes)
+    return others;
+  const double size = bone->GetLength();
+  vtkCollectionSimpleIterator it;
+  planes->InitTraversal(it);
+  while (vtkPlane* plane = planes->GetNextPlane(it))
+  {
+    OtherGuide g;
+    std::copy(plane->GetOrigin(), plane->GetOrigin() + 3, g.origin.begin());
+    std::copy(plane->GetNormal(), plane->GetNormal() + 3, g.normal.begin());
+    vtkMath::Normalize(g.normal.data());
+    if (std::abs(dot(g.normal, n)) > 1.0 - 1e-9 && std::abs(dot(add(g.origin, o, -1.0), n)) < 1e-6 * size)
+      continue; // this guide's own plane
+    vtkNew<vtkPlane> cutPlane;
+    cutPlane->SetOrigin(g.origin.data());
+    cutPlane->SetNormal(g.normal.data());
+    vtkNew<vtkCutter> cutter;
+    cutter->SetInputData(bone);
+    cutter->SetCutFunction(cutPlane);
+    cutter->Update();
+    if (cutter->GetOutput()->GetNumberOfPoints() == 0)
+      continue;
+    g.section = cutter->GetOutput();
+    g.locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+    g.locator->SetDataSet(g.section);
+    g.locator->BuildLocator();
+    others.push_back(g);
+  }
+  return others;
+}
+
+/// Whether `x` (on this guide's outer face) lies where another guide would:
+/// within `reach` of its plane and within `nearSection` of where that plane
+/// cuts the bone.
+bool underOtherGuide(const std::vector<OtherGuide>& others, const Vec& x, double reach, double nearSection)
+{
+  for (const OtherGuide& g : others)
+  {
+    if (std::abs(dot(add(x, g.origin, -1.0), g.normal)) >= reach)
+      continue;
+    double nearest[3];
+    g.section->GetPoint(g.locator->FindClosestPoint(x.data()), nearest);
+    if (std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), nearest)) < nearSection)
+      return true;
+  }
+  return false;
+}
+
+/// Whether a screw of `radius` into the bone at `x` along -d (from
+/// `above` over the bone to `deep` into it) comes within `margin` of the
+/// kerf (`halfWidth` each side of the plane) of another saw that cuts the
+/// bone within `nearSection` of `x`: the blade would meet it.
+/// How deep a screw that fixes a guide goes into the bone, for the test
+/// above: mm (a monocortical screw is 5 to 8 mm long).
+constexpr double ScrewDepth = 10.0;
+
+bool inOtherSawPath(const std::vector<OtherGuide>& others, const Vec& x, const Vec& d, double radius,
+  double halfWidth, double above, double deep, double nearSection)
+{
+  constexpr double margin = 1.0;
+  for (const OtherGuide& g : others)
+  {
+    const double f0 = dot(add(add(x, d, above), g.origin, -1.0), g.normal);
+    const double f1 = dot(add(add(x, d, -deep), g.origin, -1.0), g.normal);
+    const double least = f0 * f1 <= 0.0 ? 0.0 : std::min(std::abs(f0), std::abs(f1));
+    if (least >= radius + halfWidth + margin)
+      continue;
+    double nearest[3];
+    g.section->GetPoint(g.locator->FindClosestPoint(x.data()), nearest);
+    if (std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), nearest)) < nearSection)
+      return true;
+  }
+  return false;
+}
+
 } // namespace
 
 int vtkLKCuttingGuideFilter::RequestData(
@@ -84,6 +193,7 @@ int vtkLKCuttingGuideFilter::RequestData(
   this->NumberOfScrewHoles = 0;
   this->LabelPlaced = false;
   this->LabelHeightUsed = 0.0;
+  std::fill(this->LabelBox, this->LabelBox + 9, 0.0);
 
   const double normalLength = vtkMath::Norm(this->PlaneNormal);
   if (!finiteVector(this->PlaneOrigin) || !finiteVector(this->PlaneNormal) || !(normalLength > 0.0) ||
@@ -129,6 +239,23 @@ int vtkLKCuttingGuideFilter::RequestData(
       << "beside the slot with 0.5 mm of wall round it: the guide reaches " << this->Reach - this->SlotWidth / 2.0
       << " mm from the slot (a larger Reach, or ScrewHoleDiameter 0 for none).");
     return 0;
+  }
+  if (this->OtherCutPlanes)
+  {
+    vtkCollectionSimpleIterator it;
+    this->OtherCutPlanes->InitTraversal(it);
+    int k = 0;
+    while (vtkPlane* plane = this->OtherCutPlanes->GetNextPlane(it))
+    {
+      if (!finiteVector(plane->GetOrigin()) || !finiteVector(plane->GetNormal()) ||
+        !(vtkMath::Norm(plane->GetNormal()) > 0.0) || !std::isfinite(vtkMath::Norm(plane->GetNormal())))
+      {
+        vtkErrorMacro("Cannot make a cutting guide: other cut plane " << k << " needs a finite origin and a finite "
+                                                                     << "normal that is not zero.");
+        return 0;
+      }
+      ++k;
+    }
   }
   if (const std::string why = lkvtk::surfaceProblem(input); !why.empty())
   {
@@ -818,6 +945,8 @@ int vtkLKCuttingGuideFilter::RequestData(
   // the guide along the approach (vtkClipPolyData with a vtkCylinder, so
   // their walls are round). A hole whose ray meets no bone is left out.
   std::vector<Vec> holes;
+  // The other saw lines' guides, for the holes and the label to keep clear of.
+  const std::vector<OtherGuide> others = otherGuides(this->OtherCutPlanes, bone, o, n);
   if (this->ScrewHoleDiameter > 0.0)
   {
     const double radius = this->ScrewHoleDiameter / 2.0, at = 0.5 * (half + this->Reach);
@@ -830,6 +959,18 @@ int vtkLKCuttingGuideFilter::RequestData(
       vtkIdType hit = -1;
       if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell))
         continue;
+      // A screw the saw of a line nearby would meet (two cuts a few
+      // millimetres apart, their guides merged into one block): left out.
+      if (inOtherSawPath(others, { x[0], x[1], x[2] }, d, radius, half, this->Clearance + this->Thickness,
+            ScrewDepth, this->Reach + ScrewDepth))
+      {
+        vtkWarningMacro("The cutting guide's screw hole on the slot's "
+          << (side > 0.0 ? "side the plane's normal points to" : "side away from the plane's normal")
+          << " is left out: its screw (" << 2.0 * radius
+          << " mm, " << ScrewDepth << " mm into the bone) would lie in the path of the saw of another cut plane "
+          << "(OtherCutPlanes) nearby.");
+        continue;
+      }
       vtkNew<vtkCylinder> drill;
       drill->SetCenter(x);
       drill->SetAxis(d.data());
@@ -910,7 +1051,12 @@ int vtkLKCuttingGuideFilter::RequestData(
   vtkSmartPointer<vtkPolyData> shell = outward->GetOutput();
   if (this->Label && *this->Label)
   {
-    const std::string why = this->PutOnLabel(shell, o, n, e, d, low, high);
+    const std::string why = this->PutOnLabel(shell, o, n, e, d, low, high,
+      others.empty() ? std::function<bool(const Vec&, double)>()
+                     : [&](const Vec& x, double margin) {
+                         return underOtherGuide(others, x, this->Reach + margin,
+                           this->Reach + this->Clearance + this->Thickness + 1.0);
+                       });
     if (!why.empty())
       vtkWarningMacro("The cutting guide is made without its label '" << this->Label << "': " << why << ".");
   }
@@ -974,6 +1120,12 @@ int vtkLKCuttingGuideFilter::RequestData(
     label->SetName("GuideLabel");
     label->InsertNextValue(this->Label);
     fd->AddArray(label);
+    vtkNew<vtkDoubleArray> box; // where it lies: a corner, the text's width and height
+    box->SetName("GuideLabelBox");
+    box->SetNumberOfComponents(3);
+    for (int k = 0; k < 3; ++k)
+      box->InsertNextTuple(this->LabelBox + 3 * k);
+    fd->AddArray(box);
   }
   this->UpdateProgress(1.0);
   return 1;
@@ -981,7 +1133,7 @@ int vtkLKCuttingGuideFilter::RequestData(
 
 std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& shell, const std::array<double, 3>& o,
   const std::array<double, 3>& n, const std::array<double, 3>& e, const std::array<double, 3>& d, double low,
-  double high)
+  double high, const std::function<bool(const std::array<double, 3>&, double)>& underOther)
 {
   for (const char* c = this->Label; *c; ++c)
     if (static_cast<unsigned char>(*c) < 32 || static_cast<unsigned char>(*c) > 126)
@@ -1002,7 +1154,69 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
   const double acrossRoom = this->Reach - half - 2.0 * margin, alongRoom = 0.5 * (high - low) - holeRadius - 2.0 * margin;
   if (!(acrossRoom > 0.0) || !(alongRoom > 0.0))
     return "there is no room for it beside the slot (a larger Reach, a longer guide)";
-  const double acrossMiddle = 0.5 * (half + this->Reach), alongMiddle = holeRadius + margin + 0.5 * alongRoom;
+  const double alongMiddle = holeRadius + margin + 0.5 * alongRoom;
+
+  // Each rectangle's room across, from the slot out: the longest run clear
+  // of the other saw lines' guides (all of it without them).
+  struct Run
+  {
+    double from, to; // s, from the plane
+  };
+  std::array<std::array<Run, 2>, 2> runs; // [side][ahead], + first
+  for (auto& r : runs)
+    r.fill(Run{ half + margin, this->Reach - margin });
+  bool crowded = false; // a rectangle lost room to another guide
+  if (underOther)
+  {
+    vtkNew<vtkStaticCellLocator> top;
+    top->SetDataSet(shell);
+    top->BuildLocator();
+    const double far = 4.0 * shell->GetLength();
+    const double step = 0.1;
+    const int count = static_cast<int>(std::floor(acrossRoom / step)) + 1;
+    const int alongCount = std::max(3, static_cast<int>(std::ceil(alongRoom / 0.5)) + 1);
+    vtkNew<vtkGenericCell> cell;
+    for (int si = 0; si < 2; ++si)
+      for (int ai = 0; ai < 2; ++ai)
+      {
+        const double side = si == 0 ? 1.0 : -1.0, ahead = ai == 0 ? 1.0 : -1.0;
+        int best = 0, bestStart = 0, start = 0;
+        for (int k = 0; k <= count; ++k)
+        {
+          bool clear = k < count;
+          for (int j = 0; clear && j < alongCount; ++j)
+          {
+            const double s = half + margin + k * step;
+            const double u = middle + ahead * (holeRadius + margin + alongRoom * j / (alongCount - 1));
+            const Vec x = add(add(o, n, side * s), e, u);
+            // Where it lies on the guide's outer face (the first face from
+            // outside along the approach); off the guide, nothing covers it.
+            const Vec from = add(x, d, far), to = add(x, d, -far);
+            double t, hit[3], pcoords[3];
+            int subId;
+            vtkIdType cellId;
+            if (top->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
+              clear = !underOther({ hit[0], hit[1], hit[2] }, margin);
+          }
+          if (!clear)
+          {
+            if (k - start > best)
+            {
+              best = k - start;
+              bestStart = start;
+            }
+            start = k + 1;
+          }
+        }
+        if (best == count)
+          continue; // all of it clear
+        crowded = true;
+        // best samples clear: a run of (best - 1) steps (none for 0 or 1).
+        runs[si][ai] = best > 1 ? Run{ half + margin + bestStart * step, half + margin + (bestStart + best - 1) * step }
+                                : Run{ 0.0, 0.0 };
+      }
+  }
+
   // The text's up: across the plane (the text reads along the slot) or
   // along it (across the slot), nearest the coordinates' +z first (the
   // patient's head in LPS and RAS alike), so that on a vertical cut a short
@@ -1012,18 +1226,23 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
     Vec up;
     double height, upwards;
     bool acrossUp;
+    double side, ahead, across; // across: the rectangle's middle, s
   };
   std::vector<Place> places;
   for (const bool acrossUp : { true, false })
     for (const double sign : { 1.0, -1.0 })
-    {
-      const Vec up = acrossUp ? Vec{ sign * n[0], sign * n[1], sign * n[2] } : Vec{ sign * e[0], sign * e[1], sign * e[2] };
-      // Its height along up, its width along the other.
-      const double upRoom = acrossUp ? acrossRoom : alongRoom, wideRoom = acrossUp ? alongRoom : acrossRoom;
-      const double height = std::min({ this->LabelHeight, upRoom, wideRoom / aspect });
-      if (height >= smallest)
-        places.push_back({ up, height, up[2], acrossUp });
-    }
+      for (const double side : { 1.0, -1.0 })
+        for (const double ahead : { 1.0, -1.0 })
+        {
+          const Vec up = acrossUp ? Vec{ sign * n[0], sign * n[1], sign * n[2] } : Vec{ sign * e[0], sign * e[1], sign * e[2] };
+          const Run& run = runs[side > 0.0 ? 0 : 1][ahead > 0.0 ? 0 : 1];
+          const double room = run.to - run.from;
+          // Its height along up, its width along the other.
+          const double upRoom = acrossUp ? room : alongRoom, wideRoom = acrossUp ? alongRoom : room;
+          const double height = std::min({ this->LabelHeight, upRoom, wideRoom / aspect });
+          if (height >= smallest)
+            places.push_back({ up, height, up[2], acrossUp, side, ahead, 0.5 * (run.from + run.to) });
+        }
   std::stable_sort(places.begin(), places.end(), [&](const Place& p, const Place& q) {
     const bool pFull = p.height >= this->LabelHeight - 1e-9, qFull = q.height >= this->LabelHeight - 1e-9;
     if (pFull != qFull)
@@ -1034,11 +1253,17 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
   });
   if (places.empty())
   {
-    char room[200];
-    std::snprintf(room, sizeof room,
-      "it is too long for the room beside the slot between a screw hole and the guide's end (%.1f by %.1f mm, at "
-      "%.1f mm tall)",
-      alongRoom, acrossRoom, smallest);
+    char room[300];
+    if (crowded)
+      std::snprintf(room, sizeof room,
+        "there is no room for it beside the slot clear of the guides of the saw lines nearby (the other cut "
+        "planes; %.1f mm tall at least)",
+        smallest);
+    else
+      std::snprintf(room, sizeof room,
+        "it is too long for the room beside the slot between a screw hole and the guide's end (%.1f by %.1f mm, at "
+        "%.1f mm tall)",
+        alongRoom, acrossRoom, smallest);
     return room;
   }
   std::string why;
@@ -1055,33 +1280,35 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
     outline->GetBounds(b);
     Vec reading;
     vtkMath::Cross(place.up.data(), d.data(), reading.data());
-    for (const double side : { 1.0, -1.0 })
-      for (const double ahead : { 1.0, -1.0 })
-      {
-        // The text's middle in the middle of the rectangle.
-        const Vec centre = add(add(o, n, side * acrossMiddle), e, middle + ahead * alongMiddle);
-        const Vec origin = add(add(centre, reading, -0.5 * b[1]), place.up, -0.5 * b[3]);
-        std::string problem;
-        vtkSmartPointer<vtkPolyData> raised =
-          lkvtk::raisedLabel(shell, outline, origin.data(), reading.data(), place.up.data(), relief, depth, problem);
-        if (!raised)
-        {
-          if (why.empty())
-            why = problem;
-          continue;
-        }
-        std::vector<lk::TriangleMesh> solids(2);
-        if (!lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(shell), solids[0]).empty() ||
-          !lkvtk::toTriangleMesh(raised, solids[1]).empty())
-          return "its solid could not be made";
-        lk::TriangleMesh joined;
-        if (const std::string failed = lk::solidUnion(solids, joined); !failed.empty())
-          return "it could not be joined to the guide: " + failed;
-        shell = lkvtk::fromTriangleMesh(joined);
-        this->LabelPlaced = true;
-        this->LabelHeightUsed = place.height;
-        return std::string();
-      }
+    // The text's middle in the middle of the rectangle.
+    const Vec centre = add(add(o, n, place.side * place.across), e, middle + place.ahead * alongMiddle);
+    const Vec origin = add(add(centre, reading, -0.5 * b[1]), place.up, -0.5 * b[3]);
+    std::string problem;
+    vtkSmartPointer<vtkPolyData> raised =
+      lkvtk::raisedLabel(shell, outline, origin.data(), reading.data(), place.up.data(), relief, depth, problem);
+    if (!raised)
+    {
+      if (why.empty())
+        why = problem;
+      continue;
+    }
+    std::vector<lk::TriangleMesh> solids(2);
+    if (!lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(shell), solids[0]).empty() ||
+      !lkvtk::toTriangleMesh(raised, solids[1]).empty())
+      return "its solid could not be made";
+    lk::TriangleMesh joined;
+    if (const std::string failed = lk::solidUnion(solids, joined); !failed.empty())
+      return "it could not be joined to the guide: " + failed;
+    shell = lkvtk::fromTriangleMesh(joined);
+    this->LabelPlaced = true;
+    this->LabelHeightUsed = place.height;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->LabelBox[k] = origin[k];
+      this->LabelBox[3 + k] = b[1] * reading[k];
+      this->LabelBox[6 + k] = b[3] * place.up[k];
+    }
+    return std::string();
   }
   return "no room for it on the outer face beside the slot: " + why;
 }
@@ -1105,6 +1332,7 @@ void vtkLKCuttingGuideFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumContactAngle: " << this->MaximumContactAngle << "\n";
   os << indent << "Label: " << (this->Label ? this->Label : "(none)") << "\n";
   os << indent << "LabelHeight: " << this->LabelHeight << "\n";
+  os << indent << "OtherCutPlanes: " << (this->OtherCutPlanes ? this->OtherCutPlanes->GetNumberOfItems() : 0) << "\n";
   os << indent << "LabelPlaced: " << (this->LabelPlaced ? "yes" : "no") << "\n";
   triple("ApproachUsed", this->ApproachUsed);
   os << indent << "SlotLength: " << this->SlotLength << "\n";

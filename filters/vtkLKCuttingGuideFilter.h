@@ -65,7 +65,11 @@
  *   approach (the contact clipped by a vtkCylinder, so they are round, to
  *   0.015 mm, the clip's chords across the 0.25 mm grid): the
  *   screws that hold the guide while the saw runs, and whose holes in the
- *   bone can take the plate's screws after the cut.
+ *   bone can take the plate's screws after the cut. Given the plan's other
+ *   saw planes (OtherCutPlanes), a hole whose screw (to 10 mm into the
+ *   bone) would come within 1 mm of the kerf of a saw cutting the bone
+ *   nearby is left out with a warning (two cuts a few millimetres apart:
+ *   the blade would meet the screw).
  * - The shell: the contact moved Clearance along the approach (room for the
  *   periosteum, or for the printer's tolerance) and swept Thickness along it
  *   by vtkLinearExtrusionFilter, capped, oriented outward by
@@ -79,10 +83,16 @@
  *   four such places the text fits on whole, on a face within 60 degrees of
  *   the approach), sunk 1 mm into the wall and joined to it into one solid
  *   (CGAL's corefinement, lk::solidUnion). Parts printed for one plan are
- *   told apart by it (the planner writes each saw line's stroke number). A
- *   label with nothing to draw (vtkVectorText draws printable ASCII), longer
- *   than 40 characters or without room is left out with a warning; the
- *   guide is made without it.
+ *   told apart by it (the planner writes each saw line's stroke number).
+ *   Given the plan's other saw planes (OtherCutPlanes), the label keeps off
+ *   where their guides lie (bone within this guide's Reach of such a plane,
+ *   near where that plane cuts the bone): it goes to the side of the slot
+ *   away from a saw line nearby, moved out toward the guide's edge, or made
+ *   smaller, as the room left asks. So on a block merged with a neighbour's
+ *   guide (vtkLKGuideBarFilter) no wall of the other's covers it and its
+ *   slot and screw holes do not cut it. A label with nothing to draw
+ *   (vtkVectorText draws printable ASCII), longer than 40 characters or
+ *   without room is left out with a warning; the guide is made without it.
  *
  * Input: a bone surface (polygons; a closed mesh, so that its outside is
  * known). Output: the guide, a closed triangle mesh oriented outward (ready
@@ -94,12 +104,17 @@
  * GuidePlaneNormal (unit), GuideSlotCentre (the middle of the slot on the
  * bone), GuideSlotWidth, GuideThickness, GuideReach, GuideClearance and
  * GuideScrewHoleDiameter (0: no holes); GuideLabel (a string array, the
- * label's text, only when it was put on); and the input's SPACE tag. The same values are kept in the filter
+ * label's text, only when it was put on) and GuideLabelBox (three 3-value
+ * tuples: a corner of the text's rectangle in the plane through
+ * PlaneOrigin square to the approach, the text's width along its reading
+ * direction and its height along its up; the label lies on the outer face
+ * over that rectangle along the approach); and the input's SPACE tag. The same values are kept in the filter
  * after an update.
  *
  * Errors (a VTK error and an empty output): a plane normal or an approach
- * that is zero, not finite or (the approach) along the normal; a parameter
- * out of its range; an input without polygons; a plane that meets no part
+ * that is zero, not finite or (the approach) along the normal; an other
+ * cut plane with such a normal or origin; a parameter out of its range; an
+ * input without polygons; a plane that meets no part
  * of the bone; no face at the section facing the approach; a contact too
  * short along the plane for a slot and two bridges.
  */
@@ -111,7 +126,10 @@
 #include "vtkSmartPointer.h" // for PutOnLabel
 
 #include <array>  // for PutOnLabel
+#include <functional> // for PutOnLabel
 #include <string> // for PutOnLabel
+
+class vtkPlaneCollection;
 
 class LATTICEKITFILTERS_EXPORT vtkLKCuttingGuideFilter : public vtkPolyDataAlgorithm
 {
@@ -177,7 +195,16 @@ public:
   /// room, down to 1.5).
   vtkSetMacro(LabelHeight, double);
   vtkGetMacro(LabelHeight, double);
+  /// The plan's other saw planes (default none): the label keeps off where
+  /// their guides lie, taken to reach as far as this one's, and a screw
+  /// hole their saws would meet is left out (see above). This guide's own
+  /// plane among them is passed over.
+  void SetOtherCutPlanes(vtkPlaneCollection* planes);
+  vtkGetObjectMacro(OtherCutPlanes, vtkPlaneCollection);
   ///@}
+
+  /// Also the other cut planes' modification times.
+  vtkMTimeType GetMTime() override;
 
   ///@{
   /// After an update (zeros before, or after an error): the approach used
@@ -213,9 +240,11 @@ protected:
   double ScrewHoleDiameter = 2.1;
   char* Label = nullptr;
   double LabelHeight = 3.0;
+  vtkPlaneCollection* OtherCutPlanes = nullptr;
   int NumberOfScrewHoles = 0;
   bool LabelPlaced = false;
   double LabelHeightUsed = 0.0;
+  double LabelBox[9] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   double ApproachUsed[3] = { 0.0, 0.0, 0.0 };
   double SlotLength = 0.0;
   double ContactArea = 0.0;
@@ -225,10 +254,12 @@ private:
   /// Raises the label on `shell` (the guide, replaced by the union) at the
   /// first place it fits (o, n, e, d: the plane's point and normal, the
   /// direction along the plane and the approach; low, high: the guide's
-  /// extent along e); empty, or why it was left out.
+  /// extent along e), clear of where `underOther` (a point of the outer
+  /// face, a margin in mm) says another saw line's guide lies (none if
+  /// empty); empty, or why it was left out.
   std::string PutOnLabel(vtkSmartPointer<vtkPolyData>& shell, const std::array<double, 3>& o,
     const std::array<double, 3>& n, const std::array<double, 3>& e, const std::array<double, 3>& d, double low,
-    double high);
+    double high, const std::function<bool(const std::array<double, 3>&, double)>& underOther);
 
   vtkLKCuttingGuideFilter(const vtkLKCuttingGuideFilter&) = delete;
   void operator=(const vtkLKCuttingGuideFilter&) = delete;

@@ -27,6 +27,7 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStringArray.h>
 #include <vtkStaticPointLocator.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
@@ -86,6 +87,56 @@ bool readField(vtkPolyData* guide, const char* name, double* values, int compone
       return false;
   }
   return true;
+}
+
+/// The share of `guide`'s label (its GuideLabelBox, sampled every 0.1 mm)
+/// where `part`, seen from outside along the guide's approach, is not
+/// where the guide was (within 0.02 mm): covered or cut away. 0 without a
+/// label.
+double labelCovered(vtkPolyData* guide, vtkPolyData* part)
+{
+  vtkDataArray* box = guide->GetFieldData() ? guide->GetFieldData()->GetArray("GuideLabelBox") : nullptr;
+  Vec d;
+  if (!box || box->GetNumberOfComponents() != 3 || box->GetNumberOfTuples() != 3 ||
+    !readField(guide, "GuideApproach", d.data(), 3))
+    return 0.0;
+  Vec corner, wide, up;
+  box->GetTuple(0, corner.data());
+  box->GetTuple(1, wide.data());
+  box->GetTuple(2, up.data());
+  vtkNew<vtkStaticCellLocator> onGuide, onPart;
+  onGuide->SetDataSet(guide);
+  onGuide->BuildLocator();
+  onPart->SetDataSet(part);
+  onPart->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  const double far = 2.0 * (guide->GetLength() + part->GetLength());
+  // How high along the approach the first face from outside lies, or NaN.
+  auto height = [&](vtkStaticCellLocator* locator, const Vec& x) {
+    const Vec from = add(x, d, far), to = add(x, d, -far);
+    double t, hit[3], pcoords[3];
+    int subId;
+    vtkIdType cellId;
+    if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
+      return std::numeric_limits<double>::quiet_NaN();
+    return dot({ hit[0], hit[1], hit[2] }, d);
+  };
+  const int across = std::max(2, static_cast<int>(std::ceil(std::sqrt(dot(wide, wide)) / 0.1)));
+  const int high = std::max(2, static_cast<int>(std::ceil(std::sqrt(dot(up, up)) / 0.1)));
+  int samples = 0, covered = 0;
+  for (int i = 0; i <= across; ++i)
+    for (int j = 0; j <= high; ++j)
+    {
+      const Vec x = add(add(corner, wide, static_cast<double>(i) / across), up, static_cast<double>(j) / high);
+      const double was = height(onGuide, x);
+      if (std::isnan(was))
+        continue;
+      ++samples;
+      const double is = height(onPart, x);
+      if (std::isnan(is) || std::abs(is - was) > 0.02)
+        ++covered;
+    }
+  return samples ? static_cast<double>(covered) / samples : 0.0;
 }
 
 /// The most a joined part's contact may face back from the one direction it
@@ -784,6 +835,8 @@ int vtkLKGuideBarFilter::RequestData(
   this->BarLength = this->BarDiameter = this->BarGap = this->Volume = 0.0;
   this->BarLengths.clear();
   this->Merged.clear();
+  this->NumberOfLabelsCovered = 0;
+  this->NumberOfScrewHolesInSawPaths = 0;
   this->BarGaps.clear();
   this->ApproachUsed[0] = this->ApproachUsed[1] = this->ApproachUsed[2] = 0.0;
   this->InsertionMargin = 0.0;
@@ -1039,6 +1092,47 @@ int vtkLKGuideBarFilter::RequestData(
     vtkErrorMacro("Cannot join the guides: " << why << ".");
     return 0;
   }
+  // A screw hole of one guide in a block beside another's slot: the saw
+  // would meet its screw (guides made without the plan's other saw planes).
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = 0; k < n; ++k)
+      if (k != j && block[k] == block[j])
+        for (const Vec& x : guide[j].holes)
+        {
+          // The screw from the wall's top to 10 mm into the bone, its
+          // distance from guide k's plane: within its radius, half k's slot
+          // and 1 mm, it lies in the saw's path.
+          const Vec top = add(x, guide[j].approach, guide[j].clearance + guide[j].thickness);
+          const Vec deep = add(x, guide[j].approach, -10.0);
+          const double f0 = dot(add(top, guide[k].slotCentre, -1.0), guide[k].normal);
+          const double f1 = dot(add(deep, guide[k].slotCentre, -1.0), guide[k].normal);
+          const double least = f0 * f1 <= 0.0 ? 0.0 : std::min(std::abs(f0), std::abs(f1));
+          if (least < 0.5 * guide[j].hole + 0.5 * guide[k].slotWidth + 1.0)
+          {
+            ++this->NumberOfScrewHolesInSawPaths;
+            vtkWarningMacro("A screw hole of guide " << j + 1 << " lies in the path of guide " << k + 1
+              << "'s saw (its screw within 1 mm of that slot's plane): give vtkLKCuttingGuideFilter the plan's "
+              << "other saw planes (OtherCutPlanes), which leaves such holes out.");
+          }
+        }
+  // The labels as the guides showed them: a merged neighbour's wall over
+  // one, or its slot through it, makes it hard to read.
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double share = labelCovered(guideData[i], result);
+    if (!(share > 0.005))
+      continue;
+    ++this->NumberOfLabelsCovered;
+    vtkStringArray* text =
+      vtkStringArray::SafeDownCast(guideData[i]->GetFieldData()->GetAbstractArray("GuideLabel"));
+    const std::string name = text && text->GetNumberOfValues() > 0 ? "'" + text->GetValue(0) + "' " : std::string();
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%.0f %%", 100.0 * share);
+    vtkWarningMacro("The label " << name << "of guide " << i + 1 << " is partly covered or cut in the joined part ("
+                                 << percent << " of its place differs: another guide's wall over it, its slot or "
+                                 << "a screw hole through it): give vtkLKCuttingGuideFilter the plan's other saw "
+                                 << "planes (OtherCutPlanes) so that it keeps clear of them.");
+  }
   vtkNew<vtkMassProperties> mass;
   mass->SetInputData(result);
   mass->Update();
@@ -1112,6 +1206,8 @@ void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumLength: " << this->MaximumLength << "\n";
   os << indent << "NumberOfBars: " << this->BarLengths.size() << "\n";
   os << indent << "NumberOfMerges: " << this->GetNumberOfMerges() << "\n";
+  os << indent << "NumberOfLabelsCovered: " << this->NumberOfLabelsCovered << "\n";
+  os << indent << "NumberOfScrewHolesInSawPaths: " << this->NumberOfScrewHolesInSawPaths << "\n";
   os << indent << "BarLength: " << this->BarLength << "\n";
   os << indent << "BarDiameter: " << this->BarDiameter << "\n";
   os << indent << "BarGap: " << this->BarGap << "\n";

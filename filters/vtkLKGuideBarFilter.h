@@ -77,6 +77,15 @@
  * of contact facing back from it), and the bone's SPACE tag. The same values are
  * kept in the filter after an update.
  *
+ * Warned of (the part is made): a guide's label (GuideLabel,
+ * GuideLabelBox) that the part does not show as the guide did (a merged
+ * neighbour's wall stands over it, its slot or a screw hole cuts it), and a
+ * screw hole of a merged guide whose screw would lie in a neighbour's saw
+ * path (within 1 mm of its slot's plane, to 10 mm into the bone).
+ * vtkLKCuttingGuideFilter keeps labels clear of the neighbours' guides, and
+ * leaves such holes out, when given the plan's other saw planes
+ * (OtherCutPlanes).
+ *
  * Errors (a VTK error and an empty output): fewer than two guides, or a
  * guide without the field data above (or with data that describe no
  * guide); a parameter out of range; two guides next to each other put on
@@ -173,6 +182,18 @@ public:
   int GetNumberOfMerges();
   ///@}
 
+  /// After an update: how many of the guides' labels (GuideLabelBox) the
+  /// part does not show as the guide did (another guide's wall over it, its
+  /// slot or a screw hole through it; each is warned of). 0 where
+  /// vtkLKCuttingGuideFilter was given the plan's other saw planes
+  /// (OtherCutPlanes).
+  vtkGetMacro(NumberOfLabelsCovered, int);
+  /// After an update: how many screw holes of merged guides lie in the path
+  /// of a neighbour's saw (their screws within 1 mm of its slot's plane;
+  /// each is warned of). 0 where vtkLKCuttingGuideFilter was given the
+  /// plan's other saw planes, which leaves such holes out.
+  vtkGetMacro(NumberOfScrewHolesInSawPaths, int);
+
 protected:
   vtkLKGuideBarFilter();
   ~vtkLKGuideBarFilter() override = default;
@@ -189,6 +210,8 @@ protected:
   double ApproachUsed[3] = { 0.0, 0.0, 0.0 };
   double InsertionMargin = 0.0;
   double UndercutArea = 0.0;
+  int NumberOfLabelsCovered = 0;
+  int NumberOfScrewHolesInSawPaths = 0;
   std::vector<double> BarLengths;
   std::vector<double> BarGaps;
   std::vector<char> Merged;

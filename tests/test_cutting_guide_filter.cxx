@@ -22,6 +22,7 @@
 #include <vtkLinearSubdivisionFilter.h>
 #include <vtkMath.h>
 #include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
 #include <vtkPoints.h>
 #include <vtkCellData.h>
 #include <vtkIdList.h>
@@ -32,6 +33,7 @@
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -341,6 +343,97 @@ TEST(CuttingGuideFilter, ALabelWithoutRoomOrCharactersIsLeftOutWithAWarning)
   EXPECT_GE(guide->GetLabelHeightUsed(), 1.5);
 }
 
+TEST(CuttingGuideFilter, BesideAnotherSawLineItsLabelAndScrewHolesKeepClear)
+{
+  // The box's face y = -10, this saw at x = 0 and another 4 mm away at x =
+  // 4 (a wedge, or a short segment: their guides merged into one block).
+  // Alone, the label "7" and the screw hole at x = +4.3 lie where the other
+  // guide's wall and slot go; told of the other plane, the hole is left out
+  // (its screw would meet that saw) and the label goes to the far side,
+  // beyond the other guide's reach (8 mm from x = 4). Its own plane and a
+  // plane that cuts the bone far away change nothing.
+  auto make = [](vtkPlaneCollection* others, std::string* warnings) {
+    auto guide = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
+    guide->SetInputData(box());
+    guide->SetApproach(0, -1, 0);
+    guide->SetLabel("7");
+    guide->SetOtherCutPlanes(others);
+    lktest::ErrorRecorder recorder(guide);
+    guide->Update();
+    EXPECT_EQ(recorder.errors, 0) << recorder.messages;
+    *warnings = recorder.warningMessages;
+    return guide;
+  };
+  auto plane = [](double x, double nx, double ny) {
+    vtkNew<vtkPlane> p;
+    p->SetOrigin(x, 0, 0);
+    p->SetNormal(nx, ny, 0);
+    return vtkSmartPointer<vtkPlane>(p);
+  };
+  // The label's rectangle: its corners' x.
+  auto labelX = [](vtkLKCuttingGuideFilter* guide) {
+    vtkDataArray* box = guide->GetOutput()->GetFieldData()->GetArray("GuideLabelBox");
+    std::vector<double> x;
+    if (!box || box->GetNumberOfTuples() != 3)
+      return x;
+    double corner[3], wide[3], up[3];
+    box->GetTuple(0, corner);
+    box->GetTuple(1, wide);
+    box->GetTuple(2, up);
+    for (const double a : { 0.0, 1.0 })
+      for (const double b : { 0.0, 1.0 })
+        x.push_back(corner[0] + a * wide[0] + b * up[0]);
+    return x;
+  };
+  std::string warnings;
+  auto alone = make(nullptr, &warnings);
+  EXPECT_EQ(warnings, "");
+  EXPECT_EQ(alone->GetNumberOfScrewHoles(), 2);
+  const std::vector<double> aloneX = labelX(alone);
+  ASSERT_EQ(aloneX.size(), 4u);
+  const double nearest = *std::min_element(
+    aloneX.begin(), aloneX.end(), [](double a, double b) { return std::abs(a - 4.0) < std::abs(b - 4.0); });
+  EXPECT_LT(std::abs(nearest - 4.0), 8.0); // under the other guide
+
+  vtkNew<vtkPlaneCollection> others;
+  others->AddItem(plane(4.0, 1.0, 0.0));
+  auto beside = make(others, &warnings);
+  ASSERT_GT(beside->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_NE(warnings.find("The cutting guide's screw hole on the slot's side the plane's normal points to is left "
+                          "out: its screw (2.1 mm, 10 mm into the bone) would lie in the path of the saw of another "
+                          "cut plane (OtherCutPlanes) nearby."),
+    std::string::npos)
+    << warnings;
+  ASSERT_EQ(beside->GetNumberOfScrewHoles(), 1);
+  vtkDataArray* holes = beside->GetOutput()->GetFieldData()->GetArray("GuideScrewHoles");
+  EXPECT_NEAR(holes->GetComponent(0, 0), -4.3, 1e-9); // the far one
+  ASSERT_TRUE(beside->GetLabelPlaced());
+  EXPECT_DOUBLE_EQ(beside->GetLabelHeightUsed(), 3.0);
+  for (const double x : labelX(beside))
+  {
+    EXPECT_LE(x, 4.0 - 8.0 - 0.5 + 0.1) << "the label reaches under the other guide";
+    EXPECT_GE(x, -8.0 + 0.5 - 1e-6) << "the label reaches past the guide's edge";
+  }
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(beside->GetOutput()), 0);
+
+  // Its own plane (normal reversed), and a plane across the box's far end:
+  // as alone.
+  vtkNew<vtkPlaneCollection> passed;
+  passed->AddItem(plane(0.0, -2.0, 0.0));
+  passed->AddItem(plane(19.0, 1.0, 0.1));
+  auto same = make(passed, &warnings);
+  EXPECT_EQ(warnings, "");
+  EXPECT_EQ(same->GetNumberOfScrewHoles(), 2);
+  EXPECT_EQ(labelX(same), aloneX);
+  EXPECT_NEAR(same->GetVolume(), alone->GetVolume(), 1e-9 * alone->GetVolume());
+  // A plane moved afterwards makes the guide anew (its time counts).
+  others->GetItem(0)->SetOrigin(30.0, 0, 0);
+  alone->SetOtherCutPlanes(others);
+  const vtkMTimeType before = alone->GetOutput()->GetMTime();
+  alone->Update();
+  EXPECT_GT(alone->GetOutput()->GetMTime(), before);
+}
+
 TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
 {
   // Seen from (0, -1, 1) at 45 degrees, the box's faces y = -10 and
@@ -619,6 +712,17 @@ TEST(CuttingGuideFilter, BadInputAndParametersAreRefused)
     { "NaN screw hole", [&](vtkLKCuttingGuideFilter* f) { f->SetScrewHoleDiameter(nan); },
       "ScrewHoleDiameter must be 0 to 10 mm" },
     { "tiny label", [](vtkLKCuttingGuideFilter* f) { f->SetLabelHeight(1); }, "LabelHeight must be 1.5 to 20 mm" },
+    { "other plane without a normal",
+      [](vtkLKCuttingGuideFilter* f) {
+        vtkNew<vtkPlaneCollection> planes;
+        vtkNew<vtkPlane> fine, flat;
+        fine->SetNormal(1, 0, 0);
+        flat->SetNormal(0, 0, 0);
+        planes->AddItem(fine);
+        planes->AddItem(flat);
+        f->SetOtherCutPlanes(planes);
+      },
+      "other cut plane 1 needs a finite origin and a finite normal that is not zero" },
     { "right angle", [](vtkLKCuttingGuideFilter* f) { f->SetMaximumContactAngle(90); },
       "MaximumContactAngle must be 1 to 89 degrees, not 90" },
     { "reach inside the slot", [](vtkLKCuttingGuideFilter* f) { f->SetReach(0.5); },

@@ -1,6 +1,7 @@
 // vtkLKGuideBarFilter: two cutting guides joined by a bar, on a long box
 // (where the bar must lie, its gap, the volume), three joined by two bars,
-// overlapping guides merged into one block with their slots open, and
+// overlapping guides merged into one block with their slots open (their
+// labels and screws clear of each other when told of each other), and
 // on the TCIA mandible (one closed part outside the bone, screw holes left
 // open), and bad input.
 #include "TestSupport.h"
@@ -20,6 +21,8 @@
 #include <vtkMath.h>
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
+#include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
@@ -407,6 +410,9 @@ TEST(GuideBarFilter, OverlappingGuidesAreMergedIntoOneBlockWithEverySlotAndHoleO
     EXPECT_EQ(bar->GetNumberOfBars(), 0);
     EXPECT_EQ(bar->GetBarLength(), 0.0);
     EXPECT_EQ(bar->GetBarDiameter(), 0.0);
+    // Made alone, 6 mm apart: the screw hole between the slots (4.3 mm from
+    // its own, 1.05 mm wide each side) is 0.65 mm from the other kerf.
+    EXPECT_EQ(bar->GetNumberOfScrewHolesInSawPaths(), apart < 10.0 ? 2 : 0) << apart;
     vtkDataArray* merged = out->GetFieldData()->GetArray("GuideMerged");
     ASSERT_NE(merged, nullptr);
     ASSERT_EQ(merged->GetNumberOfTuples(), 1);
@@ -496,6 +502,91 @@ TEST(GuideBarFilter, ABarRisingSteeplyOffTheBoneLeavesTheScrewHolesBesideItOpen)
   EXPECT_EQ(regions(out), 1);
   EXPECT_EQ(pointsInHolesOrSlot(a, out), 0);
   EXPECT_EQ(pointsInHolesOrSlot(b, out), 0);
+}
+
+TEST(GuideBarFilter, MergedGuidesToldOfEachOtherKeepTheirLabelsAndScrewsClearOfTheOthersSaw)
+{
+  // A wedge out of mandible 1's left body: saws 4 mm apart at the top,
+  // 6 degrees between them. Made alone, each guide's label lies under the
+  // other's wall or slot, and its screw hole between the slots in the other
+  // saw's path: the block is made, and each is warned of. Each guide told
+  // of the other's plane (OtherCutPlanes) leaves that hole out and puts its
+  // label on its far side, beyond the other's reach: nothing to warn of.
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  ASSERT_GT(bone->GetNumberOfCells(), 0);
+  const double origins[2][3] = { { -30.0, 276.64, -982.1 }, { -26.0, 276.64, -982.1 } };
+  const double normals[2][3] = { { 1, -0.3, 0 }, { 1, -0.2, 0 } };
+  for (const bool told : { false, true })
+  {
+    vtkSmartPointer<vtkPolyData> guide[2];
+    for (int g = 0; g < 2; ++g)
+    {
+      vtkNew<vtkLKCuttingGuideFilter> filter;
+      filter->SetInputData(bone);
+      filter->SetPlaneOrigin(origins[g]);
+      filter->SetPlaneNormal(normals[g]);
+      filter->SetLabel(g == 0 ? "1" : "2");
+      vtkNew<vtkPlaneCollection> others;
+      vtkNew<vtkPlane> other;
+      other->SetOrigin(origins[1 - g]);
+      other->SetNormal(normals[1 - g]);
+      others->AddItem(other);
+      if (told)
+        filter->SetOtherCutPlanes(others);
+      filter->Update();
+      EXPECT_EQ(filter->GetNumberOfScrewHoles(), told ? 1 : 2) << g;
+      EXPECT_TRUE(filter->GetLabelPlaced()) << g;
+      guide[g] = vtkSmartPointer<vtkPolyData>::New();
+      guide[g]->ShallowCopy(filter->GetOutput());
+      ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
+      // The label's rectangle: its nearest corner's distance from the
+      // other plane, against the guide's reach.
+      vtkDataArray* box = guide[g]->GetFieldData()->GetArray("GuideLabelBox");
+      ASSERT_NE(box, nullptr);
+      double corner[3], wide[3], up[3];
+      box->GetTuple(0, corner);
+      box->GetTuple(1, wide);
+      box->GetTuple(2, up);
+      double nearest = 1e9;
+      for (const double a : { 0.0, 1.0 })
+        for (const double b : { 0.0, 1.0 })
+        {
+          double x[3];
+          for (int k = 0; k < 3; ++k)
+            x[k] = corner[k] + a * wide[k] + b * up[k];
+          nearest = std::min(nearest, std::abs(other->DistanceToPlane(x)));
+        }
+      std::printf("guide %d, %s: label %.2f mm from the other plane\n", g + 1, told ? "told" : "alone", nearest);
+      if (told)
+        EXPECT_GT(nearest, 8.0) << g;
+      else
+        EXPECT_LT(nearest, 8.0) << g;
+    }
+    vtkNew<vtkLKGuideBarFilter> bar;
+    bar->SetBoneData(bone);
+    bar->AddGuideData(guide[0]);
+    bar->AddGuideData(guide[1]);
+    lktest::ErrorRecorder messages(bar);
+    bar->Update();
+    vtkPolyData* out = bar->GetOutput();
+    ASSERT_GT(out->GetNumberOfCells(), 0) << messages.messages;
+    EXPECT_TRUE(bar->GetMerged(0));
+    EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+    EXPECT_EQ(regions(out), 1);
+    EXPECT_EQ(pointsInHolesOrSlot(guide[0], out), 0);
+    EXPECT_EQ(pointsInHolesOrSlot(guide[1], out), 0);
+    EXPECT_EQ(bar->GetNumberOfLabelsCovered(), told ? 0 : 2);
+    EXPECT_EQ(bar->GetNumberOfScrewHolesInSawPaths(), told ? 0 : 2);
+    if (told)
+      EXPECT_EQ(messages.warnings, 0) << messages.warningMessages;
+    else
+    {
+      for (const char* text : { "The label '1' of guide 1 is partly covered or cut in the joined part",
+             "The label '2' of guide 2 is partly covered", "A screw hole of guide 1 lies in the path of guide 2's saw",
+             "A screw hole of guide 2 lies in the path of guide 1's saw", "(OtherCutPlanes)" })
+        EXPECT_NE(messages.warningMessages.find(text), std::string::npos) << text << ": " << messages.warningMessages;
+    }
+  }
 }
 
 TEST(GuideBarFilter, RoundARingNoOneDirectionPutsThreeGuidesOn)

@@ -253,6 +253,9 @@ public:
     std::size_t stroke = 0;                        ///< the saw line's stroke, from 0
     std::array<double, 3> origin{}, normal{};      ///< its plane, as the guide was made on it
     bool otherSide = false;                        ///< on the side the filter does not choose
+    /// The planes of the saw lines near it (origin, normal), which its label
+    /// and screw holes keep clear of (the filter's OtherCutPlanes).
+    std::vector<std::array<double, 6>> others;
     /// The filter that made it: its settings and what it measured (the
     /// approach, the slot's length, the contact, the volume, the holes).
     vtkSmartPointer<vtkLKCuttingGuideFilter> filter;

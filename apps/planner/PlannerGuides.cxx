@@ -11,6 +11,9 @@
 
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
+#include <vtkMath.h>
+#include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 
@@ -18,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -73,20 +77,40 @@ void Planner::updateGuides()
   guidesBone = bone;
   guidesBoneTime = bone->GetMTime();
   std::vector<CuttingGuide> made;
+  // The plane through a point of the section a saw line cut along: the
+  // guide goes on that part of the bone.
+  auto planeOrigin = [](const Stroke& st) { return st.points.empty() ? st.sawOrigin : st.points.front(); };
   for (std::size_t i = 0; i < session.strokes.size(); ++i)
   {
     const Stroke& st = session.strokes[i];
     if (!st.saw)
       continue;
-    // The plane through a point of the section the saw line cut along: the
-    // guide goes on that part of the bone.
-    const std::array<double, 3> origin = st.points.empty() ? st.sawOrigin : st.points.front();
+    const std::array<double, 3> origin = planeOrigin(st);
+    // The saw lines within 40 mm of this one (a guide reaches 8 mm from its
+    // slot, its screws 10 mm into the bone): its label and screw holes keep
+    // clear of their guides and saws. Those farther do not remake it.
+    std::vector<std::array<double, 6>> others;
+    for (std::size_t k = 0; k < session.strokes.size(); ++k)
+    {
+      const Stroke& other = session.strokes[k];
+      if (k == i || !other.saw)
+        continue;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& p : st.points)
+        for (const auto& q : other.points)
+          nearest = std::min(nearest, vtkMath::Distance2BetweenPoints(p.data(), q.data()));
+      if (std::sqrt(nearest) > 40.0)
+        continue;
+      const std::array<double, 3> at = planeOrigin(other);
+      others.push_back({ at[0], at[1], at[2], other.sawNormal[0], other.sawNormal[1], other.sawNormal[2] });
+    }
     // The side: the filter's, the other with K (all guides), and each
     // guide's own turn (K on it) on top.
     const bool otherSide = session.guidesOtherSide != st.guideOtherSide;
     bool kept = false;
     for (const CuttingGuide& g : guides)
-      if (g.stroke == i && g.origin == origin && g.normal == st.sawNormal && g.otherSide == otherSide)
+      if (g.stroke == i && g.origin == origin && g.normal == st.sawNormal && g.otherSide == otherSide &&
+        g.others == others)
       {
         made.push_back(g);
         kept = true;
@@ -99,12 +123,25 @@ void Planner::updateGuides()
     g.origin = origin;
     g.normal = st.sawNormal;
     g.otherSide = otherSide;
+    g.others = others;
     g.filter = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
     g.filter->SetInputData(facesOnly(bone));
     g.filter->SetPlaneOrigin(origin.data());
     g.filter->SetPlaneNormal(st.sawNormal.data());
     g.filter->SetOtherSide(otherSide);
     g.filter->SetLabel(std::to_string(i + 1).c_str()); // the stroke's number, as the plan and the file name give it
+    if (!others.empty())
+    {
+      vtkNew<vtkPlaneCollection> planes;
+      for (const auto& plane : others)
+      {
+        vtkNew<vtkPlane> p;
+        p->SetOrigin(plane.data());
+        p->SetNormal(plane.data() + 3);
+        planes->AddItem(p);
+      }
+      g.filter->SetOtherCutPlanes(planes);
+    }
     const int warningsBefore = lkapp::warningCount();
     g.error = lkapp::updateKeepingErrors(g.filter); // the plan goes on without it; its message says why
     g.warning = lkapp::warningsSince(warningsBefore); // a label left out

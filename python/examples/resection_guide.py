@@ -8,7 +8,9 @@ The cuts' planes, each through (OX, OY, OZ) with normal (NX, NY, NZ), patient
 mm as the surface is, in their order along the bone (a segment of bone taken
 out between two of them; a chin cut between two body cuts). Each gets a
 cutting guide with a slot for the saw blade and its number raised on it
-(vtkLKCuttingGuideFilter), and vtkLKGuideBarFilter joins them, each to the
+(vtkLKCuttingGuideFilter; told of the other cuts' planes, its number and its
+screw holes keep clear of their guides and saws), and vtkLKGuideBarFilter
+joins them (guides that overlap merged into one block), each to the
 next, by bars in front of the bone into one part, so the slots keep the
 distances and angles of the plan. The part is rigid: it goes on along one
 direction, which the filter finds and this prints. OUT_FOLDER gets
@@ -21,6 +23,7 @@ import sys
 
 import latticekit
 from latticekit.rendering import save_part_on_bone
+from vtkmodules.vtkCommonDataModel import vtkPlane, vtkPlaneCollection
 from vtkmodules.vtkIOGeometry import vtkSTLWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
@@ -51,6 +54,14 @@ def main(argv):
         guide.SetPlaneOrigin(numbers[6 * k:6 * k + 3])
         guide.SetPlaneNormal(numbers[6 * k + 3:6 * k + 6])
         guide.SetLabel(str(k + 1))  # raised on it: which cut is which
+        others = vtkPlaneCollection()
+        for j in range(planes):
+            if j != k:
+                plane = vtkPlane()
+                plane.SetOrigin(numbers[6 * j:6 * j + 3])
+                plane.SetNormal(numbers[6 * j + 3:6 * j + 6])
+                others.AddItem(plane)
+        guide.SetOtherCutPlanes(others)
         bar.AddGuideConnection(guide.GetOutputPort())
         guides.append(guide)
     bar.Update()
@@ -61,9 +72,15 @@ def main(argv):
         print("cutting guide %d: slot %.1f mm long, %.0f mm^3" % (k + 1, guide.GetSlotLength(), guide.GetVolume()))
     lengths = " and ".join("%.0f" % bar.GetBarLength(b) for b in range(bar.GetNumberOfBars()))
     one = bar.GetNumberOfBars() == 1
-    print("resection guide: %s of %.1f mm, %s mm long and %s%.1f mm clear of the bone between the guides; "
-          "%.0f mm^3 in one part" % ("a bar" if one else "%d bars" % bar.GetNumberOfBars(), bar.GetBarDiameter(),
-                                     lengths, "" if one else "at least ", bar.GetBarGap(), bar.GetVolume()))
+    joins = []
+    if bar.GetNumberOfBars() > 0:
+        joins.append("%s of %.1f mm, %s mm long and %s%.1f mm clear of the bone between the guides" % (
+            "a bar" if one else "%d bars" % bar.GetNumberOfBars(), bar.GetBarDiameter(), lengths,
+            "" if one else "at least ", bar.GetBarGap()))
+    merged = ["%d and %d" % (k + 1, k + 2) for k in range(planes - 1) if bar.GetMerged(k)]
+    if merged:  # guides that overlap: one block with both slots
+        joins.append("guides %s merged into one block" % ", ".join(merged))
+    print("resection guide: %s; %.0f mm^3 in one part" % ("; ".join(joins), bar.GetVolume()))
     approach = bar.GetApproachUsed()  # away from the bone: the part goes on the other way
     print("put on along (%.3f, %.3f, %.3f): its contact %.1f degrees %s square to that%s" % (
         -approach[0], -approach[1], -approach[2], abs(bar.GetInsertionMargin()),

@@ -991,6 +991,26 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(block.GetOutput().GetFieldData().GetArray("GuideMerged").GetValue(0), 1.0)
         self.assertLess(block.GetVolume(), guides[0].GetVolume() + near.GetVolume())
         self.assertGreater(block.GetVolume(), max(guides[0].GetVolume(), near.GetVolume()))
+        # Made alone, guide 1's label lies partly under the near guide's
+        # wall (warned of). Told of each other's plane, each guide keeps its
+        # label (and screws) clear of the other's: the pipeline makes both
+        # anew.
+        self.assertEqual(block.GetNumberOfLabelsCovered(), 1)
+        self.assertEqual(block.GetNumberOfScrewHolesInSawPaths(), 0)
+        from vtkmodules.vtkCommonDataModel import vtkPlane, vtkPlaneCollection
+        for guide, other in ((guides[0], near), (near, guides[0])):
+            plane = vtkPlane()
+            plane.SetOrigin(other.GetPlaneOrigin())
+            plane.SetNormal(other.GetPlaneNormal())
+            planes = vtkPlaneCollection()
+            planes.AddItem(plane)
+            guide.SetOtherCutPlanes(planes)
+        near.SetLabel("4")
+        block.Update()
+        self.assertTrue(block.GetMerged(0))
+        self.assertEqual(block.GetNumberOfLabelsCovered(), 0)
+        self.assertTrue(guides[0].GetLabelPlaced() and near.GetLabelPlaced())
+        self.assertEqual(open_edges(block.GetOutput()).GetNumberOfCells(), 0)
 
     def test_nrrd_reads_after_import_vtk(self):
         # Importing all of vtk loads vtkIOMPIImage, whose factory override of
