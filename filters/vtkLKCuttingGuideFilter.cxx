@@ -99,6 +99,14 @@ struct OtherGuide
   Vec origin, normal; // normal: unit
   vtkSmartPointer<vtkPolyData> section;
   vtkSmartPointer<vtkStaticPointLocator> locator;
+
+  /// How far `x` is from where the plane cuts the bone (its nearest section point).
+  double fromSection(const Vec& x) const
+  {
+    double nearest[3];
+    this->section->GetPoint(this->locator->FindClosestPoint(x.data()), nearest);
+    return std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), nearest));
+  }
 };
 
 /// The guides of `planes` on `bone`, less the plane (o, n) itself and
@@ -144,24 +152,20 @@ bool underOtherGuide(const std::vector<OtherGuide>& others, const Vec& x, double
 {
   for (const OtherGuide& g : others)
   {
-    if (std::abs(dot(add(x, g.origin, -1.0), g.normal)) >= reach)
-      continue;
-    double nearest[3];
-    g.section->GetPoint(g.locator->FindClosestPoint(x.data()), nearest);
-    if (std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), nearest)) < nearSection)
+    if (std::abs(dot(add(x, g.origin, -1.0), g.normal)) < reach && g.fromSection(x) < nearSection)
       return true;
   }
   return false;
 }
 
-/// Whether a screw of `radius` into the bone at `x` along -d (from
-/// `above` over the bone to `deep` into it) comes within `margin` of the
-/// kerf (`halfWidth` each side of the plane) of another saw that cuts the
-/// bone within `nearSection` of `x`: the blade would meet it.
 /// How deep a screw that fixes a guide goes into the bone, for the test
-/// above: mm (a monocortical screw is 5 to 8 mm long).
+/// below: mm (a monocortical screw is 5 to 8 mm long).
 constexpr double ScrewDepth = 10.0;
 
+/// Whether a screw of `radius` into the bone at `x` along -d (from
+/// `above` over the bone to `deep` into it) comes within 1 mm of the kerf
+/// (`halfWidth` each side of the plane) of another saw that cuts the bone
+/// within `nearSection` of `x`: the blade would meet it.
 bool inOtherSawPath(const std::vector<OtherGuide>& others, const Vec& x, const Vec& d, double radius,
   double halfWidth, double above, double deep, double nearSection)
 {
@@ -171,11 +175,7 @@ bool inOtherSawPath(const std::vector<OtherGuide>& others, const Vec& x, const V
     const double f0 = dot(add(add(x, d, above), g.origin, -1.0), g.normal);
     const double f1 = dot(add(add(x, d, -deep), g.origin, -1.0), g.normal);
     const double least = f0 * f1 <= 0.0 ? 0.0 : std::min(std::abs(f0), std::abs(f1));
-    if (least >= radius + halfWidth + margin)
-      continue;
-    double nearest[3];
-    g.section->GetPoint(g.locator->FindClosestPoint(x.data()), nearest);
-    if (std::sqrt(vtkMath::Distance2BetweenPoints(x.data(), nearest)) < nearSection)
+    if (least < radius + halfWidth + margin && g.fromSection(x) < nearSection)
       return true;
   }
   return false;
@@ -191,6 +191,7 @@ int vtkLKCuttingGuideFilter::RequestData(
   std::fill(this->ApproachUsed, this->ApproachUsed + 3, 0.0);
   this->SlotLength = this->ContactArea = this->Volume = 0.0;
   this->NumberOfScrewHoles = 0;
+  this->NumberOfScrewHolesLeftOut = 0;
   this->LabelPlaced = false;
   this->LabelHeightUsed = 0.0;
   std::fill(this->LabelBox, this->LabelBox + 9, 0.0);
@@ -964,6 +965,7 @@ int vtkLKCuttingGuideFilter::RequestData(
       if (inOtherSawPath(others, { x[0], x[1], x[2] }, d, radius, half, this->Clearance + this->Thickness,
             ScrewDepth, this->Reach + ScrewDepth))
       {
+        ++this->NumberOfScrewHolesLeftOut;
         vtkWarningMacro("The cutting guide's screw hole on the slot's "
           << (side > 0.0 ? "side the plane's normal points to" : "side away from the plane's normal")
           << " is left out: its screw (" << 2.0 * radius
@@ -1157,20 +1159,27 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
   const double alongMiddle = holeRadius + margin + 0.5 * alongRoom;
 
   // Each rectangle's room across, from the slot out: the longest run clear
-  // of the other saw lines' guides (all of it without them).
+  // of the other saw lines' guides (all of it without them). Off the guide
+  // counts as clear first (the text may fit beside a ragged edge, which
+  // raisedLabel judges), then as not (a smaller text wholly on it).
   struct Run
   {
     double from, to; // s, from the plane
   };
-  std::array<std::array<Run, 2>, 2> runs; // [side][ahead], + first
-  for (auto& r : runs)
-    r.fill(Run{ half + margin, this->Reach - margin });
-  bool crowded = false; // a rectangle lost room to another guide
+  using Runs = std::array<std::array<Run, 2>, 2>; // [side][ahead], + first
+  bool crowded = false;                           // a rectangle lost room to another guide
+  vtkNew<vtkStaticCellLocator> top;
   if (underOther)
   {
-    vtkNew<vtkStaticCellLocator> top;
     top->SetDataSet(shell);
     top->BuildLocator();
+  }
+  auto roomAcross = [&](bool offGuideClear) {
+    Runs runs;
+    for (auto& r : runs)
+      r.fill(Run{ half + margin, this->Reach - margin });
+    if (!underOther)
+      return runs;
     const double far = 4.0 * shell->GetLength();
     const double step = 0.1;
     const int count = static_cast<int>(std::floor(acrossRoom / step)) + 1;
@@ -1190,13 +1199,15 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
             const double u = middle + ahead * (holeRadius + margin + alongRoom * j / (alongCount - 1));
             const Vec x = add(add(o, n, side * s), e, u);
             // Where it lies on the guide's outer face (the first face from
-            // outside along the approach); off the guide, nothing covers it.
+            // outside along the approach).
             const Vec from = add(x, d, far), to = add(x, d, -far);
             double t, hit[3], pcoords[3];
             int subId;
             vtkIdType cellId;
             if (top->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
               clear = !underOther({ hit[0], hit[1], hit[2] }, margin);
+            else
+              clear = offGuideClear;
           }
           if (!clear)
           {
@@ -1210,12 +1221,13 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
         }
         if (best == count)
           continue; // all of it clear
-        crowded = true;
+        crowded = crowded || offGuideClear;
         // best samples clear: a run of (best - 1) steps (none for 0 or 1).
         runs[si][ai] = best > 1 ? Run{ half + margin + bestStart * step, half + margin + (bestStart + best - 1) * step }
                                 : Run{ 0.0, 0.0 };
       }
-  }
+    return runs;
+  };
 
   // The text's up: across the plane (the text reads along the slot) or
   // along it (across the slot), nearest the coordinates' +z first (the
@@ -1229,28 +1241,37 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
     double side, ahead, across; // across: the rectangle's middle, s
   };
   std::vector<Place> places;
-  for (const bool acrossUp : { true, false })
-    for (const double sign : { 1.0, -1.0 })
-      for (const double side : { 1.0, -1.0 })
-        for (const double ahead : { 1.0, -1.0 })
-        {
-          const Vec up = acrossUp ? Vec{ sign * n[0], sign * n[1], sign * n[2] } : Vec{ sign * e[0], sign * e[1], sign * e[2] };
-          const Run& run = runs[side > 0.0 ? 0 : 1][ahead > 0.0 ? 0 : 1];
-          const double room = run.to - run.from;
-          // Its height along up, its width along the other.
-          const double upRoom = acrossUp ? room : alongRoom, wideRoom = acrossUp ? alongRoom : room;
-          const double height = std::min({ this->LabelHeight, upRoom, wideRoom / aspect });
-          if (height >= smallest)
-            places.push_back({ up, height, up[2], acrossUp, side, ahead, 0.5 * (run.from + run.to) });
-        }
-  std::stable_sort(places.begin(), places.end(), [&](const Place& p, const Place& q) {
-    const bool pFull = p.height >= this->LabelHeight - 1e-9, qFull = q.height >= this->LabelHeight - 1e-9;
-    if (pFull != qFull)
-      return pFull;
-    if (!pFull && std::abs(p.height - q.height) > 1e-9)
-      return p.height > q.height;
-    return p.upwards > q.upwards + 1e-9;
-  });
+  for (const bool offGuideClear : { true, false })
+  {
+    if (!offGuideClear && !underOther)
+      break;
+    const Runs runs = roomAcross(offGuideClear);
+    std::vector<Place> these;
+    for (const bool acrossUp : { true, false })
+      for (const double sign : { 1.0, -1.0 })
+        for (const double side : { 1.0, -1.0 })
+          for (const double ahead : { 1.0, -1.0 })
+          {
+            const Vec up =
+              acrossUp ? Vec{ sign * n[0], sign * n[1], sign * n[2] } : Vec{ sign * e[0], sign * e[1], sign * e[2] };
+            const Run& run = runs[side > 0.0 ? 0 : 1][ahead > 0.0 ? 0 : 1];
+            const double room = run.to - run.from;
+            // Its height along up, its width along the other.
+            const double upRoom = acrossUp ? room : alongRoom, wideRoom = acrossUp ? alongRoom : room;
+            const double height = std::min({ this->LabelHeight, upRoom, wideRoom / aspect });
+            if (height >= smallest)
+              these.push_back({ up, height, up[2], acrossUp, side, ahead, 0.5 * (run.from + run.to) });
+          }
+    std::stable_sort(these.begin(), these.end(), [&](const Place& p, const Place& q) {
+      const bool pFull = p.height >= this->LabelHeight - 1e-9, qFull = q.height >= this->LabelHeight - 1e-9;
+      if (pFull != qFull)
+        return pFull;
+      if (!pFull && std::abs(p.height - q.height) > 1e-9)
+        return p.height > q.height;
+      return p.upwards > q.upwards + 1e-9;
+    });
+    places.insert(places.end(), these.begin(), these.end());
+  }
   if (places.empty())
   {
     char room[300];
@@ -1339,4 +1360,5 @@ void vtkLKCuttingGuideFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ContactArea: " << this->ContactArea << "\n";
   os << indent << "Volume: " << this->Volume << "\n";
   os << indent << "NumberOfScrewHoles: " << this->NumberOfScrewHoles << "\n";
+  os << indent << "NumberOfScrewHolesLeftOut: " << this->NumberOfScrewHolesLeftOut << "\n";
 }

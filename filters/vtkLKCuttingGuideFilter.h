@@ -216,6 +216,9 @@ public:
   vtkGetMacro(Volume, double);
   /// The screw holes made (0 to 2: a hole whose ray meets no bone is left out).
   vtkGetMacro(NumberOfScrewHoles, int);
+  /// The screw holes left out because another cut plane's saw would meet
+  /// their screws (0 to 2; each is warned of).
+  vtkGetMacro(NumberOfScrewHolesLeftOut, int);
   /// Whether the label was put on (false without one, or without room),
   /// and its height there (mm; 0 without).
   vtkGetMacro(LabelPlaced, bool);
@@ -242,6 +245,7 @@ protected:
   double LabelHeight = 3.0;
   vtkPlaneCollection* OtherCutPlanes = nullptr;
   int NumberOfScrewHoles = 0;
+  int NumberOfScrewHolesLeftOut = 0;
   bool LabelPlaced = false;
   double LabelHeightUsed = 0.0;
   double LabelBox[9] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };

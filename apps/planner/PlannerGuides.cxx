@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -145,6 +146,16 @@ void Planner::updateGuides()
     const int warningsBefore = lkapp::warningCount();
     g.error = lkapp::updateKeepingErrors(g.filter); // the plan goes on without it; its message says why
     g.warning = lkapp::warningsSince(warningsBefore); // a label left out
+    // A screw hole left out for a saw line nearby is said in the guide's own
+    // line (guidesText), in the plan's words.
+    {
+      std::istringstream lines(g.warning);
+      std::string kept, line;
+      while (std::getline(lines, line))
+        if (line.find("would lie in the path of the saw") == std::string::npos)
+          kept += (kept.empty() ? "" : "\n") + line;
+      g.warning = kept;
+    }
     if (g.filter->GetOutput()->GetNumberOfPolys() > 0)
       g.surface = g.filter->GetOutput();
     else if (g.error.empty())
@@ -314,11 +325,15 @@ std::string Planner::guidesText() const
       ? std::string("from ") + lkapp::directionWord({ approach[0], approach[1], approach[2] }) + " "
       : std::string();
     const int screwHoles = g.filter->GetNumberOfScrewHoles();
-    char holes[80] = "no screw hole";
+    char holes[160] = "no screw hole";
     if (screwHoles > 0)
-      std::snprintf(holes, sizeof holes, "%d screw hole%s of %.1f mm", screwHoles, screwHoles == 1 ? "" : "s",
-        g.filter->GetScrewHoleDiameter());
-    char line[500];
+      std::snprintf(holes, sizeof holes, "%d screw hole%s of %.1f mm%s", screwHoles, screwHoles == 1 ? "" : "s",
+        g.filter->GetScrewHoleDiameter(),
+        g.filter->GetNumberOfScrewHolesLeftOut() > 0 ? " (the other's screw would lie in a nearby saw line's path)"
+                                                      : "");
+    else if (g.filter->GetNumberOfScrewHolesLeftOut() > 0)
+      std::snprintf(holes, sizeof holes, "no screw hole (their screws would lie in nearby saw lines' paths)");
+    char line[700];
     std::snprintf(line, sizeof line,
       "cutting guide for the saw line of stroke %zu: slot %.1f mm long and %.1f mm wide in the saw's plane, "
       "walls %.1f mm thick, %s%s, resting on %.0f mm^2 of bone, put on %s(along (%.3f, %.3f, %.3f)); %.0f mm^3 "
