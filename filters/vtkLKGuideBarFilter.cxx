@@ -1115,8 +1115,8 @@ int vtkLKGuideBarFilter::RequestData(
               << "other saw planes (OtherCutPlanes), which leaves such holes out.");
           }
         }
-  // The labels as the guides showed them: a merged neighbour's wall over
-  // one, or its slot through it, makes it hard to read.
+  // The labels as the guides showed them: a merged neighbour's wall or a
+  // bar over one, or a slot through it, makes it hard to read.
   for (std::size_t i = 0; i < n; ++i)
   {
     const double share = labelCovered(guideData[i], result);
@@ -1129,9 +1129,9 @@ int vtkLKGuideBarFilter::RequestData(
     char percent[32];
     std::snprintf(percent, sizeof percent, "%.0f %%", 100.0 * share);
     vtkWarningMacro("The label " << name << "of guide " << i + 1 << " is partly covered or cut in the joined part ("
-                                 << percent << " of its place differs: another guide's wall over it, its slot or "
-                                 << "a screw hole through it): give vtkLKCuttingGuideFilter the plan's other saw "
-                                 << "planes (OtherCutPlanes) so that it keeps clear of them.");
+                                 << percent << " of its place differs: a bar or another guide's wall over it, a "
+                                 << "slot or a screw hole through it); vtkLKCuttingGuideFilter keeps labels clear of "
+                                 << "merged neighbours when given the plan's other saw planes (OtherCutPlanes).");
   }
   vtkNew<vtkMassProperties> mass;
   mass->SetInputData(result);

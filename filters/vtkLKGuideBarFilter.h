@@ -79,7 +79,8 @@
  *
  * Warned of (the part is made): a guide's label (GuideLabel,
  * GuideLabelBox) that the part does not show as the guide did (a merged
- * neighbour's wall stands over it, its slot or a screw hole cuts it), and a
+ * neighbour's wall or a bar stands over it, a slot or a screw hole cuts
+ * it), and a
  * screw hole of a merged guide whose screw would lie in a neighbour's saw
  * path (within 1 mm of its slot's plane, to 10 mm into the bone).
  * vtkLKCuttingGuideFilter keeps labels clear of the neighbours' guides, and
@@ -183,10 +184,11 @@ public:
   ///@}
 
   /// After an update: how many of the guides' labels (GuideLabelBox) the
-  /// part does not show as the guide did (another guide's wall over it, its
-  /// slot or a screw hole through it; each is warned of). 0 where
-  /// vtkLKCuttingGuideFilter was given the plan's other saw planes
-  /// (OtherCutPlanes).
+  /// part does not show as the guide did (another guide's wall or a bar over
+  /// it, a slot or a screw hole through it; each is warned of). No merged
+  /// neighbour's where vtkLKCuttingGuideFilter was given the plan's other
+  /// saw planes (OtherCutPlanes); a bar's end can still reach a label's
+  /// corner.
   vtkGetMacro(NumberOfLabelsCovered, int);
   /// After an update: how many screw holes of merged guides lie in the path
   /// of a neighbour's saw (their screws within 1 mm of its slot's plane;
