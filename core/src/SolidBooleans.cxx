@@ -58,6 +58,31 @@ std::string prepared(const TriangleMesh& solid, Mesh& mesh)
   return {};
 }
 
+/// The union of `solids` into `all` (each prepared first): empty, or why
+/// not, after "cannot <verb> <noun> k of n: " (the solid that failed) or
+/// `failedUnion` for CGAL's union (after that solid's name too).
+std::string unionOf(const std::vector<TriangleMesh>& solids, const std::string& verb, const std::string& noun,
+  const std::string& failedUnion, Mesh& all)
+{
+  for (std::size_t k = 0; k < solids.size(); ++k)
+  {
+    Mesh mesh;
+    const std::string which = noun + " " + std::to_string(k + 1) + " of " + std::to_string(solids.size());
+    if (const std::string why = prepared(solids[k], mesh); !why.empty())
+      return "cannot " + verb + " " + which + ": " + why;
+    if (k == 0)
+    {
+      all = std::move(mesh);
+      continue;
+    }
+    Mesh joined;
+    if (!PMP::corefine_and_compute_union(all, mesh, joined))
+      return "cannot " + verb + " " + which + failedUnion;
+    all = std::move(joined);
+  }
+  return {};
+}
+
 } // namespace
 
 std::string solidUnion(const std::vector<TriangleMesh>& solids, TriangleMesh& result)
@@ -66,22 +91,9 @@ std::string solidUnion(const std::vector<TriangleMesh>& solids, TriangleMesh& re
   if (solids.empty())
     return "there is no solid to join";
   Mesh all;
-  for (std::size_t k = 0; k < solids.size(); ++k)
-  {
-    Mesh mesh;
-    const std::string which = "solid " + std::to_string(k + 1) + " of " + std::to_string(solids.size());
-    if (const std::string why = prepared(solids[k], mesh); !why.empty())
-      return "cannot join " + which + ": " + why;
-    if (k == 0)
-    {
-      all = mesh;
-      continue;
-    }
-    Mesh joined;
-    if (!PMP::corefine_and_compute_union(all, mesh, joined))
-      return "cannot join " + which + " to the solids before it: CGAL's union failed";
-    all = std::move(joined);
-  }
+  if (std::string why = unionOf(solids, "join", "solid", " to the solids before it: CGAL's union failed", all);
+      !why.empty())
+    return why;
   result = cgal::fromSurfaceMesh(all);
   return {};
 }
@@ -97,22 +109,9 @@ std::string solidDifference(
   // one), then one cut: each corefinement with the solid costs about as
   // much as the solid is large.
   Mesh cutter;
-  for (std::size_t k = 0; k < cutters.size(); ++k)
-  {
-    Mesh mesh;
-    const std::string which = "cutter " + std::to_string(k + 1) + " of " + std::to_string(cutters.size());
-    if (const std::string why = prepared(cutters[k], mesh); !why.empty())
-      return "cannot cut with " + which + ": " + why;
-    if (k == 0)
-    {
-      cutter = std::move(mesh);
-      continue;
-    }
-    Mesh joined;
-    if (!PMP::corefine_and_compute_union(cutter, mesh, joined))
-      return "cannot cut with " + which + ": CGAL's union of the cutters failed";
-    cutter = std::move(joined);
-  }
+  if (std::string why = unionOf(cutters, "cut with", "cutter", ": CGAL's union of the cutters failed", cutter);
+      !why.empty())
+    return why;
   if (!cutters.empty())
   {
     Mesh rest;
