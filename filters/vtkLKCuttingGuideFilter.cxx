@@ -1167,48 +1167,60 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
     double from, to; // s, from the plane
   };
   using Runs = std::array<std::array<Run, 2>, 2>; // [side][ahead], + first
-  bool crowded = false;                           // a rectangle lost room to another guide
-  vtkNew<vtkStaticCellLocator> top;
+  // Each rectangle's columns across (0.1 mm apart, its whole along-room
+  // sampled every 0.5 mm on the guide's outer face, the first face from
+  // outside along the approach): whether one lies under another guide, and
+  // whether one is off the guide. Found once, for both rules.
+  const double step = 0.1;
+  const int count = static_cast<int>(std::floor(acrossRoom / step)) + 1;
+  std::array<std::array<std::vector<char>, 2>, 2> covered, offGuide; // [side][ahead][column]
+  bool anyOff = false;
   if (underOther)
   {
+    vtkNew<vtkStaticCellLocator> top;
     top->SetDataSet(shell);
     top->BuildLocator();
-  }
-  auto roomAcross = [&](bool offGuideClear) {
-    Runs runs;
-    for (auto& r : runs)
-      r.fill(Run{ half + margin, this->Reach - margin });
-    if (!underOther)
-      return runs;
     const double far = 4.0 * shell->GetLength();
-    const double step = 0.1;
-    const int count = static_cast<int>(std::floor(acrossRoom / step)) + 1;
     const int alongCount = std::max(3, static_cast<int>(std::ceil(alongRoom / 0.5)) + 1);
     vtkNew<vtkGenericCell> cell;
     for (int si = 0; si < 2; ++si)
       for (int ai = 0; ai < 2; ++ai)
       {
         const double side = si == 0 ? 1.0 : -1.0, ahead = ai == 0 ? 1.0 : -1.0;
-        int best = 0, bestStart = 0, start = 0;
-        for (int k = 0; k <= count; ++k)
-        {
-          bool clear = k < count;
-          for (int j = 0; clear && j < alongCount; ++j)
+        covered[si][ai].assign(count, 0);
+        offGuide[si][ai].assign(count, 0);
+        for (int k = 0; k < count; ++k)
+          for (int j = 0; j < alongCount && !covered[si][ai][k]; ++j)
           {
             const double s = half + margin + k * step;
             const double u = middle + ahead * (holeRadius + margin + alongRoom * j / (alongCount - 1));
             const Vec x = add(add(o, n, side * s), e, u);
-            // Where it lies on the guide's outer face (the first face from
-            // outside along the approach).
             const Vec from = add(x, d, far), to = add(x, d, -far);
             double t, hit[3], pcoords[3];
             int subId;
             vtkIdType cellId;
             if (top->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
-              clear = !underOther({ hit[0], hit[1], hit[2] }, margin);
+              covered[si][ai][k] = underOther({ hit[0], hit[1], hit[2] }, margin);
             else
-              clear = offGuideClear;
+              offGuide[si][ai][k] = 1;
           }
+        anyOff = anyOff || std::find(offGuide[si][ai].begin(), offGuide[si][ai].end(), 1) != offGuide[si][ai].end();
+      }
+  }
+  bool crowded = false; // a rectangle lost room to another guide
+  auto roomAcross = [&](bool offGuideClear) {
+    Runs runs;
+    for (auto& r : runs)
+      r.fill(Run{ half + margin, this->Reach - margin });
+    if (!underOther)
+      return runs;
+    for (int si = 0; si < 2; ++si)
+      for (int ai = 0; ai < 2; ++ai)
+      {
+        int best = 0, bestStart = 0, start = 0;
+        for (int k = 0; k <= count; ++k)
+        {
+          const bool clear = k < count && !covered[si][ai][k] && (offGuideClear || !offGuide[si][ai][k]);
           if (!clear)
           {
             if (k - start > best)
@@ -1243,8 +1255,8 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
   std::vector<Place> places;
   for (const bool offGuideClear : { true, false })
   {
-    if (!offGuideClear && !underOther)
-      break;
+    if (!offGuideClear && !anyOff)
+      break; // the same rooms again
     const Runs runs = roomAcross(offGuideClear);
     std::vector<Place> these;
     for (const bool acrossUp : { true, false })
