@@ -16,9 +16,8 @@
 #include <vtkFieldData.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
-#include <vtkPlane.h>
-#include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
+#include <vtkPlaneCollection.h> // lkapp::planeCollection
 #include <vtkPolyData.h>
 #include <vtksys/SystemTools.hxx>
 
@@ -221,16 +220,11 @@ bool writeGuides(vtkPolyData* mesh, vtkPolyData* lines, const std::string& folde
     g.filter->SetLabel(std::to_string(k + 1).c_str()); // the line's number, as its file name gives it
     // The other flat lines' planes: the label and screw holes keep clear of
     // their guides and saws (the filter passes over those far away).
-    vtkNew<vtkPlaneCollection> others;
+    std::vector<std::array<double, 6>> others;
     for (const auto& [j, other] : flats)
       if (j != k)
-      {
-        vtkNew<vtkPlane> plane;
-        plane->SetOrigin(other.plane.data());
-        plane->SetNormal(other.plane.data() + 3);
-        others->AddItem(plane);
-      }
-    g.filter->SetOtherCutPlanes(others);
+        others.push_back(other.plane);
+    g.filter->SetOtherCutPlanes(lkapp::planeCollection(others));
     g.filter->SetOtherSide(otherSide.count(k + 1) > 0);
     // The cut stands without a guide: why one is not made is this line's
     // report, not an error of the run.

@@ -4,6 +4,8 @@
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKText.h"
 
+#include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -581,6 +583,19 @@ std::array<double, 3> guideDirection(const double approach[3])
   for (int c = 0; c < 3; ++c)
     along[c] = std::abs(approach[c]) < 5e-4 ? 0.0 : -approach[c];
   return along;
+}
+
+vtkSmartPointer<vtkPlaneCollection> planeCollection(const std::vector<std::array<double, 6>>& planes)
+{
+  auto collection = vtkSmartPointer<vtkPlaneCollection>::New();
+  for (const auto& plane : planes)
+  {
+    vtkNew<vtkPlane> p;
+    p->SetOrigin(plane.data());
+    p->SetNormal(plane.data() + 3);
+    collection->AddItem(p);
+  }
+  return collection;
 }
 
 bool isGuideFileName(const std::string& name)

@@ -15,6 +15,7 @@
 class vtkLKMedicalImageReader;
 
 class vtkAlgorithm;
+class vtkPlaneCollection;
 class vtkPolyData;
 class vtkRenderWindow;
 
@@ -132,6 +133,9 @@ bool isLatticeFileName(const std::string& name);
 /// filter's ApproachUsed, from the bone toward the surgeon) reversed, with
 /// rounding's dust (below 5e-4) made 0, so that a report gives no "-0.000".
 std::array<double, 3> guideDirection(const double approach[3]);
+/// Planes given as (origin, normal) as a vtkPlaneCollection, for a cutting
+/// guide's OtherCutPlanes.
+vtkSmartPointer<vtkPlaneCollection> planeCollection(const std::vector<std::array<double, 6>>& planes);
 /// Whether a file's name (no folder) is one the planner's export writes for
 /// a cutting guide: "guide_stroke", digits, ".stl" or ".vtp"; or for two or
 /// more joined: "guide_strokes", digits, then "-" and digits once or more,

@@ -12,8 +12,7 @@
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
 #include <vtkMath.h>
-#include <vtkPlane.h>
-#include <vtkPlaneCollection.h>
+#include <vtkPlaneCollection.h> // lkapp::planeCollection
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 
@@ -132,17 +131,7 @@ void Planner::updateGuides()
     g.filter->SetOtherSide(otherSide);
     g.filter->SetLabel(std::to_string(i + 1).c_str()); // the stroke's number, as the plan and the file name give it
     if (!others.empty())
-    {
-      vtkNew<vtkPlaneCollection> planes;
-      for (const auto& plane : others)
-      {
-        vtkNew<vtkPlane> p;
-        p->SetOrigin(plane.data());
-        p->SetNormal(plane.data() + 3);
-        planes->AddItem(p);
-      }
-      g.filter->SetOtherCutPlanes(planes);
-    }
+      g.filter->SetOtherCutPlanes(lkapp::planeCollection(others));
     const int warningsBefore = lkapp::warningCount();
     g.error = lkapp::updateKeepingErrors(g.filter); // the plan goes on without it; its message says why
     g.warning = lkapp::warningsSince(warningsBefore); // a label left out
