@@ -5,6 +5,7 @@
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
 #include "vtkLKRaisedLabel.h"
+#include "vtkLKRayTolerance.h"
 #include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
@@ -407,7 +408,8 @@ int vtkLKCuttingGuideFilter::RequestData(
     double t = 0.0, hitPoint[3], pcoords[3];
     int subId = 0;
     vtkIdType hit = -1;
-    return !locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hitPoint, pcoords, subId, hit, cell) ||
+    return !locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+      t, hitPoint, pcoords, subId, hit, cell) ||
       hit == self;
   };
 
@@ -583,7 +585,8 @@ int vtkLKCuttingGuideFilter::RequestData(
       double t = 0.0, x[3], pcoords[3];
       int subId = 0;
       vtkIdType hit = -1;
-      if (locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell))
+      if (locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+        t, x, pcoords, subId, hit, cell))
         gridId[r * columns + c] = gridPoints->InsertNextPoint(x);
     }
     this->UpdateProgress(0.3 + 0.3 * static_cast<double>(r + 1) / static_cast<double>(rows));
@@ -958,7 +961,8 @@ int vtkLKCuttingGuideFilter::RequestData(
       double t = 0.0, x[3], pcoords[3];
       int subId = 0;
       vtkIdType hit = -1;
-      if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell))
+      if (!locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+        t, x, pcoords, subId, hit, cell))
         continue;
       // A screw the saw of a line nearby would meet (two cuts a few
       // millimetres apart, their guides merged into one block): left out.
@@ -1000,7 +1004,8 @@ int vtkLKCuttingGuideFilter::RequestData(
       double t = 0.0, hitPoint[3], pcoords[3];
       int subId = 0;
       vtkIdType hit = -1;
-      if (locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hitPoint, pcoords, subId, hit, cell))
+      if (locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+        t, hitPoint, pcoords, subId, hit, cell))
         points->SetPoint(i, hitPoint);
     }
     points->Modified();
@@ -1090,7 +1095,8 @@ int vtkLKCuttingGuideFilter::RequestData(
     double t = 0.0, x[3], pcoords[3];
     int subId = 0;
     vtkIdType hit = -1;
-    if (locator->IntersectWithLine(from.data(), to.data(), 0.0, t, x, pcoords, subId, hit, cell))
+    if (locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+      t, x, pcoords, subId, hit, cell))
       slotCentre = { x[0], x[1], x[2] };
   }
 
@@ -1199,7 +1205,8 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
             double t, hit[3], pcoords[3];
             int subId;
             vtkIdType cellId;
-            if (top->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
+            if (top->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+              t, hit, pcoords, subId, cellId, cell))
               covered[si][ai][k] = underOther({ hit[0], hit[1], hit[2] }, margin);
             else
               offGuide[si][ai][k] = 1;

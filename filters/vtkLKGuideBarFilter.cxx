@@ -2,6 +2,7 @@
 #include "vtkLKAbort.h"
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
+#include "vtkLKRayTolerance.h"
 
 #include "latticekit/SolidBooleans.h"
 
@@ -71,6 +72,7 @@ struct Guide
   Vec approach{}, normal{}, slotCentre{};
   double slotWidth = 0.0, slotLength = 0.0, thickness = 0.0, reach = 0.0, clearance = 0.0, hole = 0.0;
   std::vector<Vec> holes; ///< where each screw hole's axis meets the bone
+  std::vector<Vec> labelFace; ///< points on its outer face over its label, 0.25 mm apart (none without one)
 };
 
 /// Reads `name` (`components` finite values) from the guide's field data;
@@ -89,55 +91,110 @@ bool readField(vtkPolyData* guide, const char* name, double* values, int compone
   return true;
 }
 
-/// The share of `guide`'s label (its GuideLabelBox, sampled every 0.1 mm)
-/// where `part`, seen from outside along the guide's approach, is not
-/// where the guide was (within 0.02 mm): covered or cut away. 0 without a
-/// label.
-double labelCovered(vtkPolyData* guide, vtkPolyData* part)
+/// Points on `guide`'s outer face over its label (its GuideLabelBox,
+/// sampled every `step` mm; the first face from outside along the guide's
+/// approach): none without a label.
+std::vector<Vec> labelFacePoints(vtkPolyData* guide, double step)
 {
   vtkDataArray* box = guide->GetFieldData() ? guide->GetFieldData()->GetArray("GuideLabelBox") : nullptr;
   Vec d;
   if (!box || box->GetNumberOfComponents() != 3 || box->GetNumberOfTuples() != 3 ||
-    !readField(guide, "GuideApproach", d.data(), 3))
-    return 0.0;
+    !readField(guide, "GuideApproach", d.data(), 3) || !(vtkMath::Normalize(d.data()) > 0.0))
+    return {};
   Vec corner, wide, up;
   box->GetTuple(0, corner.data());
   box->GetTuple(1, wide.data());
   box->GetTuple(2, up.data());
-  vtkNew<vtkStaticCellLocator> onGuide, onPart;
+  for (const Vec* v : { &corner, &wide, &up })
+    if (!std::isfinite((*v)[0]) || !std::isfinite((*v)[1]) || !std::isfinite((*v)[2]))
+      return {};
+  vtkNew<vtkStaticCellLocator> onGuide;
   onGuide->SetDataSet(guide);
   onGuide->BuildLocator();
-  onPart->SetDataSet(part);
-  onPart->BuildLocator();
   vtkNew<vtkGenericCell> cell;
-  const double far = 2.0 * (guide->GetLength() + part->GetLength());
-  // How high along the approach the first face from outside lies, or NaN.
-  auto height = [&](vtkStaticCellLocator* locator, const Vec& x) {
-    const Vec from = add(x, d, far), to = add(x, d, -far);
-    double t, hit[3], pcoords[3];
-    int subId;
-    vtkIdType cellId;
-    if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
-      return std::numeric_limits<double>::quiet_NaN();
-    return dot({ hit[0], hit[1], hit[2] }, d);
-  };
-  const int across = std::max(2, static_cast<int>(std::ceil(std::sqrt(dot(wide, wide)) / 0.1)));
-  const int high = std::max(2, static_cast<int>(std::ceil(std::sqrt(dot(up, up)) / 0.1)));
-  int samples = 0, covered = 0;
+  const double far = 2.0 * guide->GetLength() + distance(corner, { guide->GetCenter()[0], guide->GetCenter()[1],
+                                                                    guide->GetCenter()[2] });
+  const int across = std::clamp(static_cast<int>(std::ceil(std::sqrt(dot(wide, wide)) / step)), 2, 1000);
+  const int high = std::clamp(static_cast<int>(std::ceil(std::sqrt(dot(up, up)) / step)), 2, 1000);
+  std::vector<Vec> points;
   for (int i = 0; i <= across; ++i)
     for (int j = 0; j <= high; ++j)
     {
       const Vec x = add(add(corner, wide, static_cast<double>(i) / across), up, static_cast<double>(j) / high);
-      const double was = height(onGuide, x);
-      if (std::isnan(was))
-        continue;
-      ++samples;
-      const double is = height(onPart, x);
-      if (std::isnan(is) || std::abs(is - was) > 0.02)
-        ++covered;
+      const Vec from = add(x, d, far), to = add(x, d, -far);
+      double t, hit[3], pcoords[3];
+      int subId;
+      vtkIdType cellId;
+      if (onGuide->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+        t, hit, pcoords, subId, cellId, cell))
+        points.push_back({ hit[0], hit[1], hit[2] });
     }
-  return samples ? static_cast<double>(covered) / samples : 0.0;
+  return points;
 }
+
+/// The share of `guide`'s label (its face points every 0.1 mm) where
+/// `part`, seen from outside along the guide's approach, is not where the
+/// guide was (within 0.02 mm): covered or cut away. 0 without a label.
+double labelCovered(vtkPolyData* guide, vtkPolyData* part)
+{
+  const std::vector<Vec> face = labelFacePoints(guide, 0.1);
+  Vec d;
+  if (face.empty() || !readField(guide, "GuideApproach", d.data(), 3) || !(vtkMath::Normalize(d.data()) > 0.0))
+    return 0.0;
+  vtkNew<vtkStaticCellLocator> onPart;
+  onPart->SetDataSet(part);
+  onPart->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  const double far = 2.0 * (guide->GetLength() + part->GetLength());
+  int covered = 0;
+  for (const Vec& q : face)
+  {
+    const Vec from = add(q, d, far), to = add(q, d, -far);
+    double t, hit[3], pcoords[3];
+    int subId;
+    vtkIdType cellId;
+    if (!onPart->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+      t, hit, pcoords, subId, cellId, cell) ||
+      std::abs(dot(add({ hit[0], hit[1], hit[2] }, q, -1.0), d)) > 0.02)
+      ++covered;
+  }
+  return static_cast<double>(covered) / static_cast<double>(face.size());
+}
+
+/// The share of a guide's label (`face`: points on its outer face over the
+/// label, from labelFacePoints) that a bar of `radius` round `line` stands
+/// over, seen from outside along the guide's approach `d` (by more than
+/// 0.02 mm; the tube taken as the spheres round points 0.25 mm apart or
+/// nearer along the line).
+double labelUnderBar(const std::vector<Vec>& face, const Vec& d, const std::vector<Vec>& line, double radius)
+{
+  if (face.empty() || line.empty())
+    return 0.0;
+  std::vector<Vec> centres{ line.front() };
+  for (std::size_t k = 1; k < line.size(); ++k)
+  {
+    const int parts = std::max(1, static_cast<int>(std::ceil(distance(line[k - 1], line[k]) / 0.25)));
+    for (int j = 1; j <= parts; ++j)
+      centres.push_back(add(line[k - 1], add(line[k], line[k - 1], -1.0), static_cast<double>(j) / parts));
+  }
+  int covered = 0;
+  for (const Vec& q : face)
+    for (const Vec& p : centres)
+    {
+      const Vec r = add(p, q, -1.0);
+      const double h = dot(r, d), lateral2 = dot(r, r) - h * h;
+      if (lateral2 < radius * radius && h + std::sqrt(radius * radius - lateral2) > 0.02)
+      {
+        ++covered;
+        break;
+      }
+    }
+  return static_cast<double>(covered) / static_cast<double>(face.size());
+}
+
+/// The share of a label a bar or a wall may stand over before it is
+/// reported (half a percent: a stroke's corner).
+constexpr double LabelShareCovered = 0.005;
 
 /// The most a joined part's contact may face back from the one direction it
 /// goes on along (degrees), and the most of the contact's area that may.
@@ -271,6 +328,7 @@ std::string readGuide(vtkPolyData* data, std::size_t number, Guide& g)
       if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
         g.holes.push_back(x);
     }
+  g.labelFace = labelFacePoints(data, 0.25);
   return {};
 }
 
@@ -491,7 +549,8 @@ public:
     double t = 0.0, hit[3], pcoords[3];
     int subId = 0;
     vtkIdType cellId = -1;
-    if (!locator->IntersectWithLine(from.data(), to.data(), 0.0, t, hit, pcoords, subId, cellId, cell))
+    if (!locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
+      t, hit, pcoords, subId, cellId, cell))
       return -std::numeric_limits<double>::infinity();
     return dot(add({ hit[0], hit[1], hit[2] }, x, -1.0), d);
   }
@@ -589,13 +648,14 @@ std::string tubeSolid(const BarSettings& settings, Bar& bar)
 }
 
 /// Routes the bar from guide a to guide b: from the edge of each, on the
-/// other's side of its slot, a centre line pushed off the bone by its radius
+/// other's side of its slot (`shift[i]` mm from the slot's middle along
+/// it, as frameOf's e), a centre line pushed off the bone by its radius
 /// and the stand-off and smoothed, then its tube. Empty, or why there is
 /// none (after "Cannot join the guides: "). `progress(fraction of this bar)`
 /// returns false to stop; `bar.stopped` then says so and the bar is not
 /// finished.
-std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings, BoneQueries& bone,
-  const std::function<bool(double)>& progress, Bar& bar)
+std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings, const double shift[2],
+  BoneQueries& bone, const std::function<bool(double)>& progress, Bar& bar)
 {
   const Guide* pair[2] = { &a, &b };
   const double radius = settings.radius;
@@ -624,7 +684,9 @@ std::string routeBar(const Guide& a, const Guide& b, const BarSettings& settings
       why << "guide " << settings.number[i] << " has no room for the bar beside its screw hole (a larger Reach)";
       return why.str();
     }
-    const Vec base = add(g.slotCentre, side, s);
+    Vec n, e, d;
+    frameOf(g, n, e, d);
+    const Vec base = add(add(g.slotCentre, side, s), e, shift[i]);
     const double height = bone.height(base, g.approach);
     if (!std::isfinite(height))
     {
@@ -958,8 +1020,10 @@ int vtkLKGuideBarFilter::RequestData(
       continue;
     const BarSettings settings{ radius, this->StandOff, this->MaximumLength, facingApart[b], { b + 1, b + 2 },
       between(b), joins[b] == Join::StraightBar };
+    const Guide* ends[2] = { &guide[b], &guide[b + 1] };
+    double shift[2] = { 0.0, 0.0 };
     Bar bar;
-    const std::string why = routeBar(guide[b], guide[b + 1], settings, bone,
+    const std::string why = routeBar(guide[b], guide[b + 1], settings, shift, bone,
       [&](double done) {
         this->UpdateProgress(0.05 + share * (static_cast<double>(b) + done));
         return !this->GetAbortExecute();
@@ -971,6 +1035,54 @@ int vtkLKGuideBarFilter::RequestData(
     {
       vtkErrorMacro("Cannot join the guides: " << why << ".");
       return 0;
+    }
+    // A bar that would stand over a guide's label (leaving the guide's edge
+    // beside it, or running along the edge toward the other guide): its end
+    // moved along the slot away from the label, 2 mm at a time while it stays
+    // a radius inside the slot's ends, until it clears the label; the route
+    // that covers the least of the labels is kept.
+    auto underBar = [&](const Bar& route, int i) {
+      return labelUnderBar(ends[i]->labelFace, ends[i]->approach, route.line, radius);
+    };
+    double cover[2] = { underBar(bar, 0), underBar(bar, 1) };
+    double away[2] = { 0.0, 0.0 }; // along frameOf's e, away from each label
+    for (int i = 0; i < 2; ++i)
+      if (cover[i] > LabelShareCovered)
+      {
+        Vec middle{ 0.0, 0.0, 0.0 }, nn, e, d;
+        for (const Vec& q : ends[i]->labelFace)
+          middle = add(middle, q, 1.0 / static_cast<double>(ends[i]->labelFace.size()));
+        frameOf(*ends[i], nn, e, d);
+        away[i] = dot(add(middle, ends[i]->slotCentre, -1.0), e) > 0.0 ? -1.0 : 1.0;
+      }
+    for (int step = 1; cover[0] > LabelShareCovered || cover[1] > LabelShareCovered; ++step)
+    {
+      double tried[2] = { shift[0], shift[1] };
+      bool moved = false;
+      for (int i = 0; i < 2; ++i)
+        if (cover[i] > LabelShareCovered && 2.0 * step <= 0.5 * ends[i]->slotLength - radius)
+        {
+          tried[i] = away[i] * 2.0 * step;
+          moved = true;
+        }
+      if (!moved)
+        break;
+      Bar other;
+      const std::string problem = routeBar(guide[b], guide[b + 1], settings, tried, bone,
+        [&](double) { return !this->GetAbortExecute(); }, other);
+      if (lkvtk::stopRequested(this, { output }))
+        return 1;
+      if (!problem.empty())
+        break;
+      const double otherCover[2] = { underBar(other, 0), underBar(other, 1) };
+      if (otherCover[0] + otherCover[1] < cover[0] + cover[1])
+      {
+        bar = std::move(other);
+        shift[0] = tried[0];
+        shift[1] = tried[1];
+        cover[0] = otherCover[0];
+        cover[1] = otherCover[1];
+      }
     }
     barSolids.push_back(std::move(bar.solid));
     barLengths.push_back(bar.length);
@@ -1120,7 +1232,7 @@ int vtkLKGuideBarFilter::RequestData(
   for (std::size_t i = 0; i < n; ++i)
   {
     const double share = labelCovered(guideData[i], result);
-    if (!(share > 0.005))
+    if (!(share > LabelShareCovered))
       continue;
     ++this->NumberOfLabelsCovered;
     vtkStringArray* text =

@@ -22,7 +22,12 @@
  *   slot, clear of its screw hole (so the hole still takes its screw from
  *   above), in the guide's wall there: its middle above the bone (found by
  *   a ray along the guide's approach), or higher until the bar's radius
- *   clears the bone (a bar thicker than the wall, a wall on a slope).
+ *   clears the bone (a bar thicker than the wall, a wall on a slope). It
+ *   starts across from the slot's middle, or, where the bar would stand
+ *   over the guide's label there (GuideLabelBox; the bar rising off the
+ *   wall beside it, or running along the edge toward the other guide),
+ *   moved along the slot away from the label, 2 mm at a time while it stays
+ *   a radius inside the slot's ends, until it clears it.
  * - Its centre line starts straight from end to end and is pushed away
  *   from the bone (vtkImplicitPolyDataDistance: away from the nearest point
  *   of the bone outside it, along the guides' mean approach inside it),
@@ -187,8 +192,8 @@ public:
   /// part does not show as the guide did (another guide's wall or a bar over
   /// it, a slot or a screw hole through it; each is warned of). No merged
   /// neighbour's where vtkLKCuttingGuideFilter was given the plan's other
-  /// saw planes (OtherCutPlanes); a bar's end can still reach a label's
-  /// corner.
+  /// saw planes (OtherCutPlanes); a bar stands over one only where no start
+  /// along the slot clears it.
   vtkGetMacro(NumberOfLabelsCovered, int);
   /// After an update: how many screw holes of merged guides lie in the path
   /// of a neighbour's saw (their screws within 1 mm of its slot's plane;

@@ -1,4 +1,5 @@
 #include "vtkLKRaisedLabel.h"
+#include "vtkLKRayTolerance.h"
 
 #include <vtkAdaptiveSubdivisionFilter.h>
 #include <vtkCellArray.h>
@@ -286,7 +287,7 @@ vtkSmartPointer<vtkPolyData> raisedLabel(vtkPolyData* surface, vtkPolyData* outl
     double t = 0.0, hit[3], pcoords[3];
     int subId = 0;
     vtkIdType cellId = -1;
-    if (!locator->IntersectWithLine(from, to, 0.0, t, hit, pcoords, subId, cellId, cell))
+    if (!locator->IntersectWithLine(from, to, lkvtk::rayTolerance(from, to), t, hit, pcoords, subId, cellId, cell))
     {
       why = "the text would reach beyond the surface";
       return nullptr;

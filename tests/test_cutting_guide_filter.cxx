@@ -9,6 +9,7 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKRaisedLabel.h"
+#include "vtkLKRayTolerance.h"
 #include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
@@ -525,7 +526,7 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
       }
       int subId;
       vtkIdType cellId;
-      if (locator->IntersectWithLine(from, to, 0.0, t, hit, pcoords, subId, cellId, cell))
+      if (locator->IntersectWithLine(from, to, lkvtk::rayTolerance(from, to), t, hit, pcoords, subId, cellId, cell))
         ++blocked;
     }
     EXPECT_EQ(within, 0);

@@ -10,6 +10,7 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKGuideBarFilter.h"
 #include "vtkLKMedicalImageReader.h"
+#include "vtkLKRayTolerance.h"
 
 #include <vtkCleanPolyData.h>
 #include <vtkCubeSource.h>
@@ -99,7 +100,7 @@ int coveredHoles(vtkPolyData* guide, vtkPolyData* part)
       from[k] = holes->GetComponent(h, k) + 0.01 * approach->GetComponent(0, k);
       to[k] = holes->GetComponent(h, k) + 30.0 * approach->GetComponent(0, k);
     }
-    if (locator->IntersectWithLine(from, to, 0.0, t, hit, pcoords, subId, cellId, cell))
+    if (locator->IntersectWithLine(from, to, lkvtk::rayTolerance(from, to), t, hit, pcoords, subId, cellId, cell))
       ++covered;
   }
   return covered;
@@ -586,6 +587,53 @@ TEST(GuideBarFilter, MergedGuidesToldOfEachOtherKeepTheirLabelsAndScrewsClearOfT
              "A screw hole of guide 2 lies in the path of guide 1's saw", "(OtherCutPlanes)" })
         EXPECT_NE(messages.warningMessages.find(text), std::string::npos) << text << ": " << messages.warningMessages;
     }
+  }
+}
+
+TEST(GuideBarFilter, ABarLeavesAGuideBesideItsLabelNotOverIt)
+{
+  // Mandible 1, the five-saw plan's lines 2 (left body) and 5 (right
+  // ramus). Line 5's label stands beside its slot between the screw hole
+  // and the guide's end nearer line 2, and the bar, leaving the guide's
+  // edge across from the slot's middle, would bend along that edge toward
+  // line 2 and stand over a corner of the "5" (1 label covered). Its end
+  // moves along the slot, away from the label, until it clears it.
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  ASSERT_GT(bone->GetNumberOfCells(), 0);
+  const double origins[2][3] = { { 25.03, 293.20, -973.57 }, { 43.46, 324.20, -954.76 } };
+  const double normals[2][3] = { { 0.9578, 0.2873, 0 }, { 0, -0.2873, -0.9578 } };
+  vtkSmartPointer<vtkPolyData> guide[2];
+  for (int g = 0; g < 2; ++g)
+  {
+    vtkNew<vtkLKCuttingGuideFilter> filter;
+    filter->SetInputData(bone);
+    filter->SetPlaneOrigin(origins[g]);
+    filter->SetPlaneNormal(normals[g]);
+    filter->SetLabel(g == 0 ? "2" : "5");
+    filter->Update();
+    EXPECT_TRUE(filter->GetLabelPlaced()) << g;
+    guide[g] = vtkSmartPointer<vtkPolyData>::New();
+    guide[g]->ShallowCopy(filter->GetOutput());
+    ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
+  }
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(guide[0]);
+  bar->AddGuideData(guide[1]);
+  lktest::ErrorRecorder messages(bar);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0) << messages.messages;
+  EXPECT_EQ(bar->GetNumberOfBars(), 1);
+  EXPECT_EQ(bar->GetNumberOfLabelsCovered(), 0);
+  EXPECT_EQ(messages.warnings, 0) << messages.warningMessages;
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_GT(bar->GetBarGap(), 2.0 - 0.03);
+  for (int g = 0; g < 2; ++g)
+  {
+    EXPECT_EQ(coveredHoles(guide[g], out), 0) << g;
+    EXPECT_EQ(pointsInHolesOrSlot(guide[g], out), 0) << g;
   }
 }
 
