@@ -43,6 +43,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 vtkStandardNewMacro(vtkLKGuideBarFilter);
@@ -476,11 +477,41 @@ std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double hi
   return cutters;
 }
 
+/// Whether two guides' bodies overlap: a point of either more than 0.05 mm
+/// inside the other (closed, outward meshes). Slots far apart along the
+/// bone can still have their guides in each other's way where the saw
+/// planes cross near it (an L-shaped cut; a long guide on a ramus and one
+/// across its top).
+bool bodiesOverlap(vtkPolyData* a, vtkPolyData* b)
+{
+  double boundsA[6], boundsB[6];
+  a->GetBounds(boundsA);
+  b->GetBounds(boundsB);
+  for (int k = 0; k < 3; ++k)
+    if (boundsA[2 * k + 1] < boundsB[2 * k] || boundsB[2 * k + 1] < boundsA[2 * k])
+      return false;
+  for (const auto& [inner, outer, box] : { std::make_tuple(a, b, boundsB), std::make_tuple(b, a, boundsA) })
+  {
+    vtkNew<vtkImplicitPolyDataDistance> inside;
+    inside->SetInput(outer);
+    for (vtkIdType p = 0; p < inner->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      inner->GetPoint(p, x);
+      if (x[0] >= box[0] && x[0] <= box[1] && x[1] >= box[2] && x[1] <= box[3] && x[2] >= box[4] &&
+        x[2] <= box[5] && inside->EvaluateFunction(x) < -0.05)
+        return true;
+    }
+  }
+  return false;
+}
+
 /// Why `part` is not one piece, or empty: merged guides (`joins[i]`: guide
-/// i and the next) that do not meet, named after `between(i)`, or else how
-/// many pieces.
+/// i and the next) that do not meet, named after `between(i)`; guides
+/// merged because their bodies overlap (`overlapping[i]`) that fall apart
+/// once cut by each other's slots; or else how many pieces.
 std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, const std::vector<Join>& joins,
-  const std::function<std::string(std::size_t)>& between)
+  const std::vector<char>& overlapping, const std::function<std::string(std::size_t)>& between)
 {
   vtkNew<vtkPolyDataConnectivityFilter> regions;
   regions->SetInputData(part);
@@ -506,11 +537,18 @@ std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, cons
   };
   std::ostringstream why;
   for (std::size_t i = 0; i + 1 < guide.size(); ++i)
-    if (joins[i] == Join::Merged && regionOf(guide[i]) != regionOf(guide[i + 1]))
+    if (joins[i] == Join::Merged && !overlapping[i] && regionOf(guide[i]) != regionOf(guide[i + 1]))
     {
       why << between(i) << "their slots are " << apartAlongBone(guide[i], guide[i + 1])
           << " mm apart along the bone, nearer than their reaches, so no bar fits between them, and the guides "
              "do not meet to be one block (one beside the other on the bone, or round an edge of it)";
+      return why.str();
+    }
+  for (std::size_t i = 0; i + 1 < guide.size(); ++i)
+    if (overlapping[i])
+    {
+      why << between(i) << "the guides overlap (their saw planes cross near the bone), and each less the "
+          << "other's slot and screw holes falls apart (the part would be " << count << " pieces)";
       return why.str();
     }
   why << "the part would be " << count << " pieces (a guide cut apart by the slot of a guide merged with it)";
@@ -967,6 +1005,17 @@ int vtkLKGuideBarFilter::RequestData(
       return 0;
     }
   }
+  // Guides next to each other whose bodies overlap though their slots are
+  // far apart along the bone (saw planes that cross near it): each guide's
+  // wall can stand in the other's saw path or over a screw hole. They are
+  // one block already: merged, each less the other's slot and screw holes.
+  std::vector<char> overlapping(n - 1, 0);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    if (joins[i] != Join::Merged && bodiesOverlap(guideData[i], guideData[i + 1]))
+    {
+      joins[i] = Join::Merged;
+      overlapping[i] = 1;
+    }
 
   BoneQueries bone(input);
   // One direction must put every guide on the bone at once (the part is
@@ -1199,7 +1248,7 @@ int vtkLKGuideBarFilter::RequestData(
   vtkSmartPointer<vtkPolyData> result = lkvtk::fromTriangleMesh(joined);
   // One part: merged guides that do not meet (slots offset along each
   // other, the guides on different faces) would be two.
-  if (const std::string why = apartPieces(result, guide, joins, between); !why.empty())
+  if (const std::string why = apartPieces(result, guide, joins, overlapping, between); !why.empty())
   {
     vtkErrorMacro("Cannot join the guides: " << why << ".");
     return 0;

@@ -61,6 +61,12 @@
  *   stays open through the block. Their slots must leave a wall of 2 mm
  *   between them; merged guides that do not meet (their slots offset along
  *   each other) are refused.
+ * - Guides next to each other whose bodies overlap though their slots are
+ *   far apart along the bone (saw planes that cross near it: a long guide
+ *   on a ramus and one across its top, an L-shaped cut) would each stand in
+ *   the other's saw path or over a screw hole, bar or not: they are one
+ *   block already, and are merged the same way (refused where each less the
+ *   other's slot falls apart).
  * - The bar is a tube round that line (vtkTubeFilter, capped), and the
  *   guides and the bars are joined into one closed surface (CGAL's
  *   corefinement, lk::solidUnion; the slots cut by lk::solidDifference):
@@ -85,9 +91,9 @@
  * Warned of (the part is made): a guide's label (GuideLabel,
  * GuideLabelBox) that the part does not show as the guide did (a merged
  * neighbour's wall or a bar stands over it, a slot or a screw hole cuts
- * it), and a
- * screw hole of a merged guide whose screw would lie in a neighbour's saw
- * path (within 1 mm of its slot's plane, to 10 mm into the bone).
+ * it), and a screw hole of a merged (or overlapping) guide whose screw
+ * would lie in a neighbour's saw path (within 1 mm of its slot's plane, to
+ * 10 mm into the bone).
  * vtkLKCuttingGuideFilter keeps labels clear of the neighbours' guides, and
  * leaves such holes out, when given the plan's other saw planes
  * (OtherCutPlanes).
@@ -98,7 +104,8 @@
  * from directions more than 120 degrees apart (the bar would go round the
  * bone); two guides next to each other farther apart than MaximumLength,
  * with slots too near for a wall of 2 mm between them (one saw cut twice),
- * merged without meeting (one beside the other on the bone), or joined by
+ * merged without meeting (one beside the other on the bone), overlapping
+ * so that one's slot cuts the other apart, or joined by
  * a straight bar that would reach into the bone; a guide whose
  * neighbours before and after it lie on one side of its slot (guides not in
  * their order along the bone: a bar would pass over a guide); guides no one
@@ -195,9 +202,9 @@ public:
   /// saw planes (OtherCutPlanes); a bar stands over one only where no start
   /// along the slot clears it.
   vtkGetMacro(NumberOfLabelsCovered, int);
-  /// After an update: how many screw holes of merged guides lie in the path
-  /// of a neighbour's saw (their screws within 1 mm of its slot's plane;
-  /// each is warned of). 0 where vtkLKCuttingGuideFilter was given the
+  /// After an update: how many screw holes of merged (or overlapping)
+  /// guides lie in the path of a neighbour's saw (their screws within 1 mm
+  /// of its slot's plane; each is warned of). 0 where vtkLKCuttingGuideFilter was given the
   /// plan's other saw planes, which leaves such holes out.
   vtkGetMacro(NumberOfScrewHolesInSawPaths, int);
 

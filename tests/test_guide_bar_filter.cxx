@@ -637,6 +637,53 @@ TEST(GuideBarFilter, ABarLeavesAGuideBesideItsLabelNotOverIt)
   }
 }
 
+TEST(GuideBarFilter, GuidesInEachOthersWayAreMergedThoughTheirSlotsAreFarApart)
+{
+  // Mandible 1's left ramus: a long saw line down the ramus and one across
+  // its top whose planes cross near the bone, 18 mm apart along it. Their
+  // slots are farther apart along the bone than the guides reach, but the
+  // long guide runs on under the short one: joined by a bar, each guide's
+  // wall stood in the other's slot (140 and 231 points of the part). They
+  // are merged instead, each less the other's slot and screw holes.
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  ASSERT_GT(bone->GetNumberOfCells(), 0);
+  const double origins[2][3] = { { -44.59, 332.10, -935.5 }, { -42.82, 316.33, -930.5 } };
+  const double normals[2][3] = { { 0.2928, -0.9026, 0.3156 }, { 0.3034, 0.2871, -0.6879 } };
+  vtkSmartPointer<vtkPolyData> guide[2];
+  for (int g = 0; g < 2; ++g)
+  {
+    vtkNew<vtkLKCuttingGuideFilter> filter;
+    filter->SetInputData(bone);
+    filter->SetPlaneOrigin(origins[g]);
+    filter->SetPlaneNormal(normals[g]);
+    vtkNew<vtkPlaneCollection> others;
+    vtkNew<vtkPlane> other;
+    other->SetOrigin(origins[1 - g]);
+    other->SetNormal(normals[1 - g]);
+    others->AddItem(other);
+    filter->SetOtherCutPlanes(others);
+    filter->Update();
+    guide[g] = vtkSmartPointer<vtkPolyData>::New();
+    guide[g]->ShallowCopy(filter->GetOutput());
+    ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
+  }
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  bar->AddGuideData(guide[0]);
+  bar->AddGuideData(guide[1]);
+  lktest::ErrorRecorder messages(bar);
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0) << messages.messages;
+  EXPECT_TRUE(bar->GetMerged(0));
+  EXPECT_EQ(bar->GetNumberOfBars(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  for (int g = 0; g < 2; ++g)
+    EXPECT_EQ(pointsInHolesOrSlot(guide[g], out), 0) << g;
+  EXPECT_EQ(bar->GetNumberOfScrewHolesInSawPaths(), 0);
+}
+
 TEST(GuideBarFilter, RoundARingNoOneDirectionPutsThreeGuidesOn)
 {
   // A ring (a torus, 40 mm round, its tube 10 mm), guides on its outside at
