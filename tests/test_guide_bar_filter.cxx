@@ -59,6 +59,29 @@ vtkSmartPointer<vtkPolyData> guideOn(vtkPolyData* bone, const double origin[3], 
   return out;
 }
 
+/// The guide of plane `g` (0 or 1) of a pair, on `bone`: labelled `label`
+/// (none for null), and given the other plane (OtherCutPlanes) when `told`.
+/// `filter` makes it, and keeps its counts.
+vtkSmartPointer<vtkPolyData> guideOfPair(vtkPolyData* bone, const double origins[2][3], const double normals[2][3],
+  int g, const char* label, bool told, vtkLKCuttingGuideFilter* filter)
+{
+  filter->SetInputData(bone);
+  filter->SetPlaneOrigin(origins[g]);
+  filter->SetPlaneNormal(normals[g]);
+  filter->SetLabel(label);
+  vtkNew<vtkPlaneCollection> others;
+  vtkNew<vtkPlane> other;
+  other->SetOrigin(origins[1 - g]);
+  other->SetNormal(normals[1 - g]);
+  others->AddItem(other);
+  if (told)
+    filter->SetOtherCutPlanes(others);
+  filter->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(filter->GetOutput());
+  return out;
+}
+
 /// The part joining guides `a` and `b` on `bone`, updated.
 vtkSmartPointer<vtkLKGuideBarFilter> joined(vtkPolyData* bone, vtkPolyData* a, vtkPolyData* b)
 {
@@ -523,23 +546,13 @@ TEST(GuideBarFilter, MergedGuidesToldOfEachOtherKeepTheirLabelsAndScrewsClearOfT
     for (int g = 0; g < 2; ++g)
     {
       vtkNew<vtkLKCuttingGuideFilter> filter;
-      filter->SetInputData(bone);
-      filter->SetPlaneOrigin(origins[g]);
-      filter->SetPlaneNormal(normals[g]);
-      filter->SetLabel(g == 0 ? "1" : "2");
-      vtkNew<vtkPlaneCollection> others;
+      guide[g] = guideOfPair(bone, origins, normals, g, g == 0 ? "1" : "2", told, filter);
+      EXPECT_EQ(filter->GetNumberOfScrewHoles(), told ? 1 : 2) << g;
+      EXPECT_TRUE(filter->GetLabelPlaced()) << g;
+      ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
       vtkNew<vtkPlane> other;
       other->SetOrigin(origins[1 - g]);
       other->SetNormal(normals[1 - g]);
-      others->AddItem(other);
-      if (told)
-        filter->SetOtherCutPlanes(others);
-      filter->Update();
-      EXPECT_EQ(filter->GetNumberOfScrewHoles(), told ? 1 : 2) << g;
-      EXPECT_TRUE(filter->GetLabelPlaced()) << g;
-      guide[g] = vtkSmartPointer<vtkPolyData>::New();
-      guide[g]->ShallowCopy(filter->GetOutput());
-      ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
       // The label's rectangle: its nearest corner's distance from the
       // other plane, against the guide's reach.
       vtkDataArray* box = guide[g]->GetFieldData()->GetArray("GuideLabelBox");
@@ -606,14 +619,8 @@ TEST(GuideBarFilter, ABarLeavesAGuideBesideItsLabelNotOverIt)
   for (int g = 0; g < 2; ++g)
   {
     vtkNew<vtkLKCuttingGuideFilter> filter;
-    filter->SetInputData(bone);
-    filter->SetPlaneOrigin(origins[g]);
-    filter->SetPlaneNormal(normals[g]);
-    filter->SetLabel(g == 0 ? "2" : "5");
-    filter->Update();
+    guide[g] = guideOfPair(bone, origins, normals, g, g == 0 ? "2" : "5", false, filter);
     EXPECT_TRUE(filter->GetLabelPlaced()) << g;
-    guide[g] = vtkSmartPointer<vtkPolyData>::New();
-    guide[g]->ShallowCopy(filter->GetOutput());
     ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
   }
   vtkNew<vtkLKGuideBarFilter> bar;
@@ -653,18 +660,7 @@ TEST(GuideBarFilter, GuidesInEachOthersWayAreMergedThoughTheirSlotsAreFarApart)
   for (int g = 0; g < 2; ++g)
   {
     vtkNew<vtkLKCuttingGuideFilter> filter;
-    filter->SetInputData(bone);
-    filter->SetPlaneOrigin(origins[g]);
-    filter->SetPlaneNormal(normals[g]);
-    vtkNew<vtkPlaneCollection> others;
-    vtkNew<vtkPlane> other;
-    other->SetOrigin(origins[1 - g]);
-    other->SetNormal(normals[1 - g]);
-    others->AddItem(other);
-    filter->SetOtherCutPlanes(others);
-    filter->Update();
-    guide[g] = vtkSmartPointer<vtkPolyData>::New();
-    guide[g]->ShallowCopy(filter->GetOutput());
+    guide[g] = guideOfPair(bone, origins, normals, g, nullptr, true, filter);
     ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
   }
   vtkNew<vtkLKGuideBarFilter> bar;
