@@ -5,7 +5,7 @@
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
 #include "vtkLKRaisedLabel.h"
-#include "vtkLKRayTolerance.h"
+#include "vtkLKRayCast.h"
 #include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
@@ -405,12 +405,9 @@ int vtkLKCuttingGuideFilter::RequestData(
   auto seen = [&](const Vec& x, vtkIdType self) {
     const Vec from = add(x, d, lift);
     Vec to = add(from, d, 2.0 * diagonal);
-    double t = 0.0, hitPoint[3], pcoords[3];
-    int subId = 0;
+    double hitPoint[3];
     vtkIdType hit = -1;
-    return !locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-      t, hitPoint, pcoords, subId, hit, cell) ||
-      hit == self;
+    return !lkvtk::firstHit(locator, from.data(), to.data(), cell, hitPoint, &hit) || hit == self;
   };
 
   // The guide's extent along the plane (u, along e): on a section, the run
@@ -582,11 +579,8 @@ int vtkLKCuttingGuideFilter::RequestData(
     {
       const Vec base = add(add(o, n, across[r]), e, along[c]);
       Vec from = add(base, d, top + 1.0 - vOf(base)), to = add(base, d, bottom - vOf(base));
-      double t = 0.0, x[3], pcoords[3];
-      int subId = 0;
-      vtkIdType hit = -1;
-      if (locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-        t, x, pcoords, subId, hit, cell))
+      double x[3];
+      if (lkvtk::firstHit(locator, from.data(), to.data(), cell, x))
         gridId[r * columns + c] = gridPoints->InsertNextPoint(x);
     }
     this->UpdateProgress(0.3 + 0.3 * static_cast<double>(r + 1) / static_cast<double>(rows));
@@ -958,11 +952,8 @@ int vtkLKCuttingGuideFilter::RequestData(
     {
       const Vec base = add(add(o, n, side * at), e, 0.5 * (low + high));
       Vec from = add(base, d, top + 1.0 - vOf(base)), to = add(base, d, bottom - vOf(base));
-      double t = 0.0, x[3], pcoords[3];
-      int subId = 0;
-      vtkIdType hit = -1;
-      if (!locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-        t, x, pcoords, subId, hit, cell))
+      double x[3];
+      if (!lkvtk::firstHit(locator, from.data(), to.data(), cell, x))
         continue;
       // A screw the saw of a line nearby would meet (two cuts a few
       // millimetres apart, their guides merged into one block): left out.
@@ -1001,11 +992,8 @@ int vtkLKCuttingGuideFilter::RequestData(
       points->GetPoint(i, x.data());
       const Vec base = add(x, d, -vOf(x));
       Vec from = add(base, d, top + 1.0), to = add(base, d, bottom);
-      double t = 0.0, hitPoint[3], pcoords[3];
-      int subId = 0;
-      vtkIdType hit = -1;
-      if (locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-        t, hitPoint, pcoords, subId, hit, cell))
+      double hitPoint[3];
+      if (lkvtk::firstHit(locator, from.data(), to.data(), cell, hitPoint))
         points->SetPoint(i, hitPoint);
     }
     points->Modified();
@@ -1092,11 +1080,8 @@ int vtkLKCuttingGuideFilter::RequestData(
   Vec slotCentre = add(o, e, 0.5 * (low + high) - uOf(o));
   {
     Vec from = add(slotCentre, d, top + 1.0 - vOf(slotCentre)), to = add(slotCentre, d, bottom - vOf(slotCentre));
-    double t = 0.0, x[3], pcoords[3];
-    int subId = 0;
-    vtkIdType hit = -1;
-    if (locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-      t, x, pcoords, subId, hit, cell))
+    double x[3];
+    if (lkvtk::firstHit(locator, from.data(), to.data(), cell, x))
       slotCentre = { x[0], x[1], x[2] };
   }
 
@@ -1202,11 +1187,8 @@ std::string vtkLKCuttingGuideFilter::PutOnLabel(vtkSmartPointer<vtkPolyData>& sh
             const double u = middle + ahead * (holeRadius + margin + alongRoom * j / (alongCount - 1));
             const Vec x = add(add(o, n, side * s), e, u);
             const Vec from = add(x, d, far), to = add(x, d, -far);
-            double t, hit[3], pcoords[3];
-            int subId;
-            vtkIdType cellId;
-            if (top->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-              t, hit, pcoords, subId, cellId, cell))
+            double hit[3];
+            if (lkvtk::firstHit(top, from.data(), to.data(), cell, hit))
               covered[si][ai][k] = underOther({ hit[0], hit[1], hit[2] }, margin);
             else
               offGuide[si][ai][k] = 1;

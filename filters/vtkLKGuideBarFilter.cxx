@@ -2,7 +2,7 @@
 #include "vtkLKAbort.h"
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
-#include "vtkLKRayTolerance.h"
+#include "vtkLKRayCast.h"
 
 #include "latticekit/SolidBooleans.h"
 
@@ -123,11 +123,8 @@ std::vector<Vec> labelFacePoints(vtkPolyData* guide, double step)
     {
       const Vec x = add(add(corner, wide, static_cast<double>(i) / across), up, static_cast<double>(j) / high);
       const Vec from = add(x, d, far), to = add(x, d, -far);
-      double t, hit[3], pcoords[3];
-      int subId;
-      vtkIdType cellId;
-      if (onGuide->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-        t, hit, pcoords, subId, cellId, cell))
+      double hit[3];
+      if (lkvtk::firstHit(onGuide, from.data(), to.data(), cell, hit))
         points.push_back({ hit[0], hit[1], hit[2] });
     }
   return points;
@@ -151,11 +148,8 @@ double labelCovered(vtkPolyData* guide, vtkPolyData* part)
   for (const Vec& q : face)
   {
     const Vec from = add(q, d, far), to = add(q, d, -far);
-    double t, hit[3], pcoords[3];
-    int subId;
-    vtkIdType cellId;
-    if (!onPart->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-      t, hit, pcoords, subId, cellId, cell) ||
+    double hit[3];
+    if (!lkvtk::firstHit(onPart, from.data(), to.data(), cell, hit) ||
       std::abs(dot(add({ hit[0], hit[1], hit[2] }, q, -1.0), d)) > 0.02)
       ++covered;
   }
@@ -584,11 +578,8 @@ public:
   double height(const Vec& x, const Vec& d)
   {
     const Vec from = add(x, d, diagonal), to = add(x, d, -diagonal);
-    double t = 0.0, hit[3], pcoords[3];
-    int subId = 0;
-    vtkIdType cellId = -1;
-    if (!locator->IntersectWithLine(from.data(), to.data(), lkvtk::rayTolerance(from.data(), to.data()),
-      t, hit, pcoords, subId, cellId, cell))
+    double hit[3];
+    if (!lkvtk::firstHit(locator, from.data(), to.data(), cell, hit))
       return -std::numeric_limits<double>::infinity();
     return dot(add({ hit[0], hit[1], hit[2] }, x, -1.0), d);
   }

@@ -1,5 +1,5 @@
 #include "vtkLKRaisedLabel.h"
-#include "vtkLKRayTolerance.h"
+#include "vtkLKRayCast.h"
 
 #include <vtkAdaptiveSubdivisionFilter.h>
 #include <vtkCellArray.h>
@@ -284,10 +284,8 @@ vtkSmartPointer<vtkPolyData> raisedLabel(vtkPolyData* surface, vtkPolyData* outl
       from[c] = base[c] + reach * up[c];
       to[c] = base[c] - reach * up[c];
     }
-    double t = 0.0, hit[3], pcoords[3];
-    int subId = 0;
-    vtkIdType cellId = -1;
-    if (!locator->IntersectWithLine(from, to, lkvtk::rayTolerance(from, to), t, hit, pcoords, subId, cellId, cell))
+    double hit[3];
+    if (!lkvtk::firstHit(locator, from, to, cell, hit))
     {
       why = "the text would reach beyond the surface";
       return nullptr;

@@ -9,7 +9,7 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKRaisedLabel.h"
-#include "vtkLKRayTolerance.h"
+#include "vtkLKRayCast.h"
 #include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
@@ -515,7 +515,7 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
     int within = 0, blocked = 0;
     for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
     {
-      double x[3], from[3], to[3], t, hit[3], pcoords[3];
+      double x[3], from[3], to[3], hit[3];
       out->GetPoint(i, x);
       if (inside->EvaluateFunction(x) < -1e-3)
         ++within;
@@ -524,9 +524,7 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
         from[k] = x[k] + 1e-2 * d[k];
         to[k] = x[k] + 500.0 * d[k];
       }
-      int subId;
-      vtkIdType cellId;
-      if (locator->IntersectWithLine(from, to, lkvtk::rayTolerance(from, to), t, hit, pcoords, subId, cellId, cell))
+      if (lkvtk::firstHit(locator, from, to, cell, hit))
         ++blocked;
     }
     EXPECT_EQ(within, 0);

@@ -10,7 +10,7 @@
 #include "vtkLKCuttingGuideFilter.h"
 #include "vtkLKGuideBarFilter.h"
 #include "vtkLKMedicalImageReader.h"
-#include "vtkLKRayTolerance.h"
+#include "vtkLKRayCast.h"
 
 #include <vtkCleanPolyData.h>
 #include <vtkCubeSource.h>
@@ -115,15 +115,13 @@ int coveredHoles(vtkPolyData* guide, vtkPolyData* part)
   int covered = 0;
   for (vtkIdType h = 0; h < holes->GetNumberOfTuples(); ++h)
   {
-    double from[3], to[3], t, hit[3], pcoords[3];
-    int subId;
-    vtkIdType cellId;
+    double from[3], to[3], hit[3];
     for (int k = 0; k < 3; ++k)
     {
       from[k] = holes->GetComponent(h, k) + 0.01 * approach->GetComponent(0, k);
       to[k] = holes->GetComponent(h, k) + 30.0 * approach->GetComponent(0, k);
     }
-    if (locator->IntersectWithLine(from, to, lkvtk::rayTolerance(from, to), t, hit, pcoords, subId, cellId, cell))
+    if (lkvtk::firstHit(locator, from, to, cell, hit))
       ++covered;
   }
   return covered;
