@@ -16,6 +16,7 @@
 #include <vtkIdList.h>
 #include <vtkImplicitPolyDataDistance.h>
 #include <vtkInformation.h>
+#include <vtkIntArray.h>
 #include <vtkInformationVector.h>
 #include <vtkMassProperties.h>
 #include <vtkMath.h>
@@ -471,11 +472,14 @@ std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double hi
   return cutters;
 }
 
-/// Whether two guides' bodies overlap: a point of either more than 0.05 mm
-/// inside the other (closed, outward meshes). Slots far apart along the
-/// bone can still have their guides in each other's way where the saw
-/// planes cross near it (an L-shaped cut; a long guide on a ramus and one
-/// across its top).
+/// Whether two guides' bodies overlap: a point of either, or the point
+/// 0.25 mm inside it under a vertex (along the vertex normal), more than
+/// 0.05 mm inside the other (closed, outward meshes). The points under the
+/// vertices find guides stacked on one flat face, whose tops and undersides
+/// lie in the same planes: there every vertex of one in the other lies on
+/// its faces. Slots far apart along the bone can still have their guides in
+/// each other's way where the saw planes cross near it (an L-shaped cut; a
+/// long guide on a ramus and one across its top; a V).
 bool bodiesOverlap(vtkPolyData* a, vtkPolyData* b)
 {
   double boundsA[6], boundsB[6];
@@ -488,12 +492,59 @@ bool bodiesOverlap(vtkPolyData* a, vtkPolyData* b)
   {
     vtkNew<vtkImplicitPolyDataDistance> inside;
     inside->SetInput(outer);
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(inner);
+    normals->ComputePointNormalsOn();
+    normals->ComputeCellNormalsOff();
+    normals->SplittingOff();
+    normals->ConsistencyOff();
+    normals->AutoOrientNormalsOff();
+    normals->Update();
+    vtkDataArray* normal = normals->GetOutput()->GetPointData()->GetNormals();
     for (vtkIdType p = 0; p < inner->GetNumberOfPoints(); ++p)
     {
-      double x[3];
+      double x[3], n[3] = { 0.0, 0.0, 0.0 };
       inner->GetPoint(p, x);
-      if (x[0] >= box[0] && x[0] <= box[1] && x[1] >= box[2] && x[1] <= box[3] && x[2] >= box[4] &&
-        x[2] <= box[5] && inside->EvaluateFunction(x) < -0.05)
+      if (normal)
+        normal->GetTuple(p, n);
+      if (!(x[0] >= box[0] && x[0] <= box[1] && x[1] >= box[2] && x[1] <= box[3] && x[2] >= box[4] &&
+            x[2] <= box[5]))
+        continue;
+      double under[3] = { x[0] - 0.25 * n[0], x[1] - 0.25 * n[1], x[2] - 0.25 * n[2] };
+      if (inside->EvaluateFunction(x) < -0.05 || inside->EvaluateFunction(under) < -0.05)
+        return true;
+    }
+  }
+  return false;
+}
+
+/// Whether a bar along `line` (a tube of `radius`) reaches more than 0.05
+/// mm into `guide` (closed, outward): a point of the line, every 0.25 mm,
+/// nearer the guide than that or inside it.
+bool barMeets(const std::vector<Vec>& line, double radius, vtkPolyData* guide)
+{
+  double box[6];
+  guide->GetBounds(box);
+  vtkNew<vtkImplicitPolyDataDistance> distance;
+  bool built = false;
+  for (std::size_t s = 0; s + 1 < line.size(); ++s)
+  {
+    const double length = std::sqrt(vtkMath::Distance2BetweenPoints(line[s].data(), line[s + 1].data()));
+    const int steps = std::max(1, static_cast<int>(std::ceil(length / 0.25)));
+    for (int k = 0; k <= steps; ++k)
+    {
+      Vec x = add(line[s], add(line[s + 1], line[s], -1.0), static_cast<double>(k) / steps);
+      bool near = true;
+      for (int c = 0; c < 3; ++c)
+        near = near && x[c] >= box[2 * c] - radius && x[c] <= box[2 * c + 1] + radius;
+      if (!near)
+        continue;
+      if (!built)
+      {
+        distance->SetInput(guide);
+        built = true;
+      }
+      if (distance->EvaluateFunction(x.data()) < radius - 0.05)
         return true;
     }
   }
@@ -545,7 +596,8 @@ std::string apartPieces(vtkPolyData* part, const std::vector<Guide>& guide, cons
           << "other's slot and screw holes falls apart (the part would be " << count << " pieces)";
       return why.str();
     }
-  why << "the part would be " << count << " pieces (a guide cut apart by the slot of a guide merged with it)";
+  why << "the part would be " << count << " pieces (a guide cut apart by the slot of a guide merged with it or "
+      << "crossing it)";
   return why.str();
 }
 
@@ -926,6 +978,7 @@ int vtkLKGuideBarFilter::RequestData(
   this->BarLength = this->BarDiameter = this->BarGap = this->Volume = 0.0;
   this->BarLengths.clear();
   this->Merged.clear();
+  this->Crossings.clear();
   this->NumberOfLabelsCovered = 0;
   this->NumberOfScrewHolesInSawPaths = 0;
   this->BarGaps.clear();
@@ -1007,6 +1060,17 @@ int vtkLKGuideBarFilter::RequestData(
       joins[i] = Join::Merged;
       overlapping[i] = 1;
     }
+  // Guides farther apart in the order given whose bodies overlap all the
+  // same, with a bar between them (saw planes that cross near the bone: a
+  // V, an X beside a third): each is cut by the other's slot and screw
+  // holes too, as merged neighbours are, and they are one with the bars.
+  std::vector<std::vector<char>> crossing(n, std::vector<char>(n, 0));
+  for (std::size_t i = 0; i + 2 < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j)
+      if (std::any_of(joins.begin() + static_cast<std::ptrdiff_t>(i), joins.begin() + static_cast<std::ptrdiff_t>(j),
+            [](Join join) { return join != Join::Merged; }) &&
+        bodiesOverlap(guideData[i], guideData[j]))
+        crossing[i][j] = crossing[j][i] = 1;
 
   BoneQueries bone(input);
   // One direction must put every guide on the bone at once (the part is
@@ -1052,6 +1116,7 @@ int vtkLKGuideBarFilter::RequestData(
 
   // Each bar's centre line, pushed off the bone; its length and its gap.
   std::vector<lk::TriangleMesh> barSolids;
+  std::vector<std::vector<Vec>> barLines;
   std::vector<double> barLengths, barGaps;
   const double share = 0.55 / static_cast<double>(n - 1); // of the progress, for each bar
   for (std::size_t b = 0; b + 1 < n; ++b)
@@ -1125,6 +1190,7 @@ int vtkLKGuideBarFilter::RequestData(
       }
     }
     barSolids.push_back(std::move(bar.solid));
+    barLines.push_back(std::move(bar.line));
     barLengths.push_back(bar.length);
     barGaps.push_back(bar.gap);
   }
@@ -1177,18 +1243,25 @@ int vtkLKGuideBarFilter::RequestData(
   {
     std::vector<const lk::TriangleMesh*> inBlock;
     for (std::size_t m = 0; m < n; ++m)
-      if (block[m] == block[j])
+      if (block[m] == block[j] || crossing[m][j])
         inBlock.push_back(&guideSolids[m]);
     for (std::size_t k = 0; k < n; ++k)
-      if (k != j && block[k] == block[j])
+      if (k != j && (block[k] == block[j] || crossing[k][j]))
         for (lk::TriangleMesh& c : cutsOf(k, inBlock))
           guideCutters[j].push_back(std::move(c));
   }
   for (std::size_t i = 0, b = 0; i + 1 < n; ++i)
     if (joins[i] != Join::Merged)
     {
+      // A bar that reaches into a guide other than the two it joins (one
+      // merged with either, an X; a third whose saw plane crosses near the
+      // bone): cut by that guide's slot and screw holes as well.
+      std::vector<std::size_t> by{ i, i + 1 };
+      for (std::size_t k = 0; k < n; ++k)
+        if (k != i && k != i + 1 && barMeets(barLines[b], radius, guideData[k]))
+          by.push_back(k);
       barCutters.emplace_back();
-      for (const std::size_t k : { i, i + 1 })
+      for (const std::size_t k : by)
         for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolids[b] }))
           barCutters.back().push_back(std::move(c));
       ++b;
@@ -1248,7 +1321,7 @@ int vtkLKGuideBarFilter::RequestData(
   // would meet its screw (guides made without the plan's other saw planes).
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t k = 0; k < n; ++k)
-      if (k != j && block[k] == block[j])
+      if (k != j && (block[k] == block[j] || crossing[k][j]))
         for (const Vec& x : guide[j].holes)
         {
           // The screw from the wall's top to 10 mm into the bone, its
@@ -1303,6 +1376,10 @@ int vtkLKGuideBarFilter::RequestData(
   this->BarGap = barGaps.empty() ? 0.0 : *std::min_element(barGaps.begin(), barGaps.end());
   for (const Join j : joins)
     this->Merged.push_back(j == Join::Merged);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (crossing[i][j])
+        this->Crossings.push_back({ static_cast<int>(i), static_cast<int>(j) });
   this->Volume = mass->GetVolume();
   vtkFieldData* fd = output->GetFieldData();
   for (const auto& [name, values] :
@@ -1319,6 +1396,14 @@ int vtkLKGuideBarFilter::RequestData(
     a->SetName("GuideMerged");
     for (const char m : this->Merged)
       a->InsertNextValue(m ? 1.0 : 0.0);
+    fd->AddArray(a);
+  }
+  {
+    vtkNew<vtkIntArray> a;
+    a->SetName("GuideCrossings");
+    a->SetNumberOfComponents(2);
+    for (const std::array<int, 2>& c : this->Crossings)
+      a->InsertNextTuple2(c[0], c[1]);
     fd->AddArray(a);
   }
   lkvtk::addFieldValue(fd, "GuideBarDiameter", this->BarDiameter);
@@ -1340,6 +1425,18 @@ bool vtkLKGuideBarFilter::GetMerged(int pair)
   return pair >= 0 && static_cast<std::size_t>(pair) < this->Merged.size() && this->Merged[pair];
 }
 
+bool vtkLKGuideBarFilter::GetCrossed(int a, int b)
+{
+  return std::any_of(this->Crossings.begin(), this->Crossings.end(), [&](const std::array<int, 2>& c) {
+    return (c[0] == a && c[1] == b) || (c[0] == b && c[1] == a);
+  });
+}
+
+int vtkLKGuideBarFilter::GetNumberOfCrossings()
+{
+  return static_cast<int>(this->Crossings.size());
+}
+
 int vtkLKGuideBarFilter::GetNumberOfMerges()
 {
   return static_cast<int>(std::count(this->Merged.begin(), this->Merged.end(), 1));
@@ -1358,6 +1455,7 @@ void vtkLKGuideBarFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumLength: " << this->MaximumLength << "\n";
   os << indent << "NumberOfBars: " << this->BarLengths.size() << "\n";
   os << indent << "NumberOfMerges: " << this->GetNumberOfMerges() << "\n";
+  os << indent << "NumberOfCrossings: " << this->GetNumberOfCrossings() << "\n";
   os << indent << "NumberOfLabelsCovered: " << this->NumberOfLabelsCovered << "\n";
   os << indent << "NumberOfScrewHolesInSawPaths: " << this->NumberOfScrewHolesInSawPaths << "\n";
   os << indent << "BarLength: " << this->BarLength << "\n";

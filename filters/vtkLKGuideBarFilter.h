@@ -67,6 +67,15 @@
  *   the other's saw path or over a screw hole, bar or not: they are one
  *   block already, and are merged the same way (refused where each less the
  *   other's slot falls apart).
+ * - Guides farther apart in the order whose bodies overlap all the same,
+ *   with a bar between them (the two cuts of a V whose guides meet at its
+ *   point, with a third guide beyond it in the order), are each cut by the
+ *   other's slot and screw holes as merged guides are, and are one with the
+ *   bars. A bar that reaches into a guide other than the two it joins (one
+ *   merged with either, or crossed) is cut by that guide's slot and screw
+ *   holes too. Bodies overlap where a point of one, or a point 0.25 mm
+ *   inside it, lies more than 0.05 mm inside the other; a bar meets a guide
+ *   where its centre line comes within its radius less 0.05 mm.
  * - The bar is a tube round that line (vtkTubeFilter, capped), and the
  *   guides and the bars are joined into one closed surface (CGAL's
  *   corefinement, lk::solidUnion; the slots cut by lk::solidDifference):
@@ -78,7 +87,9 @@
  * closed triangle mesh oriented outward. Field data: GuideBarLength (mm
  * along each bar's centre line, one value for each bar, in order; merged
  * guides have none between them), GuideMerged (for each guide and the
- * next, 1 where they were merged into one block, else 0),
+ * next, 1 where they were merged into one block, else 0), GuideCrossings
+ * (two components: the guides, from 0, of each pair not next to each
+ * other that crossed),
  * GuideBarGap (for each bar, the least distance between it and the bone
  * where it is farthest from both its guides: StandOff, or less for guides
  * too near each other for the bar to rise that far, mm), GuideBarDiameter
@@ -122,6 +133,7 @@
 #include "LatticeKitFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <array>
 #include <vector>
 
 class LATTICEKITFILTERS_EXPORT vtkLKGuideBarFilter : public vtkPolyDataAlgorithm
@@ -195,6 +207,16 @@ public:
   int GetNumberOfMerges();
   ///@}
 
+  ///@{
+  /// After an update: whether guides `a` + 1 and `b` + 1 (0 is guide 1),
+  /// not next to each other in the order given, overlap with a bar between
+  /// them (saw planes that cross near the bone: the two cuts of a V with a
+  /// third guide beyond its point) and so were each cut by the other's slot
+  /// and screw holes; and how many such pairs there were.
+  bool GetCrossed(int a, int b);
+  int GetNumberOfCrossings();
+  ///@}
+
   /// After an update: how many of the guides' labels (GuideLabelBox) the
   /// part does not show as the guide did (another guide's wall or a bar over
   /// it, a slot or a screw hole through it; each is warned of). No merged
@@ -229,6 +251,7 @@ protected:
   std::vector<double> BarLengths;
   std::vector<double> BarGaps;
   std::vector<char> Merged;
+  std::vector<std::array<int, 2>> Crossings;
 
 private:
   vtkLKGuideBarFilter(const vtkLKGuideBarFilter&) = delete;

@@ -1,8 +1,9 @@
 // vtkLKGuideBarFilter: two cutting guides joined by a bar, on a long box
 // (where the bar must lie, its gap, the volume), three joined by two bars,
 // overlapping guides merged into one block with their slots open (their
-// labels and screws clear of each other when told of each other), and
-// on the TCIA mandible (one closed part outside the bone, screw holes left
+// labels and screws clear of each other when told of each other), guides
+// apart in the chain whose saw planes cross (a V) cut by each other's slots,
+// and on the TCIA mandible (one closed part outside the bone, screw holes left
 // open), and bad input.
 #include "TestSupport.h"
 
@@ -676,6 +677,70 @@ TEST(GuideBarFilter, GuidesInEachOthersWayAreMergedThoughTheirSlotsAreFarApart)
   for (int g = 0; g < 2; ++g)
     EXPECT_EQ(pointsInHolesOrSlot(guide[g], out), 0) << g;
   EXPECT_EQ(bar->GetNumberOfScrewHolesInSawPaths(), 0);
+}
+
+TEST(GuideBarFilter, GuidesWhoseSawPlanesCrossAreCutByEachOthersSlotsThoughABarIsBetweenThem)
+{
+  // A box 50 mm high. A V on its front: saw planes tilted 39 degrees either
+  // way, 28 mm apart at its middle height, their guides overlapping at the
+  // V's point (each slot reaching into the other's wall: stacked on one flat
+  // face, their tops in one plane); a third guide on the top between them,
+  // given between them in the order, so a bar joins each arm to it. Then an
+  // X (two saw planes crossing on the front, merged) with a bar to a third
+  // guide, leaving the X from its wall next to the other arm's slot.
+  vtkSmartPointer<vtkPolyData> bone = lktest::triangulatedBox(100, 20, 50, 3);
+  struct Plan
+  {
+    const char* what;
+    double origins[3][3], normals[3][3], approaches[3][3];
+    int bars, merges, crossings;
+  };
+  const Plan plans[] = {
+    { "a V and a guide on the top", { { -14, 0, 0 }, { 0, 0, 0 }, { 14, 0, 0 } },
+      { { 1, 0, 0.8 }, { 1, 0, 0 }, { 1, 0, -0.8 } }, { { 0, -1, 0 }, { 0, 0, 1 }, { 0, -1, 0 } }, 2, 0, 1 },
+    { "an X and a guide beside it", { { 0, 0, 0 }, { 5, 0, 0 }, { 40, 0, 0 } },
+      { { 1, 0, 0.8 }, { 1, 0, -0.8 }, { 1, 0, 0 } }, { { 0, -1, 0 }, { 0, -1, 0 }, { 0, -1, 0 } }, 1, 1, 0 },
+  };
+  for (const Plan& plan : plans)
+  {
+    vtkSmartPointer<vtkPolyData> guide[3];
+    for (int g = 0; g < 3; ++g)
+    {
+      guide[g] = guideOn(bone, plan.origins[g], plan.normals[g], plan.approaches[g]);
+      ASSERT_GT(guide[g]->GetNumberOfCells(), 0) << plan.what << ", guide " << g;
+    }
+    vtkNew<vtkLKGuideBarFilter> bar;
+    bar->SetBoneData(bone);
+    for (int g = 0; g < 3; ++g)
+      bar->AddGuideData(guide[g]);
+    bar->Update();
+    vtkPolyData* out = bar->GetOutput();
+    ASSERT_GT(out->GetNumberOfCells(), 0) << plan.what;
+    EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0) << plan.what;
+    EXPECT_EQ(regions(out), 1) << plan.what;
+    EXPECT_EQ(bar->GetNumberOfBars(), plan.bars) << plan.what;
+    EXPECT_EQ(bar->GetNumberOfMerges(), plan.merges) << plan.what;
+    EXPECT_EQ(bar->GetNumberOfCrossings(), plan.crossings) << plan.what;
+    EXPECT_EQ(bar->GetCrossed(0, 2), plan.crossings == 1) << plan.what;
+    EXPECT_EQ(bar->GetCrossed(2, 0), plan.crossings == 1) << plan.what;
+    EXPECT_FALSE(bar->GetCrossed(0, 1)) << plan.what;
+    vtkDataArray* crossings = out->GetFieldData()->GetArray("GuideCrossings");
+    ASSERT_NE(crossings, nullptr) << plan.what;
+    EXPECT_EQ(crossings->GetNumberOfTuples(), plan.crossings) << plan.what;
+    if (plan.crossings == 1 && crossings->GetNumberOfTuples() == 1)
+    {
+      EXPECT_EQ(crossings->GetComponent(0, 0), 0.0);
+      EXPECT_EQ(crossings->GetComponent(0, 1), 2.0);
+    }
+    // Every slot and screw hole open through the part: without the cuts
+    // the V's arms fill the ends of each other's slots (528 points of the
+    // part in each).
+    for (int g = 0; g < 3; ++g)
+    {
+      EXPECT_EQ(pointsInHolesOrSlot(guide[g], out), 0) << plan.what << ", guide " << g;
+      EXPECT_EQ(coveredHoles(guide[g], out), 0) << plan.what << ", guide " << g;
+    }
+  }
 }
 
 TEST(GuideBarFilter, RoundARingNoOneDirectionPutsThreeGuidesOn)

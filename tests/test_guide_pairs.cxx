@@ -345,3 +345,39 @@ TEST(GuidePairs, AJoinIsSaidAsItsBarsItsMergedBlocksOrBoth)
   EXPECT_EQ(bar.rfind("joined by a bar of 4.0 mm, ", 0), 0u) << bar;
   EXPECT_EQ(bar.find("merged"), std::string::npos) << bar;
 }
+
+TEST(GuidePairs, GuidesThatCrossApartInTheChainAreSaid)
+{
+  // A V on the front of a 100 x 20 x 30 mm box (saw planes tilted 39
+  // degrees either way, their guides overlapping at its point) and a guide
+  // on the top between its arms, given between them: two bars, and the
+  // arms' guides cut by each other's slots.
+  vtkSmartPointer<vtkPolyData> box = lktest::triangulatedBox(100, 20, 30, 3);
+  const double origins[3][3] = { { -14, 0, 0 }, { 0, 0, 0 }, { 14, 0, 0 } };
+  const double normals[3][3] = { { 1, 0, 0.8 }, { 1, 0, 0 }, { 1, 0, -0.8 } };
+  const double approaches[3][3] = { { 0, -1, 0 }, { 0, 0, 1 }, { 0, -1, 0 } };
+  vtkNew<vtkLKGuideBarFilter> all;
+  all->SetInputData(0, box);
+  std::vector<vtkSmartPointer<vtkLKCuttingGuideFilter>> guides;
+  for (int g = 0; g < 3; ++g)
+  {
+    auto guide = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
+    guide->SetInputData(box);
+    guide->SetPlaneOrigin(origins[g]);
+    guide->SetPlaneNormal(normals[g]);
+    guide->SetApproach(approaches[g]);
+    guides.push_back(guide);
+    all->AddGuideConnection(guide->GetOutputPort());
+  }
+  all->Update();
+  ASSERT_EQ(all->GetNumberOfBars(), 2);
+  ASSERT_EQ(all->GetNumberOfCrossings(), 1);
+  auto number = [](std::size_t line) { return std::to_string(line + 1); };
+  const std::string said = lkapp::joinText(all, { 4, 0, 2 }, "line", number);
+  EXPECT_EQ(said.rfind("joined by 2 bars of 4.0 mm, ", 0), 0u) << said;
+  EXPECT_NE(said.find(" clear of the bone between them; the guides of lines 5 and 3 overlap where their saw planes "
+                      "cross near the bone, each cut by the other's slot and screw holes"),
+    std::string::npos)
+    << said;
+  EXPECT_EQ(said.find("merged"), std::string::npos) << said;
+}

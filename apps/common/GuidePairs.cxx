@@ -270,8 +270,10 @@ std::vector<GuideOverlap> overlappingGuides(const std::vector<vtkPolyData*>& gui
   return overlaps;
 }
 
-std::string joinText(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& lines, const std::string& numberWord,
-  const std::function<std::string(std::size_t)>& number)
+namespace
+{
+std::string barsAndBlocks(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& lines,
+  const std::string& numberWord, const std::function<std::string(std::size_t)>& number)
 {
   const int bars = bar->GetNumberOfBars();
   std::string text;
@@ -309,6 +311,25 @@ std::string joinText(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& l
     merged += (b == 0 ? "" : b + 1 == blocks.size() ? " and " : ", ") + chainNumbers(blocks[b], number);
   return text + (text.empty() ? "" : ", ") + "those of " + numberWord + "s " + merged +
     (blocks.size() == 1 ? " merged into one block" : " merged into a block each") + slots;
+}
+} // namespace
+
+std::string joinText(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& lines, const std::string& numberWord,
+  const std::function<std::string(std::size_t)>& number)
+{
+  const std::string text = barsAndBlocks(bar, lines, numberWord, number);
+  if (bar->GetNumberOfCrossings() == 0)
+    return text;
+  // Guides apart in the chain that overlap where their saw planes cross.
+  std::vector<std::string> pairs;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    for (std::size_t j = i + 2; j < lines.size(); ++j)
+      if (bar->GetCrossed(static_cast<int>(i), static_cast<int>(j)))
+        pairs.push_back(number(lines[i]) + " and " + number(lines[j]));
+  std::string crossed;
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+    crossed += (p == 0 ? "" : "; ") + pairs[p];
+  return text + (text.empty() ? "" : "; ") + "the guides of " + numberWord + "s " + crossed + " overlap where their saw planes cross near the bone, each cut by the other's slot and screw holes";
 }
 
 std::string guidesByLine(const std::string& error, const std::vector<std::size_t>& lines, const std::string& numberWord,

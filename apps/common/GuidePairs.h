@@ -110,7 +110,10 @@ std::vector<GuideOverlap> overlappingGuides(const std::vector<vtkPolyData*>& gui
 /// 30 mm long and at least 1.8 mm clear of the bone between them"; guides
 /// that overlap "merged into one block (they overlap; every slot and screw
 /// hole open through it)"; and both: "joined by a bar of ..., those of
-/// strokes 1 and 4 merged into one block (...)", with `numberWord` ("stroke")
+/// strokes 1 and 4 merged into one block (...)"; guides apart in the chain
+/// that overlap where their saw planes cross add "; the guides of strokes 1
+/// and 3 overlap where their saw planes cross near the bone, each cut by the
+/// other's slot and screw holes"; with `numberWord` ("stroke")
 /// and `number` giving a line's number as the user knows it.
 std::string joinText(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& lines, const std::string& numberWord,
   const std::function<std::string(std::size_t)>& number);
