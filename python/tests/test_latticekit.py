@@ -973,6 +973,12 @@ class PipelineTest(unittest.TestCase):
         self.assertGreater(three.GetInsertionMargin(), 0.0)
         self.assertLess(three.GetInsertionMargin(), 45.0)
         self.assertEqual(three.GetNumberOfMerges(), 0)
+        # Guides 1 and 3 (the two body cuts) lie far apart: they do not
+        # cross, and a pair that did would be listed in GuideCrossings.
+        self.assertEqual(three.GetNumberOfCrossings(), 0)
+        self.assertFalse(three.GetCrossed(0, 2))
+        crossings = three.GetOutput().GetFieldData().GetArray("GuideCrossings")
+        self.assertEqual((crossings.GetNumberOfComponents(), crossings.GetNumberOfTuples()), (2, 0))
         # A saw line 9 mm from the right body's: the two guides overlap and
         # are merged into one block, no bar, both slots open through it.
         near = latticekit.vtkLKCuttingGuideFilter()
