@@ -343,6 +343,16 @@ double apartAlongBone(const Guide& a, const Guide& b)
 /// The least guide wall between two slots merged into one block (mm).
 constexpr double MinimumWallBetweenSlots = 2.0;
 
+/// How much wider (mm) the cutters that open a slot or screw hole through
+/// the next solid are than through the one before (guide j's by j steps,
+/// bar b's by guides + b). Two solids cut by the same slot otherwise have
+/// faces in exactly the same planes where they meet in it, and CGAL's union
+/// of them (three guides merged into one block: a horizontal cut along the
+/// body crossed by two vertical ones on mandible 1) never ended: its
+/// corefinement's search round a vertex for an edge on the intersection
+/// went round for ever. 0.002 mm is nothing to a saw.
+constexpr double CutterStep = 0.002;
+
 /// How two guides next to each other are joined.
 enum class Join
 {
@@ -454,10 +464,10 @@ lk::TriangleMesh cylinderSolid(const Vec& base, const Vec& d, double radius, dou
 /// and longer than the slot, so that the faces left do not meet the slot's
 /// own walls) from `lowest` to `highest` along its approach (from its slot
 /// centre), and its screw holes (0.05 mm wider) from 2 mm into the bone to
-/// `highest`.
-std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double highest)
+/// `highest`; all `widen` wider still.
+std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double highest, double widen)
 {
-  constexpr double hair = 0.01;
+  const double hair = 0.01 + widen;
   Vec n, e, d;
   frameOf(k, n, e, d);
   const Vec box[3] = { n, d, e };
@@ -467,7 +477,7 @@ std::vector<lk::TriangleMesh> cuttersOf(const Guide& k, double lowest, double hi
   for (const Vec& h : k.holes)
   {
     const double at = dot(add(h, k.slotCentre, -1.0), d);
-    cutters.push_back(cylinderSolid(h, d, k.hole / 2.0 + 0.05, -2.0, highest - at));
+    cutters.push_back(cylinderSolid(h, d, k.hole / 2.0 + 0.05 + widen, -2.0, highest - at));
   }
   return cutters;
 }
@@ -1218,12 +1228,12 @@ int vtkLKGuideBarFilter::RequestData(
   for (std::size_t k = 0; k < n; ++k)
     for (const lk::Vec3& p : guideSolids[k].points)
       lowest[k] = std::min(lowest[k], dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), guide[k].approach));
-  auto cutsOf = [&](std::size_t k, const std::vector<const lk::TriangleMesh*>& over) {
+  auto cutsOf = [&](std::size_t k, const std::vector<const lk::TriangleMesh*>& over, double widen) {
     double highest = -std::numeric_limits<double>::infinity();
     for (const lk::TriangleMesh* solid : over)
       for (const lk::Vec3& p : solid->points)
         highest = std::max(highest, dot(add({ p.x(), p.y(), p.z() }, guide[k].slotCentre, -1.0), guide[k].approach));
-    return cuttersOf(guide[k], lowest[k] - 1.0, highest + 1.0);
+    return cuttersOf(guide[k], lowest[k] - 1.0, highest + 1.0, widen);
   };
   auto cut = [&](lk::TriangleMesh& solid, const std::vector<lk::TriangleMesh>& cutters, const std::string& what) {
     if (cutters.empty())
@@ -1247,7 +1257,7 @@ int vtkLKGuideBarFilter::RequestData(
         inBlock.push_back(&guideSolids[m]);
     for (std::size_t k = 0; k < n; ++k)
       if (k != j && (block[k] == block[j] || crossing[k][j]))
-        for (lk::TriangleMesh& c : cutsOf(k, inBlock))
+        for (lk::TriangleMesh& c : cutsOf(k, inBlock, CutterStep * static_cast<double>(j)))
           guideCutters[j].push_back(std::move(c));
   }
   for (std::size_t i = 0, b = 0; i + 1 < n; ++i)
@@ -1262,7 +1272,7 @@ int vtkLKGuideBarFilter::RequestData(
           by.push_back(k);
       barCutters.emplace_back();
       for (const std::size_t k : by)
-        for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolids[b] }))
+        for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolids[b] }, CutterStep * static_cast<double>(n + b)))
           barCutters.back().push_back(std::move(c));
       ++b;
     }

@@ -743,6 +743,39 @@ TEST(GuideBarFilter, GuidesWhoseSawPlanesCrossAreCutByEachOthersSlotsThoughABarI
   }
 }
 
+TEST(GuideBarFilter, ThreeGuidesMergedWhereAHorizontalCutCrossesTwoVerticalOnesAreJoined)
+{
+  // Mandible 1's left body: a cut along the body (a rim resection's floor,
+  // its slot 85 mm long) crossed by two vertical cuts 18 mm apart, in that
+  // order. All three overlap: one block, each guide less the others' slots
+  // and holes. Cut by the same slot, two guides had faces in the same
+  // planes, and CGAL's union of the three never ended (the test ran out of
+  // time); the cutters now differ by 0.002 mm from one guide to the next.
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  const double origins[3][3] = { { -34.9, 295.73, -972.79 }, { -24.63, 281.31, -979.61 },
+    { -14.58, 273.92, -982.81 } };
+  const double normals[3][3] = { { 0.427, -0.157, 0.89 }, { 0.874, -0.475, -0.101 }, { 0.796, -0.602, -0.063 } };
+  vtkSmartPointer<vtkPolyData> guide[3];
+  vtkNew<vtkLKGuideBarFilter> bar;
+  bar->SetBoneData(bone);
+  for (int g = 0; g < 3; ++g)
+  {
+    guide[g] = guideOn(bone, origins[g], normals[g]);
+    ASSERT_GT(guide[g]->GetNumberOfCells(), 0) << g;
+    bar->AddGuideData(guide[g]);
+  }
+  bar->Update();
+  vtkPolyData* out = bar->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(bar->GetNumberOfMerges(), 2);
+  EXPECT_EQ(bar->GetNumberOfBars(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_EQ(regions(out), 1);
+  EXPECT_NEAR(lktest::signedVolume(out), bar->GetVolume(), 1e-6 * bar->GetVolume());
+  for (int g = 0; g < 3; ++g)
+    EXPECT_EQ(pointsInHolesOrSlot(guide[g], out), 0) << g;
+}
+
 TEST(GuideBarFilter, RoundARingNoOneDirectionPutsThreeGuidesOn)
 {
   // A ring (a torus, 40 mm round, its tube 10 mm), guides on its outside at
