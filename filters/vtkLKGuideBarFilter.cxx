@@ -1271,8 +1271,9 @@ int vtkLKGuideBarFilter::RequestData(
         if (k != i && k != i + 1 && barMeets(barLines[b], radius, guideData[k]))
           by.push_back(k);
       barCutters.emplace_back();
+      const double widen = CutterStep * static_cast<double>(n + b);
       for (const std::size_t k : by)
-        for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolids[b] }, CutterStep * static_cast<double>(n + b)))
+        for (lk::TriangleMesh& c : cutsOf(k, { &guideSolids[k], &barSolids[b] }, widen))
           barCutters.back().push_back(std::move(c));
       ++b;
     }

@@ -329,7 +329,8 @@ std::string joinText(vtkLKGuideBarFilter* bar, const std::vector<std::size_t>& l
   std::string crossed;
   for (std::size_t p = 0; p < pairs.size(); ++p)
     crossed += (p == 0 ? "" : "; ") + pairs[p];
-  return text + (text.empty() ? "" : "; ") + "the guides of " + numberWord + "s " + crossed + " overlap where their saw planes cross near the bone, each cut by the other's slot and screw holes";
+  return text + (text.empty() ? "" : "; ") + "the guides of " + numberWord + "s " + crossed +
+    " overlap where their saw planes cross near the bone, each cut by the other's slot and screw holes";
 }
 
 std::string guidesByLine(const std::string& error, const std::vector<std::size_t>& lines, const std::string& numberWord,
