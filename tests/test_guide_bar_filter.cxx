@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 
 namespace
@@ -83,16 +84,20 @@ vtkSmartPointer<vtkPolyData> guideOfPair(vtkPolyData* bone, const double origins
   return out;
 }
 
-/// The part joining guides `a` and `b` on `bone`, updated.
-vtkSmartPointer<vtkLKGuideBarFilter> joined(vtkPolyData* bone, vtkPolyData* a, vtkPolyData* b)
+/// The part joining `guides` on `bone`, in their order, updated, with the
+/// filter's errors and warnings recorded.
+struct Joined
 {
-  auto bar = vtkSmartPointer<vtkLKGuideBarFilter>::New();
-  bar->SetBoneData(bone);
-  bar->AddGuideData(a);
-  bar->AddGuideData(b);
-  bar->Update();
-  return bar;
-}
+  Joined(vtkPolyData* bone, std::initializer_list<vtkPolyData*> guides)
+  {
+    bar->SetBoneData(bone);
+    for (vtkPolyData* guide : guides)
+      bar->AddGuideData(guide);
+    bar->Update();
+  }
+  vtkNew<vtkLKGuideBarFilter> bar;
+  lktest::ErrorRecorder messages{ bar };
+};
 
 vtkIdType regions(vtkPolyData* pd)
 {
@@ -260,9 +265,10 @@ TEST(GuideBarFilter, OnTheMandibleTheChinAndTheLeftBodyMakeOnePartOutsideTheBone
   vtkSmartPointer<vtkPolyData> b = guideOn(bone, body, across, nullptr, &volumes[1]);
   ASSERT_GT(a->GetNumberOfCells(), 0);
   ASSERT_GT(b->GetNumberOfCells(), 0);
-  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
+  Joined part(bone, { a, b });
+  vtkLKGuideBarFilter* bar = part.bar;
   vtkPolyData* out = bar->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0);
+  ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   EXPECT_EQ(regions(out), 1);
   EXPECT_NEAR(lktest::signedVolume(out), bar->GetVolume(), 1e-6 * bar->GetVolume());
@@ -289,9 +295,10 @@ TEST(GuideBarFilter, RoundACornerOfTheBoneTheBarStaysClearOfBothFaces)
   const double onFront[3] = { -30, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
   const double onEnd[3] = { 46, 0, 0 }, across[3] = { 0, 1, 0 }, end[3] = { 1, 0, 0 };
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, onFront, normal, front), b = guideOn(bone, onEnd, across, end);
-  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
+  Joined part(bone, { a, b });
+  vtkLKGuideBarFilter* bar = part.bar;
   vtkPolyData* out = bar->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0);
+  ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   EXPECT_EQ(regions(out), 1);
   EXPECT_NEAR(bar->GetBarGap(), 2.0, 0.03);
@@ -488,9 +495,10 @@ TEST(GuideBarFilter, GuidesWhoseEdgesAreNearerThanTheBarAreJoinedByAStraightOne)
   double volumes[2];
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, left, normal, front, &volumes[0]);
   vtkSmartPointer<vtkPolyData> b = guideOn(bone, right, normal, front, &volumes[1]);
-  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
+  Joined part(bone, { a, b });
+  vtkLKGuideBarFilter* bar = part.bar;
   vtkPolyData* out = bar->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0);
+  ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   EXPECT_EQ(regions(out), 1);
   EXPECT_EQ(bar->GetNumberOfMerges(), 0);
@@ -517,9 +525,10 @@ TEST(GuideBarFilter, ABarRisingSteeplyOffTheBoneLeavesTheScrewHolesBesideItOpen)
   vtkSmartPointer<vtkPolyData> a = guideOn(bone, first, across), b = guideOn(bone, second, tilted);
   ASSERT_GT(a->GetNumberOfCells(), 0);
   ASSERT_GT(b->GetNumberOfCells(), 0);
-  vtkSmartPointer<vtkLKGuideBarFilter> bar = joined(bone, a, b);
+  Joined part(bone, { a, b });
+  vtkLKGuideBarFilter* bar = part.bar;
   vtkPolyData* out = bar->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0);
+  ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
   EXPECT_EQ(bar->GetNumberOfBars(), 1);
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   EXPECT_EQ(regions(out), 1);
@@ -575,14 +584,10 @@ TEST(GuideBarFilter, MergedGuidesToldOfEachOtherKeepTheirLabelsAndScrewsClearOfT
       else
         EXPECT_LT(nearest, 8.0) << g;
     }
-    vtkNew<vtkLKGuideBarFilter> bar;
-    bar->SetBoneData(bone);
-    bar->AddGuideData(guide[0]);
-    bar->AddGuideData(guide[1]);
-    lktest::ErrorRecorder messages(bar);
-    bar->Update();
+    Joined part(bone, { guide[0], guide[1] });
+    vtkLKGuideBarFilter* bar = part.bar;
     vtkPolyData* out = bar->GetOutput();
-    ASSERT_GT(out->GetNumberOfCells(), 0) << messages.messages;
+    ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
     EXPECT_TRUE(bar->GetMerged(0));
     EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
     EXPECT_EQ(regions(out), 1);
@@ -591,13 +596,13 @@ TEST(GuideBarFilter, MergedGuidesToldOfEachOtherKeepTheirLabelsAndScrewsClearOfT
     EXPECT_EQ(bar->GetNumberOfLabelsCovered(), told ? 0 : 2);
     EXPECT_EQ(bar->GetNumberOfScrewHolesInSawPaths(), told ? 0 : 2);
     if (told)
-      EXPECT_EQ(messages.warnings, 0) << messages.warningMessages;
+      EXPECT_EQ(part.messages.warnings, 0) << part.messages.warningMessages;
     else
     {
       for (const char* text : { "The label '1' of guide 1 is partly covered or cut in the joined part",
              "The label '2' of guide 2 is partly covered", "A screw hole of guide 1 lies in the path of guide 2's saw",
              "A screw hole of guide 2 lies in the path of guide 1's saw", "(OtherCutPlanes)" })
-        EXPECT_NE(messages.warningMessages.find(text), std::string::npos) << text << ": " << messages.warningMessages;
+        EXPECT_NE(part.messages.warningMessages.find(text), std::string::npos) << text << ": " << part.messages.warningMessages;
     }
   }
 }
@@ -622,17 +627,13 @@ TEST(GuideBarFilter, ABarLeavesAGuideBesideItsLabelNotOverIt)
     EXPECT_TRUE(filter->GetLabelPlaced()) << g;
     ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
   }
-  vtkNew<vtkLKGuideBarFilter> bar;
-  bar->SetBoneData(bone);
-  bar->AddGuideData(guide[0]);
-  bar->AddGuideData(guide[1]);
-  lktest::ErrorRecorder messages(bar);
-  bar->Update();
+  Joined part(bone, { guide[0], guide[1] });
+  vtkLKGuideBarFilter* bar = part.bar;
   vtkPolyData* out = bar->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0) << messages.messages;
+  ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
   EXPECT_EQ(bar->GetNumberOfBars(), 1);
   EXPECT_EQ(bar->GetNumberOfLabelsCovered(), 0);
-  EXPECT_EQ(messages.warnings, 0) << messages.warningMessages;
+  EXPECT_EQ(part.messages.warnings, 0) << part.messages.warningMessages;
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
   EXPECT_EQ(regions(out), 1);
   EXPECT_GT(bar->GetBarGap(), 2.0 - 0.03);
@@ -662,14 +663,10 @@ TEST(GuideBarFilter, GuidesInEachOthersWayAreMergedThoughTheirSlotsAreFarApart)
     guide[g] = guideOfPair(bone, origins, normals, g, nullptr, true, filter);
     ASSERT_GT(guide[g]->GetNumberOfCells(), 0);
   }
-  vtkNew<vtkLKGuideBarFilter> bar;
-  bar->SetBoneData(bone);
-  bar->AddGuideData(guide[0]);
-  bar->AddGuideData(guide[1]);
-  lktest::ErrorRecorder messages(bar);
-  bar->Update();
+  Joined part(bone, { guide[0], guide[1] });
+  vtkLKGuideBarFilter* bar = part.bar;
   vtkPolyData* out = bar->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0) << messages.messages;
+  ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
   EXPECT_TRUE(bar->GetMerged(0));
   EXPECT_EQ(bar->GetNumberOfBars(), 0);
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
@@ -709,13 +706,10 @@ TEST(GuideBarFilter, GuidesWhoseSawPlanesCrossAreCutByEachOthersSlotsThoughABarI
       guide[g] = guideOn(bone, plan.origins[g], plan.normals[g], plan.approaches[g]);
       ASSERT_GT(guide[g]->GetNumberOfCells(), 0) << plan.what << ", guide " << g;
     }
-    vtkNew<vtkLKGuideBarFilter> bar;
-    bar->SetBoneData(bone);
-    for (int g = 0; g < 3; ++g)
-      bar->AddGuideData(guide[g]);
-    bar->Update();
+    Joined part(bone, { guide[0], guide[1], guide[2] });
+    vtkLKGuideBarFilter* bar = part.bar;
     vtkPolyData* out = bar->GetOutput();
-    ASSERT_GT(out->GetNumberOfCells(), 0) << plan.what;
+    ASSERT_GT(out->GetNumberOfCells(), 0) << plan.what << ": " << part.messages.messages;
     EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0) << plan.what;
     EXPECT_EQ(regions(out), 1) << plan.what;
     EXPECT_EQ(bar->GetNumberOfBars(), plan.bars) << plan.what;
@@ -756,17 +750,15 @@ TEST(GuideBarFilter, ThreeGuidesMergedWhereAHorizontalCutCrossesTwoVerticalOnesA
     { -14.58, 273.92, -982.81 } };
   const double normals[3][3] = { { 0.427, -0.157, 0.89 }, { 0.874, -0.475, -0.101 }, { 0.796, -0.602, -0.063 } };
   vtkSmartPointer<vtkPolyData> guide[3];
-  vtkNew<vtkLKGuideBarFilter> bar;
-  bar->SetBoneData(bone);
   for (int g = 0; g < 3; ++g)
   {
     guide[g] = guideOn(bone, origins[g], normals[g]);
     ASSERT_GT(guide[g]->GetNumberOfCells(), 0) << g;
-    bar->AddGuideData(guide[g]);
   }
-  bar->Update();
+  Joined part(bone, { guide[0], guide[1], guide[2] });
+  vtkLKGuideBarFilter* bar = part.bar;
   vtkPolyData* out = bar->GetOutput();
-  ASSERT_GT(out->GetNumberOfCells(), 0);
+  ASSERT_GT(out->GetNumberOfCells(), 0) << part.messages.messages;
   EXPECT_EQ(bar->GetNumberOfMerges(), 2);
   EXPECT_EQ(bar->GetNumberOfBars(), 0);
   EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
