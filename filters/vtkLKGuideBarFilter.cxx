@@ -132,13 +132,13 @@ std::vector<Vec> labelFacePoints(vtkPolyData* guide, double step)
 }
 
 /// The share of `guide`'s label (its face points every 0.1 mm) where
-/// `part`, seen from outside along the guide's approach, is not where the
-/// guide was (within 0.02 mm): covered or cut away. 0 without a label.
-double labelCovered(vtkPolyData* guide, vtkPolyData* part)
+/// `part`, seen from outside along the guide's approach `d` (unit), is not
+/// where the guide was (within 0.02 mm): covered or cut away. 0 without a
+/// label.
+double labelCovered(vtkPolyData* guide, const Vec& d, vtkPolyData* part)
 {
   const std::vector<Vec> face = labelFacePoints(guide, 0.1);
-  Vec d;
-  if (face.empty() || !readField(guide, "GuideApproach", d.data(), 3) || !(vtkMath::Normalize(d.data()) > 0.0))
+  if (face.empty())
     return 0.0;
   vtkNew<vtkStaticCellLocator> onPart;
   onPart->SetDataSet(part);
@@ -157,6 +157,22 @@ double labelCovered(vtkPolyData* guide, vtkPolyData* part)
   return static_cast<double>(covered) / static_cast<double>(face.size());
 }
 
+/// Points along the polyline `line`, its own and between them at most
+/// `spacing` apart.
+std::vector<Vec> pointsAlong(const std::vector<Vec>& line, double spacing)
+{
+  if (line.empty())
+    return {};
+  std::vector<Vec> points{ line.front() };
+  for (std::size_t k = 1; k < line.size(); ++k)
+  {
+    const int parts = std::max(1, static_cast<int>(std::ceil(distance(line[k - 1], line[k]) / spacing)));
+    for (int j = 1; j <= parts; ++j)
+      points.push_back(add(line[k - 1], add(line[k], line[k - 1], -1.0), static_cast<double>(j) / parts));
+  }
+  return points;
+}
+
 /// The share of a guide's label (`face`: points on its outer face over the
 /// label, from labelFacePoints) that a bar of `radius` round `line` stands
 /// over, seen from outside along the guide's approach `d` (by more than
@@ -166,13 +182,7 @@ double labelUnderBar(const std::vector<Vec>& face, const Vec& d, const std::vect
 {
   if (face.empty() || line.empty())
     return 0.0;
-  std::vector<Vec> centres{ line.front() };
-  for (std::size_t k = 1; k < line.size(); ++k)
-  {
-    const int parts = std::max(1, static_cast<int>(std::ceil(distance(line[k - 1], line[k]) / 0.25)));
-    for (int j = 1; j <= parts; ++j)
-      centres.push_back(add(line[k - 1], add(line[k], line[k - 1], -1.0), static_cast<double>(j) / parts));
-  }
+  const std::vector<Vec> centres = pointsAlong(line, 0.25);
   int covered = 0;
   for (const Vec& q : face)
     for (const Vec& p : centres)
@@ -535,28 +545,22 @@ bool barMeets(const std::vector<Vec>& line, double radius, vtkPolyData* guide)
 {
   double box[6];
   guide->GetBounds(box);
-  vtkNew<vtkImplicitPolyDataDistance> distance;
+  vtkNew<vtkImplicitPolyDataDistance> toGuide;
   bool built = false;
-  for (std::size_t s = 0; s + 1 < line.size(); ++s)
+  for (Vec x : pointsAlong(line, 0.25))
   {
-    const double length = std::sqrt(vtkMath::Distance2BetweenPoints(line[s].data(), line[s + 1].data()));
-    const int steps = std::max(1, static_cast<int>(std::ceil(length / 0.25)));
-    for (int k = 0; k <= steps; ++k)
+    bool near = true;
+    for (int c = 0; c < 3; ++c)
+      near = near && x[c] >= box[2 * c] - radius && x[c] <= box[2 * c + 1] + radius;
+    if (!near)
+      continue;
+    if (!built)
     {
-      Vec x = add(line[s], add(line[s + 1], line[s], -1.0), static_cast<double>(k) / steps);
-      bool near = true;
-      for (int c = 0; c < 3; ++c)
-        near = near && x[c] >= box[2 * c] - radius && x[c] <= box[2 * c + 1] + radius;
-      if (!near)
-        continue;
-      if (!built)
-      {
-        distance->SetInput(guide);
-        built = true;
-      }
-      if (distance->EvaluateFunction(x.data()) < radius - 0.05)
-        return true;
+      toGuide->SetInput(guide);
+      built = true;
     }
+    if (toGuide->EvaluateFunction(x.data()) < radius - 0.05)
+      return true;
   }
   return false;
 }
@@ -1214,6 +1218,10 @@ int vtkLKGuideBarFilter::RequestData(
   std::vector<std::size_t> block(n, 0);
   for (std::size_t i = 0; i + 1 < n; ++i)
     block[i + 1] = joins[i] == Join::Merged ? block[i] : block[i] + 1;
+  // Whether guides j and k are cut by each other's slots and screw holes
+  // (and their screws checked against each other's saws): one block, or
+  // crossing.
+  auto together = [&](std::size_t j, std::size_t k) { return block[j] == block[k] || crossing[j][k]; };
   std::vector<lk::TriangleMesh> guideSolids(n);
   for (std::size_t i = 0; i < n; ++i)
     if (const std::string why = lkvtk::toTriangleMesh(lkvtk::facesAsTriangles(guideData[i]), guideSolids[i]);
@@ -1253,10 +1261,10 @@ int vtkLKGuideBarFilter::RequestData(
   {
     std::vector<const lk::TriangleMesh*> inBlock;
     for (std::size_t m = 0; m < n; ++m)
-      if (block[m] == block[j] || crossing[m][j])
+      if (together(m, j))
         inBlock.push_back(&guideSolids[m]);
     for (std::size_t k = 0; k < n; ++k)
-      if (k != j && (block[k] == block[j] || crossing[k][j]))
+      if (k != j && together(k, j))
         for (lk::TriangleMesh& c : cutsOf(k, inBlock, CutterStep * static_cast<double>(j)))
           guideCutters[j].push_back(std::move(c));
   }
@@ -1332,7 +1340,7 @@ int vtkLKGuideBarFilter::RequestData(
   // would meet its screw (guides made without the plan's other saw planes).
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t k = 0; k < n; ++k)
-      if (k != j && (block[k] == block[j] || crossing[k][j]))
+      if (k != j && together(k, j))
         for (const Vec& x : guide[j].holes)
         {
           // The screw from the wall's top to 10 mm into the bone, its
@@ -1355,7 +1363,7 @@ int vtkLKGuideBarFilter::RequestData(
   // bar over one, or a slot through it, makes it hard to read.
   for (std::size_t i = 0; i < n; ++i)
   {
-    const double share = labelCovered(guideData[i], result);
+    const double share = labelCovered(guideData[i], guide[i].approach, result);
     if (!(share > LabelShareCovered))
       continue;
     ++this->NumberOfLabelsCovered;
