@@ -38,6 +38,19 @@ std::vector<std::set<std::size_t>> chain(const std::vector<std::size_t>& order)
   return piecesOf;
 }
 
+/// The cutting guide of the plane through `origin` with normal `normal`
+/// on `bone`, put on along `approach` (not yet updated: a pipeline input).
+vtkSmartPointer<vtkLKCuttingGuideFilter> guideFilter(
+  vtkPolyData* bone, const double origin[3], const double normal[3], const double approach[3])
+{
+  auto guide = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
+  guide->SetInputData(bone);
+  guide->SetPlaneOrigin(origin);
+  guide->SetPlaneNormal(normal);
+  guide->SetApproach(approach);
+  return guide;
+}
+
 vtkSmartPointer<vtkPolyData> cloud(const std::vector<std::array<double, 3>>& points)
 {
   vtkNew<vtkPoints> p;
@@ -306,11 +319,8 @@ TEST(GuidePairs, AJoinIsSaidAsItsBarsItsMergedBlocksOrBoth)
   std::vector<vtkSmartPointer<vtkLKCuttingGuideFilter>> guides;
   for (const double x : { -40.0, -3.0, 3.0 })
   {
-    auto guide = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
-    guide->SetInputData(box);
-    guide->SetPlaneOrigin(x, 0, 0);
-    guide->SetPlaneNormal(1, 0, 0);
-    guide->SetApproach(0, -1, 0);
+    const double origin[3] = { x, 0, 0 }, normal[3] = { 1, 0, 0 }, front[3] = { 0, -1, 0 };
+    vtkSmartPointer<vtkLKCuttingGuideFilter> guide = guideFilter(box, origin, normal, front);
     guide->Update();
     ASSERT_GT(guide->GetOutput()->GetNumberOfCells(), 0) << x;
     guides.push_back(guide);
@@ -361,11 +371,7 @@ TEST(GuidePairs, GuidesThatCrossApartInTheChainAreSaid)
   std::vector<vtkSmartPointer<vtkLKCuttingGuideFilter>> guides;
   for (int g = 0; g < 3; ++g)
   {
-    auto guide = vtkSmartPointer<vtkLKCuttingGuideFilter>::New();
-    guide->SetInputData(box);
-    guide->SetPlaneOrigin(origins[g]);
-    guide->SetPlaneNormal(normals[g]);
-    guide->SetApproach(approaches[g]);
+    vtkSmartPointer<vtkLKCuttingGuideFilter> guide = guideFilter(box, origins[g], normals[g], approaches[g]);
     guides.push_back(guide);
     all->AddGuideConnection(guide->GetOutputPort());
   }
