@@ -132,7 +132,7 @@ void addLines(std::string& message, const std::string& prefix, const std::string
 const char* const kHelp = "d: draw on/off (right drag turns the view; drag on from an orange end) | 1 paint 2 nearest 3 snap 4 split | p: saw line | c: CT at a cut (C: its window)\n"
                     "x: cut (capped) | l: lattice, L: size | m: Metro colours | n: pick the segment (smallest first) | g: move it (shift: rotate) | v: by numbers | r: reset\n"
                     "f: deform (bump, box, smooth; drag up/down) | [ ]: tool radius | u: distance, a: angle | Delete: what is pointed at | o: mirror image, O: its plane\n"
-                    "t: name a piece (click it, type, Return) | k: cutting guides (K: side, j: joined) | z: undo  y: redo | w: save session | e: export | q: quit | mouse: rotate, pan, zoom";
+                    "t: name a piece (click it, type, Return) | k: cutting guides (K: side, j: joined) | z: undo, y: redo | w: save | e: export | q: quit | mouse: turn, pan, zoom";
 
 const char* toolName(int tool)
 {
@@ -451,6 +451,13 @@ void Planner::setup()
   window->SetWindowName("latticekit planner");
   renderer->SetBackground(1, 1, 1);
   help->SetInput(kHelp);
+  // The lines stand on a light band, readable where a zoomed bone (its
+  // Metro colours) reaches under them.
+  for (vtkTextActor* text : { help.Get(), status.Get(), messages.Get() })
+  {
+    text->GetTextProperty()->SetBackgroundColor(1.0, 1.0, 1.0);
+    text->GetTextProperty()->SetBackgroundOpacity(0.7);
+  }
   help->GetTextProperty()->SetFontSize(13);
   help->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
   help->SetDisplayPosition(8, 8);
