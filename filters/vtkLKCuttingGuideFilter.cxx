@@ -6,6 +6,7 @@
 #include "vtkLKPolyDataConversion.h"
 #include "vtkLKRaisedLabel.h"
 #include "vtkLKRayCast.h"
+#include "vtkLKSawPath.h"
 #include "vtkLKSectionLoops.h"
 
 #include <vtkCellArray.h>
@@ -159,26 +160,16 @@ bool underOtherGuide(const std::vector<OtherGuide>& others, const Vec& x, double
   return false;
 }
 
-/// How deep a screw that fixes a guide goes into the bone, for the test
-/// below: mm (a monocortical screw is 5 to 8 mm long).
-constexpr double ScrewDepth = 10.0;
-
 /// Whether a screw of `radius` into the bone at `x` along -d (from
-/// `above` over the bone to `deep` into it) comes within 1 mm of the kerf
-/// (`halfWidth` each side of the plane) of another saw that cuts the bone
-/// within `nearSection` of `x`: the blade would meet it.
+/// `above` over the bone to `deep` into it) lies in the path of another
+/// saw (vtkLKSawPath.h) that cuts the bone within `nearSection` of `x`.
 bool inOtherSawPath(const std::vector<OtherGuide>& others, const Vec& x, const Vec& d, double radius,
   double halfWidth, double above, double deep, double nearSection)
 {
-  constexpr double margin = 1.0;
   for (const OtherGuide& g : others)
-  {
-    const double f0 = dot(add(add(x, d, above), g.origin, -1.0), g.normal);
-    const double f1 = dot(add(add(x, d, -deep), g.origin, -1.0), g.normal);
-    const double least = f0 * f1 <= 0.0 ? 0.0 : std::min(std::abs(f0), std::abs(f1));
-    if (least < radius + halfWidth + margin && g.fromSection(x) < nearSection)
+    if (lkvtk::screwInSawPath(add(x, d, above), add(x, d, -deep), radius, g.origin, g.normal, halfWidth) &&
+      g.fromSection(x) < nearSection)
       return true;
-  }
   return false;
 }
 
@@ -958,13 +949,13 @@ int vtkLKCuttingGuideFilter::RequestData(
       // A screw the saw of a line nearby would meet (two cuts a few
       // millimetres apart, their guides merged into one block): left out.
       if (inOtherSawPath(others, { x[0], x[1], x[2] }, d, radius, half, this->Clearance + this->Thickness,
-            ScrewDepth, this->Reach + ScrewDepth))
+            lkvtk::ScrewDepth, this->Reach + lkvtk::ScrewDepth))
       {
         ++this->NumberOfScrewHolesLeftOut;
         vtkWarningMacro("The cutting guide's screw hole on the slot's "
           << (side > 0.0 ? "side the plane's normal points to" : "side away from the plane's normal")
           << " is left out: its screw (" << 2.0 * radius
-          << " mm, " << ScrewDepth << " mm into the bone) would lie in the path of the saw of another cut plane "
+          << " mm, " << lkvtk::ScrewDepth << " mm into the bone) would lie in the path of the saw of another cut plane "
           << "(OtherCutPlanes) nearby.");
         continue;
       }

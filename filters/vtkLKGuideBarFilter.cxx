@@ -3,6 +3,7 @@
 #include "vtkLKFieldValues.h"
 #include "vtkLKPolyDataConversion.h"
 #include "vtkLKRayCast.h"
+#include "vtkLKSawPath.h"
 
 #include "latticekit/SolidBooleans.h"
 
@@ -1343,15 +1344,12 @@ int vtkLKGuideBarFilter::RequestData(
       if (k != j && together(k, j))
         for (const Vec& x : guide[j].holes)
         {
-          // The screw from the wall's top to 10 mm into the bone, its
-          // distance from guide k's plane: within its radius, half k's slot
-          // and 1 mm, it lies in the saw's path.
+          // The screw from the wall's top into the bone, against guide k's
+          // saw (its kerf half k's slot each side of the plane).
           const Vec top = add(x, guide[j].approach, guide[j].clearance + guide[j].thickness);
-          const Vec deep = add(x, guide[j].approach, -10.0);
-          const double f0 = dot(add(top, guide[k].slotCentre, -1.0), guide[k].normal);
-          const double f1 = dot(add(deep, guide[k].slotCentre, -1.0), guide[k].normal);
-          const double least = f0 * f1 <= 0.0 ? 0.0 : std::min(std::abs(f0), std::abs(f1));
-          if (least < 0.5 * guide[j].hole + 0.5 * guide[k].slotWidth + 1.0)
+          const Vec deep = add(x, guide[j].approach, -lkvtk::ScrewDepth);
+          if (lkvtk::screwInSawPath(
+                top, deep, 0.5 * guide[j].hole, guide[k].slotCentre, guide[k].normal, 0.5 * guide[k].slotWidth))
           {
             ++this->NumberOfScrewHolesInSawPaths;
             vtkWarningMacro("A screw hole of guide " << j + 1 << " lies in the path of guide " << k + 1
