@@ -9,6 +9,7 @@
 #include "common/CutReport.h"
 #include "common/DistanceColourBar.h"
 #include "common/TextFont.h"
+#include "common/WrappedText.h"
 
 #include "vtkLKMetroFilter.h"
 #include "vtkLKPolyDataConversion.h"
@@ -74,36 +75,6 @@ std::string matrixText(const std::array<double, 16>& m)
   return os.str();
 }
 
-/// `text` with every line broken at spaces to at most `width` characters
-/// (a longer word stays whole).
-std::string wrapped(const std::string& text, std::size_t width)
-{
-  // Widths count characters, not UTF-8 bytes (a Cyrillic letter takes two).
-  const auto length = [](const std::string& t) {
-    return static_cast<std::size_t>(
-      std::count_if(t.begin(), t.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-  };
-  std::string out;
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);)
-  {
-    std::string current;
-    std::istringstream words(line);
-    for (std::string word; words >> word;)
-    {
-      if (!current.empty() && length(current) + 1 + length(word) > width)
-      {
-        out += current + "\n";
-        current = "  "; // continuation lines are indented
-      }
-      current += (current.empty() || current == "  " ? "" : " ") + word;
-    }
-    out += current + "\n";
-  }
-  if (!out.empty())
-    out.pop_back();
-  return out;
-}
 } // namespace
 
 bool isIdentity(const std::array<double, 16>& m)
@@ -890,8 +861,8 @@ void Planner::updateStatus()
     s << " | " << notice;
   if (!cutSummary.empty())
     s << "\n" << cutSummary;
-  const std::string statusText = wrapped(s.str(), 130); // the window is 1000 pixels wide
-  const std::string messageText = wrapped(message, 120);
+  const std::string statusText = lkapp::wrapped(s.str(), 130); // the window is 1000 pixels wide
+  const std::string messageText = lkapp::wrapped(message, 120);
   lkapp::useFontFor(status->GetTextProperty(), statusText); // names in any script
   lkapp::useFontFor(messages->GetTextProperty(), messageText);
   status->SetInput(statusText.c_str());
