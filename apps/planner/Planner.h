@@ -639,8 +639,9 @@ public:
   /// `distance` gets how many pixels away it is.
   int measurementAt(int x, int y, double pixels, double& distance) const;
   /// The stroke whose line on the bone is drawn nearest the display point
-  /// (x, y) of the bone's view, within `pixels`; -1 for none (and on the CT
-  /// view). `distance` as above.
+  /// (x, y) of the bone's view, within `pixels` (a stroke that made no line:
+  /// where it was drawn); -1 for none (and on the CT view). `distance` as
+  /// above.
   int strokeAt(int x, int y, double pixels, double& distance) const;
   /// The deformation of `piece` whose region holds `point` (in the piece's
   /// own frame, picked on the surface its deformations left): the latest

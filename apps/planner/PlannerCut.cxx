@@ -273,8 +273,11 @@ void Planner::computeCut()
     if (lkapp::errorCount() > errorsBefore || f->GetOutput()->GetNumberOfPoints() == 0)
     {
       const std::string why = lkapp::errorsSince(errorsBefore);
-      addLine(cut.message, which + " failed: " + (why.empty() ? "no feature line" : why));
-      continue; // the stroke stays in the session; the message says why
+      // The stroke stays in the session (what the surgeon drew is not
+      // thrown away); the message says why it failed and how it goes.
+      addLine(cut.message, which + " failed: " + (why.empty() ? "no feature line" : why) +
+          " (Delete with the mouse where it was drawn removes it)");
+      continue;
     }
     auto next = vtkSmartPointer<vtkPolyData>::New();
     next->ShallowCopy(f->GetOutput());

@@ -184,6 +184,23 @@ int Planner::strokeAt(int x, int y, double pixels, double& distance) const
       }
     }
   }
+  // A stroke that made no line (its message says why) is found where it
+  // was drawn, so that Delete can take it out of the plan.
+  for (std::size_t i = 0; i < session.strokes.size(); ++i)
+  {
+    if (std::find(cut.lineStrokes.begin(), cut.lineStrokes.end(), i) != cut.lineStrokes.end())
+      continue;
+    const std::vector<std::array<double, 3>>& points = session.strokes[i].points;
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      const double d = pixelsFrom(renderer, x, y, points[k], points[std::min(k + 1, points.size() - 1)]);
+      if (d <= distance)
+      {
+        distance = d;
+        best = static_cast<int>(i);
+      }
+    }
+  }
   return best;
 }
 
