@@ -163,6 +163,26 @@ vtkSmartPointer<vtkCaptionActor2D> captionActor(
   return caption;
 }
 
+/// A stroke's points as one polyline. A line cell needs two points: a
+/// stroke of one point (a click) is a vertex cell, and an empty one has no
+/// cell (a line of fewer points leaves the polydata's cell map unbuildable,
+/// which crashed a pick).
+vtkSmartPointer<vtkPolyData> polylineOf(const std::vector<std::array<double, 3>>& points)
+{
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines, verts;
+  vtkCellArray* cells = points.size() >= 2 ? lines.Get() : verts.Get();
+  if (!points.empty())
+    cells->InsertNextCell(static_cast<vtkIdType>(points.size()));
+  for (const auto& p : points)
+    cells->InsertCellPoint(pts->InsertNextPoint(p.data()));
+  auto polyline = vtkSmartPointer<vtkPolyData>::New();
+  polyline->SetPoints(pts);
+  polyline->SetLines(lines);
+  polyline->SetVerts(verts);
+  return polyline;
+}
+
 /// A plane's square drawn by two actors: a faint sheet and its outline,
 /// through its four corners in order around it.
 void showSquare(vtkPoints* corners, vtkActor* sheetActor, vtkActor* outlineActor)
@@ -615,6 +635,28 @@ void Planner::rebuild()
   cutFailed = cut.failed;
   for (const auto& [line, shade] : cut.lines)
     addLineActor(line, shade);
+  // A stroke that made no line (its message says why) is drawn where it was
+  // drawn, dark red as the messages are, for Delete to take it out there.
+  for (std::size_t i = 0; i < session.strokes.size(); ++i)
+    if (std::find(cut.lineStrokes.begin(), cut.lineStrokes.end(), i) == cut.lineStrokes.end())
+    {
+      // Its points as dots too: a click's two points are one pixel apart.
+      vtkSmartPointer<vtkPolyData> drawn = polylineOf(session.strokes[i].points);
+      vtkNew<vtkCellArray> dots;
+      for (vtkIdType k = 0; k < drawn->GetNumberOfPoints(); ++k)
+        dots->InsertNextCell(1, &k);
+      drawn->SetVerts(dots);
+      vtkNew<vtkPolyDataMapper> m;
+      m->SetInputData(drawn);
+      auto a = vtkSmartPointer<vtkActor>::New();
+      a->SetMapper(m);
+      a->GetProperty()->SetColor(0.6, 0.1, 0.0);
+      a->GetProperty()->SetLineWidth(2);
+      a->GetProperty()->SetPointSize(6);
+      a->PickableOff();
+      renderer->AddActor(a);
+      sceneActors.push_back(a);
+    }
   // Where an open line can be continued: a drag that starts in a marker.
   for (const auto& end : openEnds())
   {
@@ -871,19 +913,7 @@ void Planner::updateStatus()
 
 void Planner::showStroke()
 {
-  // A line cell needs two points: a stroke of one point (a click) is a
-  // vertex cell, and an empty one has no cell (a line of fewer points
-  // leaves the polydata's cell map unbuildable, which crashed a pick).
-  vtkNew<vtkPoints> pts;
-  vtkNew<vtkCellArray> lines, verts;
-  vtkCellArray* cells = current.size() >= 2 ? lines.Get() : verts.Get();
-  if (!current.empty())
-    cells->InsertNextCell(static_cast<vtkIdType>(current.size()));
-  for (const auto& p : current)
-    cells->InsertCellPoint(pts->InsertNextPoint(p.data()));
-  strokePd->SetPoints(pts);
-  strokePd->SetLines(lines);
-  strokePd->SetVerts(verts);
+  strokePd->ShallowCopy(polylineOf(current));
   strokePd->Modified();
 }
 
