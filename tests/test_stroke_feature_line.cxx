@@ -144,6 +144,25 @@ TEST(StrokeFeatureLine, ClosedStrokeCutsTheSphere)
   EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(sphere), { r.line }, false).pieces.size(), 2u);
 }
 
+TEST(StrokeFeatureLine, AStrokeThatJumpsAGapBetweenItsPointsIsSaidToDoSo)
+{
+  // Both points lie on a sphere of radius 10, on opposite sides: the line
+  // between them runs through its middle, as a fast drag that slips over a
+  // bone's edge to its far side. The message names where, and why.
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 10.0);
+  try
+  {
+    lk::strokeToFeatureLine(sphere, { sphere.points[0], -sphere.points[0] }, {});
+    FAIL() << "a stroke through the sphere's middle was accepted";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("misses the surface between its points 1 and 2 (20.0"), std::string::npos) << what;
+    EXPECT_NE(what.find("draw there more slowly, or in two strokes"), std::string::npos) << what;
+  }
+}
+
 TEST(StrokeFeatureLine, BadStrokesAreRefused)
 {
   const lk::TriangleMesh grid = lktest::grid(10, 1.0, 0.0);
