@@ -847,7 +847,7 @@ void Planner::updateStatus()
       if (bars > 0)
         s << " by " << (bars == 1 ? "a bar" : std::to_string(bars) + " bars");
       if (merges > 0)
-        s << (bars > 0 ? ", " : " ") << merges << (merges == 1 ? " pair" : " pairs") << " merged";
+        s << ", " << merges << (merges == 1 ? " pair" : " pairs") << " merged";
       s << ")";
     }
   }
