@@ -634,7 +634,7 @@ void Planner::rebuild()
     addLine(message, cut.message);
   cutFailed = cut.failed;
   for (const auto& [line, shade] : cut.lines)
-    addLineActor(line, shade);
+    addLineActor(line, { 0.1 + shade, 0.5, 0.1 }, 3);
   // A stroke that made no line (its message says why) is drawn where it was
   // drawn, dark red as the messages are, for Delete to take it out there.
   for (std::size_t i = 0; i < session.strokes.size(); ++i)
@@ -646,16 +646,7 @@ void Planner::rebuild()
       for (vtkIdType k = 0; k < drawn->GetNumberOfPoints(); ++k)
         dots->InsertNextCell(1, &k);
       drawn->SetVerts(dots);
-      vtkNew<vtkPolyDataMapper> m;
-      m->SetInputData(drawn);
-      auto a = vtkSmartPointer<vtkActor>::New();
-      a->SetMapper(m);
-      a->GetProperty()->SetColor(0.6, 0.1, 0.0);
-      a->GetProperty()->SetLineWidth(2);
-      a->GetProperty()->SetPointSize(6);
-      a->PickableOff();
-      renderer->AddActor(a);
-      sceneActors.push_back(a);
+      addLineActor(drawn, { 0.6, 0.1, 0.0 }, 2)->GetProperty()->SetPointSize(6);
     }
   // Where an open line can be continued: a drag that starts in a marker.
   for (const auto& end : openEnds())
@@ -795,18 +786,19 @@ vtkSmartPointer<vtkActor> Planner::addActor(vtkAlgorithmOutput* port, vtkPolyDat
   return a;
 }
 
-void Planner::addLineActor(vtkPolyData* line, double shade)
+vtkSmartPointer<vtkActor> Planner::addLineActor(vtkPolyData* line, const std::array<double, 3>& colour, double width)
 {
   vtkNew<vtkPolyDataMapper> m;
   m->SetInputData(line);
   m->ScalarVisibilityOff();
   auto a = vtkSmartPointer<vtkActor>::New();
   a->SetMapper(m);
-  a->GetProperty()->SetColor(0.1 + shade, 0.5, 0.1);
-  a->GetProperty()->SetLineWidth(3);
+  a->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+  a->GetProperty()->SetLineWidth(width);
   a->PickableOff(); // the lines lie on the bone; strokes and presses pick the bone
   renderer->AddActor(a);
   sceneActors.push_back(a);
+  return a;
 }
 
 void Planner::updateStatus()

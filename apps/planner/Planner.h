@@ -709,7 +709,8 @@ public:
 
   vtkSmartPointer<vtkActor> addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars);
 
-  void addLineActor(vtkPolyData* line, double shade);
+  /// A line on the bone (not picked) in `colour`, `width` pixels wide.
+  vtkSmartPointer<vtkActor> addLineActor(vtkPolyData* line, const std::array<double, 3>& colour, double width);
 
   /// cutSummary's text for the current cut and pieces.
   std::string summaryOfCut();

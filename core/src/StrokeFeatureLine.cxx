@@ -211,42 +211,33 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     sortUnique(result.featureEdges);
     return result;
   }
-  std::vector<Vec3> samples;
-  std::vector<std::size_t> sampleSegment; // the stroke segment a sample lies on, from 0
-  std::vector<bool> betweenPoints; // a sample between the stroke's points, not one of them
+  // The stroke sampled at most `spacing` apart, each sample projected as it
+  // is made.
+  const ClosestPointTree tree(mesh);
+  std::vector<ClosestPointTree::Hit> hits;
+  const auto project = [&](const Vec3& sample, std::size_t segment, bool betweenPoints) {
+    hits.push_back(hits.empty() ? tree.closest(sample) : tree.closest(sample, hits.back()));
+    if (hits.back().distance <= maxDist)
+      return;
+    const std::string how = std::to_string(hits.back().distance) + " from it (more than " + std::to_string(maxDist) + ")";
+    if (!betweenPoints)
+      throw std::invalid_argument("the stroke misses the surface: a stroke point lies " + how);
+    // Its points lie on the surface, but the straight line between two of
+    // them does not: a drag that jumped a gap (fast, over the bone's edge
+    // or from one part of it to another).
+    throw std::invalid_argument("the stroke misses the surface between its points " + std::to_string(segment + 1) +
+      " and " + std::to_string(segment + 2) + " (" + std::to_string((stroke[segment + 1] - stroke[segment]).norm()) +
+      " apart): the line between them runs " + how +
+      ", as where a drag jumps across a gap or over the bone's edge; draw there more slowly, or in two strokes");
+  };
   for (std::size_t i = 0; i + 1 < stroke.size(); ++i)
   {
     const double len = (stroke[i + 1] - stroke[i]).norm();
     const int n = std::max(1, static_cast<int>(std::ceil(len / spacing)));
     for (int k = 0; k < n; ++k)
-    {
-      samples.push_back(stroke[i] + (stroke[i + 1] - stroke[i]) * (double(k) / n));
-      sampleSegment.push_back(i);
-      betweenPoints.push_back(k > 0);
-    }
+      project(stroke[i] + (stroke[i + 1] - stroke[i]) * (double(k) / n), i, k > 0);
   }
-  samples.push_back(stroke.back());
-  sampleSegment.push_back(stroke.size() - 1);
-  betweenPoints.push_back(false);
-  const ClosestPointTree tree(mesh);
-  std::vector<ClosestPointTree::Hit> hits;
-  for (std::size_t j = 0; j < samples.size(); ++j)
-  {
-    hits.push_back(hits.empty() ? tree.closest(samples[j]) : tree.closest(samples[j], hits.back()));
-    if (hits.back().distance <= maxDist)
-      continue;
-    const std::string how = std::to_string(hits.back().distance) + " from it (more than " + std::to_string(maxDist) + ")";
-    if (!betweenPoints[j])
-      throw std::invalid_argument("the stroke misses the surface: a stroke point lies " + how);
-    // Its points lie on the surface, but the straight line between two of
-    // them does not: a drag that jumped a gap (fast, over the bone's edge
-    // or from one part of it to another).
-    const std::size_t i = sampleSegment[j];
-    throw std::invalid_argument("the stroke misses the surface between its points " + std::to_string(i + 1) +
-      " and " + std::to_string(i + 2) + " (" + std::to_string((stroke[i + 1] - stroke[i]).norm()) +
-      " apart): the line between them runs " + how +
-      ", as where a drag jumps across a gap or over the bone's edge; draw there more slowly, or in two strokes");
-  }
+  project(stroke.back(), stroke.size() - 1, false);
   std::vector<Vec3> projected;
   for (const auto& h : hits)
     projected.push_back(h.point);
