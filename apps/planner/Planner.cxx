@@ -435,9 +435,8 @@ void Planner::setup()
   scanRenderer->DrawOff();
   window->AddRenderer(scanRenderer);
   // While it is shown, the bone is drawn smaller, right of it (after the
-  // projection: picks and drags go through the same transform).
-  roomForScan->Translate(0.37, 0.0, 0.0);
-  roomForScan->Scale(0.62, 0.62, 1.0);
+  // projection: picks and drags go through the same transform; showScan
+  // sets it).
   window->SetSize(1000, 750);
   window->SetWindowName("latticekit planner");
   renderer->SetBackground(1, 1, 1);
@@ -464,11 +463,7 @@ void Planner::setup()
   messages->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   messages->GetPositionCoordinate()->SetValue(0.01, 0.985);
   renderer->AddViewProp(messages);
-  scalarBar->SetVisibility(false);
-  // At the right, between the orientation cube and the status lines (its
-  // default place reaches down over them).
-  scalarBar->SetPosition(0.82, 0.22);
-  scalarBar->SetPosition2(0.17, 0.66);
+  scalarBar->SetVisibility(false); // placed by showScan
   renderer->AddViewProp(scalarBar);
   vtkNew<vtkPolyDataMapper> sm;
   sm->SetInputData(strokePd);

@@ -167,6 +167,11 @@ std::string Planner::scanShown() const
 
 void Planner::showScan()
 {
+  // The distance colour bar at the right, between the orientation cube and
+  // the status lines (its default place reaches down over them); at the
+  // window's very edge while the scan is shown.
+  scalarBar->SetPosition(0.82, 0.22);
+  scalarBar->SetPosition2(0.17, 0.66);
   if (session.scanOnLine <= 0)
   {
     scanRenderer->DrawOff();
@@ -189,6 +194,17 @@ void Planner::showScan()
   if (!scanWhy.empty())
     addLine(message, "no " + scanText(session.scanOnLine, session.scanAcross) + ": " + scanWhy);
   scanRenderer->SetDraw(scanWhy.empty());
+  // The bone's room, right of the scan: [0.38, 0.90] of the width while the
+  // distance colour bar stands at the right edge, else [0.375, 0.995].
+  const bool colourBar = scalarBar->GetVisibility();
+  roomForScan->Identity();
+  roomForScan->Translate(colourBar ? 0.28 : 0.37, 0.0, 0.0);
+  roomForScan->Scale(colourBar ? 0.52 : 0.62, colourBar ? 0.52 : 0.62, 1.0);
+  if (scanWhy.empty())
+  {
+    scalarBar->SetPosition(0.905, 0.22);
+    scalarBar->SetPosition2(0.09, 0.66);
+  }
   renderer->GetActiveCamera()->SetUserTransform(scanWhy.empty() ? roomForScan.Get() : nullptr);
   showScanPlane();
 }
