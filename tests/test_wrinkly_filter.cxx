@@ -2,6 +2,7 @@
 #include "vtkLKWrinklyNetSource.h"
 #include "vtkLKWrinklySurfaceFilter.h"
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -121,4 +122,34 @@ TEST(WrinklySurfaceFilter, BadInputGivesErrors)
   lktest::ErrorRecorder errors(none);
   none->Update();
   EXPECT_GE(errors.errors, 1);
+}
+
+TEST(WrinklySurfaceFilter, ControlMeshWithOtherCellsIsRefusedNotPartlyUsed)
+{
+  // The net's polygons and one line cell beside them: the line would be
+  // left out without a word, so the mesh is refused, and the counts said.
+  vtkNew<vtkLKWrinklyNetSource> net;
+  net->SetNetTypeToPolygon();
+  net->SetSides(6);
+  net->Update();
+  vtkNew<vtkPolyData> mixed;
+  mixed->DeepCopy(net->GetOutput());
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType ends[2] = { 0, 1 };
+  lines->InsertNextCell(2, ends);
+  mixed->SetLines(lines);
+  vtkNew<vtkLKWrinklySurfaceFilter> wrinkly;
+  wrinkly->SetInputData(mixed);
+  wrinkly->SetIterations(1);
+  lktest::ErrorRecorder errors(wrinkly);
+  auto out = run(wrinkly);
+  EXPECT_GE(errors.errors, 1);
+  EXPECT_NE(errors.messages.find("0 vertex, 1 line and 0 strip cells"), std::string::npos) << errors.messages;
+  EXPECT_EQ(out->GetNumberOfPoints(), 0);
+  // Without the line it is made.
+  vtkNew<vtkCellArray> noLines;
+  mixed->SetLines(noLines);
+  lktest::ErrorRecorder none(wrinkly);
+  EXPECT_GT(run(wrinkly)->GetNumberOfPolys(), 100);
+  EXPECT_EQ(none.errors, 0) << none.messages;
 }
