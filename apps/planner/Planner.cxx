@@ -633,7 +633,7 @@ void Planner::rebuild()
   // A stroke that made no line (its message says why) is drawn where it was
   // drawn, dark red as the messages are, for Delete to take it out there.
   for (std::size_t i = 0; i < session.strokes.size(); ++i)
-    if (std::find(cut.lineStrokes.begin(), cut.lineStrokes.end(), i) == cut.lineStrokes.end())
+    if (cut.madeNoLine(i))
     {
       // Its points as dots too: a click's two points are one pixel apart.
       vtkSmartPointer<vtkPolyData> drawn = polylineOf(session.strokes[i].points);

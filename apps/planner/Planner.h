@@ -38,6 +38,7 @@
 #include <vtkTextActor.h>
 #include <vtkTransform.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <cstdint>
@@ -515,6 +516,12 @@ public:
     std::string key;
     std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>> lines; ///< feature lines, shade
     std::vector<std::size_t> lineStrokes; ///< the stroke each line came from (a failed stroke has none)
+    /// Whether stroke i made no line (its message says why): it is drawn
+    /// where it was drawn, for Delete to find it there.
+    bool madeNoLine(std::size_t i) const
+    {
+      return std::find(lineStrokes.begin(), lineStrokes.end(), i) == lineStrokes.end();
+    }
     /// The cut's pieces (vtkLKExtractCutPieceFilter), each with cell data
     /// "Cap" only (a deformation drag carries what a piece has, every frame).
     std::vector<vtkSmartPointer<vtkPolyData>> pieces;

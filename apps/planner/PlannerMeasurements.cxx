@@ -188,7 +188,7 @@ int Planner::strokeAt(int x, int y, double pixels, double& distance) const
   // was drawn, so that Delete can take it out of the plan.
   for (std::size_t i = 0; i < session.strokes.size(); ++i)
   {
-    if (std::find(cut.lineStrokes.begin(), cut.lineStrokes.end(), i) != cut.lineStrokes.end())
+    if (!cut.madeNoLine(i))
       continue;
     const std::vector<std::array<double, 3>>& points = session.strokes[i].points;
     for (std::size_t k = 0; k < points.size(); ++k)
