@@ -207,6 +207,51 @@ vtkSmartPointer<vtkTextActor> label(const std::string& text, double x, double y,
   return actor;
 }
 
+/// Breaks `title` after its commas where one line would run out of the
+/// picture (0.96 of the renderer's width, the text measured in its window):
+/// "..., 3 mm toward the patient's right" runs past a 370-pixel view. Without
+/// a window (nothing to measure in) it stays one line.
+void fitTitle(vtkRenderer* renderer, vtkTextActor* actor, const std::string& title)
+{
+  const int* pixels = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
+  if (!pixels || pixels[0] <= 0)
+    return;
+  const auto width = [&](const std::string& text) {
+    actor->SetInput(text.c_str());
+    double size[2] = { 0.0, 0.0 };
+    actor->GetSize(renderer, size);
+    return size[0];
+  };
+  const double room = 0.96 * pixels[0];
+  if (width(title) <= room)
+    return;
+  std::string fitted, line;
+  for (std::size_t start = 0; start < title.size();)
+  {
+    const std::size_t comma = title.find(", ", start);
+    const std::string part = title.substr(start, comma == std::string::npos ? std::string::npos : comma + 1 - start);
+    start = comma == std::string::npos ? title.size() : comma + 2;
+    if (!line.empty() && width(line + " " + part) > room)
+    {
+      fitted += line + "\n";
+      line = part;
+    }
+    else
+      line += (line.empty() ? "" : " ") + part;
+  }
+  actor->SetInput((fitted + line).c_str());
+}
+
+/// The height of `actor`'s text in the renderer's pixels (0 without a window).
+double textHeight(vtkRenderer* renderer, vtkTextActor* actor)
+{
+  if (!renderer->GetRenderWindow())
+    return 0.0;
+  double size[2] = { 0.0, 0.0 };
+  actor->GetSize(renderer, size);
+  return size[1];
+}
+
 } // namespace
 
 void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int fontSize)
@@ -264,8 +309,15 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
                                              : "\nmagenta: measured on this plane";
   if (!picture.hint.empty())
     legendText += "\n" + picture.hint;
+  // The title at the top, on as many lines as the picture's width needs;
+  // the legend under it.
+  auto title = label(picture.title, 0.02, 0.98, fontSize, { 1, 1, 1 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
+  const double oneLine = textHeight(renderer, title);
+  fitTitle(renderer, title, picture.title);
+  const int* pixels = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
+  const double below = pixels && pixels[1] > 0 ? (textHeight(renderer, title) - oneLine) / pixels[1] : 0.0;
   auto legend = label(legendText,
-    0.02, 0.935, std::max(9, fontSize - 2), { 0.85, 0.85, 0.85 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
+    0.02, 0.935 - below, std::max(9, fontSize - 2), { 0.85, 0.85, 0.85 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
   legend->GetTextProperty()->BoldOff();
   renderer->AddViewProp(legend);
   // A 10 mm bar at the bottom left.
@@ -277,7 +329,7 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   auto bar = label("10 mm", 0.05 + 5.0 / picture.side, 0.075, fontSize, { 1, 1, 1 }, VTK_TEXT_CENTERED, VTK_TEXT_BOTTOM);
   bar->GetTextProperty()->BoldOff();
   renderer->AddViewProp(bar);
-  renderer->AddViewProp(label(picture.title, 0.02, 0.98, fontSize, { 1, 1, 1 }, VTK_TEXT_LEFT, VTK_TEXT_TOP));
+  renderer->AddViewProp(title);
   if (const std::string window = greyWindowLabel(picture.grey); !window.empty())
   {
     auto shown = label(window, 0.98, 0.075, std::max(9, fontSize - 2), { 1, 1, 1 }, VTK_TEXT_RIGHT, VTK_TEXT_BOTTOM);
@@ -312,13 +364,13 @@ bool writeScanPicture(const ScanPicture& picture, int pixels, const std::string&
   void* display)
 {
   vtkNew<vtkRenderer> renderer;
-  showScanPicture(renderer, picture, std::max(12, pixels / 40));
   vtkNew<vtkRenderWindow> window;
   if (display)
     window->SetDisplayId(display);
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
   window->SetSize(pixels, pixels);
+  showScanPicture(renderer, picture, std::max(12, pixels / 40)); // in its window: the title is measured
   return writeScreenshot(window, path, error);
 }
 
