@@ -896,6 +896,41 @@ void Planner::updateStatus()
   lkapp::useFontFor(messages->GetTextProperty(), messageText);
   status->SetInput(statusText.c_str());
   messages->SetInput(messageText.c_str());
+  placeScanView();
+}
+
+void Planner::placeScanView()
+{
+  // At most [0.24, 0.735] of the height and 0.37 of the width (370 pixels
+  // square in the 1000 x 750 window),
+  // from 6 pixels above the status lines' top to 6 below the messages; a
+  // quarter of the height at the least (a very long status and message
+  // list then reach under it).
+  const int* size = window->GetSize();
+  if (!size || size[0] <= 0 || size[1] <= 0)
+    return;
+  const auto height = [&](vtkTextActor* text) {
+    double box[2] = { 0.0, 0.0 };
+    if (text->GetInput() && *text->GetInput())
+      text->GetSize(renderer, box);
+    return box[1];
+  };
+  const double statusTop = (status->GetPosition()[1] + height(status) + 6.0) / size[1];
+  const double messagesBottom = 0.985 - (height(messages) + 6.0) / size[1];
+  const double bottom = std::max(0.24, statusTop);
+  const double top = std::max(bottom + 0.25, std::min(0.735, messagesBottom));
+  const double width = 0.37 * (top - bottom) / 0.495; // its shape at full size
+  double now[4];
+  scanRenderer->GetViewport(now);
+  const double wanted[4] = { 0.005, bottom, 0.005 + width, top };
+  bool changed = false;
+  for (int k = 0; k < 4; ++k)
+    changed = changed || std::abs(now[k] - wanted[k]) > 1e-6;
+  if (!changed)
+    return;
+  scanRenderer->SetViewport(0.005, bottom, 0.005 + width, top);
+  if (scanRenderer->GetDraw() && scanPicture.image)
+    lkapp::showScanPicture(scanRenderer, scanPicture, 12); // its title fitted to the new width
 }
 
 void Planner::showStroke()

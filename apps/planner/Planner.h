@@ -735,6 +735,9 @@ public:
   std::vector<KeptFacts> pieceFacts;
 
   void updateStatus();
+  /// The CT view between the status lines and the messages (square, at the
+  /// left): smaller where they would reach under it; redrawn when it changes.
+  void placeScanView();
 
   void showStroke();
 
