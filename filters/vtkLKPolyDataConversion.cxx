@@ -107,19 +107,23 @@ std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh)
   return problem;
 }
 
+std::string otherThanPolygons(vtkPolyData* pd)
+{
+  if (!pd || (pd->GetNumberOfVerts() == 0 && pd->GetNumberOfLines() == 0 && pd->GetNumberOfStrips() == 0))
+    return std::string();
+  std::ostringstream os;
+  os << pd->GetNumberOfVerts() << " vertex, " << pd->GetNumberOfLines() << " line and " << pd->GetNumberOfStrips()
+     << " strip cells" << (pd->GetNumberOfStrips() > 0 ? " (vtkTriangleFilter turns strips into triangles)" : "");
+  return os.str();
+}
+
 std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh)
 {
   mesh = lk::PolygonMesh();
   // Other cells first: a lattice of triangle strips only is not "empty".
-  if (pd && pd->GetNumberOfPoints() > 0 &&
-    (pd->GetNumberOfVerts() > 0 || pd->GetNumberOfLines() > 0 || pd->GetNumberOfStrips() > 0))
-  {
-    std::ostringstream os;
-    os << "a lattice is made of polygons, but this one has " << pd->GetNumberOfVerts() << " vertex, "
-       << pd->GetNumberOfLines() << " line and " << pd->GetNumberOfStrips() << " strip cells"
-       << (pd->GetNumberOfStrips() > 0 ? " (vtkTriangleFilter turns strips into triangles)" : "");
-    return os.str();
-  }
+  if (pd && pd->GetNumberOfPoints() > 0)
+    if (const std::string other = otherThanPolygons(pd); !other.empty())
+      return "a lattice is made of polygons, but this one has " + other;
   if (!pd || pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() == 0)
   {
     return "the lattice is empty (no points or no polygons)";

@@ -25,6 +25,11 @@ std::string toTriangleMesh(vtkPolyData* pd, lk::TriangleMesh& mesh);
 /// the same input checks as toTriangleMesh but for polygons.
 std::string toPolygonMesh(vtkPolyData* pd, lk::PolygonMesh& mesh);
 
+/// `pd`'s cells that are not polygons, as the end of a sentence ("3 vertex,
+/// 0 line and 2 strip cells (vtkTriangleFilter turns strips into
+/// triangles)"); empty when it has none. For filters that take polygons.
+std::string otherThanPolygons(vtkPolyData* pd);
+
 /// What makes `pd` no surface to work on, as a clause for vtkErrorMacro
 /// ("the input has no surface (no polygons or strips)", "point 5 is not
 /// finite", "every point is in one place", "the surface is too large to

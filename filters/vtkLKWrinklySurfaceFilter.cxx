@@ -1,5 +1,6 @@
 #include "vtkLKWrinklySurfaceFilter.h"
 #include "vtkLKAbort.h"
+#include "vtkLKPolyDataConversion.h"
 
 #include "latticekit/WrinklySurface.h"
 
@@ -32,15 +33,13 @@ int vtkLKWrinklySurfaceFilter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   // Other cells first: they would be left out without a word.
-  if (input && input->GetNumberOfPoints() > 0 &&
-    (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0 || input->GetNumberOfStrips() > 0))
-  {
-    vtkErrorMacro("Cannot build a wrinkly surface: the control mesh is made of polygons, but this one has "
-      << input->GetNumberOfVerts() << " vertex, " << input->GetNumberOfLines() << " line and "
-      << input->GetNumberOfStrips() << " strip cells"
-      << (input->GetNumberOfStrips() > 0 ? " (vtkTriangleFilter turns strips into triangles)" : "") << ".");
-    return 0;
-  }
+  if (input && input->GetNumberOfPoints() > 0)
+    if (const std::string other = lkvtk::otherThanPolygons(input); !other.empty())
+    {
+      vtkErrorMacro("Cannot build a wrinkly surface: the control mesh is made of polygons, but this one has "
+        << other << ".");
+      return 0;
+    }
   if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfPolys() == 0)
   {
     vtkErrorMacro("Cannot build a wrinkly surface: the control mesh has no points or no polygons.");

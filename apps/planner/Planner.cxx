@@ -901,11 +901,10 @@ void Planner::updateStatus()
 
 void Planner::placeScanView()
 {
-  // At most [0.24, 0.735] of the height and 0.37 of the width (370 pixels
-  // square in the 1000 x 750 window),
-  // from 6 pixels above the status lines' top to 6 below the messages; a
-  // quarter of the height at the least (a very long status and message
-  // list then reach under it).
+  // From 6 pixels above the status lines' top to 6 below the messages, at
+  // most [0.24, 0.735] of the height and 0.37 of the width (370 pixels
+  // square in the 1000 x 750 window), a quarter of the height at the least
+  // (a very long status and message list then reach under it).
   const int* size = window->GetSize();
   if (!size || size[0] <= 0 || size[1] <= 0)
     return;
