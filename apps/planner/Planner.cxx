@@ -440,6 +440,7 @@ void Planner::setup()
   window->SetSize(1000, 750);
   window->SetWindowName("latticekit planner");
   renderer->SetBackground(1, 1, 1);
+  renderer->AddObserver(vtkCommand::StartEvent, this, &Planner::placeCaptions);
   help->SetInput(kHelp);
   // The lines stand on a light band, readable where a zoomed bone (its
   // Metro colours) reaches under them.
@@ -596,6 +597,35 @@ void Planner::setup()
   // The stroke filter's "ends meet" is also how near a drag continues a line.
   if (const double tolerance = vtkLKStrokeFeatureLineFilter::DefaultCloseTolerance(bone); tolerance > 0.0)
     joinTolerance = tolerance;
+}
+
+void Planner::placeCaptions()
+{
+  const int* size = renderer->GetSize();
+  if (!size || size[0] <= 0)
+    return;
+  // `offset` pixels right of its point; where that passes the window's
+  // right edge, its text's width and `offset` left of it; where that passes
+  // the left edge or the CT view too, ending at the right edge (or, wider
+  // than the room, starting at its left).
+  const double leftmost = 4.0 + (scanRenderer->GetDraw() ? scanRenderer->GetViewport()[2] * size[0] : 0.0);
+  const double rightmost = size[0] - 4.0;
+  const auto place = [&](vtkCaptionActor2D* caption, double offset) {
+    const double* at = caption->GetAttachmentPoint();
+    renderer->SetWorldPoint(at[0], at[1], at[2], 1.0);
+    renderer->WorldToDisplay();
+    const double x = renderer->GetDisplayPoint()[0];
+    double text[2] = { 0.0, 0.0 };
+    caption->GetTextActor()->GetSize(renderer, text);
+    double start = x + offset; // the text's left end
+    if (start + text[0] > rightmost)
+      start = x - offset - text[0] >= leftmost ? x - offset - text[0] : std::max(leftmost, rightmost - text[0]);
+    caption->SetPosition(start - x, caption->GetPosition()[1]);
+  };
+  for (const NameCaption& c : nameCaptions)
+    place(c.actor, 20);
+  for (const auto& c : measureCaptions)
+    place(c, 15);
 }
 
 void Planner::followCamera()

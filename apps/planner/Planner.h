@@ -575,6 +575,9 @@ public:
   };
   std::vector<NameCaption> nameCaptions;
   void showNames();
+  /// Before each render: a name or a measured value whose caption would run
+  /// out of the window's right edge stands left of its point instead.
+  void placeCaptions();
   /// "piece 1 'distal segment'", or "piece 1" without a name.
   std::string pieceLabel(std::size_t p) const;
   /// Names piece p (at: the point picked on it) or, with an empty name,
