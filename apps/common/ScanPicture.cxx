@@ -2,6 +2,7 @@
 
 #include "common/AppSupport.h"
 #include "common/PlaneSection.h"
+#include "common/WrappedText.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -218,9 +219,7 @@ void fitTitle(vtkRenderer* renderer, vtkTextActor* actor, const std::string& tit
     return;
   const auto width = [&](const std::string& text) {
     actor->SetInput(text.c_str());
-    double size[2] = { 0.0, 0.0 };
-    actor->GetSize(renderer, size);
-    return size[0];
+    return textSize(renderer, actor)[0];
   };
   const double room = 0.96 * pixels[0];
   if (width(title) <= room)
@@ -240,16 +239,6 @@ void fitTitle(vtkRenderer* renderer, vtkTextActor* actor, const std::string& tit
       line += (line.empty() ? "" : " ") + part;
   }
   actor->SetInput((fitted + line).c_str());
-}
-
-/// The height of `actor`'s text in the renderer's pixels (0 without a window).
-double textHeight(vtkRenderer* renderer, vtkTextActor* actor)
-{
-  if (!renderer->GetRenderWindow())
-    return 0.0;
-  double size[2] = { 0.0, 0.0 };
-  actor->GetSize(renderer, size);
-  return size[1];
 }
 
 } // namespace
@@ -312,10 +301,10 @@ void showScanPicture(vtkRenderer* renderer, const ScanPicture& picture, int font
   // The title at the top, on as many lines as the picture's width needs;
   // the legend under it.
   auto title = label(picture.title, 0.02, 0.98, fontSize, { 1, 1, 1 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
-  const double oneLine = textHeight(renderer, title);
+  const double oneLine = textSize(renderer, title)[1];
   fitTitle(renderer, title, picture.title);
   const int* pixels = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
-  const double below = pixels && pixels[1] > 0 ? (textHeight(renderer, title) - oneLine) / pixels[1] : 0.0;
+  const double below = pixels && pixels[1] > 0 ? (textSize(renderer, title)[1] - oneLine) / pixels[1] : 0.0;
   auto legend = label(legendText,
     0.02, 0.935 - below, std::max(9, fontSize - 2), { 0.85, 0.85, 0.85 }, VTK_TEXT_LEFT, VTK_TEXT_TOP);
   legend->GetTextProperty()->BoldOff();

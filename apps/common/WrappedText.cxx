@@ -1,5 +1,8 @@
 #include "common/WrappedText.h"
 
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+
 #include <algorithm>
 #include <sstream>
 #include <vector>
@@ -70,6 +73,14 @@ std::string wrapped(const std::string& text, std::size_t width)
   if (!out.empty())
     out.pop_back();
   return out;
+}
+
+std::array<double, 2> textSize(vtkRenderer* renderer, vtkTextActor* text)
+{
+  std::array<double, 2> size{ 0.0, 0.0 };
+  if (renderer->GetRenderWindow() && text->GetInput() && *text->GetInput())
+    text->GetSize(renderer, size.data());
+  return size;
 }
 
 } // namespace lkapp

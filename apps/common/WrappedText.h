@@ -1,10 +1,14 @@
 #pragma once
 /// \file WrappedText.h
 /// Text broken into lines for a window's text actor, which draws each line
-/// whole however wide it is.
+/// whole however wide it is; the room a text actor's text takes.
 
+#include <array>
 #include <cstddef>
 #include <string>
+
+class vtkRenderer;
+class vtkTextActor;
 
 namespace lkapp
 {
@@ -16,5 +20,10 @@ namespace lkapp
 /// a line at its spaces (a longer word stays whole). Continuation lines are
 /// indented two spaces.
 std::string wrapped(const std::string& text, std::size_t width);
+
+/// The width and height in pixels that `text`'s input takes drawn in
+/// `renderer` (its font, all its lines); {0, 0} for an empty input or a
+/// renderer in no window (nothing to measure in).
+std::array<double, 2> textSize(vtkRenderer* renderer, vtkTextActor* text);
 
 } // namespace lkapp

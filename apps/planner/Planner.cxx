@@ -615,8 +615,7 @@ void Planner::placeCaptions()
     renderer->SetWorldPoint(at[0], at[1], at[2], 1.0);
     renderer->WorldToDisplay();
     const double x = renderer->GetDisplayPoint()[0];
-    double text[2] = { 0.0, 0.0 };
-    caption->GetTextActor()->GetSize(renderer, text);
+    const std::array<double, 2> text = lkapp::textSize(renderer, caption->GetTextActor());
     double start = x + offset; // the text's left end
     if (start + text[0] > rightmost)
       start = x - offset - text[0] >= leftmost ? x - offset - text[0] : std::max(leftmost, rightmost - text[0]);
@@ -938,14 +937,8 @@ void Planner::placeScanView()
   const int* size = window->GetSize();
   if (!size || size[0] <= 0 || size[1] <= 0)
     return;
-  const auto height = [&](vtkTextActor* text) {
-    double box[2] = { 0.0, 0.0 };
-    if (text->GetInput() && *text->GetInput())
-      text->GetSize(renderer, box);
-    return box[1];
-  };
-  const double statusTop = (status->GetPosition()[1] + height(status) + 6.0) / size[1];
-  const double messagesBottom = 0.985 - (height(messages) + 6.0) / size[1];
+  const double statusTop = (status->GetPosition()[1] + lkapp::textSize(renderer, status)[1] + 6.0) / size[1];
+  const double messagesBottom = 0.985 - (lkapp::textSize(renderer, messages)[1] + 6.0) / size[1];
   const double bottom = std::max(0.24, statusTop);
   const double top = std::max(bottom + 0.25, std::min(0.735, messagesBottom));
   const double width = 0.37 * (top - bottom) / 0.495; // its shape at full size
