@@ -8,6 +8,7 @@
 #include "common/AtomicFile.h"
 #include "common/CutReport.h"
 #include "common/DistanceColourBar.h"
+#include "common/LabelPlacement.h"
 #include "common/TextFont.h"
 #include "common/WrappedText.h"
 
@@ -126,7 +127,7 @@ vtkSmartPointer<vtkPolyData> ballAt(const std::array<double, 3>& centre, double 
 /// `offset` pixels from it, bold in `colour` on a light background (readable
 /// over the Metro colours), not pickable.
 vtkSmartPointer<vtkCaptionActor2D> captionActor(
-  const std::string& text, const std::array<double, 3>& colour, int fontSize, const std::array<int, 2>& offset)
+  const std::string& text, const std::array<double, 3>& colour, int fontSize, const std::array<double, 2>& offset)
 {
   auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
   caption->SetCaption(text.c_str());
@@ -604,27 +605,38 @@ void Planner::placeCaptions()
   const int* size = renderer->GetSize();
   if (!size || size[0] <= 0)
     return;
-  // `offset` pixels right of its point; where that passes the window's
-  // right edge, its text's width and `offset` left of it; where that passes
-  // the left edge or the CT view too, ending at the right edge (or, wider
-  // than the room, starting at its left).
-  const double leftmost = 4.0 + (scanRenderer->GetDraw() ? scanRenderer->GetViewport()[2] * size[0] : 0.0);
-  const double rightmost = size[0] - 4.0;
-  const auto place = [&](vtkCaptionActor2D* caption, double offset) {
+  // Beside its point, right of it (left where the right edge is near),
+  // right of the CT view and between the status lines and the messages
+  // (where they leave a fifth of the window; else the whole height), not
+  // over a caption placed before it: the names in the pieces' order, then
+  // the measured values.
+  std::array<double, 2> band = betweenTheTexts();
+  if (band[1] - band[0] < 0.2 * size[1])
+    band = { 4.0, size[1] - 4.0 };
+  const lkapp::LabelRoom room{ 4.0 + (scanRenderer->GetDraw() ? scanRenderer->GetViewport()[2] * size[0] : 0.0),
+    band[0], size[0] - 4.0, band[1] };
+  std::vector<vtkCaptionActor2D*> captions;
+  std::vector<lkapp::Label> labels;
+  const auto add = [&](vtkCaptionActor2D* caption, const std::array<double, 2>& offset) {
     const double* at = caption->GetAttachmentPoint();
     renderer->SetWorldPoint(at[0], at[1], at[2], 1.0);
     renderer->WorldToDisplay();
-    const double x = renderer->GetDisplayPoint()[0];
-    const std::array<double, 2> text = lkapp::textSize(renderer, caption->GetTextActor());
-    double start = x + offset; // the text's left end
-    if (start + text[0] > rightmost)
-      start = x - offset - text[0] >= leftmost ? x - offset - text[0] : std::max(leftmost, rightmost - text[0]);
-    caption->SetPosition(start - x, caption->GetPosition()[1]);
+    const double* shown = renderer->GetDisplayPoint();
+    if (shown[0] < 0.0 || shown[0] > size[0] || shown[1] < 0.0 || shown[1] > size[1])
+    {
+      caption->SetPosition(offset[0], offset[1]); // out of the window with its point (a view zoomed in)
+      return;
+    }
+    captions.push_back(caption);
+    labels.push_back({ { shown[0], shown[1] }, lkapp::textSize(renderer, caption->GetTextActor()), offset });
   };
   for (const NameCaption& c : nameCaptions)
-    place(c.actor, 20);
+    add(c.actor, NameCaptionOffset);
   for (const auto& c : measureCaptions)
-    place(c, 15);
+    add(c, MeasureCaptionOffset);
+  const std::vector<std::array<double, 2>> offsets = lkapp::placeLabels(labels, room);
+  for (std::size_t i = 0; i < captions.size(); ++i)
+    captions[i]->SetPosition(offsets[i][0], offsets[i][1]);
 }
 
 void Planner::followCamera()
@@ -937,8 +949,8 @@ void Planner::placeScanView()
   const int* size = window->GetSize();
   if (!size || size[0] <= 0 || size[1] <= 0)
     return;
-  const double statusTop = (status->GetPosition()[1] + lkapp::textSize(renderer, status)[1] + 6.0) / size[1];
-  const double messagesBottom = 0.985 - (lkapp::textSize(renderer, messages)[1] + 6.0) / size[1];
+  const std::array<double, 2> band = betweenTheTexts();
+  const double statusTop = band[0] / size[1], messagesBottom = band[1] / size[1];
   const double bottom = std::max(0.24, statusTop);
   const double top = std::max(bottom + 0.25, std::min(0.735, messagesBottom));
   const double width = 0.37 * (top - bottom) / 0.495; // its shape at full size
@@ -953,6 +965,13 @@ void Planner::placeScanView()
   scanRenderer->SetViewport(0.005, bottom, 0.005 + width, top);
   if (scanRenderer->GetDraw() && scanPicture.image)
     lkapp::showScanPicture(scanRenderer, scanPicture, 12); // its title fitted to the new width
+}
+
+std::array<double, 2> Planner::betweenTheTexts() const
+{
+  const int* size = window->GetSize();
+  return { status->GetPosition()[1] + lkapp::textSize(renderer, status)[1] + 6.0,
+    0.985 * size[1] - lkapp::textSize(renderer, messages)[1] - 6.0 };
 }
 
 void Planner::showStroke()

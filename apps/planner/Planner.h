@@ -575,8 +575,8 @@ public:
   };
   std::vector<NameCaption> nameCaptions;
   void showNames();
-  /// Before each render: a name or a measured value whose caption would run
-  /// out of the window's right edge stands left of its point instead.
+  /// Before each render: where each name and measured value stands beside
+  /// its point, in the window and not over another (lkapp::placeLabels).
   void placeCaptions();
   /// "piece 1 'distal segment'", or "piece 1" without a name.
   std::string pieceLabel(std::size_t p) const;
@@ -741,6 +741,9 @@ public:
   /// The CT view between the status lines and the messages (square, at the
   /// left): smaller where they would reach under it; redrawn when it changes.
   void placeScanView();
+  /// The height in pixels between the status lines and the messages: 6
+  /// pixels above the status's top and 6 below the messages' bottom.
+  std::array<double, 2> betweenTheTexts() const;
 
   void showStroke();
 

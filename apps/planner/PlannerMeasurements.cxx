@@ -254,7 +254,7 @@ void Planner::showMeasurements()
         label[k] = 0.5 * (shown.from[k] + shown.to[k]);
     }
     const std::string text = valueText(shown);
-    auto caption = captionActor(text, { 0.45, 0.0, 0.4 }, 14, { 15, -30 });
+    auto caption = captionActor(text, { 0.45, 0.0, 0.4 }, 14, MeasureCaptionOffset);
     caption->SetAttachmentPoint(label.data());
     renderer->AddViewProp(caption);
     measureCaptions.push_back(caption);

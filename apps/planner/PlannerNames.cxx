@@ -92,7 +92,7 @@ void Planner::showNames()
     if (i < 0)
       continue;
     const std::string& name = session.names[static_cast<std::size_t>(i)].name;
-    auto caption = captionActor(name, { 0.1, 0.1, 0.4 }, 15, { 20, 20 }); // moved to its point by placeSegment
+    auto caption = captionActor(name, { 0.1, 0.1, 0.4 }, 15, NameCaptionOffset); // moved to its point by placeSegment
     renderer->AddViewProp(caption);
     nameCaptions.push_back({ static_cast<int>(p), session.names[static_cast<std::size_t>(i)].at, caption });
   }

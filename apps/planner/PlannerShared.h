@@ -35,7 +35,12 @@ vtkSmartPointer<vtkPolyData> ballAt(const std::array<double, 3>& centre, double 
 /// `offset` pixels from it, bold in `colour` on a light background (readable
 /// over the Metro colours), not pickable.
 vtkSmartPointer<vtkCaptionActor2D> captionActor(
-  const std::string& text, const std::array<double, 3>& colour, int fontSize, const std::array<int, 2>& offset);
+  const std::string& text, const std::array<double, 3>& colour, int fontSize, const std::array<double, 2>& offset);
+
+/// Where a piece's name and a measured value stand from their points when
+/// nothing is in the way (Planner::placeCaptions), in pixels.
+constexpr std::array<double, 2> NameCaptionOffset{ 20.0, 20.0 };
+constexpr std::array<double, 2> MeasureCaptionOffset{ 15.0, -30.0 };
 
 /// A plane's square drawn by two actors: a faint sheet and its outline,
 /// through its four corners in order around it.
