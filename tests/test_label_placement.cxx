@@ -50,7 +50,7 @@ TEST(LabelPlacement, LabelsApartKeepTheirPlacesBesideTheirPoints)
   }
 }
 
-TEST(LabelPlacement, ALabelThatWouldPassTheRightEdgeStandsLeftOfItsPointOrEndsAtTheEdge)
+TEST(LabelPlacement, ALabelThatWouldPassTheRoomsEdgeStandsOnTheOtherSideOfItsPointOrInsideTheRoom)
 {
   // Left of its point where there is room, as far from it as it would
   // stand right of it.
@@ -60,6 +60,10 @@ TEST(LabelPlacement, ALabelThatWouldPassTheRightEdgeStandsLeftOfItsPointOrEndsAt
   // Room on neither side: it ends at the right edge.
   offsets = lkapp::placeLabels({ name(900, 300) }, { 650.0, 4.0, 996.0, 746.0 });
   EXPECT_DOUBLE_EQ(900.0 + offsets[0][0] + 300.0, 996.0);
+  // Its point left of the room (behind the CT view): it starts at the
+  // room's left.
+  offsets = lkapp::placeLabels({ name(300, 300) }, { 400.0, 4.0, 996.0, 746.0 });
+  EXPECT_DOUBLE_EQ(300.0 + offsets[0][0], 400.0);
   // Wider than the room: it starts at the room's left.
   offsets = lkapp::placeLabels({ name(900, 300, 400) }, { 650.0, 4.0, 996.0, 746.0 });
   EXPECT_DOUBLE_EQ(900.0 + offsets[0][0], 650.0);

@@ -39,20 +39,15 @@ std::vector<std::array<double, 2>> placeLabels(
       offsets.push_back(label.offset);
       continue;
     }
-    // Its sides: as `offset` says, else the other side of its point, else
-    // ending at the right edge; the other side too where it fits.
+    // Its sides: as `offset` says and the other side of its point, those
+    // within the room; where neither is, as `offset` says moved into it.
     std::vector<double> starts;
     const double asSaid = x + label.offset[0], mirrored = x - label.offset[0] - w;
-    if (asSaid + w <= right)
-    {
-      starts.push_back(asSaid);
-      if (mirrored >= left)
-        starts.push_back(mirrored);
-    }
-    else if (mirrored >= left)
-      starts.push_back(mirrored);
-    else
-      starts.push_back(std::max(left, right - w));
+    for (const double start : { asSaid, mirrored })
+      if (start >= left && start + w <= right)
+        starts.push_back(start);
+    if (starts.empty())
+      starts.push_back(std::max(left, std::min(asSaid, right - w)));
     // Its heights: as `offset` says (within the room where the room is high
     // enough), then a line further from its point, a line nearer, two ...
     double first = y + label.offset[1];

@@ -25,9 +25,10 @@ using LabelRoom = std::array<double, 4>;
 
 /// For each label, in order, the offset of its text's lower-left corner
 /// from its point. A label stands right of its point as `offset` says, or
-/// left of it where the right would pass the room's right edge, or ends at
-/// that edge where both sides would pass the room (starting at its left
-/// where it is wider than the room). A label that would lie over one
+/// left of it where the right would pass the room's right edge, or, where
+/// both sides would pass the room, as `offset` says moved into the room
+/// (ending at its right edge, or starting at its left; at its left where it
+/// is wider than the room). A label that would lie over one
 /// placed before it (with `gap` pixels between them) goes to the other side
 /// of its point, then a line further from its point (up where `offset[1]`
 /// >= 0), then a line nearer, then two lines, ... (a line being its height

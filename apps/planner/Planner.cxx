@@ -622,11 +622,12 @@ void Planner::placeCaptions()
     renderer->SetWorldPoint(at[0], at[1], at[2], 1.0);
     renderer->WorldToDisplay();
     const double* shown = renderer->GetDisplayPoint();
-    if (shown[0] < 0.0 || shown[0] > size[0] || shown[1] < 0.0 || shown[1] > size[1])
-    {
-      caption->SetPosition(offset[0], offset[1]); // out of the window with its point (a view zoomed in)
+    // Its point out of the window (a view zoomed in): hidden, not cut off
+    // at the window's edge.
+    const bool inWindow = shown[0] >= 0.0 && shown[0] <= size[0] && shown[1] >= 0.0 && shown[1] <= size[1];
+    caption->SetVisibility(inWindow);
+    if (!inWindow)
       return;
-    }
     captions.push_back(caption);
     labels.push_back({ { shown[0], shown[1] }, lkapp::textSize(renderer, caption->GetTextActor()), offset });
   };
