@@ -606,15 +606,16 @@ void Planner::placeCaptions()
   if (!size || size[0] <= 0)
     return;
   // Beside its point, right of it (left where the right edge is near),
-  // right of the CT view and between the status lines and the messages
-  // (where they leave a fifth of the window; else the whole height), not
-  // over a caption placed before it: the names in the pieces' order, then
-  // the measured values.
+  // right of the CT view, left of the distance colour bar, and between the
+  // status lines and the messages (where they leave a fifth of the window;
+  // else the whole height), not over a caption placed before it: the names
+  // in the pieces' order, then the measured values.
   std::array<double, 2> band = betweenTheTexts();
   if (band[1] - band[0] < 0.2 * size[1])
     band = { 4.0, size[1] - 4.0 };
-  const lkapp::LabelRoom room{ 4.0 + (scanRenderer->GetDraw() ? scanRenderer->GetViewport()[2] * size[0] : 0.0),
-    band[0], size[0] - 4.0, band[1] };
+  const double left = 4.0 + (scanRenderer->GetDraw() ? scanRenderer->GetViewport()[2] * size[0] : 0.0);
+  const double right = (scalarBar->GetVisibility() ? scalarBar->GetPosition()[0] : 1.0) * size[0] - 4.0;
+  const lkapp::LabelRoom room{ left, band[0], std::max(right, left + 0.25 * size[0]), band[1] };
   std::vector<vtkCaptionActor2D*> captions;
   std::vector<lkapp::Label> labels;
   const auto add = [&](vtkCaptionActor2D* caption, const std::array<double, 2>& offset) {
