@@ -741,8 +741,8 @@ public:
   /// The CT view between the status lines and the messages (square, at the
   /// left): smaller where they would reach under it; redrawn when it changes.
   void placeScanView();
-  /// The height in pixels between the status lines and the messages: 6
-  /// pixels above the status's top and 6 below the messages' bottom.
+  /// The band of the window between the status lines and the messages: its
+  /// bottom 6 pixels above the status's top, its top 6 below the messages.
   std::array<double, 2> betweenTheTexts() const;
 
   void showStroke();
