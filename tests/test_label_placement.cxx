@@ -114,10 +114,26 @@ TEST(LabelPlacement, WithNoFreePlaceALabelKeepsItsFirstAndTheRestArePlaced)
   // apart from the first; it keeps its first place, and the third is placed.
   const lkapp::LabelRoom narrow{ 0.0, 0.0, 330.0, 20.0 };
   const std::vector<lkapp::Label> labels{ name(0, 0), name(0, 0), { { 10, 0 }, { 0, 0 }, { 5, 5 } } };
-  const auto offsets = lkapp::placeLabels(labels, narrow);
+  const auto offsets = lkapp::placeLabels(labels, narrow, {});
   ASSERT_EQ(offsets.size(), 3u);
   EXPECT_EQ(offsets[0], offsets[1]);
   // No text: its offset as given, and in no one's way.
   EXPECT_DOUBLE_EQ(offsets[2][0], 5.0);
   EXPECT_DOUBLE_EQ(offsets[2][1], 5.0);
+}
+
+TEST(LabelPlacement, ALabelKeepsOutOfThePartsGiven)
+{
+  // The orientation cube at the window's top right: a name of a point below
+  // it stands clear of it, a line lower, on the point's other side, or ...
+  const lkapp::LabelRoom cube{ 870.0, 638.0, 996.0, 746.0 };
+  const lkapp::Label label = name(600, 630);
+  const auto free = lkapp::placeLabels({ label }, Window);
+  ASSERT_TRUE(overlap({ 620, 650, 920, 668 }, { cube[0], cube[1], cube[2], cube[3] })); // its place without the cube
+  EXPECT_DOUBLE_EQ(free[0][0], 20.0);
+  const auto offsets = lkapp::placeLabels({ label }, Window, { cube });
+  const auto boxes = boxesOf({ label }, offsets);
+  EXPECT_FALSE(overlap(boxes[0], { cube[0], cube[1], cube[2], cube[3] }));
+  EXPECT_DOUBLE_EQ(offsets[0][0], -320.0); // the other side, at the same height
+  EXPECT_DOUBLE_EQ(offsets[0][1], 20.0);
 }

@@ -22,13 +22,15 @@ bool apart(const Box& a, const Box& b, double gap)
 
 } // namespace
 
-std::vector<std::array<double, 2>> placeLabels(
-  const std::vector<Label>& labels, const LabelRoom& room, double gap, int steps)
+std::vector<std::array<double, 2>> placeLabels(const std::vector<Label>& labels, const LabelRoom& room,
+  const std::vector<LabelRoom>& keepOut, double gap, int steps)
 {
   const double left = room[0], bottom = room[1], right = room[2], top = room[3];
-  std::vector<Box> placed;
+  std::vector<Box> placed; // the parts kept out of, then the labels placed
+  for (const LabelRoom& part : keepOut)
+    placed.push_back({ part[0], part[1], part[2] - part[0], part[3] - part[1] });
   std::vector<std::array<double, 2>> offsets;
-  placed.reserve(labels.size());
+  placed.reserve(placed.size() + labels.size());
   offsets.reserve(labels.size());
   for (const Label& label : labels)
   {

@@ -20,7 +20,8 @@ struct Label
   std::array<double, 2> offset{ 0.0, 0.0 };
 };
 
-/// The part of the view the labels may take: left, bottom, right, top.
+/// The part of the view the labels may take, or a part they must keep out
+/// of: left, bottom, right, top.
 using LabelRoom = std::array<double, 4>;
 
 /// For each label, in order, the offset of its text's lower-left corner
@@ -29,14 +30,15 @@ using LabelRoom = std::array<double, 4>;
 /// both sides would pass the room, as `offset` says moved into the room
 /// (ending at its right edge, or starting at its left; at its left where it
 /// is wider than the room). A label that would lie over one
-/// placed before it (with `gap` pixels between them) goes to the other side
+/// placed before it or over one of `keepOut` (with `gap` pixels between
+/// them) goes to the other side
 /// of its point, then a line further from its point (up where `offset[1]`
 /// >= 0), then a line nearer, then two lines, ... (a line being its height
 /// and `gap`) within the room, at the first place free of them; it keeps
 /// the first place where none is free within `steps` lines. Its height is
 /// kept within the room where the room is high enough. A label of no size
 /// (no text) keeps `offset` and is in no other's way.
-std::vector<std::array<double, 2>> placeLabels(
-  const std::vector<Label>& labels, const LabelRoom& room, double gap = 3.0, int steps = 12);
+std::vector<std::array<double, 2>> placeLabels(const std::vector<Label>& labels, const LabelRoom& room,
+  const std::vector<LabelRoom>& keepOut = {}, double gap = 3.0, int steps = 12);
 
 } // namespace lkapp

@@ -608,8 +608,9 @@ void Planner::placeCaptions()
   // Beside its point, right of it (left where the right edge is near),
   // right of the CT view, left of the distance colour bar, and between the
   // status lines and the messages (where they leave a fifth of the window;
-  // else the whole height), not over a caption placed before it: the names
-  // in the pieces' order, then the measured values.
+  // else the whole height), not over the orientation cube nor a caption
+  // placed before it: the names in the pieces' order, then the measured
+  // values.
   std::array<double, 2> band = betweenTheTexts();
   if (band[1] - band[0] < 0.2 * size[1])
     band = { 4.0, size[1] - 4.0 };
@@ -636,7 +637,13 @@ void Planner::placeCaptions()
     add(c.actor, NameCaptionOffset);
   for (const auto& c : measureCaptions)
     add(c, MeasureCaptionOffset);
-  const std::vector<std::array<double, 2>> offsets = lkapp::placeLabels(labels, room);
+  std::vector<lkapp::LabelRoom> keepOut; // the orientation cube, where it is shown
+  if (window->HasRenderer(markerRenderer))
+  {
+    const double* v = markerRenderer->GetViewport();
+    keepOut.push_back({ v[0] * size[0], v[1] * size[1], v[2] * size[0], v[3] * size[1] });
+  }
+  const std::vector<std::array<double, 2>> offsets = lkapp::placeLabels(labels, room, keepOut);
   for (std::size_t i = 0; i < captions.size(); ++i)
     captions[i]->SetPosition(offsets[i][0], offsets[i][1]);
 }
