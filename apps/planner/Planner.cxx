@@ -30,6 +30,7 @@
 #include <vtkExtractEdges.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
+#include <vtkInteractorObserver.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -621,9 +622,8 @@ void Planner::placeCaptions()
   std::vector<lkapp::Label> labels;
   const auto add = [&](vtkCaptionActor2D* caption, const std::array<double, 2>& offset) {
     const double* at = caption->GetAttachmentPoint();
-    renderer->SetWorldPoint(at[0], at[1], at[2], 1.0);
-    renderer->WorldToDisplay();
-    const double* shown = renderer->GetDisplayPoint();
+    double shown[3];
+    vtkInteractorObserver::ComputeWorldToDisplay(renderer, at[0], at[1], at[2], shown);
     // Its point out of the window (a view zoomed in): hidden, not cut off
     // at the window's edge.
     const bool inWindow = shown[0] >= 0.0 && shown[0] <= size[0] && shown[1] >= 0.0 && shown[1] <= size[1];
