@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <exception>
 #include <set>
 #include <sstream>
 #include <string>
@@ -540,10 +541,21 @@ int vtkLKBoneSurfaceFilter::RequestData(
     filled->DeepCopy(smoothed);
     vtkDataArray* scalars = filled->GetPointData()->GetScalars();
     const vtkIdType n = scalars->GetNumberOfTuples();
-    std::vector<char> low(static_cast<std::size_t>(n));
-    for (vtkIdType v = 0; v < n; ++v)
-      low[static_cast<std::size_t>(v)] = scalars->GetComponent(v, 0) < this->EffectiveIsoValue;
-    const std::vector<char> enclosed = lk::enclosedBackground(low, dims[0], dims[1], dims[2], true);
+    std::vector<char> enclosed;
+    try
+    {
+      std::vector<char> low(static_cast<std::size_t>(n));
+      for (vtkIdType v = 0; v < n; ++v)
+        low[static_cast<std::size_t>(v)] = scalars->GetComponent(v, 0) < this->EffectiveIsoValue;
+      int size[3]; // the volume's as cropped or padded, not the input's
+      filled->GetDimensions(size);
+      enclosed = lk::enclosedBackground(low, size[0], size[1], size[2], true);
+    }
+    catch (const std::exception& e) // out of memory for a huge volume's flags
+    {
+      vtkErrorMacro("Cannot fill the cavities: " << e.what());
+      return 0;
+    }
     const double top = scalars->GetRange(0)[1];
     for (vtkIdType v = 0; v < n; ++v)
       if (enclosed[static_cast<std::size_t>(v)])

@@ -5,6 +5,7 @@
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKMeshRepairFilter.h"
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDICOMCompiler.h>
 #include <vtkDICOMItem.h>
@@ -16,6 +17,7 @@
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkMassProperties.h>
+#include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -29,6 +31,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -379,6 +382,58 @@ TEST(BoneSurface, CloseAtBorderClosesBoneThatTheScansBorderCuts)
     const double spacing = reader->GetOutput()->GetSpacing()[c];
     EXPECT_GE(sb[2 * c], vb[2 * c] - 0.5 * spacing - 1e-6);
     EXPECT_LE(sb[2 * c + 1], vb[2 * c + 1] + 0.5 * spacing + 1e-6);
+  }
+}
+
+TEST(BoneSurface, CavitiesAreFilledInACropBoxAndWithTheBorderClosed)
+{
+  // A hollow cube of bone (1000 HU, walls 3 voxels thick, 6 x 6 x 6 voxels of
+  // air inside) in soft tissue (0 HU), touching the volume's border at x = 0.
+  // FillCavities takes the air inside, within a crop box and with the border
+  // closed too (the flood fill took the uncropped volume's size, and both
+  // stopped the program).
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(20, 20, 20);
+  volume->AllocateScalars(VTK_SHORT, 1);
+  for (int k = 0; k < 20; ++k)
+    for (int j = 0; j < 20; ++j)
+      for (int i = 0; i < 20; ++i)
+      {
+        const bool block = i <= 11 && j >= 3 && j <= 14 && k >= 3 && k <= 14;
+        const bool cavity = i >= 3 && i <= 8 && j >= 6 && j <= 11 && k >= 6 && k <= 11;
+        volume->SetScalarComponentFromDouble(i, j, k, 0, block && !cavity ? 1000.0 : 0.0);
+      }
+  auto surface = [&](bool crop, bool close, bool fill, int* errors) {
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputData(volume);
+    bone->SetIsoValue(500.0);
+    bone->SetCropping(crop);
+    const double box[6] = { 0.0, 16.0, 1.0, 17.0, 1.0, 17.0 };
+    bone->SetCropBox(box);
+    bone->SetCloseAtBorder(close);
+    bone->SetFillCavities(fill);
+    bone->SetExtractionModeToAllComponents();
+    lktest::ErrorRecorder rec(bone);
+    bone->Update();
+    *errors = rec.errors;
+    return lktest::toCore(bone->GetOutput());
+  };
+  for (const bool crop : { true, false })
+  {
+    SCOPED_TRACE(crop ? "in a crop box" : "with the border closed");
+    int errors = 0;
+    const lk::TriangleMesh hollow = surface(crop, !crop, false, &errors);
+    ASSERT_EQ(errors, 0);
+    const lk::TriangleMesh filled = surface(crop, !crop, true, &errors);
+    ASSERT_EQ(errors, 0);
+    EXPECT_EQ(lk::countBoundaryEdges(filled), 0u);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(filled), "");
+    // Filled: the block alone, 12 x 12 x 12 voxels, its border half a
+    // voxel beyond its last voxels where it meets the padding (x = -0.5)
+    // and about that elsewhere; hollow: less the cavity's 6^3.
+    EXPECT_NEAR(lk::signedVolume(filled), 12.0 * 12.0 * 12.0, 0.05 * 1728.0);
+    EXPECT_NEAR(lk::signedVolume(hollow), 1728.0 - 216.0, 0.06 * 1728.0);
+    EXPECT_LT(filled.points.size(), hollow.points.size());
   }
 }
 
