@@ -25,6 +25,7 @@ bench: setup
 	build/bin/bench_ifs
 	build/bin/bench_osteotomy sample_data
 	build/bin/bench_wrinkly
+	build/bin/bench_surface sample_data
 	build/bin/bench_symmetry sample_data
 	build/bin/bench_patch_deformation
 

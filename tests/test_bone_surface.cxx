@@ -437,6 +437,64 @@ TEST(BoneSurface, CavitiesAreFilledInACropBoxAndWithTheBorderClosed)
   }
 }
 
+TEST(BoneSurface, ALabelMapsSurfaceDoesNotDependOnTheEmptyGridAroundIt)
+{
+  // The filter smooths and contours only a label map's content and a margin
+  // of background. The same ball of label in a 50^3 grid (background more
+  // than twice the Gaussian's reach round it) and in a 130^3 grid, its origin
+  // moved so that the ball's voxels lie at the same points, gives the same
+  // surface point for point (to the float points' rounding); and so does a
+  // ball cut by the grid's low x edge with the grid larger on its other sides
+  // only.
+  auto ball = [](int n, int offset, double cx, double sigma) {
+    vtkNew<vtkImageData> volume;
+    volume->SetDimensions(n, n, n);
+    volume->SetOrigin(-offset * 1.5, -offset * 1.0, -offset * 2.5);
+    volume->SetSpacing(1.5, 1.0, 2.5);
+    volume->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    auto* v = static_cast<unsigned char*>(volume->GetScalarPointer());
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+          const double x = i - offset - cx, y = j - offset - 24.5, z = k - offset - 24.5;
+          *v++ = x * x + 0.8 * y * y + 1.3 * z * z <= 64.0;
+        }
+    vtkNew<vtkLKBoneSurfaceFilter> bone;
+    bone->SetInputData(volume);
+    bone->SetImageSmoothing(sigma);
+    bone->SetExtractionModeToAllComponents();
+    lktest::ErrorRecorder rec(bone);
+    bone->Update();
+    EXPECT_EQ(rec.errors, 0) << rec.messages;
+    EXPECT_TRUE(bone->GetTreatedAsLabelMap());
+    vtkSmartPointer<vtkPolyData> out = vtkSmartPointer<vtkPolyData>::New();
+    out->DeepCopy(bone->GetOutput());
+    return out;
+  };
+  auto expectSame = [](vtkPolyData* a, vtkPolyData* b) {
+    ASSERT_GT(a->GetNumberOfPoints(), 100);
+    ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+    ASSERT_EQ(a->GetNumberOfPolys(), b->GetNumberOfPolys());
+    double largest = 0.0;
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+      largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(a->GetPoint(i), b->GetPoint(i))));
+    EXPECT_LT(largest, 1e-4); // the points are floats: 36 mm from another origin rounds at 1.5e-5
+    vtkDataArray* ca = a->GetPolys()->GetConnectivityArray();
+    vtkDataArray* cb = b->GetPolys()->GetConnectivityArray();
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < ca->GetNumberOfValues(); ++i)
+      differ += ca->GetComponent(i, 0) != cb->GetComponent(i, 0);
+    EXPECT_EQ(differ, 0);
+  };
+  for (const double sigma : { 1.0, 2.5, 0.0 })
+  {
+    SCOPED_TRACE("sigma " + std::to_string(sigma));
+    expectSame(ball(50, 0, 24.5, sigma), ball(130, 40, 24.5, sigma));
+    expectSame(ball(50, 0, 5.0, sigma), ball(130, 0, 5.0, sigma));
+  }
+}
+
 TEST(BoneSurface, IsoValueOutsideTheDataRangeIsAClearError)
 {
   const Surface s = extract(cthead, 5000.0);
