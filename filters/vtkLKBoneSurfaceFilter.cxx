@@ -3,8 +3,10 @@
 #include "vtkLKProgressRelay.h"
 
 #include "vtkLKMeshRepairFilter.h"
+#include "vtkLKPolyDataConversion.h"
 
 #include "latticekit/CavityFill.h"
+#include "latticekit/ManifoldRepair.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkDataArray.h>
@@ -13,7 +15,6 @@
 #include <vtkExtractVOI.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkMassProperties.h>
-#include <vtkFeatureEdges.h>
 #include <vtkImageCast.h>
 #include <vtkImageConstantPad.h>
 #include <vtkImageData.h>
@@ -687,17 +688,17 @@ int vtkLKBoneSurfaceFilter::RequestData(
         labelled += values->GetComponent(v, 0) >= 0.5;
     const double* h = volume->GetSpacing();
     const double voxels = static_cast<double>(labelled) * std::abs(h[0] * h[1] * h[2]);
-    vtkNew<vtkFeatureEdges> open;
-    open->SetInputConnection(contour->GetOutputPort());
-    open->BoundaryEdgesOn();
-    open->NonManifoldEdgesOff();
-    open->FeatureEdgesOff();
-    open->ManifoldEdgesOff();
-    open->Update();
+    // Closed: every edge between two triangles. (VTK 9.1's vtkFeatureEdges
+    // reserves points^2 / 200 ids for its lines, 3 GB for a skull's 230,000
+    // points, and stops the program past about 750,000.)
+    lk::TriangleMesh contoured;
+    const bool closed =
+      lkvtk::toTriangleMesh(contour->GetOutput(), contoured).empty() && lk::countBoundaryEdges(contoured) == 0;
+    contoured = lk::TriangleMesh();
     vtkNew<vtkMassProperties> enclosed;
     enclosed->SetInputConnection(contour->GetOutputPort());
     enclosed->Update();
-    if (open->GetOutput()->GetNumberOfCells() == 0 && voxels > 0.0 && enclosed->GetVolume() < 0.8 * voxels)
+    if (closed && voxels > 0.0 && enclosed->GetVolume() < 0.8 * voxels)
       vtkWarningMacro("The label map's smoothing (a Gaussian of " << sigma << " voxel) left "
         << std::lround(100.0 * enclosed->GetVolume() / voxels) << " % of the labelled voxels' volume inside the "
         << "surface: a structure a few voxels thin (a guide's wall) is eaten away; ImageSmoothing 0 "
