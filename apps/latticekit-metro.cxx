@@ -102,7 +102,7 @@ int main(int argc, char* argv[])
 {
   lkapp::installCrashReport("latticekit-metro");
   std::vector<std::string> inputs;
-  std::string colored;
+  std::string colored, methodOption;
   long samples = 0, seed = 5489;
   double density = 0.0;
   bool vertex = true, edge = true, face = true, symmetric = true, quiet = false, allSamples = false;
@@ -118,9 +118,15 @@ int main(int argc, char* argv[])
     else if (a == "--seed")
       seed = args.integer(a, std::numeric_limits<long>::min(), std::numeric_limits<long>::max(), "an integer");
     else if (a == "--similar")
+    {
+      args.exclusive(a, methodOption);
       method = vtkLKMetroFilter::SIMILAR_TRIANGLES;
+    }
     else if (a == "--montecarlo")
+    {
+      args.exclusive(a, methodOption);
       method = vtkLKMetroFilter::MONTE_CARLO;
+    }
     else if (a == "--no-vertex")
       vertex = false;
     else if (a == "--no-edge")

@@ -78,6 +78,7 @@ int main(int argc, char* argv[])
   int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
   long label = 0;
   std::string labelName, roiName;
+  std::string componentOption, labelMapOption; // the one given of each group that excludes each other
   bool repair = true, quiet = false, fillCavities = false;
   lkapp::Arguments args(argc, argv, usage);
   const double inf = std::numeric_limits<double>::max();
@@ -92,11 +93,18 @@ int main(int argc, char* argv[])
       isoGiven = true;
     }
     else if (a == "--largest")
+    {
+      args.exclusive(a, componentOption);
       mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
+    }
     else if (a == "--all")
+    {
+      args.exclusive(a, componentOption);
       mode = vtkLKBoneSurfaceFilter::ALL_COMPONENTS;
+    }
     else if (a == "--seed")
     {
+      args.exclusive(a, componentOption);
       args.triple(a, seed);
       mode = vtkLKBoneSurfaceFilter::SEEDED_COMPONENT;
     }
@@ -112,9 +120,15 @@ int main(int argc, char* argv[])
     else if (a == "--image-smooth")
       imageSmooth = args.number(a, 0.0, 20.0, "a number from 0 to 20");
     else if (a == "--label-map")
+    {
+      args.exclusive(a, labelMapOption);
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_ON;
+    }
     else if (a == "--no-label-map")
+    {
+      args.exclusive(a, labelMapOption);
       labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_OFF;
+    }
     else if (a == "--label")
       args.labelOrName(a, label, labelName);
     else if (a == "--roi")

@@ -1183,6 +1183,16 @@ void Arguments::positional(const std::string& arg, std::string& slot, const char
   slot = arg;
 }
 
+void Arguments::exclusive(const std::string& arg, std::string& chosen)
+{
+  if (!chosen.empty() && chosen != arg)
+  {
+    std::cerr << "error: " << chosen << " and " << arg << " exclude each other: give one\n";
+    std::exit(2);
+  }
+  chosen = arg;
+}
+
 long long fileBytes(const std::string& path)
 {
   return static_cast<long long>(vtksys::SystemTools::FileLength(path));

@@ -219,6 +219,11 @@ public:
   /// Stores a positional argument in `slot`; exits 2 with "more than one
   /// WHAT given" when the slot is already taken.
   void positional(const std::string& arg, std::string& slot, const char* what);
+  /// Records `arg` as the option taken from a group of options that
+  /// exclude each other (`chosen`, empty before the first); exits 2 with
+  /// "--all and --seed exclude each other" when another of the group was
+  /// given (the same one twice is fine).
+  void exclusive(const std::string& arg, std::string& chosen);
   /// Exits 2 for an option the tool does not know.
   [[noreturn]] void unknown(const std::string& arg);
   /// True for an argument that looks like an option.
