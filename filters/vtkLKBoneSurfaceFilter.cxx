@@ -141,6 +141,22 @@ bool contentExtent(vtkImageData* image, double background, int extent[6])
   return found;
 }
 
+/// The voxels of a label map at 0.5 or above (its label's).
+vtkIdType labelledVoxels(vtkImageData* image)
+{
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  const vtkIdType count = values->GetNumberOfTuples();
+  if (values->GetDataType() == VTK_UNSIGNED_CHAR && values->GetNumberOfComponents() == 1)
+  {
+    const auto* v = static_cast<const unsigned char*>(values->GetVoidPointer(0));
+    return static_cast<vtkIdType>(std::count_if(v, v + count, [](unsigned char x) { return x != 0; }));
+  }
+  vtkIdType labelled = 0;
+  for (vtkIdType v = 0; v < count; ++v)
+    labelled += values->GetComponent(v, 0) >= 0.5;
+  return labelled;
+}
+
 bool isBinaryLabelMap(vtkImageData* image)
 {
   vtkDataArray* s = image->GetPointData()->GetScalars();
@@ -662,7 +678,20 @@ int vtkLKBoneSurfaceFilter::RequestData(
   contour->Update();
   if (contour->GetOutput()->GetNumberOfPolys() == 0)
   {
-    vtkErrorMacro("No surface at iso value " << this->EffectiveIsoValue << ".");
+    // A label map's few or thin voxels that the Gaussian took below 0.5
+    // (--label 1 on a CT: its scattered voxels of 1 HU) are said so.
+    std::ostringstream why;
+    if (this->TreatedAsLabelMap && sigma > 0.0)
+    {
+      const vtkIdType labelled = labelledVoxels(volume);
+      why << " The label map's " << labelled << " labelled voxel" << (labelled == 1 ? " lies" : "s lie")
+          << " too thin or too far apart: the Gaussian of " << sigma << " voxel (ImageSmoothing) leaves none at 0.5; "
+          << "ImageSmoothing 0 (--image-smooth 0) keeps them";
+      if (label > 0)
+        why << " (is the input a label map? label " << label << " was taken from it)";
+      why << ".";
+    }
+    vtkErrorMacro("No surface at iso value " << this->EffectiveIsoValue << "." << why.str());
     return 0;
   }
   if (lkvtk::stopRequested(this, { output }))
@@ -675,17 +704,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
   // surface encloses much less than the labelled voxels do.
   if (this->TreatedAsLabelMap && sigma > 0.0 && !this->FillCavities)
   {
-    vtkDataArray* values = volume->GetPointData()->GetScalars();
-    vtkIdType labelled = 0;
-    const vtkIdType count = values->GetNumberOfTuples();
-    if (values->GetDataType() == VTK_UNSIGNED_CHAR && values->GetNumberOfComponents() == 1)
-    {
-      const auto* v = static_cast<const unsigned char*>(values->GetVoidPointer(0));
-      labelled = static_cast<vtkIdType>(std::count_if(v, v + count, [](unsigned char x) { return x != 0; }));
-    }
-    else
-      for (vtkIdType v = 0; v < count; ++v)
-        labelled += values->GetComponent(v, 0) >= 0.5;
+    const vtkIdType labelled = labelledVoxels(volume);
     const double* h = volume->GetSpacing();
     const double voxels = static_cast<double>(labelled) * std::abs(h[0] * h[1] * h[2]);
     // Closed: every edge between two triangles. (VTK 9.1's vtkFeatureEdges

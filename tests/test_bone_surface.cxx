@@ -1338,3 +1338,37 @@ TEST(BoneSurface, ALabelMapWithAMillionSurfacePointsIsCheckedForThinWalls)
   EXPECT_GT(surface->GetOutput()->GetNumberOfPoints(), 900000);
   EXPECT_EQ(components(surface->GetOutput()), 20u);
 }
+
+TEST(BoneSurface, ALabelTheSmoothingTakesAwayIsSaidSo)
+{
+  // One labelled voxel: the one-voxel Gaussian leaves it at 0.06, below the
+  // iso value 0.5, and "No surface" alone did not say why (nor that
+  // ImageSmoothing 0 keeps it; --label 1 on a CT ends the same way).
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(10, 10, 10);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  image->GetPointData()->GetScalars()->Fill(0.0);
+  image->SetScalarComponentFromDouble(5, 5, 5, 0, 1.0);
+  for (const double smoothing : { -1.0, 0.0 })
+  {
+    vtkNew<vtkLKBoneSurfaceFilter> surface;
+    surface->SetInputData(image);
+    surface->SetImageSmoothing(smoothing);
+    lktest::ErrorRecorder messages(surface);
+    surface->Update();
+    if (smoothing < 0.0)
+    {
+      EXPECT_EQ(messages.errors, 1);
+      EXPECT_NE(messages.messages.find("No surface at iso value 0.5. The label map's 1 labelled voxel lies too thin or "
+                                       "too far apart: the Gaussian of 1 voxel (ImageSmoothing) leaves none at 0.5; "
+                                       "ImageSmoothing 0 (--image-smooth 0) keeps them."),
+        std::string::npos)
+        << messages.messages;
+    }
+    else
+    {
+      EXPECT_EQ(messages.errors, 0) << messages.messages;
+      EXPECT_GT(surface->GetOutput()->GetNumberOfPolys(), 0);
+    }
+  }
+}
