@@ -708,7 +708,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     const double* h = volume->GetSpacing();
     const double voxels = static_cast<double>(labelled) * std::abs(h[0] * h[1] * h[2]);
     // Closed: every edge between two triangles. (VTK 9.1's vtkFeatureEdges
-    // reserves points^2 / 200 ids for its lines, 3 GB for a skull's 230,000
+    // reserves points^2 / 200 ids for its lines, 2 GB for a skull's 230,000
     // points, and stops the program past about 750,000.)
     lk::TriangleMesh contoured;
     const bool closed =
