@@ -178,6 +178,24 @@ TEST(BezierIFS, BadParametersAreRefused)
     std::invalid_argument); // 101 x 101 maps
   const auto maps = lk::bernsteinCurveMaps(3, { 0.5 });
   EXPECT_THROW(lk::chaosGame(maps, { 0.5 }, lk::bernsteinCurve(3, 0), { 0, 0 }, 10, 1, kCubic), std::invalid_argument);
+  // A depth whose points pass 50 million says how many and what to lower.
+  std::vector<double> breaks(63);
+  for (std::size_t i = 0; i < breaks.size(); ++i)
+    breaks[i] = double(i + 1) / 64.0;
+  const auto sixtyFour = lk::bernsteinCurveMaps(3, breaks);
+  const std::vector<Eigen::VectorXd> ends{ lk::bernsteinCurve(3, 0.0), lk::bernsteinCurve(3, 1.0) };
+  try
+  {
+    lk::deterministicIfs(sixtyFour, ends, { { 0, 0 }, { 1, 0 } }, 5, kCubic);
+    ADD_FAILURE() << "64 maps to depth 5 (2.1 billion points) were not refused";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_STREQ(e.what(), "64 maps to depth 5 give 2.15e+09 points (64^5 x 2), more than 50 million: lower the depth "
+                           "or the number of maps");
+  }
+  EXPECT_THROW(lk::deterministicIfs(maps, ends, { { 0, 0 }, { 1, 0 } }, -1, kCubic), std::invalid_argument);
+  EXPECT_EQ(lk::deterministicIfs(sixtyFour, ends, { { 0, 0 }, { 1, 0 } }, 3, kCubic).points.size(), 2u * 64 * 64 * 64);
   EXPECT_THROW(lk::chaosGame(maps, { 0.5, 0.6 }, lk::bernsteinCurve(3, 0), { 0, 0 }, 10, 1, kCubic),
     std::invalid_argument);
 }

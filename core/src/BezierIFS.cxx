@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -213,8 +214,16 @@ Vec3 plot(const Eigen::VectorXd& x, const std::vector<Vec3>& control)
 IfsPoints deterministicIfs(const std::vector<IfsMap>& maps, const std::vector<Eigen::VectorXd>& base,
   const std::vector<std::array<double, 2>>& baseParameters, int depth, const std::vector<Vec3>& control)
 {
-  if (depth < 0 || std::pow(double(maps.size()), depth) * base.size() > 5e7)
-    throw std::invalid_argument("the depth must be at least 0 and give at most 50 million points");
+  if (depth < 0)
+    throw std::invalid_argument("the depth must be at least 0, not " + std::to_string(depth));
+  if (const double points = std::pow(double(maps.size()), depth) * double(base.size()); points > 5e7)
+  {
+    char text[200];
+    std::snprintf(text, sizeof text,
+      "%zu maps to depth %d give %.3g points (%zu^%d x %zu), more than 50 million: lower the depth or the number of maps",
+      maps.size(), depth, points, maps.size(), depth, base.size());
+    throw std::invalid_argument(text);
+  }
   std::vector<Eigen::VectorXd> figs = base;
   std::vector<std::array<double, 2>> params = baseParameters;
   for (int d = 0; d < depth; ++d)
