@@ -3,10 +3,9 @@
 #include "vtkLKProgressRelay.h"
 
 #include "vtkLKMeshRepairFilter.h"
-#include "vtkLKPolyDataConversion.h"
+#include "vtkLKOpenEdges.h"
 
 #include "latticekit/CavityFill.h"
-#include "latticekit/ManifoldRepair.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkDataArray.h>
@@ -707,13 +706,7 @@ int vtkLKBoneSurfaceFilter::RequestData(
     const vtkIdType labelled = labelledVoxels(volume);
     const double* h = volume->GetSpacing();
     const double voxels = static_cast<double>(labelled) * std::abs(h[0] * h[1] * h[2]);
-    // Closed: every edge between two triangles. (VTK 9.1's vtkFeatureEdges
-    // reserves points^2 / 200 ids for its lines, 2 GB for a skull's 230,000
-    // points, and stops the program past about 750,000.)
-    lk::TriangleMesh contoured;
-    const bool closed =
-      lkvtk::toTriangleMesh(contour->GetOutput(), contoured).empty() && lk::countBoundaryEdges(contoured) == 0;
-    contoured = lk::TriangleMesh();
+    const bool closed = lkvtk::countOpenEdges(contour->GetOutput()) == 0;
     vtkNew<vtkMassProperties> enclosed;
     enclosed->SetInputConnection(contour->GetOutputPort());
     enclosed->Update();
