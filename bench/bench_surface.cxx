@@ -6,8 +6,8 @@
 //   anchor is vtkImageCast (float), vtkImageGaussianSmooth (sigma 1 voxel,
 //   radius factor 3) and vtkFlyingEdges3D at 0.5 over the whole volume, then
 //   vtkPolyDataConnectivityFilter (largest region);
-// - the CT head at 300 HU (no smoothing): vtkFlyingEdges3D and the
-//   connectivity filter.
+// - the CT head and the GE CT series (a DICOM folder) at 300 HU (no
+//   smoothing): vtkFlyingEdges3D and the connectivity filter.
 // Each time is the median of three runs; the ratio is the filter's over the
 // anchor's.
 //
@@ -61,6 +61,7 @@ int main(int argc, char* argv[])
     { "mandible 1 (label map)", data + "/mandible-tcia/test_oncologist_0522c0017_Mandible.nrrd", true },
     { "mandible 2 (label map)", data + "/mandible-tcia/test_oncologist_TCGA-CV-7236_Mandible.nrrd", true },
     { "CT head, 300 HU", data + "/cthead/cthead_hu_approx.nii.gz", false },
+    { "GE CT series, 300 HU", data + "/dicom-ct-ge-tilt", false },
   };
   std::printf("%-24s %18s %12s %12s %12s %7s\n", "scan", "voxels", "triangles", "filter (s)", "anchor (s)", "ratio");
   for (const Scan& scan : scans)

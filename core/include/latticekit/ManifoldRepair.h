@@ -3,10 +3,13 @@
 /// Turns a triangle soup (marching cubes output, a file from elsewhere) into
 /// a manifold, consistently oriented triangle mesh that CGAL's Surface_mesh
 /// accepts, using CGAL's Polygon Mesh Processing repair functions:
-///  1. repair_polygon_soup: merge duplicate points, drop polygons with repeated
-///     vertices, duplicate polygons and isolated points;
+///  1. repair_polygon_soup's steps for triangles: merge duplicate points, drop
+///     triangles with repeated vertices, duplicate triangles and isolated
+///     points;
 ///  2. orient_polygon_soup: orient consistently, splitting non-manifold
-///     vertices and edges where that is impossible;
+///     vertices and edges where that is impossible. A soup oriented already
+///     (marching cubes) only has its pinched vertices split, as
+///     orient_polygon_soup would (PinchedVertices.h), in a thirtieth of the time;
 ///  3. remove_degenerate_faces: collapse or flip away zero-area triangles;
 ///  4. duplicate_non_manifold_vertices: split any pinched vertex left;
 ///  5. orientation: closed components bound a volume (normals outward); open
@@ -36,8 +39,8 @@ struct RepairReport
 };
 
 /// Repairs the mesh in place. `progress` gets the fraction of the work done
-/// after each step (a CGAL step itself reports nothing: on a clinical CT's
-/// 3 million triangles the whole repair takes about 17 s on one core) and may
+/// after each step (a CGAL step itself reports nothing: on a CT's 1.5
+/// million triangles the whole repair takes about 3 s on one core) and may
 /// return false to stop, leaving the mesh unchanged. Throws
 /// std::invalid_argument for an empty mesh, out-of-range ids or non-finite
 /// coordinates, and std::runtime_error when nothing is left after the repair.
