@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <vector>
 
 namespace
@@ -64,6 +66,34 @@ TEST(ManifoldRepair, TrianglesWithoutSharedPointsAreWelded)
   EXPECT_EQ(soup.points.size(), 8u);
   EXPECT_TRUE(r.closed);
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(soup), "");
+  EXPECT_NEAR(lk::signedVolume(soup), 1.0, 1e-12);
+}
+
+TEST(ManifoldRepair, PointsAtMinusZeroAreWeldedToThoseAtZero)
+{
+  // -0.0 equals 0.0: a soup whose copies of a corner differ only in the
+  // zero's sign is still one closed cube (the hash must not tell them apart).
+  const lk::TriangleMesh cube = lktest::cube();
+  lk::TriangleMesh soup;
+  for (const auto& t : cube.triangles)
+  {
+    const auto base = static_cast<std::int64_t>(soup.points.size());
+    for (auto id : t)
+    {
+      lk::Vec3 p = cube.points[static_cast<std::size_t>(id)];
+      if (soup.points.size() % 2 == 1)
+        for (int k = 0; k < 3; ++k)
+          if (p[k] == 0.0)
+            p[k] = -0.0;
+      soup.points.push_back(p);
+    }
+    soup.triangles.push_back({ base, base + 1, base + 2 });
+  }
+  ASSERT_TRUE(std::signbit(soup.points[1].x()));
+  const lk::RepairReport r = lk::repairToManifold(soup);
+  EXPECT_EQ(r.mergedPoints, 36u - 8u);
+  EXPECT_EQ(soup.points.size(), 8u);
+  EXPECT_TRUE(r.closed);
   EXPECT_NEAR(lk::signedVolume(soup), 1.0, 1e-12);
 }
 

@@ -3,7 +3,8 @@
 /// Turns a triangle soup (marching cubes output, a file from elsewhere) into
 /// a manifold, consistently oriented triangle mesh that CGAL's Surface_mesh
 /// accepts, using CGAL's Polygon Mesh Processing repair functions:
-///  1. repair_polygon_soup's steps for triangles: merge duplicate points, drop
+///  1. repair_polygon_soup's steps for triangles: merge duplicate points (as
+///     merge_duplicate_points_in_polygon_soup does, from a hash table), drop
 ///     triangles with repeated vertices, duplicate triangles and isolated
 ///     points;
 ///  2. orient_polygon_soup: orient consistently, splitting non-manifold
@@ -39,8 +40,8 @@ struct RepairReport
 };
 
 /// Repairs the mesh in place. `progress` gets the fraction of the work done
-/// after each step (a CGAL step itself reports nothing: on a CT's 1.5
-/// million triangles the whole repair takes about 3 s on one core) and may
+/// after each step (a CGAL step itself reports nothing: on a CT's 3
+/// million triangles the whole repair takes about 5 s on one core) and may
 /// return false to stop, leaving the mesh unchanged. Throws
 /// std::invalid_argument for an empty mesh, out-of-range ids or non-finite
 /// coordinates, and std::runtime_error when nothing is left after the repair.
