@@ -29,6 +29,27 @@ lk::TriangleMesh merged(const lk::TriangleMesh& a, const lk::TriangleMesh& b)
   }
   return m;
 }
+/// Every triangle with its own three points, as marching cubes writes them;
+/// with `minusZeroes`, every other point's zero coordinates are -0.0.
+lk::TriangleMesh looseTriangles(const lk::TriangleMesh& m, bool minusZeroes = false)
+{
+  lk::TriangleMesh soup;
+  for (const auto& t : m.triangles)
+  {
+    const auto base = static_cast<std::int64_t>(soup.points.size());
+    for (auto id : t)
+    {
+      lk::Vec3 p = m.points[static_cast<std::size_t>(id)];
+      if (minusZeroes && soup.points.size() % 2 == 1)
+        for (int k = 0; k < 3; ++k)
+          if (p[k] == 0.0)
+            p[k] = -0.0;
+      soup.points.push_back(p);
+    }
+    soup.triangles.push_back({ base, base + 1, base + 2 });
+  }
+  return soup;
+}
 } // namespace
 
 TEST(ManifoldRepair, CleanMeshIsUnchangedAndValid)
@@ -48,18 +69,7 @@ TEST(ManifoldRepair, CleanMeshIsUnchangedAndValid)
 
 TEST(ManifoldRepair, TrianglesWithoutSharedPointsAreWelded)
 {
-  // Marching-cubes-like soup: every triangle has its own three points.
-  const lk::TriangleMesh cube = lktest::cube();
-  lk::TriangleMesh soup;
-  for (const auto& t : cube.triangles)
-  {
-    const auto base = static_cast<std::int64_t>(soup.points.size());
-    for (auto id : t)
-    {
-      soup.points.push_back(cube.points[static_cast<std::size_t>(id)]);
-    }
-    soup.triangles.push_back({ base, base + 1, base + 2 });
-  }
+  lk::TriangleMesh soup = looseTriangles(lktest::cube());
   EXPECT_EQ(lk::countBoundaryEdges(soup), 36u); // twelve loose triangles
   const lk::RepairReport r = lk::repairToManifold(soup);
   EXPECT_EQ(r.mergedPoints, 36u - 8u);
@@ -73,22 +83,7 @@ TEST(ManifoldRepair, PointsAtMinusZeroAreWeldedToThoseAtZero)
 {
   // -0.0 equals 0.0: a soup whose copies of a corner differ only in the
   // zero's sign is still one closed cube (the hash must not tell them apart).
-  const lk::TriangleMesh cube = lktest::cube();
-  lk::TriangleMesh soup;
-  for (const auto& t : cube.triangles)
-  {
-    const auto base = static_cast<std::int64_t>(soup.points.size());
-    for (auto id : t)
-    {
-      lk::Vec3 p = cube.points[static_cast<std::size_t>(id)];
-      if (soup.points.size() % 2 == 1)
-        for (int k = 0; k < 3; ++k)
-          if (p[k] == 0.0)
-            p[k] = -0.0;
-      soup.points.push_back(p);
-    }
-    soup.triangles.push_back({ base, base + 1, base + 2 });
-  }
+  lk::TriangleMesh soup = looseTriangles(lktest::cube(), true);
   ASSERT_TRUE(std::signbit(soup.points[1].x()));
   const lk::RepairReport r = lk::repairToManifold(soup);
   EXPECT_EQ(r.mergedPoints, 36u - 8u);
