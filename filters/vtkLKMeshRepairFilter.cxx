@@ -2,6 +2,7 @@
 #include "vtkLKAbort.h"
 
 #include "latticekit/ManifoldRepair.h"
+#include "latticekit/PointHash.h"
 #include "vtkLKPolyDataConversion.h"
 #include "vtkLKSurfaceAttributes.h"
 
@@ -21,7 +22,6 @@
 #include <vtkTriangleFilter.h>
 
 #include <array>
-#include <functional>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -41,11 +41,7 @@ constexpr const char* originalCellIdName = "vtkLKMeshRepairFilter_OriginalCellId
 
 struct PointKeyHash
 {
-  std::size_t operator()(const std::array<double, 3>& p) const
-  {
-    const std::hash<double> h;
-    return h(p[0]) ^ (h(p[1]) * 0x9E3779B97F4A7C15ULL) ^ (h(p[2]) * 0xC2B2AE3D27D4EB4FULL);
-  }
+  std::size_t operator()(const std::array<double, 3>& p) const { return lk::hashCoordinates(p[0], p[1], p[2]); }
 };
 
 /// Carries the input's point and cell data to the repaired mesh, as

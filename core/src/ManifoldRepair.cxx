@@ -1,5 +1,6 @@
 #include "latticekit/ManifoldRepair.h"
 #include "latticekit/PinchedVertices.h"
+#include "latticekit/PointHash.h"
 #include "latticekit/PolygonMesh.h"
 #include "SurfaceMeshConversion.h"
 
@@ -37,9 +38,6 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::vector<std::size_t>;
-// The repair's own soup: triangles as arrays (a vector per triangle cost a
-// fifth of the soup repair's time in malloc and free on a CT's surface).
-using Tri = IndexTriangle;
 
 template <typename PolygonT>
 void toSoup(const TriangleMesh& mesh, std::vector<Point>& points, std::vector<PolygonT>& polygons)
@@ -61,16 +59,11 @@ void toSoup(const TriangleMesh& mesh, std::vector<Point>& points, std::vector<Po
 /// first occurs, the triangles renumbered), from a hash table instead of
 /// its std::map: 0.2 s instead of 2.2 on a CT's 1.5 million points. Returns
 /// the number of points merged.
-std::size_t mergeEqualPoints(std::vector<Point>& points, std::vector<Tri>& triangles)
+std::size_t mergeEqualPoints(std::vector<Point>& points, std::vector<IndexTriangle>& triangles)
 {
   struct Hash
   {
-    std::size_t operator()(const Point& p) const
-    {
-      // +0.0 makes -0.0 hash as 0.0, which it equals.
-      const std::hash<double> h;
-      return h(p.x() + 0.0) ^ (h(p.y() + 0.0) * 0x9E3779B97F4A7C15ULL) ^ (h(p.z() + 0.0) * 0xC2B2AE3D27D4EB4FULL);
-    }
+    std::size_t operator()(const Point& p) const { return hashCoordinates(p.x(), p.y(), p.z()); }
   };
   struct Equal
   {
@@ -91,7 +84,7 @@ std::size_t mergeEqualPoints(std::vector<Point>& points, std::vector<Tri>& trian
   const std::size_t merged = points.size() - unique.size();
   if (merged == 0)
     return 0;
-  for (Tri& t : triangles)
+  for (IndexTriangle& t : triangles)
     for (std::size_t& v : t)
       v = index[v];
   points.swap(unique);
@@ -102,10 +95,10 @@ std::size_t mergeEqualPoints(std::vector<Point>& points, std::vector<Tri>& trian
 /// merge_duplicate_polygons_in_polygon_soup finds them once equal points
 /// are merged. Sorting takes a fifth of that function's time, which on a
 /// scan's surface finds none.
-bool hasDuplicateTriangles(const std::vector<Tri>& triangles)
+bool hasDuplicateTriangles(const std::vector<IndexTriangle>& triangles)
 {
-  std::vector<Tri> sorted(triangles);
-  for (Tri& t : sorted)
+  std::vector<IndexTriangle> sorted(triangles);
+  for (IndexTriangle& t : sorted)
     std::sort(t.begin(), t.end());
   std::sort(sorted.begin(), sorted.end());
   return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
@@ -145,8 +138,10 @@ RepairReport repairToManifold(TriangleMesh& mesh, const std::function<bool(doubl
     return !report.stopped;
   };
 
+  // Triangles as arrays: a vector per triangle cost a fifth of the soup
+  // repair's time in malloc and free on a CT's surface.
   std::vector<Point> points;
-  std::vector<Tri> polygons;
+  std::vector<IndexTriangle> polygons;
   toSoup(mesh, points, polygons);
   const std::size_t pointsBefore = points.size();
   if (!done(0.04))
@@ -160,7 +155,7 @@ RepairReport repairToManifold(TriangleMesh& mesh, const std::function<bool(doubl
   // the same points: one or two on a CT's skin, none on its bone.)
   mergeEqualPoints(points, polygons);
   polygons.erase(std::remove_if(polygons.begin(), polygons.end(),
-                   [](const Tri& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }),
+                   [](const IndexTriangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }),
     polygons.end());
   if (hasDuplicateTriangles(polygons))
     PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);

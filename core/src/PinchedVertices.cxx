@@ -71,15 +71,14 @@ std::optional<std::vector<std::size_t>> splitPinchedVerticesOfOrientedSoup(
       return static_cast<std::size_t>(r.second - r.first);
     };
     // Two triangles on the edge v-a in the same direction: to be oriented.
-    for (std::size_t i = 0; i < degree; ++i)
-    {
-      const auto out = starting(link[i].from);
-      if (out.second - out.first == 2 && ending(link[i].from) == 0)
-        return std::nullopt;
-    }
-    for (std::size_t i = 0; i + 1 < degree; ++i)
-      if (ends[i] == ends[i + 1] && ending(ends[i]) == 2 && starting(ends[i]).first == starting(ends[i]).second)
-        return std::nullopt;
+    for (const LinkEdge& e : link)
+      for (const std::size_t a : { e.from, e.to })
+      {
+        const auto out = starting(a);
+        const std::size_t outCount = static_cast<std::size_t>(out.second - out.first);
+        if (outCount + ending(a) == 2 && outCount != 1)
+          return std::nullopt;
+      }
     if (degree < 2)
       continue;
     // Fans: link edges joined where an edge v-b has one triangle each way.
