@@ -1217,6 +1217,9 @@ void Planner::report()
     std::printf("lattice fits: %zu (%zu kept from an earlier fit of the same piece)\n", latticeFits, latticesReused);
   if (scanRenderer->GetDraw())
     std::printf("view: %s\n", scanShown().c_str());
+  if (strokesMade + strokesReused > 0)
+    std::printf("stroke lines made: %zu (%zu kept from an earlier rebuild with the same strokes before them)\n",
+      strokesMade, strokesReused);
 }
 
 } // namespace lkplanner

@@ -24,22 +24,25 @@ Json::Value triple(const std::array<double, 3>& v)
   return j;
 }
 
-std::string cutKey(const Session& s)
+std::string strokeKey(const Stroke& st)
 {
   std::ostringstream os;
   os.precision(17);
-  for (const Stroke& st : s.strokes)
-  {
-    os << st.mode << ":";
-    for (const auto& p : st.points)
-      os << p[0] << "," << p[1] << "," << p[2] << ";";
-    if (st.saw)
-      os << "saw" << st.sawOrigin[0] << "," << st.sawOrigin[1] << "," << st.sawOrigin[2] << "," << st.sawNormal[0]
-         << "," << st.sawNormal[1] << "," << st.sawNormal[2];
-    os << "|";
-  }
-  os << s.cut << s.capping;
+  os << st.mode << ":";
+  for (const auto& p : st.points)
+    os << p[0] << "," << p[1] << "," << p[2] << ";";
+  if (st.saw)
+    os << "saw" << st.sawOrigin[0] << "," << st.sawOrigin[1] << "," << st.sawOrigin[2] << "," << st.sawNormal[0]
+       << "," << st.sawNormal[1] << "," << st.sawNormal[2];
   return os.str();
+}
+
+std::string cutKey(const Session& s)
+{
+  std::string key;
+  for (const Stroke& st : s.strokes)
+    key += strokeKey(st) + "|";
+  return key + std::to_string(s.cut) + std::to_string(s.capping);
 }
 
 double bumpFalloff(double radius)

@@ -283,6 +283,10 @@ struct Session
 /// A point as a JSON list [x, y, z].
 Json::Value triple(const std::array<double, 3>& v);
 
+/// What one stroke is (its mode, points and saw plane), as a key that
+/// changes when it does.
+std::string strokeKey(const Stroke& st);
+
 /// The part of a session the cut depends on (strokes, cut, capping), as a
 /// key that changes when they do.
 std::string cutKey(const Session& s);
