@@ -84,6 +84,15 @@ std::vector<std::int64_t> edgePathThrough(const TriangleMesh& mesh, const std::v
     if (!p.allFinite())
       throw std::invalid_argument("a point of the line is not finite");
   const ClosestPointTree tree(mesh);
+  return edgePathThrough(mesh, tree, points);
+}
+
+std::vector<std::int64_t> edgePathThrough(
+  const TriangleMesh& mesh, const ClosestPointTree& tree, const std::vector<Vec3>& points)
+{
+  for (const Vec3& p : points)
+    if (!p.allFinite())
+      throw std::invalid_argument("a point of the line is not finite");
   std::vector<std::int64_t> anchors;
   for (const Vec3& p : points)
   {

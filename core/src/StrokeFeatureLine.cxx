@@ -287,7 +287,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
   {
     // Nearest vertices of the projected samples, joined by shortest edge paths.
     std::vector<Vec3> anchors = projected;
-    std::vector<std::int64_t> path = edgePathThrough(mesh, anchors);
+    std::vector<std::int64_t> path = edgePathThrough(mesh, tree, anchors);
     // Drop detours that revisit a vertex (keep the closing vertex of a loop).
     std::vector<std::int64_t> simple;
     std::map<std::int64_t, std::size_t> at;

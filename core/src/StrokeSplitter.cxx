@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -660,9 +661,19 @@ StrokeSplitter::StrokeSplitter(const TriangleMesh& mesh, double maxDistance)
   const std::string problem = validateTriangleMesh(mesh);
   if (!problem.empty())
     throw std::invalid_argument(problem);
+  // The half-edge mesh and the closest-point tree, each a pass over the
+  // whole surface (a second each on a skull of 1.5 million faces), side by
+  // side.
+  auto halfEdges = std::async(std::launch::async, [&mesh] {
+    std::pair<bool, SMesh> built;
+    built.first = cgal::toSurfaceMesh(mesh, built.second);
+    return built;
+  });
   impl_ = std::make_unique<Impl>(mesh);
-  if (!cgal::toSurfaceMesh(mesh, impl_->m))
+  std::pair<bool, SMesh> built = halfEdges.get();
+  if (!built.first)
     throw std::invalid_argument("split mode needs a manifold, consistently oriented triangle mesh");
+  impl_->m = std::move(built.second);
   double total = 0.0;
   impl_->faceNormals.reserve(mesh.triangles.size());
   for (const Triangle& t : mesh.triangles)
