@@ -672,6 +672,9 @@ void Planner::rebuild()
   for (auto& a : sceneActors)
     renderer->RemoveActor(a);
   sceneActors.clear();
+  // The last rebuild's surfaces, for this one to show with the same mappers.
+  lastShownMappers.swap(shownMappers);
+  shownMappers.clear();
   scalarBar->SetVisibility(false);
   computeCut();
   message = inputWarnings;
@@ -770,6 +773,7 @@ void Planner::rebuild()
   sceneMessage = message;
   showScan();
   placeSegment(session.segmentMatrix); // and the measurements and the fit to the mirror
+  lastShownMappers.clear(); // what this rebuild no longer shows goes
   keepChanges();
   updateStatus();
 }
@@ -813,9 +817,21 @@ bool Planner::keepUnsaved(std::string& error)
 
 vtkSmartPointer<vtkActor> Planner::addActorData(vtkPolyData* pd, std::array<double, 3> colour, bool scalars)
 {
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(pd);
-  return addActor(normals->GetOutputPort(), pd, colour, scalars);
+  const auto key = std::make_pair(pd, scalars);
+  vtkSmartPointer<vtkPolyDataMapper> m;
+  for (const auto* kept : { &shownMappers, &lastShownMappers })
+    if (const auto it = kept->find(key); !m && it != kept->end())
+      m = it->second.mapper;
+  if (!m)
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(pd);
+    m = vtkSmartPointer<vtkPolyDataMapper>::New();
+    m->SetInputConnection(normals->GetOutputPort());
+    m->SetScalarVisibility(scalars);
+  }
+  shownMappers[key] = { pd, m };
+  return addActorOf(m, colour);
 }
 
 vtkSmartPointer<vtkActor> Planner::addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars)
@@ -823,8 +839,13 @@ vtkSmartPointer<vtkActor> Planner::addActor(vtkAlgorithmOutput* port, vtkPolyDat
   vtkNew<vtkPolyDataMapper> m;
   m->SetInputConnection(port);
   m->SetScalarVisibility(scalars);
+  return addActorOf(m, colour);
+}
+
+vtkSmartPointer<vtkActor> Planner::addActorOf(vtkPolyDataMapper* mapper, std::array<double, 3> colour)
+{
   auto a = vtkSmartPointer<vtkActor>::New();
-  a->SetMapper(m);
+  a->SetMapper(mapper);
   a->GetProperty()->SetColor(colour.data());
   renderer->AddActor(a);
   sceneActors.push_back(a);

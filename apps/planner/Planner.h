@@ -28,6 +28,7 @@
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkRenderWindow.h>
 #include <vtkAnnotatedCubeActor.h>
 #include <vtkAxesActor.h>
@@ -42,6 +43,7 @@
 #include <array>
 #include <memory>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -738,9 +740,27 @@ public:
   /// The surface without its line cells (the feature lines a stroke left on it).
   static vtkSmartPointer<vtkPolyData> facesOnly(vtkPolyData* surface);
 
+  /// An actor for a surface, shaded with its normals (vtkPolyDataNormals).
+  /// Its mapper is the one the last rebuild showed the same data with, if
+  /// any: the normals and the triangles already on the graphics card are
+  /// kept (a second and more on a whole skull), and a surface changed in
+  /// place (a deformation's drag) updates them, as the pipeline does.
   vtkSmartPointer<vtkActor> addActorData(vtkPolyData* pd, std::array<double, 3> colour, bool scalars);
 
   vtkSmartPointer<vtkActor> addActor(vtkAlgorithmOutput* port, vtkPolyData*, std::array<double, 3> colour, bool scalars);
+
+  /// An actor of `mapper` in `colour`, in the scene.
+  vtkSmartPointer<vtkActor> addActorOf(vtkPolyDataMapper* mapper, std::array<double, 3> colour);
+
+  /// addActorData's mappers, by the data shown and whether its scalars
+  /// colour it (the data held, so that its address is not another's): this
+  /// rebuild's, and the last one's while this one is made.
+  struct ShownMapper
+  {
+    vtkSmartPointer<vtkPolyData> data;
+    vtkSmartPointer<vtkPolyDataMapper> mapper;
+  };
+  std::map<std::pair<vtkPolyData*, bool>, ShownMapper> shownMappers, lastShownMappers;
 
   /// A line on the bone (not picked) in `colour`, `width` pixels wide.
   vtkSmartPointer<vtkActor> addLineActor(vtkPolyData* line, const std::array<double, 3>& colour, double width);
