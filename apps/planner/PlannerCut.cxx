@@ -373,12 +373,13 @@ void Planner::computeCut()
     }
     strokeSteps.push_back(state);
   }
-  // The surfaces kept: after the last stroke and the one before (a stroke
-  // drawn on, or the last continued or undone), and after the next two past
-  // them (one undone, redone). Older ones go: a skull's surface is 60 MB.
+  // The surfaces kept: after the last stroke and the three before it (a
+  // stroke drawn on, the last continued, up to three undone in a row), and
+  // after the next two past them (redone). Older ones go: a skull's surface
+  // is 60 MB.
   const std::size_t n = session.strokes.size();
   for (std::size_t i = 0; i < strokeSteps.size(); ++i)
-    if (i + 2 < n || i > n + 1)
+    if (i + 4 < n || i > n + 1)
       strokeSteps[i].surface = nullptr;
   cut.lines = state.lines;
   cut.lineStrokes = state.lineStrokes;
