@@ -45,6 +45,7 @@
 #include <map>
 #include <set>
 #include <cstdlib>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -133,10 +134,12 @@ bool Planner::addStroke(const std::vector<std::array<double, 3>>& points)
   return false;
 }
 
-/// The edges of `piece`'s faces (smaller id first), sorted.
-FeatureEdges faceEdgesOf(vtkPolyData* piece)
+FeatureEdges faceEdgesOf(vtkPolyData* piece, const std::vector<char>* only)
 {
   FeatureEdges edges;
+  auto flagged = [&](vtkIdType v) {
+    return !only || (v >= 0 && static_cast<std::size_t>(v) < only->size() && (*only)[static_cast<std::size_t>(v)]);
+  };
   auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
   {
@@ -144,7 +147,8 @@ FeatureEdges faceEdgesOf(vtkPolyData* piece)
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
     for (vtkIdType k = 0; k < n; ++k)
-      edges.push_back({ std::min(ids[k], ids[(k + 1) % n]), std::max(ids[k], ids[(k + 1) % n]) });
+      if (flagged(ids[k]) && flagged(ids[(k + 1) % n]))
+        edges.push_back({ std::min(ids[k], ids[(k + 1) % n]), std::max(ids[k], ids[(k + 1) % n]) });
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -191,7 +195,7 @@ FeatureEdges featureEdgesOf(vtkPolyData* piece, vtkPolyData* cutLines,
   const std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>>& lines, vtkPolyData* surface)
 {
   // The lines' edges in the piece's ids first; then one pass over its faces
-  // looks only at edges between their points (not every edge of a skull's
+  // keeps only the edges between their points (not every edge of a skull's
   // 1.5 million faces, sorted, as before: a second for a bone without lines).
   const vtkIdType points = piece->GetNumberOfPoints();
   FeatureEdges wanted;
@@ -239,26 +243,9 @@ FeatureEdges featureEdgesOf(vtkPolyData* piece, vtkPolyData* cutLines,
   std::vector<char> onLine(static_cast<std::size_t>(points), 0);
   for (const auto& e : wanted)
     onLine[static_cast<std::size_t>(e[0])] = onLine[static_cast<std::size_t>(e[1])] = 1;
+  const FeatureEdges between = faceEdgesOf(piece, &onLine);
   FeatureEdges kept;
-  auto it = vtk::TakeSmartPointer(piece->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
-      if (a < 0 || b < 0 || a >= points || b >= points || !onLine[static_cast<std::size_t>(a)] ||
-        !onLine[static_cast<std::size_t>(b)])
-        continue;
-      const std::array<vtkIdType, 2> e{ std::min(a, b), std::max(a, b) };
-      if (std::binary_search(wanted.begin(), wanted.end(), e))
-        kept.push_back(e);
-    }
-  }
-  std::sort(kept.begin(), kept.end());
-  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+  std::set_intersection(wanted.begin(), wanted.end(), between.begin(), between.end(), std::back_inserter(kept));
   return kept;
 }
 

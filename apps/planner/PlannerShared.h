@@ -49,7 +49,8 @@ void showSquare(vtkPoints* corners, vtkActor* sheetActor, vtkActor* outlineActor
 /// Edges as point-id pairs, the smaller id first.
 using FeatureEdges = std::vector<std::array<vtkIdType, 2>>;
 
-/// The edges of `piece`'s faces (smaller id first), sorted.
-FeatureEdges faceEdgesOf(vtkPolyData* piece);
+/// The edges of `piece`'s faces (smaller id first), sorted; with `only`
+/// (a flag per point), only those whose two points it flags.
+FeatureEdges faceEdgesOf(vtkPolyData* piece, const std::vector<char>* only = nullptr);
 
 } // namespace lkplanner
