@@ -553,10 +553,8 @@ public:
     /// steps, whose surfaces a rebuild starts from.
     vtkSmartPointer<vtkPolyData> surface;
     std::vector<std::pair<vtkSmartPointer<vtkPolyData>, double>> lines; ///< every line so far, as it lies on surface
-    std::vector<std::size_t> lineStrokes;
-    std::vector<std::string> closedNames; ///< per line: "stroke 3 (saw line)" for a closed line the cut takes, else empty
+    std::vector<std::size_t> lineStrokes; ///< the stroke each line came from
     std::string message; ///< the strokes' messages so far
-    bool lastLineOpen = false;
   };
   std::vector<StrokeStep> strokeSteps;
   vtkPolyData* strokeStepsBone = nullptr; ///< the bone they were made on (with its MTime)

@@ -293,6 +293,10 @@ void Planner::computeCut()
     strokeSteps.resize(from);
   strokesReused += from;
   strokesMade += session.strokes.size() - from;
+  auto strokeName = [&](std::size_t i) {
+    const Stroke& st = session.strokes[i];
+    return "stroke " + std::to_string(i + 1) + " (" + (st.saw ? "saw line" : modeName(st.mode)) + ")";
+  };
   StrokeStep state;
   if (from > 0)
     state = strokeSteps[from - 1];
@@ -301,9 +305,8 @@ void Planner::computeCut()
   for (std::size_t i = from; i < session.strokes.size(); ++i)
   {
     state.key = strokeKey(session.strokes[i]);
-    state.lastLineOpen = false;
     const Stroke& st = session.strokes[i];
-    const std::string which = "stroke " + std::to_string(i + 1) + " (" + (st.saw ? "saw line" : modeName(st.mode)) + ")";
+    const std::string which = strokeName(i);
     // A saw line follows its plane's section of this bone (the same points
     // as when it was drawn on the same bone).
     std::string sawWhy;
@@ -350,14 +353,6 @@ void Planner::computeCut()
     line->DeepCopy(f->GetFeatureLineOutput());
     state.lines.emplace_back(line, st.mode == vtkLKStrokeFeatureLineFilter::PAINT ? 0.2 : 0.0);
     state.lineStrokes.push_back(i);
-    const bool closed = line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5;
-    state.closedNames.emplace_back();
-    if (st.mode != vtkLKStrokeFeatureLineFilter::PAINT)
-    {
-      if (closed)
-        state.closedNames.back() = which;
-      state.lastLineOpen = !closed;
-    }
     strokeSteps.push_back(state);
   }
   // The surfaces kept: after the last stroke and the three before it (a
@@ -371,16 +366,25 @@ void Planner::computeCut()
   cut.lines = state.lines;
   cut.lineStrokes = state.lineStrokes;
   cut.message = state.message;
-  cut.lastLineOpen = state.lastLineOpen;
   vtkSmartPointer<vtkPolyData> surface = state.surface;
+  // The closed lines the cut takes (a painted line marks faces and cuts
+  // nothing; a line keeps its field data "Closed" when carried), and whether
+  // the last stroke left an open line that a drag can continue.
+  auto closed = [](vtkPolyData* line) { return line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0) > 0.5; };
+  auto painted = [&](std::size_t l) {
+    return session.strokes[state.lineStrokes[l]].mode == vtkLKStrokeFeatureLineFilter::PAINT;
+  };
   std::vector<vtkSmartPointer<vtkPolyData>> closedLines;
   std::vector<std::string> closedNames; // "stroke 3 (saw line)", one per closed line
   for (std::size_t l = 0; l < state.lines.size(); ++l)
-    if (!state.closedNames[l].empty())
+    if (!painted(l) && closed(state.lines[l].first))
     {
       closedLines.push_back(state.lines[l].first);
-      closedNames.push_back(state.closedNames[l]);
+      closedNames.push_back(strokeName(state.lineStrokes[l]));
     }
+  const std::size_t last = state.lines.size() - 1;
+  cut.lastLineOpen = !state.lines.empty() && state.lineStrokes[last] + 1 == n && !painted(last) &&
+    !closed(state.lines[last].first);
   vtkSmartPointer<vtkPolyData> faces = facesOnly(surface);
   cut.surface = faces;
   // Closed lines that meet: the cut needs them apart, and the surgeon needs to
