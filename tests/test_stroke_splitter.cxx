@@ -139,6 +139,34 @@ TEST(StrokeSplitter, AFailedPointLeavesTheMeshAndLineUnchanged)
   EXPECT_THROW(two.close(), std::invalid_argument); // fewer than three vertices
 }
 
+TEST(StrokeSplitter, ASegmentNoWayRoundFollowsLeavesTheMeshAndLineAsTheyWere)
+{
+  // A disc 0.06 thick: the last point lies on its far side. Every way round
+  // (halves, steps along edges) splits faces before it fails, and each is
+  // taken back from a journal of what it changed, not from a copy of the mesh.
+  lk::TriangleMesh disc = lktest::icosphere(3, 1.0);
+  for (auto& p : disc.points)
+    p.z() *= 0.03;
+  for (const double x : { 0.1, 0.3, 0.5 })
+  {
+    lk::StrokeSplitter splitter(disc);
+    splitter.addPoint({ -0.3, 0.05, 0.03 });
+    splitter.addPoint({ 0.0, 0.07, 0.03 });
+    const lk::TriangleMesh before = splitter.mesh();
+    const auto line = splitter.line();
+    EXPECT_THROW(splitter.addPoint({ x, 0.1, -0.03 }), std::invalid_argument) << x;
+    const lk::TriangleMesh after = splitter.mesh();
+    EXPECT_EQ(after.triangles, before.triangles) << x;
+    EXPECT_EQ(after.points, before.points) << x;
+    EXPECT_EQ(splitter.line(), line) << x;
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(after), "");
+    // The splitter goes on from where it was.
+    EXPECT_GE(splitter.addPoint({ 0.2, 0.1, 0.03 }), 1u);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(splitter.mesh()), "");
+    expectConnectedLine(splitter.mesh(), splitter.line());
+  }
+}
+
 TEST(StrokeSplitter, AStrokeThatCrossesItsOwnLineKeepsTheLineConnected)
 {
   const lk::TriangleMesh grid = lktest::grid(20, 1.0, 0.0);
