@@ -404,35 +404,43 @@ int vtkLKStrokeFeatureLineFilter::CarryLine(vtkPolyData* line, vtkPolyData* carr
     }
     paths.push_back(std::move(path));
   }
-  lk::TriangleMesh after;
-  after.points.resize(static_cast<std::size_t>(output->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  // Only a split adds points, and only then can a line change (a skull's
+  // surface is 1.5 million triangles to read for nothing otherwise).
+  if (output->GetNumberOfPoints() > this->InputPoints)
   {
-    double p[3];
-    output->GetPoint(i, p);
-    after.points[static_cast<std::size_t>(i)] = lk::Vec3(p[0], p[1], p[2]);
-  }
-  auto polys = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* pts;
-    polys->GetCurrentCell(n, pts);
-    if (n == 3)
-      after.triangles.push_back({ pts[0], pts[1], pts[2] });
+    lk::TriangleMesh after;
+    after.points.resize(static_cast<std::size_t>(output->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      output->GetPoint(i, p);
+      after.points[static_cast<std::size_t>(i)] = lk::Vec3(p[0], p[1], p[2]);
+    }
+    auto polys = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+    for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* pts;
+      polys->GetCurrentCell(n, pts);
+      if (n == 3)
+        after.triangles.push_back({ pts[0], pts[1], pts[2] });
+    }
+    paths = lk::carryLines(after, static_cast<std::size_t>(this->InputPoints), paths);
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> cells;
   vtkNew<vtkIdTypeArray> meshIds;
   meshIds->SetName("MeshPointId");
-  for (const auto& path : lk::carryLines(after, static_cast<std::size_t>(this->InputPoints), paths))
+  for (const auto& path : paths)
   {
     cells->InsertNextCell(static_cast<vtkIdType>(path.size()));
     for (const auto v : path)
     {
       meshIds->InsertNextValue(static_cast<vtkIdType>(v));
-      cells->InsertCellPoint(points->InsertNextPoint(after.points[static_cast<std::size_t>(v)].data()));
+      double p[3];
+      output->GetPoint(static_cast<vtkIdType>(v), p);
+      cells->InsertCellPoint(points->InsertNextPoint(p));
     }
   }
   carried->Initialize();

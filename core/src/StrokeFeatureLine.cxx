@@ -350,13 +350,28 @@ std::vector<std::vector<std::int64_t>> carryLines(
   const TriangleMesh& after, std::size_t verticesBefore, const std::vector<std::vector<std::int64_t>>& lines)
 {
   const auto n = static_cast<std::int64_t>(after.points.size());
+  // A line changes only where a split put new vertices on its edges.
+  if (after.points.size() <= verticesBefore)
+    return lines;
+  // The neighbours of the vertices a chain can start from or pass (the
+  // lines' and the new ones), in the order of the triangles: a skull has
+  // 750,000 vertices, a line a few hundred.
+  std::vector<char> wanted(after.points.size(), 0);
+  for (std::size_t v = verticesBefore; v < after.points.size(); ++v)
+    wanted[v] = 1;
+  for (const auto& line : lines)
+    for (const auto v : line)
+      if (v >= 0 && v < n)
+        wanted[static_cast<std::size_t>(v)] = 1;
   std::vector<std::vector<std::int64_t>> neighbours(after.points.size());
   for (const Triangle& t : after.triangles)
     for (int i = 0; i < 3; ++i)
     {
       const auto a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
-      neighbours[static_cast<std::size_t>(a)].push_back(b);
-      neighbours[static_cast<std::size_t>(b)].push_back(a);
+      if (wanted[static_cast<std::size_t>(a)])
+        neighbours[static_cast<std::size_t>(a)].push_back(b);
+      if (wanted[static_cast<std::size_t>(b)])
+        neighbours[static_cast<std::size_t>(b)].push_back(a);
     }
   auto joined = [&](std::int64_t a, std::int64_t b) {
     const auto& na = neighbours[static_cast<std::size_t>(a)];
