@@ -86,6 +86,40 @@ TEST(ClosestPointTree, AgreesWithBruteForceWithAndWithoutHints)
   }
 }
 
+TEST(ClosestPointTree, ATreeOverTheFacesInABoxAnswersForTheWholeMesh)
+{
+  // A stroke's tree holds the faces near it; a query whose answer could lie
+  // outside goes to the whole mesh. Every answer is the whole mesh's closest
+  // point: inside the box, near it, far away, with and without hints.
+  const lk::TriangleMesh m = lktest::icosphere(3, 1.0);
+  const lk::Vec3 lo(0.2, -0.3, 0.5), hi(0.6, 0.1, 1.1);
+  const lk::ClosestPointTree part(m, lo, hi);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> near(-0.1, 1.2), far(-3.0, 3.0);
+  lk::ClosestPointTree::Hit hint;
+  for (int i = 0; i < 3000; ++i)
+  {
+    const lk::Vec3 p = i % 3 == 2 ? lk::Vec3(far(rng), far(rng), far(rng)) : lk::Vec3(near(rng), near(rng) - 0.4, near(rng));
+    const double exact = bruteForceDistance(m, p);
+    const auto hit = part.closest(p);
+    EXPECT_NEAR(hit.distance, exact, 1e-12) << p.transpose();
+    ASSERT_GE(hit.face, 0);
+    ASSERT_LT(hit.face, static_cast<std::int64_t>(m.triangles.size()));
+    // The face is the mesh's own (its id on the whole mesh, not in the box's part).
+    const lk::Triangle& t = m.triangles[static_cast<std::size_t>(hit.face)];
+    const lk::Vec3 onFace = lk::closestPointOnTriangle(p, m.points[static_cast<std::size_t>(t[0])],
+      m.points[static_cast<std::size_t>(t[1])], m.points[static_cast<std::size_t>(t[2])]);
+    EXPECT_NEAR((onFace - hit.point).norm(), 0.0, 1e-12);
+    hint = part.closest(p, hint);
+    EXPECT_NEAR(hint.distance, exact, 1e-12);
+  }
+  // A box that meets no face: every query goes to the whole mesh.
+  const lk::ClosestPointTree none(m, lk::Vec3(5, 5, 5), lk::Vec3(6, 6, 6));
+  EXPECT_NEAR(none.closest(lk::Vec3(5.5, 5.5, 5.5)).distance, bruteForceDistance(m, lk::Vec3(5.5, 5.5, 5.5)), 1e-12);
+  EXPECT_THROW(lk::ClosestPointTree(m, hi, lo), std::invalid_argument);
+  EXPECT_THROW(lk::ClosestPointTree(m, lo, lk::Vec3(1, std::nan(""), 1)), std::invalid_argument);
+}
+
 TEST(ClosestPointTree, ADegenerateTriangleIsTheSegmentItSpans)
 {
   // Two corners in one place, all three in one place, three on a line: the

@@ -6,6 +6,8 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <cmath>
+#include <mutex>
+#include <unordered_map>
 #include <stdexcept>
 #include <vector>
 
@@ -55,14 +57,50 @@ struct ClosestPointTree::Impl
 {
   std::vector<CgalTriangle> triangles;
   Tree tree;
+  /// A tree over part of a mesh: its faces' ids on the mesh (in the order
+  /// of `triangles`), the inverse, the box the part meets, the whole mesh
+  /// and the tree over all of it, once a query needs it.
+  std::vector<std::int64_t> faceIds;
+  std::unordered_map<std::int64_t, std::size_t> localOf;
+  Vec3 lo{ Vec3::Zero() }, hi{ Vec3::Zero() };
+  const TriangleMesh* mesh = nullptr;
+  mutable std::once_flag wholeBuilt;
+  mutable std::unique_ptr<ClosestPointTree> whole;
+
+  void build()
+  {
+    tree.insert(triangles.begin(), triangles.end());
+    tree.build();
+    // Queries are chained through hints (see distances()), so CGAL's internal
+    // k-d tree of hints is not worth building. Forcing the lazy construction of
+    // the tree now keeps later queries read-only, hence thread-safe.
+    tree.do_not_accelerate_distance_queries();
+    tree.closest_point(triangles.front().vertex(0));
+  }
 
   Hit makeHit(const Vec3& query, const Tree::Point_and_primitive_id& pp) const
   {
     Hit hit;
     hit.point = Vec3(pp.first.x(), pp.first.y(), pp.first.z());
-    hit.face = static_cast<std::int64_t>(pp.second - triangles.begin());
+    const auto local = static_cast<std::size_t>(pp.second - triangles.begin());
+    hit.face = faceIds.empty() ? static_cast<std::int64_t>(local) : faceIds[local];
     hit.distance = (hit.point - query).norm();
     return hit;
+  }
+
+  /// Whether no face outside the box can be as close to `query` as `hit`:
+  /// the ball through the hit lies inside the box, and every face left out
+  /// lies wholly outside it.
+  bool settled(const Vec3& query, const Hit& hit) const
+  {
+    return mesh == nullptr ||
+      ((query.array() - hit.distance > lo.array()).all() && (query.array() + hit.distance < hi.array()).all());
+  }
+
+  const ClosestPointTree& wholeTree() const
+  {
+    std::call_once(wholeBuilt, [this] { whole = std::make_unique<ClosestPointTree>(*mesh); });
+    return *whole;
   }
 };
 
@@ -81,34 +119,75 @@ ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh)
       toPoint(mesh.points[static_cast<std::size_t>(t[1])]),
       toPoint(mesh.points[static_cast<std::size_t>(t[2])]));
   }
-  impl_->tree.insert(impl_->triangles.begin(), impl_->triangles.end());
-  impl_->tree.build();
-  // Queries are chained through hints (see distances()), so CGAL's internal
-  // k-d tree of hints is not worth building. Forcing the lazy construction of
-  // the tree now keeps later queries read-only, hence thread-safe.
-  impl_->tree.do_not_accelerate_distance_queries();
-  impl_->tree.closest_point(impl_->triangles.front().vertex(0));
+  impl_->build();
+}
+
+ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh, const Vec3& lo, const Vec3& hi)
+  : impl_(std::make_unique<Impl>())
+{
+  const std::string problem = validateTriangleMesh(mesh);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument("ClosestPointTree: " + problem);
+  }
+  if (!lo.allFinite() || !hi.allFinite() || !(lo.array() <= hi.array()).all())
+  {
+    throw std::invalid_argument("ClosestPointTree: the box is not a box (lo above hi, or not finite)");
+  }
+  impl_->mesh = &mesh;
+  impl_->lo = lo;
+  impl_->hi = hi;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3& a = mesh.points[static_cast<std::size_t>(t[0])];
+    const Vec3& b = mesh.points[static_cast<std::size_t>(t[1])];
+    const Vec3& c = mesh.points[static_cast<std::size_t>(t[2])];
+    if ((a.cwiseMin(b).cwiseMin(c).array() <= hi.array()).all() &&
+      (a.cwiseMax(b).cwiseMax(c).array() >= lo.array()).all())
+    {
+      impl_->localOf.emplace(static_cast<std::int64_t>(f), impl_->faceIds.size());
+      impl_->faceIds.push_back(static_cast<std::int64_t>(f));
+      impl_->triangles.emplace_back(toPoint(a), toPoint(b), toPoint(c));
+    }
+  }
+  if (!impl_->triangles.empty())
+    impl_->build();
 }
 
 ClosestPointTree::~ClosestPointTree() = default;
 
 ClosestPointTree::Hit ClosestPointTree::closest(const Vec3& query) const
 {
-  return impl_->makeHit(query, impl_->tree.closest_point_and_primitive(toPoint(query)));
+  const Impl& s = *impl_;
+  if (s.triangles.empty())
+    return s.wholeTree().closest(query);
+  const Hit hit = s.makeHit(query, s.tree.closest_point_and_primitive(toPoint(query)));
+  return s.settled(query, hit) ? hit : s.wholeTree().closest(query);
 }
 
 ClosestPointTree::Hit ClosestPointTree::closest(const Vec3& query, const Hit& hint) const
 {
-  if (hint.face < 0)
+  const Impl& s = *impl_;
+  if (hint.face < 0 || s.triangles.empty())
   {
     return closest(query);
   }
+  std::size_t local = static_cast<std::size_t>(hint.face);
+  if (s.mesh)
+  {
+    const auto it = s.localOf.find(hint.face);
+    if (it == s.localOf.end())
+      return closest(query);
+    local = it->second;
+  }
   // The closest point of the previous hit's triangle bounds the search far
   // more tightly than the previous hit point itself.
-  const auto tri = impl_->triangles.begin() + static_cast<std::ptrdiff_t>(hint.face);
+  const auto tri = s.triangles.begin() + static_cast<std::ptrdiff_t>(local);
   const Point q = toPoint(query);
   const Tree::Point_and_primitive_id h(closestPointOnTriangle(*tri, q), tri);
-  return impl_->makeHit(query, impl_->tree.closest_point_and_primitive(q, h));
+  const Hit hit = s.makeHit(query, s.tree.closest_point_and_primitive(q, h));
+  return s.settled(query, hit) ? hit : s.wholeTree().closest(query, hint);
 }
 
 void ClosestPointTree::distances(

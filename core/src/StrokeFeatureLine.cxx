@@ -212,8 +212,17 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     return result;
   }
   // The stroke sampled at most `spacing` apart, each sample projected as it
-  // is made.
-  const ClosestPointTree tree(mesh);
+  // is made, on a tree over the faces near the stroke (those within
+  // `maxDist` of it and a little more; a sample farther than that is refused
+  // anyway, on the whole mesh's tree).
+  Vec3 lo = stroke.front(), hi = stroke.front();
+  for (const Vec3& p : stroke)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vec3 margin = Vec3::Constant(1.01 * maxDist + meanEdge);
+  const ClosestPointTree tree(mesh, lo - margin, hi + margin);
   std::vector<ClosestPointTree::Hit> hits;
   const auto project = [&](const Vec3& sample, std::size_t segment, bool betweenPoints) {
     hits.push_back(hits.empty() ? tree.closest(sample) : tree.closest(sample, hits.back()));

@@ -25,6 +25,14 @@ public:
 
   /// Builds the tree. The mesh must pass validateTriangleMesh.
   explicit ClosestPointTree(const TriangleMesh& mesh);
+  /// A tree over the faces of `mesh` that meet the box [lo, hi] only, for
+  /// queries in and near it (a stroke on a skull of 1.5 million faces meets
+  /// a few thousand). A query whose answer a face outside the box could
+  /// change (its distance reaches the box's side) goes to a tree over the
+  /// whole mesh, built the first time one does; so every answer is the
+  /// closest point on the whole mesh (between faces at the same distance the
+  /// face may differ). `mesh` must outlive the tree.
+  ClosestPointTree(const TriangleMesh& mesh, const Vec3& lo, const Vec3& hi);
   ~ClosestPointTree();
   ClosestPointTree(const ClosestPointTree&) = delete;
   ClosestPointTree& operator=(const ClosestPointTree&) = delete;
