@@ -175,7 +175,6 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
   const double maxDist = o.maxDistance > 0 ? o.maxDistance : 5.0 * meanEdge;
 
   StrokeResult result;
-  result.mesh = mesh;
   result.closed = (strokeIn.front() - strokeIn.back()).norm() <= closeTol;
   // Resample (closing the stroke when its ends meet) and project.
   std::vector<Vec3> stroke = strokeIn;
@@ -211,6 +210,8 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     sortUnique(result.featureEdges);
     return result;
   }
+  // Paint, nearest edges and snap keep the mesh (snap moves line vertices).
+  result.mesh = mesh;
   // The stroke sampled at most `spacing` apart, each sample projected as it
   // is made, on a tree over the faces near the stroke (those within
   // `maxDist` of it and a little more; a sample farther than that is refused
