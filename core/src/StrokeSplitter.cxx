@@ -586,7 +586,7 @@ struct StrokeSplitter::Impl
   Saved save(std::size_t added)
   {
     journal.marks.push_back({ journal.halfedges.size(), journal.vertices.size(), journal.faces.size() });
-    return { journal.marks.size() - 1, m.number_of_vertices(), m.number_of_edges(), m.number_of_faces(), line, added };
+    return { journal.marks.size() - 1, m.num_vertices(), m.num_edges(), m.num_faces(), line, added };
   }
   void restore(const Saved& saved, std::size_t& added)
   {
@@ -734,7 +734,7 @@ struct StrokeSplitter::Impl
         journal = Journal();
         throw;
       }
-        if (!walked)
+      if (!walked)
         restore(saved, added);
       --journaling;
       journal = Journal();
