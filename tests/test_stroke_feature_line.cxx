@@ -168,6 +168,22 @@ TEST(StrokeFeatureLine, BadStrokesAreRefused)
   const lk::TriangleMesh grid = lktest::grid(10, 1.0, 0.0);
   EXPECT_THROW(lk::strokeToFeatureLine(grid, { { 0.5, 0.5, 0 } }, {}), std::invalid_argument);
   EXPECT_THROW(lk::strokeToFeatureLine(grid, { { 0.5, 0.5, 0 }, { std::nan(""), 0, 0 } }, {}), std::invalid_argument);
+  // A point beyond 1e15 (the meshes' limit) is named, not measured: its
+  // distance to the surface overflowed ("a stroke point lies inf from it").
+  for (const auto mode : { lk::StrokeMode::NearestEdges, lk::StrokeMode::Split })
+  {
+    lk::StrokeOptions o;
+    o.mode = mode;
+    try
+    {
+      lk::strokeToFeatureLine(grid, { { 0.5, 0.5, 0 }, { 0.6, 0.5, 0 }, { 1e308, 0.5, 0 } }, o);
+      FAIL() << "a stroke point at 1e308 was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_EQ(std::string(e.what()), "stroke point 3 has a coordinate beyond 1e15 (a corrupt file or an overflow)");
+    }
+  }
   try
   {
     lk::strokeToFeatureLine(grid, { { 0.5, 0.5, 5 }, { 0.6, 0.5, 5 } }, {});

@@ -165,9 +165,9 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     throw std::invalid_argument(problem);
   if (strokeIn.size() < 2)
     throw std::invalid_argument("a stroke needs at least two points");
-  for (const Vec3& p : strokeIn)
-    if (!p.allFinite())
-      throw std::invalid_argument("a stroke point is not finite");
+  for (std::size_t i = 0; i < strokeIn.size(); ++i)
+    if (!isUsablePoint(strokeIn[i]))
+      throw std::invalid_argument("stroke point " + std::to_string(i + 1) + " has " + unusablePointReason(strokeIn[i]));
   const double meanEdge = meanEdgeLength(mesh);
   const double spacing = o.spacing > 0 ? o.spacing : 0.25 * meanEdge;
   const double radius = o.brushRadius > 0 ? o.brushRadius : 0.5 * meanEdge;

@@ -782,8 +782,8 @@ StrokeSplitter::~StrokeSplitter() = default;
 std::size_t StrokeSplitter::addPoint(const Vec3& point)
 {
   Impl& s = *impl_;
-  if (!point.allFinite())
-    throw std::invalid_argument("a stroke point is not finite");
+  if (!isUsablePoint(point))
+    throw std::invalid_argument(std::string("a stroke point has ") + unusablePointReason(point));
   if (s.closed)
     throw std::invalid_argument("the line is closed; start a new splitter for another stroke");
   const auto hit = s.tree.closest(point);
