@@ -30,6 +30,8 @@ using Triple = std::array<vtkIdType, 3>;
 class TrianglesByCorners
 {
 public:
+  /// `triangles`: a value (its input cell) and the sorted corners of each,
+  /// corners below `points`.
   TrianglesByCorners(vtkIdType points, std::vector<std::pair<vtkIdType, Triple>> triangles)
     : Offsets(static_cast<std::size_t>(points) + 1, 0)
   {
@@ -45,7 +47,8 @@ public:
       this->Entries[static_cast<std::size_t>(next[static_cast<std::size_t>(t.second[0])]++)] = std::move(t);
   }
 
-  /// The id of the first triangle with these (sorted) corners, or -1.
+  /// The value given with the first triangle that has these (sorted)
+  /// corners, or -1.
   vtkIdType find(const Triple& corners) const
   {
     if (corners[0] < 0 || corners[0] + 1 >= static_cast<vtkIdType>(this->Offsets.size()))

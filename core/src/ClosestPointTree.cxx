@@ -5,9 +5,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
-#include <unordered_map>
 #include <stdexcept>
 #include <vector>
 
@@ -51,17 +51,23 @@ Point toPoint(const Vec3& v)
 {
   return Point(v.x(), v.y(), v.z());
 }
+
+void validate(const TriangleMesh& mesh)
+{
+  const std::string problem = validateTriangleMesh(mesh);
+  if (!problem.empty())
+    throw std::invalid_argument("ClosestPointTree: " + problem);
+}
 } // namespace
 
 struct ClosestPointTree::Impl
 {
   std::vector<CgalTriangle> triangles;
   Tree tree;
-  /// A tree over part of a mesh: its faces' ids on the mesh (in the order
-  /// of `triangles`), the inverse, the box the part meets, the whole mesh
-  /// and the tree over all of it, once a query needs it.
+  /// A tree over part of a mesh: its faces' ids on the mesh (ascending, in
+  /// the order of `triangles`), the box the part meets, the whole mesh and
+  /// the tree over all of it, once a query needs it.
   std::vector<std::int64_t> faceIds;
-  std::unordered_map<std::int64_t, std::size_t> localOf;
   Vec3 lo{ Vec3::Zero() }, hi{ Vec3::Zero() };
   const TriangleMesh* mesh = nullptr;
   mutable std::once_flag wholeBuilt;
@@ -107,11 +113,7 @@ struct ClosestPointTree::Impl
 ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh)
   : impl_(std::make_unique<Impl>())
 {
-  const std::string problem = validateTriangleMesh(mesh);
-  if (!problem.empty())
-  {
-    throw std::invalid_argument("ClosestPointTree: " + problem);
-  }
+  validate(mesh);
   impl_->triangles.reserve(mesh.triangles.size());
   for (const Triangle& t : mesh.triangles)
   {
@@ -125,11 +127,7 @@ ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh)
 ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh, const Vec3& lo, const Vec3& hi)
   : impl_(std::make_unique<Impl>())
 {
-  const std::string problem = validateTriangleMesh(mesh);
-  if (!problem.empty())
-  {
-    throw std::invalid_argument("ClosestPointTree: " + problem);
-  }
+  validate(mesh);
   if (!lo.allFinite() || !hi.allFinite() || !(lo.array() <= hi.array()).all())
   {
     throw std::invalid_argument("ClosestPointTree: the box is not a box (lo above hi, or not finite)");
@@ -146,7 +144,6 @@ ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh, const Vec3& lo, con
     if ((a.cwiseMin(b).cwiseMin(c).array() <= hi.array()).all() &&
       (a.cwiseMax(b).cwiseMax(c).array() >= lo.array()).all())
     {
-      impl_->localOf.emplace(static_cast<std::int64_t>(f), impl_->faceIds.size());
       impl_->faceIds.push_back(static_cast<std::int64_t>(f));
       impl_->triangles.emplace_back(toPoint(a), toPoint(b), toPoint(c));
     }
@@ -176,10 +173,10 @@ ClosestPointTree::Hit ClosestPointTree::closest(const Vec3& query, const Hit& hi
   std::size_t local = static_cast<std::size_t>(hint.face);
   if (s.mesh)
   {
-    const auto it = s.localOf.find(hint.face);
-    if (it == s.localOf.end())
+    const auto it = std::lower_bound(s.faceIds.begin(), s.faceIds.end(), hint.face);
+    if (it == s.faceIds.end() || *it != hint.face)
       return closest(query);
-    local = it->second;
+    local = static_cast<std::size_t>(it - s.faceIds.begin());
   }
   // The closest point of the previous hit's triangle bounds the search far
   // more tightly than the previous hit point itself.

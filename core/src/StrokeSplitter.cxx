@@ -581,7 +581,7 @@ struct StrokeSplitter::Impl
     std::vector<std::array<std::size_t, 3>> marks; ///< sizes of the three at each save
   };
   Journal journal;
-  int journaling = 0; ///< ways round in progress (nothing is recorded outside them)
+  bool journaling = false; ///< ways round in progress (nothing is recorded outside them)
 
   Saved save(std::size_t added)
   {
@@ -620,7 +620,7 @@ struct StrokeSplitter::Impl
   /// neighbours in their loops and sets the halfedge of h's source.
   void record(HI h)
   {
-    if (journaling == 0)
+    if (!journaling)
       return;
     auto halfedge = [&](HI g) {
       journal.halfedges.push_back({ g, m.next(g), m.prev(g), m.target(g), m.face(g) });
@@ -718,28 +718,32 @@ struct StrokeSplitter::Impl
     }
     catch (const std::invalid_argument&)
     {
+      // The ways round are journalled while they are tried, and the journal
+      // goes with them however they end.
+      journaling = true;
+      struct Done
+      {
+        Impl& s;
+        ~Done()
+        {
+          s.journaling = false;
+          s.journal = Journal();
+        }
+      } done{ *this };
       std::size_t added = 0;
-      ++journaling;
       const Saved saved = save(added);
       triesLeft = kTries;
-      bool walked = false;
       try
       {
-        walked = walkInParts(a, x, normalAtX, target, kWaysRound, added);
+        if (walkInParts(a, x, normalAtX, target, kWaysRound, added))
+          return added;
       }
       catch (...)
       {
         restore(saved, added);
-        --journaling;
-        journal = Journal();
         throw;
       }
-      if (!walked)
-        restore(saved, added);
-      --journaling;
-      journal = Journal();
-      if (walked)
-        return added;
+      restore(saved, added);
       throw;
     }
   }
