@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
+#include <string>
 
 #include <vector>
 
@@ -153,6 +156,77 @@ TEST(ManifoldRepair, NonManifoldEdgeIsSeparated)
   lk::repairToManifold(m);
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(m), "");
   EXPECT_EQ(m.triangles.size(), 3u);
+}
+
+TEST(ManifoldRepair, EachMeshASurfaceMeshCannotHoldIsNamedWhateverTheTrianglesOrder)
+{
+  // The check builds the Surface_mesh face by face: the order of the
+  // triangles must not decide whether a manifold mesh loads.
+  const std::string notAMesh = "the triangles do not form a manifold, consistently oriented mesh "
+                               "(non-manifold edge or vertex, or inconsistent orientation)";
+  lk::TriangleMesh sphere = lktest::icosphere(2, 1.0);
+  std::mt19937 rng(4);
+  for (int round = 0; round < 50; ++round)
+  {
+    std::shuffle(sphere.triangles.begin(), sphere.triangles.end(), rng);
+    ASSERT_EQ(lk::cgalSurfaceMeshProblem(sphere), "") << "order " << round;
+    lk::TriangleMesh open = sphere; // the upper half, a disc: fans that meet late
+    open.triangles.erase(std::remove_if(open.triangles.begin(), open.triangles.end(),
+                           [&](const lk::Triangle& t) {
+                             return open.points[static_cast<std::size_t>(t[0])].z() +
+                               open.points[static_cast<std::size_t>(t[1])].z() +
+                               open.points[static_cast<std::size_t>(t[2])].z() < 0.1;
+                           }),
+      open.triangles.end());
+    std::vector<std::int64_t> newId(open.points.size(), -1);
+    std::vector<lk::Vec3> kept;
+    for (auto& tri : open.triangles)
+      for (auto& id : tri)
+      {
+        auto& n = newId[static_cast<std::size_t>(id)];
+        if (n < 0)
+        {
+          n = static_cast<std::int64_t>(kept.size());
+          kept.push_back(open.points[static_cast<std::size_t>(id)]);
+        }
+        id = n;
+      }
+    open.points = kept; // no point left alone (a lone vertex is no valid Surface_mesh)
+    ASSERT_EQ(lk::cgalSurfaceMeshProblem(open), "") << "order " << round;
+  }
+
+  lk::TriangleMesh flipped = sphere;
+  std::swap(flipped.triangles[7][0], flipped.triangles[7][1]);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(flipped), notAMesh);
+
+  lk::TriangleMesh pinched = merged(lktest::cube(), translated(lktest::cube(), lk::Vec3(1, 1, 1)));
+  for (auto& t : pinched.triangles)
+    for (auto& id : t)
+      if (id == 8)
+        id = 7; // the cubes share a corner, each whole
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(pinched), notAMesh);
+
+  lk::TriangleMesh book;
+  book.points = { lk::Vec3(0, 0, 0), lk::Vec3(0, 0, 1), lk::Vec3(1, 0, 0), lk::Vec3(0, 1, 0), lk::Vec3(-1, -1, 0) };
+  book.triangles = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } };
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(book), notAMesh);
+
+  lk::TriangleMesh twice = sphere;
+  twice.triangles.push_back(twice.triangles[3]);
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(twice), notAMesh);
+
+  lk::TriangleMesh repeats = sphere;
+  repeats.triangles[5][2] = repeats.triangles[5][0];
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(repeats), "a triangle repeats a vertex");
+
+  lk::TriangleMesh flat = sphere;
+  const auto t = flat.triangles[9];
+  flat.points[static_cast<std::size_t>(t[2])] = flat.points[static_cast<std::size_t>(t[0])];
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(flat), "the mesh has a degenerate (zero-area) triangle");
+
+  lk::TriangleMesh outOfRange = sphere;
+  outOfRange.triangles[0][1] = static_cast<std::int64_t>(outOfRange.points.size());
+  EXPECT_NE(lk::cgalSurfaceMeshProblem(outOfRange), "");
 }
 
 TEST(ManifoldRepair, DegenerateTrianglesAreRemoved)

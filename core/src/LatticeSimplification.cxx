@@ -336,14 +336,11 @@ void checkOptions(const TriangleMesh& mesh, const SimplificationOptions& o)
 SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vector<EdgeKey>& featureEdges,
   const SimplificationOptions& options)
 {
-  const std::string problem = cgalSurfaceMeshProblem(input);
+  Mesh mesh;
+  const std::string problem = cgal::checkedSurfaceMesh(input, mesh);
   if (!problem.empty())
     throw std::invalid_argument(problem);
   checkOptions(input, options);
-
-  Mesh mesh;
-  if (!cgal::toSurfaceMesh(input, mesh))
-    throw std::invalid_argument("the mesh is not a manifold, consistently oriented triangle mesh");
 
   State state{ mesh, options, mesh.add_property_map<VD, Quadric>("v:q").first,
     mesh.add_property_map<ED, Quadric>("e:q").first, mesh.add_property_map<ED, bool>("e:feature", false).first,

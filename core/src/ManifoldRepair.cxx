@@ -38,6 +38,8 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::vector<std::size_t>;
+const char* const kNotAPolygonMesh = "the triangles do not form a manifold, consistently oriented mesh "
+                                     "(non-manifold edge or vertex, or inconsistent orientation)";
 
 template <typename PolygonT>
 void toSoup(const TriangleMesh& mesh, std::vector<Point>& points, std::vector<PolygonT>& polygons)
@@ -246,38 +248,46 @@ RepairReport repairToManifold(TriangleMesh& mesh, const std::function<bool(doubl
 
 std::string cgalSurfaceMeshProblem(const TriangleMesh& mesh)
 {
+  cgal::SurfaceMesh sm;
+  return cgal::checkedSurfaceMesh(mesh, sm);
+}
+
+namespace cgal
+{
+std::string checkedSurfaceMesh(const TriangleMesh& mesh, SurfaceMesh& sm)
+{
   std::string problem = validateTriangleMesh(mesh);
   if (!problem.empty())
   {
     return problem;
   }
-  std::vector<Point> points;
-  std::vector<Polygon> polygons;
-  toSoup(mesh, points, polygons);
-  for (const Polygon& p : polygons)
+  for (const Triangle& t : mesh.triangles)
   {
-    if (p[0] == p[1] || p[1] == p[2] || p[0] == p[2])
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
     {
       return "a triangle repeats a vertex";
     }
   }
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  // Built face by face: a face that cannot be added (an edge with a third
+  // face or two the same way round) or a vertex left with two fans is what
+  // is_polygon_soup_a_polygon_mesh refuses; the mesh is built once, not a
+  // soup checked and then a mesh built from it (a sixth of the fit of a
+  // whole skull).
+  sm.clear();
+  if (!toSurfaceMesh(mesh, sm))
   {
-    return "the triangles do not form a manifold, consistently oriented mesh "
-           "(non-manifold edge or vertex, or inconsistent orientation)";
-  }
-  Mesh sm;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
-  if (!CGAL::is_valid_polygon_mesh(sm))
-  {
-    return "CGAL::is_valid_polygon_mesh fails";
+    return kNotAPolygonMesh;
   }
   // One pass over the mesh (is_non_manifold_vertex scans it once per vertex).
   std::vector<Mesh::Halfedge_index> pinched;
   PMP::non_manifold_vertices(sm, std::back_inserter(pinched));
   if (!pinched.empty())
   {
-    return "the mesh has a non-manifold vertex";
+    return kNotAPolygonMesh;
+  }
+  if (!CGAL::is_valid_polygon_mesh(sm))
+  {
+    return "CGAL::is_valid_polygon_mesh fails";
   }
   for (auto f : sm.faces())
   {
@@ -288,6 +298,7 @@ std::string cgalSurfaceMeshProblem(const TriangleMesh& mesh)
   }
   return {};
 }
+} // namespace cgal
 
 std::size_t countBoundaryEdges(const TriangleMesh& mesh)
 {

@@ -9,6 +9,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <string>
+
 namespace lk
 {
 namespace cgal
@@ -32,6 +34,12 @@ inline bool toSurfaceMesh(const TriangleMesh& mesh, SurfaceMesh& out)
   }
   return true;
 }
+
+/// Empty when `mesh` loads into a valid Surface_mesh (manifold, no pinched
+/// vertices, consistently oriented, no degenerate triangle), which `out` then
+/// holds as toSurfaceMesh builds it; otherwise the reason it does not
+/// (lk::cgalSurfaceMeshProblem's words; defined in ManifoldRepair.cxx).
+std::string checkedSurfaceMesh(const TriangleMesh& mesh, SurfaceMesh& out);
 
 /// The triangles of `sm` (garbage collected first, so ids are compact);
 /// faces that are not triangles are left out.
