@@ -78,6 +78,11 @@ void usage(std::ostream& os)
         "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 0;\n"
         "                       20 takes a label map's slice staircase out, moving the surface\n"
         "                       by about 0.07 mm on average, up to about 1 mm)\n"
+        "  --image-smooth S     Gaussian smoothing of the volume before its surface, standard\n"
+        "                       deviation in voxels, 0 to 20 (default 1 for a 0/1 label map, none\n"
+        "                       for a CT). A Gaussian of one voxel across 2.5 mm slices wears thin\n"
+        "                       processes down (a coronoid's tip by 3 to 6 mm): --image-smooth 0.5\n"
+        "                       --smooth 20 follows a label map's shape more closely\n"
         "  --head X,Y,Z --front X,Y,Z\n"
         "                       for a scan whose file gives no orientation (a NIfTI without qform\n"
         "                       or sform): where the patient's head and face point in its\n"
@@ -133,6 +138,7 @@ int main(int argc, char* argv[])
   double iso = 300.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool isoGiven = false, seeded = false, cropped = false, closed = false;
   long series = -1, smoothing = -1, label = 0;
+  double imageSmoothing = -1.0;
   std::string labelName;
   double head[3] = { 0, 0, 0 }, front[3] = { 0, 0, 0 };
   bool headGiven = false, frontGiven = false;
@@ -161,6 +167,8 @@ int main(int argc, char* argv[])
       series = args.integer(a, 0, std::numeric_limits<int>::max(), "an integer >= 0");
     else if (a == "--smooth")
       smoothing = args.integer(a, 0, 1000, "an integer from 0 to 1000");
+    else if (a == "--image-smooth")
+      imageSmoothing = args.number(a, 0.0, 20.0, "a number from 0 to 20");
     else if (a == "--label")
       args.labelOrName(a, label, labelName);
     else if (a == "--head")
@@ -232,7 +240,8 @@ int main(int argc, char* argv[])
     std::vector<std::string> given;
     for (const auto& [on, name] : { std::make_pair(isoGiven, "--iso"), std::make_pair(seeded, "--seed"),
            std::make_pair(cropped, "--crop"), std::make_pair(closed, "--close"), std::make_pair(series >= 0, "--series"),
-           std::make_pair(smoothing >= 0, "--smooth"), std::make_pair(label > 0 || !labelName.empty(), "--label"),
+           std::make_pair(smoothing >= 0, "--smooth"), std::make_pair(imageSmoothing >= 0.0, "--image-smooth"),
+           std::make_pair(label > 0 || !labelName.empty(), "--label"),
            std::make_pair(headGiven, "--head"), std::make_pair(frontGiven, "--front") })
       if (on)
         given.emplace_back(name);
@@ -242,7 +251,8 @@ int main(int argc, char* argv[])
       for (std::size_t k = 0; k < given.size(); ++k)
         names += (k == 0 ? "" : k + 1 == given.size() ? " and " : ", ") + given[k];
       std::cerr << "error: " << names << (given.size() == 1 ? " is" : " are") << " for a CT or label map (--iso, --seed, "
-                << "--crop, --close, --series, --smooth, --label, --head, --front); '" << input << "' is a mesh\n";
+                << "--crop, --close, --series, --smooth, --image-smooth, --label, --head, --front); '" << input
+                << "' is a mesh\n";
       return 2;
     }
     mesh = lkapp::readMesh(input, error);
@@ -277,6 +287,8 @@ int main(int argc, char* argv[])
       used.series = series;
     if (smoothing >= 0)
       used.smoothing = smoothing;
+    if (imageSmoothing >= 0.0)
+      used.imageSmoothing = imageSmoothing;
     if (label > 0 || !labelName.empty())
     {
       used.label = label;
@@ -301,6 +313,7 @@ int main(int argc, char* argv[])
     bone->SetCropBox(used.crop.data());
     bone->SetCloseAtBorder(used.closed);
     bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
+    bone->SetImageSmoothing(used.imageSmoothing);
     bone->SetLabel(static_cast<int>(used.label));
     bone->SetLabelName(used.labelName.empty() ? nullptr : used.labelName.c_str());
   }
@@ -401,6 +414,8 @@ int main(int argc, char* argv[])
       std::cout << "the largest component";
     if (reader->GetNumberOfSeries() > 0)
       std::cout << ", series " << std::max<long>(0, used.series) << " of " << reader->GetNumberOfSeries();
+    if (used.imageSmoothing >= 0.0)
+      std::cout << ", a Gaussian of " << used.imageSmoothing << " voxel on the volume";
     if (used.smoothing > 0)
       std::cout << ", smoothed (" << used.smoothing << " windowed-sinc iterations)";
     std::cout << ")\n";

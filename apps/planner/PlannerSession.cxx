@@ -197,6 +197,8 @@ std::string sessionText(const Session& s)
       root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
     if (s.surface.smoothing > 0)
       root["surface"]["smooth"] = static_cast<Json::Int64>(s.surface.smoothing);
+    if (s.surface.imageSmoothing >= 0.0)
+      root["surface"]["image_smooth"] = s.surface.imageSmoothing;
     if (!s.surface.labelName.empty())
       root["surface"]["label"] = s.surface.labelName;
     else if (s.surface.label > 0)
@@ -647,19 +649,25 @@ bool readSession(
   {
     const Json::Value& js = root["surface"];
     const std::string where = "the surface of " + session;
-    noteUnknownMembers(js, { "iso", "seed", "crop", "series", "close", "smooth", "label" }, where, notes);
+    noteUnknownMembers(js, { "iso", "seed", "crop", "series", "close", "smooth", "image_smooth", "label" }, where, notes);
     long long series = -1;
     const auto seriesIndex = [](const Json::Value& v, long long& out) {
       return jsonInteger(v, 0, std::numeric_limits<int>::max(), out);
     };
     long long smoothing = 0, label = 0;
     const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 1000, out); };
+    double imageSmoothing = -1.0;
+    const auto gaussian = [](const Json::Value& v, double& out) {
+      return jsonNumber(v, out) && out >= 0.0 && out <= 20.0;
+    };
     const auto labelValue = [](const Json::Value& v, long long& out) {
       return jsonInteger(v, 1, std::numeric_limits<int>::max(), out);
     };
     if (!js.isObject() || !jsonMember(js, "iso", s.surface.iso, jsonNumber, where, "a number", error) ||
       !jsonMember(js, "series", series, seriesIndex, where, "a whole number of 0 or more", error) ||
       !jsonMember(js, "smooth", smoothing, iterations, where, "a whole number from 0 to 1000", error) ||
+      !jsonMember(js, "image_smooth", imageSmoothing, gaussian, where,
+        "a standard deviation from 0 to 20 voxels", error) ||
       (js.isMember("label") && js["label"].isString()
           ? !jsonMember(js, "label", s.surface.labelName, jsonString, where, "a segment's name", error)
           : !jsonMember(js, "label", label, labelValue, where, "a label value of 1 or more or a segment's name",
@@ -667,7 +675,7 @@ bool readSession(
       !jsonMember(js, "close", s.surface.closed, jsonBool, where, "true or false", error))
     {
       if (!js.isObject())
-        error = session + ": \"surface\" must be an object (iso, seed, crop, series, close, smooth, label)";
+        error = session + ": \"surface\" must be an object (iso, seed, crop, series, close, smooth, image_smooth, label)";
       return false;
     }
     if (js.isMember("seed"))
@@ -690,6 +698,7 @@ bool readSession(
     }
     s.surface.series = static_cast<long>(series);
     s.surface.smoothing = static_cast<long>(smoothing);
+    s.surface.imageSmoothing = imageSmoothing;
     s.surface.label = static_cast<long>(label);
     s.surface.given = true;
   }

@@ -265,6 +265,9 @@ struct Session
     bool closed = false; ///< closed where the scan's border cuts bone (a crop always is)
     long series = -1; ///< -1: the largest
     long smoothing = 0; ///< windowed-sinc iterations on the surface
+    /// Gaussian standard deviation on the volume, in voxels (negative: the
+    /// bone filter's own, 1 for a label map and none for a CT).
+    double imageSmoothing = -1.0;
     long label = 0; ///< one label of a label map with several (0: none)
     std::string labelName; ///< or a 3D Slicer segmentation's segment by name
   } surface;
