@@ -38,7 +38,11 @@
  * what is only a few voxels thick (a printed guide's 4 mm wall on 2.5 mm
  * slices, read back from a structure set): when the (closed) surface
  * encloses less than 80 % of the labelled voxels' volume, a warning says so
- * (ImageSmoothing 0 keeps such a label whole). Steps 1 to 3 take a label
+ * (ImageSmoothing 0 keeps such a label whole). Across 2.5 mm slices one
+ * voxel also wears thin processes down (a smooth mandible's coronoid tips
+ * came out 3.5 to 5.9 mm short): ImageSmoothing 0.5 with SmoothingIterations
+ * 20 followed shapes of known surface more closely on average in every case
+ * measured (NOTES, session 72). Steps 1 to 3 take a label
  * map's content only (the voxels other than its smallest value, and a margin
  * of background twice the Gaussian's reach and two voxels wide,
  * vtkExtractVOI): the same triangles as over the whole grid, since the
