@@ -974,7 +974,10 @@ std::string Arguments::value(const std::string& arg)
     std::cerr << "error: " << arg << " needs a value\n";
     std::exit(2);
   }
-  return argv_[++i_];
+  const std::string v = argv_[++i_];
+  if (!given_.insert(arg).second)
+    std::cerr << "warning: " << arg << " is given more than once; the last value, '" << v << "', is taken\n";
+  return v;
 }
 
 long Arguments::integer(const std::string& arg, long lo, long hi, const char* what)

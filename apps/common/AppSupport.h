@@ -8,6 +8,7 @@
 
 #include <iosfwd>
 #include <initializer_list>
+#include <set>
 #include <array>
 #include <string>
 #include <vector>
@@ -203,7 +204,9 @@ public:
   Arguments(int argc, char* argv[], Usage usage);
   /// The next argument, or false at the end. -h / --help prints the usage and exits 0.
   bool next(std::string& arg);
-  /// The value after option `arg`.
+  /// The value after option `arg`. An option given a value more than once
+  /// takes the last, with a warning that says so (a script's defaults
+  /// followed by the user's are then seen to be overridden).
   std::string value(const std::string& arg);
   /// An integer value in [lo, hi].
   long integer(const std::string& arg, long lo, long hi, const char* what);
@@ -234,6 +237,7 @@ private:
   char** argv_;
   int i_ = 0;
   Usage usage_;
+  std::set<std::string> given_; ///< the options given a value so far
 };
 
 /// Why --iso was not used, for a volume taken as a label map at 0.5 (the
