@@ -75,14 +75,15 @@ void usage(std::ostream& os)
         "                       voxels of value N), or by name a segment of a segmentation\n"
         "                       (.seg.nrrd, DICOM SEG) or an ROI of an RT structure set\n"
         "  --series I           DICOM: series I of the folder (0 = largest, the default)\n"
-        "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 0;\n"
-        "                       20 takes a label map's slice staircase out, moving the surface\n"
-        "                       by about 0.07 mm on average, up to about 1 mm)\n"
+        "  --smooth N           windowed-sinc smoothing of the surface, N iterations (default 20\n"
+        "                       for a 0/1 label map, which takes its slice staircase out, none\n"
+        "                       for a CT; each iteration moves the surface a little)\n"
         "  --image-smooth S     Gaussian smoothing of the volume before its surface, standard\n"
-        "                       deviation in voxels, 0 to 20 (default 1 for a 0/1 label map, none\n"
-        "                       for a CT). A Gaussian of one voxel across 2.5 mm slices wears thin\n"
-        "                       processes down (a coronoid's tip by 3 to 6 mm): --image-smooth 0.5\n"
-        "                       --smooth 20 follows a label map's shape more closely\n"
+        "                       deviation in voxels, 0 to 20 (default 0.5 for a 0/1 label map,\n"
+        "                       none for a CT). With 20 iterations this followed label maps of\n"
+        "                       known shapes most closely; one voxel (the default before\n"
+        "                       December 2026; a session saved then keeps it) wears thin\n"
+        "                       processes down across 2.5 mm slices (a coronoid's tip by 3 to 6 mm)\n"
         "  --head X,Y,Z --front X,Y,Z\n"
         "                       for a scan whose file gives no orientation (a NIfTI without qform\n"
         "                       or sform): where the patient's head and face point in its\n"
@@ -314,6 +315,11 @@ int main(int argc, char* argv[])
     bone->SetCloseAtBorder(used.closed);
     bone->SetSmoothingIterations(static_cast<int>(used.smoothing));
     bone->SetImageSmoothing(used.imageSmoothing);
+    if (used.labelMapDefaultsOfBefore)
+    {
+      bone->SetLabelMapImageSmoothing(1.0);
+      bone->SetLabelMapSmoothingIterations(0);
+    }
     bone->SetLabel(static_cast<int>(used.label));
     bone->SetLabelName(used.labelName.empty() ? nullptr : used.labelName.c_str());
   }
@@ -364,6 +370,12 @@ int main(int argc, char* argv[])
   planner.bone = vtkSmartPointer<vtkPolyData>::New();
   planner.bone->ShallowCopy(surface->GetOutput());
   planner.scanIsLabelMap = !mesh && organNote.empty() && bone->GetTreatedAsLabelMap();
+  if (!mesh) // the session keeps what was used, so that a replay makes the same surface whatever the defaults
+  {
+    planner.session.surface.imageSmoothing = bone->GetEffectiveImageSmoothing();
+    planner.session.surface.smoothing = bone->GetEffectiveSmoothingIterations();
+    planner.session.surface.labelMapDefaultsOfBefore = false;
+  }
   planner.input = vtksys::SystemTools::CollapseFullPath(input);
   if (!mesh)
     planner.referenceImage = reader->GetReferenceImageFileName();
@@ -414,7 +426,7 @@ int main(int argc, char* argv[])
       std::cout << "the largest component";
     if (reader->GetNumberOfSeries() > 0)
       std::cout << ", series " << std::max<long>(0, used.series) << " of " << reader->GetNumberOfSeries();
-    if (used.imageSmoothing >= 0.0)
+    if (used.imageSmoothing > 0.0)
       std::cout << ", a Gaussian of " << used.imageSmoothing << " voxel on the volume";
     if (used.smoothing > 0)
       std::cout << ", smoothed (" << used.smoothing << " windowed-sinc iterations)";

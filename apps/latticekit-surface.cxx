@@ -41,14 +41,15 @@ void usage(std::ostream& os)
         "                     air so that the surface closes where the box cuts bone\n"
         "  --close            close the surface where the scan's border cuts bone (padded\n"
         "                     with air as a crop is): a skull vault above the last slice\n"
-        "  --smooth N         windowed-sinc smoothing iterations on the surface (default 0;\n"
-        "                     20 takes a label map's slice staircase out, moving the surface\n"
-        "                     by about 0.07 mm on average and up to about 1 mm)\n"
+        "  --smooth N         windowed-sinc smoothing iterations on the surface (default:\n"
+        "                     20 for label maps, which takes the slice staircase out, none\n"
+        "                     for CT)\n"
         "  --image-smooth S   Gaussian smoothing of the volume, std. dev. in voxels\n"
-        "                     (default: 1 for label maps, none for CT). One voxel across\n"
-        "                     2.5 mm slices wears thin processes down (a coronoid's tip by\n"
-        "                     3 to 6 mm): --image-smooth 0.5 --smooth 20 follows a label\n"
-        "                     map's shape more closely\n"
+        "                     (default: 0.5 for label maps, none for CT). With 20 iterations\n"
+        "                     this followed label maps of known shapes most closely; one\n"
+        "                     voxel (--image-smooth 1 --smooth 0, the default before December\n"
+        "                     2026) wears thin processes down across 2.5 mm slices (a\n"
+        "                     coronoid's tip by 3 to 6 mm)\n"
         "  --label-map        treat the input as a 0/1 label map (auto-detected otherwise)\n"
         "  --no-label-map     never treat the input as a label map\n"
         "  --label N|NAME     one label of a label map with several (a segmentation: its\n"
@@ -75,7 +76,7 @@ int main(int argc, char* argv[])
   bool isoGiven = false;
   double iso = 300.0, imageSmooth = -1.0, seed[3] = { 0, 0, 0 }, crop[6] = { 0, 0, 0, 0, 0, 0 };
   bool cropping = false, close = false;
-  long smooth = 0, series = -1;
+  long smooth = -1, series = -1;
   double sliceSpacing = 0.0;
   int mode = vtkLKBoneSurfaceFilter::LARGEST_COMPONENT;
   int labelMode = vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO;
@@ -319,6 +320,9 @@ int main(int argc, char* argv[])
                      (segment.empty() ? std::string() : ", segment '" + segment + "'") + ")"
                    : std::string(surface->GetTreatedAsLabelMap() ? " (label map)" : ""))
             << "\n";
+  if (surface->GetEffectiveImageSmoothing() > 0.0 || surface->GetEffectiveSmoothingIterations() > 0)
+    std::cout << "smoothing  a Gaussian of " << surface->GetEffectiveImageSmoothing() << " voxel on the volume, "
+              << surface->GetEffectiveSmoothingIterations() << " windowed-sinc iterations on the surface\n";
   std::cout << "surface    " << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfPolys()
             << " triangles\n";
   auto field = [&](const char* name) -> long {

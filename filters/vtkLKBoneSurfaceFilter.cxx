@@ -311,6 +311,8 @@ void vtkLKBoneSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "ImageSmoothing: " << this->ImageSmoothing << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "LabelMapImageSmoothing: " << this->LabelMapImageSmoothing << "\n";
+  os << indent << "LabelMapSmoothingIterations: " << this->LabelMapSmoothingIterations << "\n";
   os << indent << "FillCavities: " << this->FillCavities << "\n";
   os << indent << "ExtractionMode: " << this->ExtractionMode << "\n";
   os << indent << "SeedPoint: " << this->SeedPoint[0] << " " << this->SeedPoint[1] << " "
@@ -380,6 +382,12 @@ int vtkLKBoneSurfaceFilter::RequestData(
   {
     vtkErrorMacro("ImageSmoothing must be a standard deviation from 0 to 20 voxels (negative: automatic), not "
       << this->ImageSmoothing << ".");
+    return 0;
+  }
+  if (!(this->LabelMapImageSmoothing >= 0.0 && this->LabelMapImageSmoothing <= 20.0))
+  {
+    vtkErrorMacro("LabelMapImageSmoothing must be a standard deviation from 0 to 20 voxels, not "
+      << this->LabelMapImageSmoothing << ".");
     return 0;
   }
   {
@@ -564,8 +572,13 @@ int vtkLKBoneSurfaceFilter::RequestData(
   double sigma = this->ImageSmoothing;
   if (sigma < 0.0)
   {
-    sigma = this->TreatedAsLabelMap ? 1.0 : 0.0;
+    sigma = this->TreatedAsLabelMap ? this->LabelMapImageSmoothing : 0.0;
   }
+  const int iterations = this->SmoothingIterations >= 0 ? this->SmoothingIterations
+    : this->TreatedAsLabelMap                           ? this->LabelMapSmoothingIterations
+                                                        : 0;
+  this->EffectiveImageSmoothing = sigma;
+  this->EffectiveSmoothingIterations = iterations;
 
   double range[2];
   input->GetPointData()->GetScalars()->GetRange(range);
@@ -787,10 +800,10 @@ int vtkLKBoneSurfaceFilter::RequestData(
 
   vtkNew<vtkWindowedSincPolyDataFilter> smoother;
   lkvtk::ProgressRelay smoothProgress(this, smoother, 0.85, 1.0);
-  if (this->SmoothingIterations > 0)
+  if (iterations > 0)
   {
     smoother->SetInputData(surface);
-    smoother->SetNumberOfIterations(this->SmoothingIterations);
+    smoother->SetNumberOfIterations(iterations);
     smoother->SetPassBand(0.1);
     smoother->BoundarySmoothingOff();
     smoother->FeatureEdgeSmoothingOff();

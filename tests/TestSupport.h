@@ -65,12 +65,19 @@ inline std::string sampleData(const std::string& relative)
 /// A bundled TCIA mandible (0522c0017 or TCGA-CV-7236) as
 /// vtkLKBoneSurfaceFilter makes it with its defaults (12,212 points for the
 /// first); empty if it cannot be read.
-inline vtkSmartPointer<vtkPolyData> tciaMandibleSurface(const std::string& patient = "0522c0017")
+/// oneVoxel: as the label map's surface was made by default until December
+/// 2026 (a Gaussian of one voxel, no smoothing of the surface).
+inline vtkSmartPointer<vtkPolyData> tciaMandibleSurface(const std::string& patient = "0522c0017", bool oneVoxel = false)
 {
   vtkNew<vtkLKMedicalImageReader> reader;
   reader->SetFileName(sampleData("mandible-tcia/test_oncologist_" + patient + "_Mandible.nrrd").c_str());
   vtkNew<vtkLKBoneSurfaceFilter> bone;
   bone->SetInputConnection(reader->GetOutputPort());
+  if (oneVoxel)
+  {
+    bone->SetImageSmoothing(1.0);
+    bone->SetSmoothingIterations(0);
+  }
   bone->Update();
   auto surface = vtkSmartPointer<vtkPolyData>::New();
   surface->ShallowCopy(bone->GetOutput());

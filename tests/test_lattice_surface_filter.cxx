@@ -129,7 +129,11 @@ TEST(LatticeSurfaceFilter, MixedFacesGiveAWatertightSurface)
 
 TEST(LatticeSurfaceFilter, DecimatedMandibleLattice)
 {
-  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface();
+  // The surface as it was made by default until December 2026, whose
+  // decimation has the folded-back fan below. (vtkQuadricDecimation's
+  // lattice of today's default surface has two patches that fold at a
+  // valence-3 vertex between two slivers: NOTES, session 73.)
+  vtkSmartPointer<vtkPolyData> bone = lktest::tciaMandibleSurface("0522c0017", true);
   vtkNew<vtkQuadricDecimation> decimate;
   decimate->SetInputData(bone);
   decimate->SetTargetReduction(1.0 - 2000.0 / static_cast<double>(bone->GetNumberOfPoints()));

@@ -195,7 +195,7 @@ std::string sessionText(const Session& s)
       root["surface"]["close"] = true;
     if (s.surface.series >= 0)
       root["surface"]["series"] = static_cast<Json::Int64>(s.surface.series);
-    if (s.surface.smoothing > 0)
+    if (s.surface.smoothing >= 0)
       root["surface"]["smooth"] = static_cast<Json::Int64>(s.surface.smoothing);
     if (s.surface.imageSmoothing >= 0.0)
       root["surface"]["image_smooth"] = s.surface.imageSmoothing;
@@ -336,6 +336,8 @@ bool readSession(
   using namespace lkapp;
   const std::string session = "the session '" + path + "'";
   s = Session();
+  // A session saved before December 2026 does not name the smoothing (below).
+  s.surface.labelMapDefaultsOfBefore = !(root["surface"].isObject() && root["surface"].isMember("image_smooth"));
   noteUnknownMembers(root,
     { "strokes", "cut", "capping", "lattice", "latticeVertices", "metro", "mirror", "guides", "guidesOtherSide", "guidesJoined", "mirrorPlane", "scanOnLine", "scanAcross", "scanWindow", "scanWindowLevel", "scanOffset", "patient", "segment",
       "deformations", "names",
@@ -697,6 +699,8 @@ bool readSession(
       s.surface.cropped = true;
     }
     s.surface.series = static_cast<long>(series);
+    // Sessions saved before December 2026 left out a smoothing of 0 and
+    // the automatic Gaussian, both then the defaults.
     s.surface.smoothing = static_cast<long>(smoothing);
     s.surface.imageSmoothing = imageSmoothing;
     s.surface.label = static_cast<long>(label);

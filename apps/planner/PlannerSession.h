@@ -57,6 +57,10 @@
 //               "crop": [xmin, xmax, ymin, ymax, zmin, zmax], "series": i,
 //               "close": bool,                      closed at the scan's border
 //               "smooth": 0 to 1000,                windowed-sinc iterations (0)
+//               "image_smooth": 0 to 20,            the Gaussian on the volume, in voxels;
+//                                                   both as used (saved since December
+//                                                   2026; without image_smooth a label
+//                                                   map's is one voxel, as it was then)
 //               "label": 1 or more | "name"}        one label of a label map, or a
 //                                                   segment by name (none)
 //   "patient": {"head": [x, y, z],                  for a scan whose file gives no
@@ -264,10 +268,16 @@ struct Session
     std::array<double, 6> crop{}; ///< patient coordinates, xmin, xmax, ymin, ymax, zmin, zmax
     bool closed = false; ///< closed where the scan's border cuts bone (a crop always is)
     long series = -1; ///< -1: the largest
-    long smoothing = 0; ///< windowed-sinc iterations on the surface
+    /// Windowed-sinc iterations on the surface (negative: the bone filter's
+    /// own, 20 for a label map and none for a CT).
+    long smoothing = -1;
     /// Gaussian standard deviation on the volume, in voxels (negative: the
-    /// bone filter's own, 1 for a label map and none for a CT).
+    /// bone filter's own, 0.5 voxel for a label map and none for a CT).
     double imageSmoothing = -1.0;
+    /// A session saved before December 2026 names neither when they were the
+    /// defaults: a label map's were then a Gaussian of one voxel and no
+    /// smoothing of the surface, and its strokes lie on that surface.
+    bool labelMapDefaultsOfBefore = false;
     long label = 0; ///< one label of a label map with several (0: none)
     std::string labelName; ///< or a 3D Slicer segmentation's segment by name
   } surface;

@@ -170,15 +170,15 @@ class DemoTest(unittest.TestCase):
                 return subprocess.run([DEMO, mandible, "--plan", plan, "-o", out, "--no-render", "-q"],
                                       capture_output=True, text=True, check=False, timeout=300)
 
-            # Each piece keeps the cut line's 217 vertices: 300 in all leaves none free.
+            # Each piece keeps the cut line's 240 vertices: 300 in all leaves none free.
             result = run(300)
             self.assertEqual(result.returncode, 1, result.stdout + result.stderr)
             self.assertIn("too few for the cut", result.stderr)
-            self.assertIn("give latticeVertices 868 or more", result.stderr)
+            self.assertIn("give latticeVertices 960 or more", result.stderr)
             self.assertTrue(read_text(os.path.join(out, "report.md")).startswith("# latticekit main job: did not finish"))
             self.assertGreater(os.path.getsize(os.path.join(out, "piece1.stl")), 0)
 
-            result = run(868)
+            result = run(960)
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             report = read_text(os.path.join(out, "report.md"))
             self.assertIn("Label map: `test_oncologist_0522c0017_Mandible.nrrd`", report)
