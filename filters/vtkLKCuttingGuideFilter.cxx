@@ -674,6 +674,39 @@ int vtkLKCuttingGuideFilter::RequestData(
       if (usable[k] && !joined[k] && !outside[k])
         joined[k] = 1;
   }
+  // A steep cell in a narrow gap of the contact, between joined cells along
+  // its row or its column within `gap` (a step of a smoothed surface, a
+  // ledge a few cells high), is inside the contact too, though the gap is
+  // open to the grid's edge: left out, it cut a notch into the guide's edge
+  // (teeth once swept).
+  {
+    const std::size_t gap = static_cast<std::size_t>(std::ceil(2.0 / spacing));
+    const std::vector<char> before = joined;
+    auto joinedWithin = [&](std::size_t r, std::size_t c, long dr, long dc) {
+      for (std::size_t k = 1; k <= gap; ++k)
+      {
+        const long rr = static_cast<long>(r) + dr * static_cast<long>(k),
+                   cc = static_cast<long>(c) + dc * static_cast<long>(k);
+        if (rr < 0 || cc < 0 || rr >= static_cast<long>(cellRows) || cc >= static_cast<long>(cellColumns))
+          return false;
+        const std::size_t j = static_cast<std::size_t>(rr) * cellColumns + static_cast<std::size_t>(cc);
+        if (before[j])
+          return true;
+        if (!usable[j] || !steep[j])
+          return false;
+      }
+      return false;
+    };
+    for (std::size_t r = 0; r < cellRows; ++r)
+      for (std::size_t c = 0; c < cellColumns; ++c)
+      {
+        const std::size_t k = r * cellColumns + c;
+        if (usable[k] && steep[k] && !before[k] &&
+          ((joinedWithin(r, c, 0, -1) && joinedWithin(r, c, 0, 1)) ||
+            (joinedWithin(r, c, -1, 0) && joinedWithin(r, c, 1, 0))))
+          joined[k] = 1;
+      }
+  }
   // Two triangles a cell, facing the approach (n x e = -d, so (s, u)
   // clockwise faces +d).
   vtkNew<vtkCellArray> grid;

@@ -467,6 +467,75 @@ TEST(CuttingGuideFilter, FacesTooSteepOrHiddenAreLeftOut)
   EXPECT_EQ(guide->GetOutput()->GetNumberOfCells(), 0);
 }
 
+TEST(CuttingGuideFilter, ALedgeThatEndsInsideTheContactLeavesNoNotchInItsEdge)
+{
+  // A block (a 0/1 label map of 0.5 mm voxels, contoured without smoothing)
+  // whose front face y = -10 carries a ledge on its half x > 0, above z =
+  // 3: 0.5 mm higher every 0.5 mm up to 2.5 mm. The cut's plane is z = 0,
+  // so the contact runs to z = 8 (its Reach) across the ledge's foot. Where
+  // the ledge is 1.5 mm high or more, the grid's cells over its wall (x = 0)
+  // are steeper than 80 degrees to the approach; they were left out, as a
+  // wall at the contact's edge is, though the contact lies on both sides of
+  // them: a crack 4 mm long from its edge, which the smoothed edge widened
+  // into a notch. (The TCIA mandible's smoothed surface has such a ledge
+  // under the chin.)
+  const double h = 0.5;
+  const int n[3] = { 61, 71, 61 };
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n[0], n[1], n[2]);
+  image->SetSpacing(h, h, h);
+  image->SetOrigin(-15.0, -20.0, -15.0);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* v = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
+      {
+        const double x = -15.0 + i * h, y = -20.0 + j * h, z = -15.0 + k * h;
+        const double ledge = x > 0.0 && z > 2.0 ? std::min(5.0, 2.0 * h * std::floor((z - 2.0) / h)) : 0.0;
+        v[(k * n[1] + j) * n[0] + i] = std::abs(x) <= 12.0 && y <= 10.0 && y >= -10.0 - ledge && std::abs(z) <= 12.0;
+      }
+  vtkNew<vtkLKBoneSurfaceFilter> bone;
+  bone->SetInputData(image);
+  bone->SetImageSmoothing(0.0);
+  bone->SetSmoothingIterations(0);
+  vtkNew<vtkLKCuttingGuideFilter> guide;
+  guide->SetInputConnection(bone->GetOutputPort());
+  guide->SetPlaneOrigin(0, -10, 0);
+  guide->SetPlaneNormal(0, 0, 1);
+  guide->SetApproach(0, -1, 0);
+  guide->SetScrewHoleDiameter(0.0);
+  guide->Update();
+  vtkPolyData* out = guide->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+  EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-3);
+  // Seen along the approach, the guide covers its rectangle (within 1 mm of
+  // its outline) but for the slot: rays 0.05 mm apart across the ledge's
+  // wall, 0.25 mm along it, all meet it.
+  double bounds[6];
+  out->GetBounds(bounds);
+  EXPECT_NEAR(bounds[4], -8.0, 0.01);
+  EXPECT_NEAR(bounds[5], 8.0, 0.01);
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(out);
+  locator->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  int rays = 0, missed = 0;
+  for (double x = bounds[0] + 1.0; x < bounds[1] - 1.0; x += 0.05)
+    for (double z = -7.0; z < 7.0; z += 0.25)
+    {
+      if (std::abs(z) < 1.0)
+        continue; // the slot, 1.2 mm wide
+      const double from[3] = { x, -30.0, z }, to[3] = { x, 0.0, z };
+      double hit[3];
+      ++rays;
+      missed += !lkvtk::firstHit(locator, from, to, cell, hit);
+    }
+  EXPECT_GT(rays, 15000);
+  EXPECT_EQ(missed, 0) << "the guide's edge has a notch at the ledge";
+}
+
 TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApproach)
 {
   // On the label map's surface as made by default, and as it was until
