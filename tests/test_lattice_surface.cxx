@@ -589,3 +589,44 @@ TEST(LatticeWeights, EdgeWeightsTightenTheRoundingContinuouslyAndStayG1)
     previous = gap;
   }
 }
+
+TEST(LatticeSurface, ATriangleBesideAFlatValenceThreeVertexAndSliversDoesNotFoldAtItsCentre)
+{
+  // The faces round three vertices of vtkQuadricDecimation's 2,000-vertex
+  // lattice of the TCIA mandible (session 73). Vertex 6 has valence 3 and
+  // lies nearly in its neighbours' plane (its angles 92.6, 117.1 and 143.9
+  // degrees) between two slivers (6.6 and 7.9 degrees at vertex 10). On
+  // triangle (6, 2, 5) the edge curves' midpoints, seen from the face's
+  // centre, came in the wrong order: the inner curves' tangents there
+  // swapped, and one patch's normal at the centre pointed the other way
+  // (its smallest cos to its centre normal -0.98).
+  lk::PolygonMesh lattice;
+  lattice.points = { { 6.9646, 274.1279, -995.5951 }, { 6.8038, 274.4921, -996.4754 },
+    { 10.6900, 276.7368, -996.2108 }, { 6.9539, 275.3695, -997.0184 }, { 10.9979, 276.2321, -994.9071 },
+    { 9.2696, 277.2649, -996.9079 }, { 10.5725, 277.4738, -996.8096 }, { 8.1668, 278.9600, -996.5450 },
+    { 13.2387, 278.5252, -994.8701 }, { 12.3562, 283.0217, -996.5126 }, { 14.6140, 281.5173, -996.7850 },
+    { 14.9070, 280.4825, -995.5491 }, { 14.8430, 282.9209, -997.0233 } };
+  lattice.faces = { { 0, 1, 2 }, { 2, 1, 3 }, { 0, 2, 4 }, { 2, 3, 5 }, { 6, 2, 5 }, { 5, 3, 7 }, { 4, 2, 8 },
+    { 5, 7, 9 }, { 2, 6, 10 }, { 10, 6, 5 }, { 8, 2, 11 }, { 11, 2, 10 }, { 12, 5, 9 }, { 10, 5, 12 } };
+  const lk::LatticeSurface s = build(lattice);
+  // Vertices 2, 5 and 6 are interior, so triangle 4's surface is the one it
+  // had in the whole lattice: its three patches meet at its centre with one
+  // tangent plane, and none folds.
+  const lk::Vec3 faceNormal = (lattice.points[2] - lattice.points[6]).cross(lattice.points[5] - lattice.points[6]).normalized();
+  int patches = 0;
+  double worst = 1.0;
+  for (std::size_t p = 0; p < s.patches.size(); ++p)
+  {
+    if (s.patchFace[p] != 4)
+      continue;
+    ++patches;
+    const lk::Vec3 centre = s.patches[p].normal(0.5, 0.5);
+    EXPECT_GT(centre.dot(faceNormal), 0.5) << "patch " << p;
+    for (int i = 0; i <= 20; ++i)
+      for (int j = 0; j <= 20; ++j)
+        worst = std::min(worst, s.patches[p].normal(i / 20.0, j / 20.0).dot(centre));
+  }
+  EXPECT_EQ(patches, 3);
+  EXPECT_GT(worst, 0.0) << "a patch of the triangle folds";
+  std::printf("smallest cos(normal, patch centre normal) on the triangle: %.3f\n", worst);
+}

@@ -656,8 +656,33 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       c.X = { M, M + tangentInPlane(toCentre / 3.0, nm, toCentre, shortest),
         centre + tangentInPlane(-toCentre / 3.0, nc, -toCentre, shortest), centre };
       c.b0 = nm.cross(unit(c.X[1] - c.X[0], "an inner curve has no tangent at its midpoint end"));
-      c.b1 = nc.cross(unit(c.X[3] - c.X[2], "an inner curve has no tangent at the face centre"));
       inner[i] = c;
+    }
+    // The inner curves leave the centre towards the midpoints in the face's
+    // order (counter-clockwise about nc). Where the lattice is irregular (a
+    // vertex nearly in its neighbours' plane between slivers) the projected
+    // directions can swap, and the patch between them is inverted at the
+    // centre: there, as at a vertex of a folded-back fan, every tangent
+    // keeps its length and the directions are spread at equal angles.
+    bool inverted = false;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const Vec3 a = inner[i].X[2] - centre, b = inner[(i + 1) % n].X[2] - centre;
+      inverted = inverted || a.cross(b).dot(nc) <= 0.0;
+    }
+    if (inverted)
+    {
+      const Vec3 e1 = unit(inner[0].X[2] - centre, "an inner curve has no tangent at the face centre"),
+                 e2 = nc.cross(e1);
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        const double angle = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+        inner[i].X[2] = centre + (inner[i].X[2] - centre).norm() * (std::cos(angle) * e1 + std::sin(angle) * e2);
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      inner[i].b1 = nc.cross(unit(inner[i].X[3] - inner[i].X[2], "an inner curve has no tangent at the face centre"));
     }
     for (std::size_t i = 0; i < n; ++i)
     {
