@@ -143,6 +143,20 @@ class PipelineTest(unittest.TestCase):
         mean_pct = metro.GetOutput().GetFieldData().GetArray("Hausdorff_MeanPercent").GetValue(0)
         self.assertGreater(mean_pct, 0.0)
         self.assertLess(mean_pct, 0.1)
+        # A label map's smoothing by default: a Gaussian of half a voxel and
+        # 20 windowed-sinc iterations, said after the update; the one-voxel
+        # surface of before December 2026 on request.
+        self.assertEqual(bone.GetImageSmoothing(), -1.0)
+        self.assertEqual(bone.GetSmoothingIterations(), -1)
+        self.assertEqual(bone.GetEffectiveImageSmoothing(), 0.5)
+        self.assertEqual(bone.GetEffectiveSmoothingIterations(), 20)
+        self.assertEqual(surface.GetNumberOfPoints(), 12994)
+        bone.SetLabelMapImageSmoothing(1.0)
+        bone.SetLabelMapSmoothingIterations(0)
+        bone.Update()
+        self.assertEqual(bone.GetEffectiveImageSmoothing(), 1.0)
+        self.assertEqual(bone.GetEffectiveSmoothingIterations(), 0)
+        self.assertEqual(bone.GetOutput().GetNumberOfPoints(), 12212)
 
     def test_a_segment_of_a_segmentation_whose_segments_overlap(self):
         """3D Slicer's layered .seg.nrrd: a component per layer, and a
