@@ -47,9 +47,9 @@
  * printed guide's 4 mm wall on 2.5 mm slices, read back from a structure
  * set): when the (closed) surface encloses less than 80 % of the labelled
  * voxels' volume, a warning says so (ImageSmoothing 0 keeps such a label
- * whole).
- * Steps 1 to 3 take a label map's content only (the voxels other than its smallest value, and a margin
- * of background twice the Gaussian's reach and two voxels wide,
+ * whole). Steps 1 to 3 take a label map's content only (the voxels other
+ * than its smallest value, and a margin of background twice the Gaussian's
+ * reach and two voxels wide,
  * vtkExtractVOI): the same triangles as over the whole grid, since the
  * Gaussian renormalises its kernel at the volume's edge and sees background
  * only near the margin's edge. A mandible in a whole CT's grid is then

@@ -100,6 +100,14 @@ TEST(ParameterChecks, BoneSurfaceImageSmoothingAndSeedPoint)
   expectAccepted(bone);
   bone->SetImageSmoothing(-1.0); // automatic
   expectAccepted(bone);
+  // The automatic Gaussian of a label map, checked as the one given.
+  for (const double sigma : { kInf, 20.5, -0.5, kNaN })
+  {
+    bone->SetLabelMapImageSmoothing(sigma);
+    expectRefused(bone, "LabelMapImageSmoothing must be a standard deviation from 0 to 20 voxels");
+  }
+  bone->SetLabelMapImageSmoothing(1.0);
+  expectAccepted(bone);
   // A seed is checked only where it is used.
   bone->SetSeedPoint(kNaN, 0.0, 0.0);
   expectAccepted(bone);
