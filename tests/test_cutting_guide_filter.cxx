@@ -36,7 +36,6 @@
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -542,80 +541,81 @@ TEST(CuttingGuideFilter, OnTheMandibleItSitsOutsideTheBoneAndComesOffAlongItsApp
   // December 2026 (a Gaussian of one voxel, no smoothing of the surface).
   for (const bool oneVoxel : { false, true })
   {
-  vtkSmartPointer<vtkPolyData> surface = lktest::tciaMandibleSurface("0522c0017", oneVoxel);
-  ASSERT_GT(surface->GetNumberOfCells(), 0);
+    vtkSmartPointer<vtkPolyData> surface = lktest::tciaMandibleSurface("0522c0017", oneVoxel);
+    ASSERT_GT(surface->GetNumberOfCells(), 0);
 
-  // The mid-sagittal plane of the chin (the session's saw line), and a cut
-  // through the left body: the guide goes on the front and the outer side
-  // without being told.
-  struct Case
-  {
-    double origin[3], normal[3];
-  };
-  for (const Case& c : { Case{ { 0.0728, 276.64, -982.1 }, { 1, 0, 0 } }, Case{ { 30, 276.64, -982.1 }, { 1, 0.3, 0 } } })
-  {
-    vtkNew<vtkLKCuttingGuideFilter> guide;
-    guide->SetInputData(surface);
-    guide->SetPlaneOrigin(c.origin);
-    guide->SetPlaneNormal(c.normal);
-    guide->SetLabel("12");
-    lktest::ProgressRecorder progress(guide);
-    guide->Update();
-    vtkPolyData* out = guide->GetOutput();
-    ASSERT_GT(out->GetNumberOfCells(), 0);
-    EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
-    EXPECT_TRUE(guide->GetLabelPlaced());
-    EXPECT_GT(guide->GetVolume(), 500.0);
-    EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-6 * guide->GetVolume());
-    EXPECT_GT(guide->GetSlotLength(), 15.0);
-    EXPECT_GT(guide->GetContactArea(), 300.0);
-    const double* d = guide->GetApproachUsed();
-    EXPECT_LT(d[1], -0.8) << "the guide is not on the front of the jaw";
-    EXPECT_NEAR(vtkMath::Dot(d, c.normal), 0.0, 1e-9);
-    if (c.origin[0] > 1.0)
+    // The mid-sagittal plane of the chin (the session's saw line), and a cut
+    // through the left body: the guide goes on the front and the outer side
+    // without being told.
+    struct Case
     {
-      EXPECT_GT(d[0], 0.1) << "the guide on the left body is not on its outer side";
-    }
-    ASSERT_GE(progress.progress.size(), 4u);
-    EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
-
-    // No point of the guide inside the bone, and each can leave along the
-    // approach without meeting it.
-    vtkNew<vtkImplicitPolyDataDistance> inside;
-    inside->SetInput(surface);
-    vtkNew<vtkStaticCellLocator> locator;
-    locator->SetDataSet(surface);
-    locator->BuildLocator();
-    vtkNew<vtkGenericCell> cell;
-    int within = 0, blocked = 0;
-    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      double origin[3], normal[3];
+    };
+    for (const Case& c :
+      { Case{ { 0.0728, 276.64, -982.1 }, { 1, 0, 0 } }, Case{ { 30, 276.64, -982.1 }, { 1, 0.3, 0 } } })
     {
-      double x[3], from[3], to[3], hit[3];
-      out->GetPoint(i, x);
-      if (inside->EvaluateFunction(x) < -1e-3)
-        ++within;
-      for (int k = 0; k < 3; ++k)
+      vtkNew<vtkLKCuttingGuideFilter> guide;
+      guide->SetInputData(surface);
+      guide->SetPlaneOrigin(c.origin);
+      guide->SetPlaneNormal(c.normal);
+      guide->SetLabel("12");
+      lktest::ProgressRecorder progress(guide);
+      guide->Update();
+      vtkPolyData* out = guide->GetOutput();
+      ASSERT_GT(out->GetNumberOfCells(), 0);
+      EXPECT_EQ(lktest::openOrNonManifoldEdges(out), 0);
+      EXPECT_TRUE(guide->GetLabelPlaced());
+      EXPECT_GT(guide->GetVolume(), 500.0);
+      EXPECT_NEAR(lktest::signedVolume(out), guide->GetVolume(), 1e-6 * guide->GetVolume());
+      EXPECT_GT(guide->GetSlotLength(), 15.0);
+      EXPECT_GT(guide->GetContactArea(), 300.0);
+      const double* d = guide->GetApproachUsed();
+      EXPECT_LT(d[1], -0.8) << "the guide is not on the front of the jaw";
+      EXPECT_NEAR(vtkMath::Dot(d, c.normal), 0.0, 1e-9);
+      if (c.origin[0] > 1.0)
       {
-        from[k] = x[k] + 1e-2 * d[k];
-        to[k] = x[k] + 500.0 * d[k];
+        EXPECT_GT(d[0], 0.1) << "the guide on the left body is not on its outer side";
       }
-      if (lkvtk::firstHit(locator, from, to, cell, hit))
-        ++blocked;
+      ASSERT_GE(progress.progress.size(), 4u);
+      EXPECT_DOUBLE_EQ(progress.progress.back(), 1.0);
+
+      // No point of the guide inside the bone, and each can leave along the
+      // approach without meeting it.
+      vtkNew<vtkImplicitPolyDataDistance> inside;
+      inside->SetInput(surface);
+      vtkNew<vtkStaticCellLocator> locator;
+      locator->SetDataSet(surface);
+      locator->BuildLocator();
+      vtkNew<vtkGenericCell> cell;
+      int within = 0, blocked = 0;
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        double x[3], from[3], to[3], hit[3];
+        out->GetPoint(i, x);
+        if (inside->EvaluateFunction(x) < -1e-3)
+          ++within;
+        for (int k = 0; k < 3; ++k)
+        {
+          from[k] = x[k] + 1e-2 * d[k];
+          to[k] = x[k] + 500.0 * d[k];
+        }
+        if (lkvtk::firstHit(locator, from, to, cell, hit))
+          ++blocked;
+      }
+      EXPECT_EQ(within, 0);
+      EXPECT_EQ(blocked, 0);
+      // On the default surface the chin guide's lower and upper edges cross
+      // ledges of the bone about 1 mm high, whose steps the edge follows down
+      // and up (15 and 5 corners counted so; NOTES, session 73); the count is
+      // the one of a stepped edge on a steep face on the other.
+      if (oneVoxel)
+        EXPECT_LE(teethAtTheEdge(out, d), 4) << "the guide's edge stands in teeth on a steep face";
+      vtkNew<vtkPolyDataConnectivityFilter> parts;
+      parts->SetInputData(out);
+      parts->SetExtractionModeToAllRegions();
+      parts->Update();
+      EXPECT_EQ(parts->GetNumberOfExtractedRegions(), 1); // no sliver beside it
     }
-    EXPECT_EQ(within, 0);
-    EXPECT_EQ(blocked, 0);
-    // On the default surface the chin guide's lower and upper edges cross
-    // ledges of the bone about 1 mm high, whose steps the edge follows down
-    // and up (15 and 5 corners counted so; NOTES, session 73); the count is
-    // the one of a stepped edge on a steep face on the other.
-    if (oneVoxel)
-      EXPECT_LE(teethAtTheEdge(out, d), 4) << "the guide's edge stands in teeth on a steep face";
-    vtkNew<vtkPolyDataConnectivityFilter> parts;
-    parts->SetInputData(out);
-    parts->SetExtractionModeToAllRegions();
-    parts->Update();
-    EXPECT_EQ(parts->GetNumberOfExtractedRegions(), 1); // no sliver beside it
-  }
   }
 }
 
