@@ -418,6 +418,7 @@ int main(int argc, char* argv[])
   for (const bool fill : { false, true })
   {
     auto skinDense = surfaceOf(data + "/cthead/cthead_hu_approx.nii.gz", -400.0, false, 226, fill);
+    save(skinDense, fill ? "CT head outer skin dense" : "CT head skin dense");
     lk::TriangleMesh skinCore;
     lkvtk::toTriangleMesh(skinDense, skinCore);
     lk::SimplificationOptions flat;
@@ -426,6 +427,21 @@ int main(int argc, char* argv[])
     auto skinMesh = lkvtk::fromTriangleMesh(lk::simplifyLattice(skinCore, {}, flat).mesh);
     vtkPolyData* skin = skinMesh;
     auto features = featureLines(skin, readStrokes(data + "/cthead/head_feature_lines.txt"));
+    {
+      // The scale of the mean target: how far the 6,001-vertex original itself
+      // lies from the CT's dense skin it was decimated from (session 74: as far
+      // as half the better anchor's mean lies from the original).
+      vtkNew<vtkLKMetroFilter> metro;
+      metro->SetInputData(skin);
+      metro->SetTargetData(skinDense);
+      metro->Update();
+      const double pct = 100.0 / metro->GetBoundingBoxDiagonal();
+      std::printf("\n%s: the %lld-vertex original lies %.4f %% max, %.4f %% mean, %.4f %% RMS from the CT's dense "
+                  "skin (%lld triangles)",
+        fill ? "Outer skin" : "Skin", static_cast<long long>(skin->GetNumberOfPoints()),
+        metro->GetHausdorffDistance() * pct, metro->GetSymmetricMean() * pct, metro->GetSymmetricRMS() * pct,
+        static_cast<long long>(skinDense->GetNumberOfPolys()));
+    }
     table(fill ? "CT head outer skin (-400 HU, cavities filled, decimated)" : "CT head skin (-400 HU, decimated)", skin,
       features, 2000);
   }
