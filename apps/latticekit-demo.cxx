@@ -82,8 +82,11 @@ void usage(std::ostream& os)
         "their surfaces, report.md and plan.png, pieces.png, error.png, cut_line_ct.png and\n"
         "cut_line_across_ct.png (the CT on the cut line's plane and across it).\n"
         "INPUT defaults to the bundled CT head and PLAN to its plan\n"
-        "(sample_data/cthead/mandible_plan.json: crop box, seed, iso value, cut plane, lattice\n"
-        "size, view; see that file).\n"
+        "(sample_data/cthead/mandible_plan.json: crop box, seed, iso value, smoothing, cut plane,\n"
+        "lattice size, view; see that file). A plan without \"smoothing\" (windowed-sinc\n"
+        "iterations, 0 to 1000) and \"imageSmoothing\" (a Gaussian on the volume, 0 to 20 voxels)\n"
+        "gets latticekit-surface's defaults: none on a CT; half a voxel and 20 iterations on a\n"
+        "label map (1 and 0 give the surface made before December 2026).\n"
         "\n"
         "  --plan FILE      the plan (JSON)\n"
         "  --vertices N     lattice control vertices in all (default: the plan's)\n"
@@ -103,7 +106,12 @@ double since(Clock::time_point t)
 struct Plan
 {
   double iso = 300.0;
-  int smoothing = 10;
+  /// Windowed-sinc iterations on the surface and the Gaussian on the volume
+  /// (voxels); -1: the surface filter's automatic choice, none for a CT and
+  /// half a voxel and 20 iterations for a label map, as latticekit-surface's
+  /// and the planner's (the bundled plan asks for 10 iterations on its CT).
+  int smoothing = -1;
+  double imageSmoothing = -1.0;
   bool crop = false;
   std::array<double, 6> box{};      ///< patient coordinates (as the surface), mm
   bool seeded = false;
@@ -132,15 +140,21 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
     if (const std::string unknown = unknownMembers(object, known); !unknown.empty())
       std::cerr << "warning: " << name << " has fields latticekit-demo does not know, ignored: " << unknown << "\n";
   };
-  warnUnknown(root, { "description", "iso", "smoothing", "crop", "seed", "cut", "latticeVertices", "view", "patient" }, "the plan");
+  warnUnknown(root,
+    { "description", "iso", "smoothing", "imageSmoothing", "crop", "seed", "cut", "latticeVertices", "view", "patient" },
+    "the plan");
   warnUnknown(root["cut"], { "origin", "normal", "penOffset", "penStep" }, "the plan's cut");
   warnUnknown(root["view"], { "from", "up" }, "the plan's view");
   warnUnknown(root["patient"], { "head", "front" }, "the plan's patient");
   long long smoothing = plan.smoothing, vertices = plan.vertices;
-  const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 10000, out); };
+  // The surface filter's limits (it would clamp more iterations without a word).
+  const auto iterations = [](const Json::Value& v, long long& out) { return jsonInteger(v, 0, 1000, out); };
+  const auto gaussian = [](const Json::Value& v, double& out) { return jsonNumber(v, out) && out >= 0.0 && out <= 20.0; };
   const auto count = [](const Json::Value& v, long long& out) { return jsonInteger(v, 8, 100000000, out); };
   if (!jsonMember(root, "iso", plan.iso, jsonNumber, where, "a number", error) ||
-    !jsonMember(root, "smoothing", smoothing, iterations, where, "a whole number from 0 to 10,000", error) ||
+    !jsonMember(root, "smoothing", smoothing, iterations, where, "a whole number from 0 to 1000", error) ||
+    !jsonMember(root, "imageSmoothing", plan.imageSmoothing, gaussian, where,
+      "a standard deviation from 0 to 20 voxels", error) ||
     !jsonMember(root, "latticeVertices", vertices, count, where, "a whole number from 8 to 100,000,000", error))
     return false;
   plan.smoothing = static_cast<int>(smoothing);
@@ -558,6 +572,7 @@ int main(int argc, char* argv[])
   bone->SetIsoValue(plan.iso);
   bone->SetLabelMapMode(vtkLKBoneSurfaceFilter::LABEL_MAP_AUTO);
   bone->SetSmoothingIterations(plan.smoothing);
+  bone->SetImageSmoothing(plan.imageSmoothing);
   if (plan.seeded)
   {
     bone->SetExtractionModeToSeededComponent();
@@ -712,8 +727,8 @@ int main(int argc, char* argv[])
          << (bone->GetTreatedAsLabelMap() ? "label map, level " + number(bone->GetEffectiveIsoValue())
                                           : number(plan.iso) + " HU")
          << (plan.crop ? ", the plan's box, padded with air" : "")
-         << (plan.seeded ? ", the component at the seed" : "") << "): " << mandible->GetNumberOfPoints()
-         << " vertices, " << mandible->GetNumberOfPolys() << " triangles.\n"
+         << (plan.seeded ? ", the component at the seed" : "") << "; " << lkapp::smoothingWords(bone->GetEffectiveImageSmoothing(), bone->GetEffectiveSmoothingIterations())
+         << "): " << mandible->GetNumberOfPoints() << " vertices, " << mandible->GetNumberOfPolys() << " triangles.\n"
          << "- Scripted pen stroke: the section by the cut plane around one side of the body, "
          << stroke->GetNumberOfPoints() << " points " << penSpacing(stroke) << " mm apart on average (every "
          << plan.penStep << " mm or more along the section's own points), " << plan.penOffset

@@ -321,8 +321,9 @@ int main(int argc, char* argv[])
                    : std::string(surface->GetTreatedAsLabelMap() ? " (label map)" : ""))
             << "\n";
   if (surface->GetEffectiveImageSmoothing() > 0.0 || surface->GetEffectiveSmoothingIterations() > 0)
-    std::cout << "smoothing  a Gaussian of " << surface->GetEffectiveImageSmoothing() << " voxel on the volume, "
-              << surface->GetEffectiveSmoothingIterations() << " windowed-sinc iterations on the surface\n";
+    std::cout << "smoothing  "
+              << lkapp::smoothingWords(surface->GetEffectiveImageSmoothing(), surface->GetEffectiveSmoothingIterations())
+              << "\n";
   std::cout << "surface    " << mesh->GetNumberOfPoints() << " points, " << mesh->GetNumberOfPolys()
             << " triangles\n";
   auto field = [&](const char* name) -> long {

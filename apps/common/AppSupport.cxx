@@ -1006,6 +1006,18 @@ void Arguments::labelOrName(const std::string& arg, long& label, std::string& na
   name = numeric ? std::string() : v;
 }
 
+std::string smoothingWords(double imageSmoothing, int iterations)
+{
+  if (!(imageSmoothing > 0.0) && iterations <= 0)
+    return "no smoothing";
+  std::ostringstream s;
+  if (imageSmoothing > 0.0)
+    s << "a Gaussian of " << imageSmoothing << " voxel on the volume" << (iterations > 0 ? ", " : "");
+  if (iterations > 0)
+    s << iterations << " windowed-sinc iterations on the surface";
+  return s.str();
+}
+
 std::string unusedIsoNote(double iso, int label, const std::string& input, bool noLabelMapOption)
 {
   std::ostringstream note;

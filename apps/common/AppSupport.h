@@ -247,6 +247,12 @@ private:
 /// --no-label-map (`noLabelMapOption`), how to take it at --iso instead.
 std::string unusedIsoNote(double iso, int label, const std::string& input, bool noLabelMapOption);
 
+/// The smoothing a surface was made with, in words: "a Gaussian of 0.5 voxel
+/// on the volume, 20 windowed-sinc iterations on the surface" (either part
+/// alone where the other is none), or "no smoothing"
+/// (vtkLKBoneSurfaceFilter's effective ImageSmoothing and SmoothingIterations).
+std::string smoothingWords(double imageSmoothing, int iterations);
+
 /// --label NAME on a DICOM CT, whose volume names no segments, where an RT
 /// structure set drawn on that CT lies in its folder (the reader lists them)
 /// with an ROI of that name (matched as vtkLKBoneSurfaceFilter matches names:

@@ -40,6 +40,8 @@ class DemoTest(unittest.TestCase):
                 self.assertNotIn(b"SPACE=", f.read(80))
             report = read_text(os.path.join(out, "report.md"))
             self.assertIn("Capped cut: 2 pieces", report)
+            # The plan's smoothing, and no Gaussian on a CT.
+            self.assertIn("the component at the seed; 10 windowed-sinc iterations on the surface)", report)
             # The bundled NIfTI gives no orientation; the plan states where
             # the head and the face are, so the CT pictures stand head up.
             self.assertIn("head up as the plan's \"patient\" states: the scan gives no orientation", report)
@@ -153,12 +155,15 @@ class DemoTest(unittest.TestCase):
         origin far from 0). The crop box is in patient coordinates, like the
         seed, the cut plane and the surface (it was read as data coordinates,
         which missed the bone: 'Iso value 0.5 is outside the volume's range
-        [0, 0]'). Too few lattice vertices for the cut are refused, with the
-        pieces written and a report that says the run did not finish."""
+        [0, 0]'). The plan names no smoothing: a label map's surface gets
+        latticekit-surface's defaults (it got the CT's 10 iterations and a
+        Gaussian of half a voxel before). Too few lattice vertices for the cut
+        are refused, with the pieces written and a report that says the run
+        did not finish."""
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
         mandible = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_0522c0017_Mandible.nrrd")
-        plan_text = ('{"iso": 0.5, "smoothing": 0, "crop": [0, 70, 250, 360, -1000, -900], "seed": [40, 300, -950],'
+        plan_text = ('{"iso": 0.5, "crop": [0, 70, 250, 360, -1000, -900], "seed": [40, 300, -950],'
                      ' "cut": {"origin": [35, 300, -950], "normal": [1, 0, 0]}, "latticeVertices": %d}')
         with tempfile.TemporaryDirectory() as tmp:
             plan = os.path.join(tmp, "plan.json")
@@ -170,19 +175,21 @@ class DemoTest(unittest.TestCase):
                 return subprocess.run([DEMO, mandible, "--plan", plan, "-o", out, "--no-render", "-q"],
                                       capture_output=True, text=True, check=False, timeout=300)
 
-            # Each piece keeps the cut line's 240 vertices: 300 in all leaves none free.
+            # Each piece keeps the cut line's 232 vertices: 300 in all leaves none free.
             result = run(300)
             self.assertEqual(result.returncode, 1, result.stdout + result.stderr)
             self.assertIn("too few for the cut", result.stderr)
-            self.assertIn("give latticeVertices 960 or more", result.stderr)
+            self.assertIn("give latticeVertices 928 or more", result.stderr)
             self.assertTrue(read_text(os.path.join(out, "report.md")).startswith("# latticekit main job: did not finish"))
             self.assertGreater(os.path.getsize(os.path.join(out, "piece1.stl")), 0)
 
-            result = run(960)
+            result = run(928)
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             report = read_text(os.path.join(out, "report.md"))
             self.assertIn("Label map: `test_oncologist_0522c0017_Mandible.nrrd`", report)
             self.assertIn("(label map, level 0.5, the plan's box", report)
+            self.assertIn("the component at the seed; a Gaussian of 0.5 voxel on the volume, "
+                          "20 windowed-sinc iterations on the surface)", report)
             self.assertIn("Capped cut: 2 pieces", report)
             reader = vtkXMLPolyDataReader()
             reader.SetFileName(os.path.join(out, "mandible.vtp"))
@@ -222,6 +229,9 @@ class DemoTest(unittest.TestCase):
                     # A field of the wrong kind is named (jsoncpp's exception
                     # aborted the demo: a negative return code, from the signal).
                     ('{%s, "latticeVertices": "many"}' % cut, '"latticeVertices" must be a whole number'),
+                    # More than the surface filter takes (it clamped them to 1000 without a word).
+                    ('{%s, "smoothing": 5000}' % cut, '"smoothing" must be a whole number from 0 to 1000'),
+                    ('{%s, "imageSmoothing": 30}' % cut, '"imageSmoothing" must be a standard deviation from 0 to 20'),
                     ('{%s, "crop": [10, 0, 0, 1, 0, 1]}' % cut, "each min below its max"),
                     ('{%s, "patient": {"head": [0, 0, 1], "front": [0, 0, -2]}}' % cut,
                      "the plan's patient needs \"head\" and \"front\" as [x, y, z]: non-zero and not parallel"),
