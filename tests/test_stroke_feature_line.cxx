@@ -357,3 +357,48 @@ TEST(StrokeFeatureLine, EarlierLinesAreCarriedThroughTheEdgesASplitCuts)
   const auto nearest = lk::strokeToFeatureLine(first.mesh, across, o);
   EXPECT_EQ(lk::carryLines(nearest.mesh, first.mesh.points.size(), { first.line })[0], first.line);
 }
+
+TEST(StrokeFeatureLine, SpursAreLeftOutOfAClosedLine)
+{
+  using Line = std::vector<std::int64_t>;
+  EXPECT_EQ(lk::withoutSpurs({ 1, 2, 3, 4, 1 }), (Line{ 1, 2, 3, 4, 1 }));
+  // Out and back inside the loop, one edge and two.
+  EXPECT_EQ(lk::withoutSpurs({ 1, 2, 9, 2, 3, 4, 1 }), (Line{ 1, 2, 3, 4, 1 }));
+  EXPECT_EQ(lk::withoutSpurs({ 1, 2, 9, 8, 9, 2, 3, 4, 1 }), (Line{ 1, 2, 3, 4, 1 }));
+  // Across the first vertex: the tip first, and last.
+  EXPECT_EQ(lk::withoutSpurs({ 9, 1, 2, 3, 1, 9 }), (Line{ 1, 2, 3, 1 }));
+  EXPECT_EQ(lk::withoutSpurs({ 1, 2, 3, 4, 9, 4, 1 }), (Line{ 1, 2, 3, 4, 1 }));
+  EXPECT_EQ(lk::withoutSpurs({ 2, 9, 2, 3, 4, 2 }), (Line{ 2, 3, 4, 2 }));
+  // A loop round nothing has no loop left.
+  EXPECT_LT(lk::withoutSpurs({ 1, 2, 3, 2, 1 }).size(), 4u);
+}
+
+TEST(StrokeFeatureLine, AClosedSplitStrokeWhoseJoinRunsBackOverItsStartCutsTheSphere)
+{
+  // A line drawn in parts: the last part starts near the first part's start
+  // (within the closing tolerance, not on it) on the far side, so that the
+  // line runs out past its start and back over its first edges. Refused as
+  // running back along itself before (the planner's line all round the chin
+  // in three drags, on the mandible's default surface); now the spur is left
+  // out and the loop cuts the sphere in two.
+  const lk::TriangleMesh sphere = lktest::icosphere(3, 1.0);
+  std::vector<lk::Vec3> stroke;
+  const auto at = [](double a) { return lk::Vec3(0.95 * std::cos(a), 0.95 * std::sin(a), 0.2); };
+  for (int k = 0; k <= 40; ++k)
+    stroke.push_back(at(2.0 * M_PI * k / 40.0));
+  // Past the start by a tenth of the circle, then back to it.
+  for (int k = 1; k <= 4; ++k)
+    stroke.push_back(at(2.0 * M_PI * k / 40.0));
+  for (int k = 3; k >= 0; --k)
+    stroke.push_back(at(2.0 * M_PI * k / 40.0));
+  lk::StrokeOptions o;
+  o.mode = lk::StrokeMode::Split;
+  const auto r = lk::strokeToFeatureLine(sphere, stroke, o);
+  ASSERT_TRUE(r.closed);
+  ASSERT_EQ(r.line.front(), r.line.back());
+  std::set<std::int64_t> seen;
+  for (std::size_t i = 0; i + 1 < r.line.size(); ++i)
+    EXPECT_TRUE(seen.insert(r.line[i]).second) << "vertex " << r.line[i] << " twice";
+  EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
+  EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(r.mesh), { r.line }, false).pieces.size(), 2u);
+}

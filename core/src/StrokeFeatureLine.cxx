@@ -135,6 +135,51 @@ std::invalid_argument loopTooSmall(std::size_t points, const char* what, double 
 }
 } // namespace
 
+std::vector<std::int64_t> withoutSpurs(const std::vector<std::int64_t>& closedLine)
+{
+  if (closedLine.size() < 2)
+    return closedLine;
+  // The loop without its repeated first vertex; a spur's tip (v with the
+  // same vertex before and after it) goes, with one of its two neighbours,
+  // as a stack does it: the spur's edges cancel in pairs.
+  std::vector<std::int64_t> loop;
+  for (std::size_t i = 0; i + 1 < closedLine.size(); ++i)
+  {
+    const std::int64_t v = closedLine[i];
+    if (!loop.empty() && loop.back() == v)
+      continue;
+    if (loop.size() >= 2 && loop[loop.size() - 2] == v)
+      loop.pop_back();
+    else
+      loop.push_back(v);
+  }
+  // Where the loop closes: a spur whose tip is its last or first vertex.
+  for (bool changed = true; changed && loop.size() >= 3;)
+  {
+    changed = false;
+    if (loop.back() == loop.front())
+    {
+      loop.pop_back();
+      changed = true;
+    }
+    else if (loop[loop.size() - 2] == loop.front())
+    {
+      loop.pop_back(); // the tip, last: its neighbours are the one before and the first
+      loop.pop_back();
+      changed = true;
+    }
+    else if (loop[1] == loop.back())
+    {
+      loop.erase(loop.begin()); // the tip, first: its neighbours are the last and the second
+      loop.pop_back();
+      changed = true;
+    }
+  }
+  if (!loop.empty())
+    loop.push_back(loop.front());
+  return loop;
+}
+
 namespace
 {
 constexpr double kCloseEdges = 2.0; ///< the default closeTolerance, in mean edge lengths
@@ -193,18 +238,37 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       if (distinct.size() < 3)
         throw loopTooSmall(distinct.size(), "line vertex(es)", closeTol);
       splitter.close();
+      // Where the line goes out along edges and straight back (b, c, b: a
+      // spur), the spur encloses nothing and is left out of the loop. A
+      // line drawn in parts makes one where a drag begins near an end of
+      // the line it continues, but not on it, and the join runs back over
+      // the line's first edges (a line all round the chin in three drags).
+      std::vector<std::int64_t> line = withoutSpurs(splitter.line());
       // A short stroke can split in a line that goes out and comes back
       // along the same edges (a, b, c, b, a): three vertices, but a loop
       // around nothing, which no cut can take.
       std::set<EdgeKey> taken;
-      const auto& line = splitter.line();
       for (std::size_t i = 0; i + 1 < line.size(); ++i)
         if (!taken.insert(edgeKey(line[i], line[i + 1])).second)
-          throw std::invalid_argument("the closed line runs back along itself (edge " + std::to_string(line[i]) + "-" +
-            std::to_string(line[i + 1]) + " twice), so its loop encloses nothing" + closingHint(closeTol));
+          line.clear();
+      if (line.size() < 4)
+      {
+        const auto& drawn = splitter.line();
+        std::set<EdgeKey> seen;
+        std::size_t i = 0;
+        while (i + 2 < drawn.size() && seen.insert(edgeKey(drawn[i], drawn[i + 1])).second)
+          ++i;
+        throw std::invalid_argument("the closed line runs back along itself (edge " + std::to_string(drawn[i]) + "-" +
+          std::to_string(drawn[i + 1]) + " twice), so its loop encloses nothing" + closingHint(closeTol));
+      }
+      result.mesh = splitter.mesh();
+      result.line = std::move(line);
     }
-    result.mesh = splitter.mesh();
-    result.line = splitter.line();
+    else
+    {
+      result.mesh = splitter.mesh();
+      result.line = splitter.line();
+    }
     for (std::size_t i = 0; i + 1 < result.line.size(); ++i)
       result.featureEdges.push_back(edgeKey(result.line[i], result.line[i + 1]));
     sortUnique(result.featureEdges);

@@ -81,6 +81,13 @@ double meanEdgeLength(const TriangleMesh& mesh);
 /// mean the same nearness.)
 double defaultCloseTolerance(const TriangleMesh& mesh);
 
+/// A closed vertex path (first vertex repeated last) without its spurs:
+/// where it goes out along edges and straight back (b, c, b), the way out
+/// and back is left out (b), also across the first vertex. A loop round
+/// nothing (a, b, c, b, a) comes back as fewer than four entries. Split
+/// mode's closed lines are made so.
+std::vector<std::int64_t> withoutSpurs(const std::vector<std::int64_t>& closedLine);
+
 /// Throws std::invalid_argument for an invalid mesh, a stroke of fewer than
 /// two points or with non-finite points, or a stroke that misses the surface.
 StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& stroke, const StrokeOptions& options);
