@@ -528,3 +528,38 @@ TEST(StrokeFeatureLine, SparseSplitStrokesOnTheMandibleKeepItsSurface)
   EXPECT_GE(made, strokes - 4);
   EXPECT_EQ(refusedPoints, strokes - made); // each refusal was a point's walk
 }
+
+// A line round the mandible drawn in two drags, the second begun 0.42 mm
+// beside the first one's start (inside its marker, as the planner joins) and
+// put before it reversed (tests/data/mandible_join_beside_start_stroke.vtp,
+// from a random trial on the default surface). The split line touched itself
+// at a vertex there, round a sliver 0.9 mm long, and the cut refused it:
+// "lines meet or cross at mesh point 13035". The small loop is left out now.
+TEST(StrokeFeatureLineFilter, ADragBegunBesideTheLineStartCutsTheMandibleInTwo)
+{
+  vtkNew<vtkXMLPolyDataReader> r;
+  r->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/mandible_join_beside_start_stroke.vtp").c_str());
+  r->Update();
+  ASSERT_EQ(r->GetOutput()->GetNumberOfPoints(), 25);
+  auto bone = lktest::tciaMandibleSurface();
+  vtkNew<vtkLKStrokeFeatureLineFilter> feature;
+  feature->SetInputData(bone);
+  feature->SetStrokeConnection(r->GetOutputPort());
+  feature->SetModeToSplit();
+  lktest::ErrorRecorder errors(feature);
+  feature->Update();
+  ASSERT_EQ(errors.errors, 0) << errors.messages;
+  vtkPolyData* line = feature->GetFeatureLineOutput();
+  ASSERT_EQ(line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0), 1.0);
+  vtkDataArray* ids = line->GetPointData()->GetArray("MeshPointId");
+  std::set<vtkIdType> seen;
+  for (vtkIdType i = 0; i + 1 < ids->GetNumberOfTuples(); ++i)
+    EXPECT_TRUE(seen.insert(static_cast<vtkIdType>(ids->GetComponent(i, 0))).second) << "point " << i;
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputConnection(feature->GetOutputPort());
+  cut->SetLinesData(line);
+  lktest::ErrorRecorder cutErrors(cut);
+  cut->Update();
+  EXPECT_EQ(cutErrors.errors, 0) << cutErrors.messages;
+  EXPECT_EQ(cut->GetNumberOfPieces(), 2);
+}

@@ -402,3 +402,21 @@ TEST(StrokeFeatureLine, AClosedSplitStrokeWhoseJoinRunsBackOverItsStartCutsTheSp
   EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
   EXPECT_EQ(lk::cutAlongLoops(lk::asPolygonMesh(r.mesh), { r.line }, false).pieces.size(), 2u);
 }
+
+TEST(StrokeFeatureLine, SmallLoopsAreLeftOutOfAClosedLineAndLargeOnesKept)
+{
+  using Line = std::vector<std::int64_t>;
+  // A 10 x 10 square (0-3) with a small loop at corner 1 (4, 5: 0.5 round at
+  // most) and, for the second case, a large one at corner 2 (6, 7: a 10 x 10
+  // square beside it).
+  const std::vector<lk::Vec3> p = { { 0, 0, 0 }, { 10, 0, 0 }, { 10, 10, 0 }, { 0, 10, 0 }, { 10.1, -0.1, 0 },
+    { 10.2, 0, 0 }, { 20, 10, 0 }, { 20, 20, 0 } };
+  EXPECT_EQ(lk::withoutSmallLoops({ 0, 1, 4, 5, 1, 2, 3, 0 }, p, 1.0), (Line{ 0, 1, 2, 3, 0 }));
+  // Too large to be left out at this length: kept as drawn.
+  EXPECT_EQ(lk::withoutSmallLoops({ 0, 1, 4, 5, 1, 2, 3, 0 }, p, 0.1), (Line{ 0, 1, 4, 5, 1, 2, 3, 0 }));
+  // Two large loops touching at corner 2 stay; the small one goes.
+  EXPECT_EQ(lk::withoutSmallLoops({ 0, 1, 4, 5, 1, 2, 6, 7, 2, 3, 0 }, p, 1.0), (Line{ 0, 1, 2, 6, 7, 2, 3, 0 }));
+  // Across the first vertex: the small loop is the part that holds the start.
+  EXPECT_EQ(lk::withoutSmallLoops({ 4, 5, 1, 2, 3, 0, 1, 4 }, p, 1.0), (Line{ 1, 2, 3, 0, 1 }));
+  EXPECT_EQ(lk::withoutSmallLoops({ 0, 1, 2, 3, 0 }, p, 1.0), (Line{ 0, 1, 2, 3, 0 }));
+}

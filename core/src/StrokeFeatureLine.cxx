@@ -180,6 +180,49 @@ std::vector<std::int64_t> withoutSpurs(const std::vector<std::int64_t>& closedLi
   return loop;
 }
 
+std::vector<std::int64_t> withoutSmallLoops(
+  const std::vector<std::int64_t>& closedLine, const std::vector<Vec3>& points, double longest)
+{
+  if (closedLine.size() < 2)
+    return closedLine;
+  std::vector<std::int64_t> loop(closedLine.begin(), closedLine.end() - 1);
+  const auto length = [&](std::size_t k) {
+    return (points[static_cast<std::size_t>(loop[(k + 1) % loop.size()])] -
+      points[static_cast<std::size_t>(loop[k])])
+      .norm();
+  };
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    std::map<std::int64_t, std::size_t> first;
+    for (std::size_t i = 0; i < loop.size() && !changed; ++i)
+    {
+      const auto [it, added] = first.emplace(loop[i], i);
+      if (added)
+        continue;
+      // loop[a] == loop[i]: the loop from a to i, and the rest.
+      const std::size_t a = it->second;
+      double inner = 0.0, total = 0.0;
+      for (std::size_t k = 0; k < loop.size(); ++k)
+      {
+        total += length(k);
+        if (k >= a && k < i)
+          inner += length(k);
+      }
+      if (std::min(inner, total - inner) > longest)
+        continue; // two loops as drawn
+      if (inner <= total - inner)
+        loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(a + 1), loop.begin() + static_cast<std::ptrdiff_t>(i + 1));
+      else
+        loop = std::vector<std::int64_t>(loop.begin() + static_cast<std::ptrdiff_t>(a), loop.begin() + static_cast<std::ptrdiff_t>(i));
+      changed = true;
+    }
+  }
+  if (!loop.empty())
+    loop.push_back(loop.front());
+  return loop;
+}
+
 namespace
 {
 constexpr double kCloseEdges = 2.0; ///< the default closeTolerance, in mean edge lengths
@@ -243,7 +286,14 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       // line drawn in parts makes one where a drag begins near an end of
       // the line it continues, but not on it, and the join runs back over
       // the line's first edges (a line all round the chin in three drags).
-      std::vector<std::int64_t> line = withoutSpurs(splitter.line());
+      // A drag that begins beside the line's start (within the closing
+      // tolerance) can also make a small loop there, the line touching
+      // itself at a vertex (a sliver 0.9 mm round, of ten vertices, in a
+      // random trial): the cut refused it as lines that "meet or cross".
+      // Loops up to twice the tolerance round are left out too; a larger one
+      // is what was drawn, and the cut says where it touches.
+      TriangleMesh drawnOn = splitter.mesh();
+      std::vector<std::int64_t> line = withoutSmallLoops(withoutSpurs(splitter.line()), drawnOn.points, 2.0 * closeTol);
       // A short stroke can split in a line that goes out and comes back
       // along the same edges (a, b, c, b, a): three vertices, but a loop
       // around nothing, which no cut can take.
@@ -261,7 +311,7 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
         throw std::invalid_argument("the closed line runs back along itself (edge " + std::to_string(drawn[i]) + "-" +
           std::to_string(drawn[i + 1]) + " twice), so its loop encloses nothing" + closingHint(closeTol));
       }
-      result.mesh = splitter.mesh();
+      result.mesh = std::move(drawnOn);
       result.line = std::move(line);
     }
     else

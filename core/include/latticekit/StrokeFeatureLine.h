@@ -88,6 +88,14 @@ double defaultCloseTolerance(const TriangleMesh& mesh);
 /// mode's closed lines are made so.
 std::vector<std::int64_t> withoutSpurs(const std::vector<std::int64_t>& closedLine);
 
+/// A closed vertex path (first vertex repeated last) without its small
+/// loops: where it comes back to a vertex it passed, the shorter of the two
+/// loops that vertex makes is left out when it is at most `longest` round
+/// (edge lengths on `points`); a larger pair is left as it is. Split mode's
+/// closed lines are made so, with twice the closing tolerance.
+std::vector<std::int64_t> withoutSmallLoops(
+  const std::vector<std::int64_t>& closedLine, const std::vector<Vec3>& points, double longest);
+
 /// Throws std::invalid_argument for an invalid mesh, a stroke of fewer than
 /// two points or with non-finite points, or a stroke that misses the surface.
 StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec3>& stroke, const StrokeOptions& options);
