@@ -305,11 +305,11 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       {
         const auto& drawn = splitter.line();
         std::set<EdgeKey> seen;
-        std::size_t i = 0;
-        while (i + 2 < drawn.size() && seen.insert(edgeKey(drawn[i], drawn[i + 1])).second)
-          ++i;
-        throw std::invalid_argument("the closed line runs back along itself (edge " + std::to_string(drawn[i]) + "-" +
-          std::to_string(drawn[i + 1]) + " twice), so its loop encloses nothing" + closingHint(closeTol));
+        for (std::size_t i = 0; i + 1 < drawn.size(); ++i)
+          if (!seen.insert(edgeKey(drawn[i], drawn[i + 1])).second)
+            throw std::invalid_argument("the closed line runs back along itself (edge " + std::to_string(drawn[i]) +
+              "-" + std::to_string(drawn[i + 1]) + " twice), so its loop encloses nothing" + closingHint(closeTol));
+        throw loopTooSmall(line.empty() ? 0 : line.size() - 1, "line vertex(es)", closeTol);
       }
       result.mesh = std::move(drawnOn);
       result.line = std::move(line);
