@@ -727,8 +727,9 @@ int main(int argc, char* argv[])
          << (bone->GetTreatedAsLabelMap() ? "label map, level " + number(bone->GetEffectiveIsoValue())
                                           : number(plan.iso) + " HU")
          << (plan.crop ? ", the plan's box, padded with air" : "")
-         << (plan.seeded ? ", the component at the seed" : "") << "; " << lkapp::smoothingWords(bone->GetEffectiveImageSmoothing(), bone->GetEffectiveSmoothingIterations())
-         << "): " << mandible->GetNumberOfPoints() << " vertices, " << mandible->GetNumberOfPolys() << " triangles.\n"
+         << (plan.seeded ? ", the component at the seed" : "") << "; "
+         << lkapp::smoothingWords(bone->GetEffectiveImageSmoothing(), bone->GetEffectiveSmoothingIterations()) << "): "
+         << mandible->GetNumberOfPoints() << " vertices, " << mandible->GetNumberOfPolys() << " triangles.\n"
          << "- Scripted pen stroke: the section by the cut plane around one side of the body, "
          << stroke->GetNumberOfPoints() << " points " << penSpacing(stroke) << " mm apart on average (every "
          << plan.penStep << " mm or more along the section's own points), " << plan.penOffset
