@@ -563,3 +563,39 @@ TEST(StrokeFeatureLineFilter, ADragBegunBesideTheLineStartCutsTheMandibleInTwo)
   EXPECT_EQ(cutErrors.errors, 0) << cutErrors.messages;
   EXPECT_EQ(cut->GetNumberOfPieces(), 2);
 }
+
+// The same join in nearest-edges and snap modes, from another trial
+// (tests/data/mandible_join_nearest_edges_stroke.vtp: 54 points round the
+// body, the second drag begun 1.5 mm from the first one's start): the edge
+// path went out to a neighbour of its first vertex and back, which the
+// detour rule took for the loop coming back to its start, and the whole
+// stroke became a loop of two vertices, refused ("the stroke's loop covers
+// 2 mesh point(s)").
+TEST(StrokeFeatureLineFilter, ANearestEdgesLineThatStartsWithASpurIsTheWholeLoop)
+{
+  vtkNew<vtkXMLPolyDataReader> r;
+  r->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/mandible_join_nearest_edges_stroke.vtp").c_str());
+  r->Update();
+  ASSERT_EQ(r->GetOutput()->GetNumberOfPoints(), 54);
+  auto bone = lktest::tciaMandibleSurface();
+  for (int mode : { vtkLKStrokeFeatureLineFilter::NEAREST_EDGES, vtkLKStrokeFeatureLineFilter::SNAP })
+  {
+    vtkNew<vtkLKStrokeFeatureLineFilter> feature;
+    feature->SetInputData(bone);
+    feature->SetStrokeConnection(r->GetOutputPort());
+    feature->SetMode(mode);
+    lktest::ErrorRecorder errors(feature);
+    feature->Update();
+    ASSERT_EQ(errors.errors, 0) << errors.messages;
+    vtkPolyData* line = feature->GetFeatureLineOutput();
+    ASSERT_EQ(line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0), 1.0);
+    EXPECT_GT(line->GetNumberOfPoints(), 30); // the stroke is 54 mm long; mean edges 1.3 mm
+    vtkNew<vtkLKClosedLineCutFilter> cut;
+    cut->SetInputConnection(feature->GetOutputPort());
+    cut->SetLinesData(line);
+    lktest::ErrorRecorder cutErrors(cut);
+    cut->Update();
+    EXPECT_EQ(cutErrors.errors, 0) << cutErrors.messages;
+    EXPECT_EQ(cut->GetNumberOfPieces(), 2) << "mode " << mode;
+  }
+}

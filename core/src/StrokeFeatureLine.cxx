@@ -412,6 +412,14 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
     // Nearest vertices of the projected samples, joined by shortest edge paths.
     std::vector<Vec3> anchors = projected;
     std::vector<std::int64_t> path = edgePathThrough(mesh, tree, anchors);
+    // A closed path's spurs and small loops first, wherever they are, as in
+    // split mode: one at its start (the path out to a neighbour of the first
+    // vertex and back, where the stroke's first points lie between two
+    // vertices) was taken below for the loop coming back to its start, and
+    // a stroke round the mandible 54 mm long became a loop of two vertices,
+    // refused (a drag begun beside the line's start, in a random trial).
+    if (result.closed && path.size() > 1 && path.front() == path.back())
+      path = withoutSmallLoops(withoutSpurs(path), mesh.points, 2.0 * closeTol);
     // Drop detours that revisit a vertex (keep the closing vertex of a loop).
     std::vector<std::int64_t> simple;
     std::map<std::int64_t, std::size_t> at;
