@@ -84,15 +84,16 @@ double defaultCloseTolerance(const TriangleMesh& mesh);
 /// A closed vertex path (first vertex repeated last) without its spurs:
 /// where it goes out along edges and straight back (b, c, b), the way out
 /// and back is left out (b), also across the first vertex. A loop round
-/// nothing (a, b, c, b, a) comes back as fewer than four entries. Split
-/// mode's closed lines are made so.
+/// nothing (a, b, c, b, a) comes back as fewer than four entries. Closed
+/// lines are made so in every mode but paint (nearest edges and snap before
+/// their detour rule).
 std::vector<std::int64_t> withoutSpurs(const std::vector<std::int64_t>& closedLine);
 
 /// A closed vertex path (first vertex repeated last) without its small
 /// loops: where it comes back to a vertex it passed, the shorter of the two
 /// loops that vertex makes is left out when it is at most `longest` round
-/// (edge lengths on `points`); a larger pair is left as it is. Split mode's
-/// closed lines are made so, with twice the closing tolerance.
+/// (edge lengths on `points`); a larger pair is left as it is. Closed lines
+/// are made so after withoutSpurs, with twice the closing tolerance.
 std::vector<std::int64_t> withoutSmallLoops(
   const std::vector<std::int64_t>& closedLine, const std::vector<Vec3>& points, double longest);
 
