@@ -431,15 +431,10 @@ int main(int argc, char* argv[])
       // The scale of the mean target: how far the 6,001-vertex original itself
       // lies from the CT's dense skin it was decimated from (session 74: as far
       // as half the better anchor's mean lies from the original).
-      vtkNew<vtkLKMetroFilter> metro;
-      metro->SetInputData(skin);
-      metro->SetTargetData(skinDense);
-      metro->Update();
-      const double pct = 100.0 / metro->GetBoundingBoxDiagonal();
+      const Row r = flatRow("", skin, skinDense, 0.0);
       std::printf("\n%s: the %lld-vertex original lies %.4f %% max, %.4f %% mean, %.4f %% RMS from the CT's dense "
                   "skin (%lld triangles)",
-        fill ? "Outer skin" : "Skin", static_cast<long long>(skin->GetNumberOfPoints()),
-        metro->GetHausdorffDistance() * pct, metro->GetSymmetricMean() * pct, metro->GetSymmetricRMS() * pct,
+        fill ? "Outer skin" : "Skin", r.vertices, r.max, r.mean, r.rms,
         static_cast<long long>(skinDense->GetNumberOfPolys()));
     }
     table(fill ? "CT head outer skin (-400 HU, cavities filled, decimated)" : "CT head skin (-400 HU, decimated)", skin,

@@ -63,8 +63,8 @@ inline std::string sampleData(const std::string& relative)
 }
 
 /// A bundled TCIA mandible (0522c0017 or TCGA-CV-7236) as
-/// vtkLKBoneSurfaceFilter makes it with its defaults (12,212 points for the
-/// first); empty if it cannot be read.
+/// vtkLKBoneSurfaceFilter makes it with its defaults (12,994 points for the
+/// first; 12,212 with oneVoxel); empty if it cannot be read.
 /// oneVoxel: as the label map's surface was made by default until December
 /// 2026 (a Gaussian of one voxel, no smoothing of the surface).
 inline vtkSmartPointer<vtkPolyData> tciaMandibleSurface(const std::string& patient = "0522c0017", bool oneVoxel = false)

@@ -529,6 +529,37 @@ TEST(StrokeFeatureLine, SparseSplitStrokesOnTheMandibleKeepItsSurface)
   EXPECT_EQ(refusedPoints, strokes - made); // each refusal was a point's walk
 }
 
+namespace
+{
+/// A stroke of tests/data (`points` of them) made into a feature line in
+/// `mode` on `bone`, and `bone` cut along it: the line (closed) and the
+/// pieces. Either filter's error fails the test.
+void cutAlongRecordedStroke(vtkPolyData* bone, const std::string& file, vtkIdType points, int mode,
+  vtkSmartPointer<vtkPolyData>& line, int& pieces)
+{
+  vtkNew<vtkXMLPolyDataReader> r;
+  r->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/" + file).c_str());
+  r->Update();
+  ASSERT_EQ(r->GetOutput()->GetNumberOfPoints(), points);
+  vtkNew<vtkLKStrokeFeatureLineFilter> feature;
+  feature->SetInputData(bone);
+  feature->SetStrokeConnection(r->GetOutputPort());
+  feature->SetMode(mode);
+  lktest::ErrorRecorder errors(feature);
+  feature->Update();
+  ASSERT_EQ(errors.errors, 0) << errors.messages;
+  line = feature->GetFeatureLineOutput();
+  ASSERT_EQ(line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0), 1.0);
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputConnection(feature->GetOutputPort());
+  cut->SetLinesData(line);
+  lktest::ErrorRecorder cutErrors(cut);
+  cut->Update();
+  EXPECT_EQ(cutErrors.errors, 0) << cutErrors.messages;
+  pieces = cut->GetNumberOfPieces();
+}
+} // namespace
+
 // A line round the mandible drawn in two drags, the second begun 0.42 mm
 // beside the first one's start (inside its marker, as the planner joins) and
 // put before it reversed (tests/data/mandible_join_beside_start_stroke.vtp,
@@ -537,31 +568,17 @@ TEST(StrokeFeatureLine, SparseSplitStrokesOnTheMandibleKeepItsSurface)
 // "lines meet or cross at mesh point 13035". The small loop is left out now.
 TEST(StrokeFeatureLineFilter, ADragBegunBesideTheLineStartCutsTheMandibleInTwo)
 {
-  vtkNew<vtkXMLPolyDataReader> r;
-  r->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/mandible_join_beside_start_stroke.vtp").c_str());
-  r->Update();
-  ASSERT_EQ(r->GetOutput()->GetNumberOfPoints(), 25);
-  auto bone = lktest::tciaMandibleSurface();
-  vtkNew<vtkLKStrokeFeatureLineFilter> feature;
-  feature->SetInputData(bone);
-  feature->SetStrokeConnection(r->GetOutputPort());
-  feature->SetModeToSplit();
-  lktest::ErrorRecorder errors(feature);
-  feature->Update();
-  ASSERT_EQ(errors.errors, 0) << errors.messages;
-  vtkPolyData* line = feature->GetFeatureLineOutput();
-  ASSERT_EQ(line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0), 1.0);
+  vtkSmartPointer<vtkPolyData> line;
+  int pieces = 0;
+  cutAlongRecordedStroke(lktest::tciaMandibleSurface(), "mandible_join_beside_start_stroke.vtp", 25,
+    vtkLKStrokeFeatureLineFilter::SPLIT, line, pieces);
+  if (HasFatalFailure())
+    return;
   vtkDataArray* ids = line->GetPointData()->GetArray("MeshPointId");
   std::set<vtkIdType> seen;
   for (vtkIdType i = 0; i + 1 < ids->GetNumberOfTuples(); ++i)
     EXPECT_TRUE(seen.insert(static_cast<vtkIdType>(ids->GetComponent(i, 0))).second) << "point " << i;
-  vtkNew<vtkLKClosedLineCutFilter> cut;
-  cut->SetInputConnection(feature->GetOutputPort());
-  cut->SetLinesData(line);
-  lktest::ErrorRecorder cutErrors(cut);
-  cut->Update();
-  EXPECT_EQ(cutErrors.errors, 0) << cutErrors.messages;
-  EXPECT_EQ(cut->GetNumberOfPieces(), 2);
+  EXPECT_EQ(pieces, 2);
 }
 
 // The same join in nearest-edges and snap modes, from another trial
@@ -573,29 +590,15 @@ TEST(StrokeFeatureLineFilter, ADragBegunBesideTheLineStartCutsTheMandibleInTwo)
 // 2 mesh point(s)").
 TEST(StrokeFeatureLineFilter, ANearestEdgesLineThatStartsWithASpurIsTheWholeLoop)
 {
-  vtkNew<vtkXMLPolyDataReader> r;
-  r->SetFileName((std::string(LATTICEKIT_TEST_DATA) + "/mandible_join_nearest_edges_stroke.vtp").c_str());
-  r->Update();
-  ASSERT_EQ(r->GetOutput()->GetNumberOfPoints(), 54);
   auto bone = lktest::tciaMandibleSurface();
   for (int mode : { vtkLKStrokeFeatureLineFilter::NEAREST_EDGES, vtkLKStrokeFeatureLineFilter::SNAP })
   {
-    vtkNew<vtkLKStrokeFeatureLineFilter> feature;
-    feature->SetInputData(bone);
-    feature->SetStrokeConnection(r->GetOutputPort());
-    feature->SetMode(mode);
-    lktest::ErrorRecorder errors(feature);
-    feature->Update();
-    ASSERT_EQ(errors.errors, 0) << errors.messages;
-    vtkPolyData* line = feature->GetFeatureLineOutput();
-    ASSERT_EQ(line->GetFieldData()->GetArray("Closed")->GetComponent(0, 0), 1.0);
+    vtkSmartPointer<vtkPolyData> line;
+    int pieces = 0;
+    cutAlongRecordedStroke(bone, "mandible_join_nearest_edges_stroke.vtp", 54, mode, line, pieces);
+    if (HasFatalFailure())
+      return;
     EXPECT_GT(line->GetNumberOfPoints(), 30); // the stroke is 54 mm long; mean edges 1.3 mm
-    vtkNew<vtkLKClosedLineCutFilter> cut;
-    cut->SetInputConnection(feature->GetOutputPort());
-    cut->SetLinesData(line);
-    lktest::ErrorRecorder cutErrors(cut);
-    cut->Update();
-    EXPECT_EQ(cutErrors.errors, 0) << cutErrors.messages;
-    EXPECT_EQ(cut->GetNumberOfPieces(), 2) << "mode " << mode;
+    EXPECT_EQ(pieces, 2) << "mode " << mode;
   }
 }

@@ -194,6 +194,9 @@ std::vector<std::int64_t> withoutSmallLoops(
   for (bool changed = true; changed;)
   {
     changed = false;
+    double total = 0.0;
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      total += length(k);
     std::map<std::int64_t, std::size_t> first;
     for (std::size_t i = 0; i < loop.size() && !changed; ++i)
     {
@@ -202,13 +205,9 @@ std::vector<std::int64_t> withoutSmallLoops(
         continue;
       // loop[a] == loop[i]: the loop from a to i, and the rest.
       const std::size_t a = it->second;
-      double inner = 0.0, total = 0.0;
-      for (std::size_t k = 0; k < loop.size(); ++k)
-      {
-        total += length(k);
-        if (k >= a && k < i)
-          inner += length(k);
-      }
+      double inner = 0.0;
+      for (std::size_t k = a; k < i; ++k)
+        inner += length(k);
       if (std::min(inner, total - inner) > longest)
         continue; // two loops as drawn
       if (inner <= total - inner)
@@ -300,7 +299,10 @@ StrokeResult strokeToFeatureLine(const TriangleMesh& mesh, const std::vector<Vec
       std::set<EdgeKey> taken;
       for (std::size_t i = 0; i + 1 < line.size(); ++i)
         if (!taken.insert(edgeKey(line[i], line[i + 1])).second)
+        {
           line.clear();
+          break;
+        }
       if (line.size() < 4)
       {
         const auto& drawn = splitter.line();
