@@ -5,7 +5,6 @@
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/DistanceStatistics.h"
 #include "latticekit/SurfaceSampling.h"
-#include "vtkLKMemory.h"
 #include "vtkLKPolyDataConversion.h"
 
 #include <vtkDoubleArray.h>
@@ -33,6 +32,11 @@ vtkStandardNewMacro(vtkLKMetroFilter);
 
 namespace
 {
+/// The most samples one direction measures: at about a million closest-point
+/// queries a second, a quarter of an hour. More is a typo (an extra digit or
+/// ten), not a finer measure.
+constexpr std::size_t kMaxSamples = 1000000000;
+
 void addValue(vtkFieldData* fd, const std::string& name, double value)
 {
   lkvtk::addFieldValue(fd, name.c_str(), value);
@@ -206,63 +210,69 @@ int vtkLKMetroFilter::RequestData(
     const double base = treeShare + (1.0 - treeShare) * dir / directions;
     this->UpdateProgress(base);
     const lk::SamplingPlan plan = lk::planSampling(sampled, options);
-    // A point, a weight, a kind, a face and a distance per sample.
-    const double bytesPerSample = sizeof(lk::Vec3) + 2 * sizeof(double) + sizeof(lk::SampleKind) + sizeof(std::int64_t);
-    std::string tooLarge;
-    if (lkvtk::exceedsMemory(static_cast<double>(plan.total) * bytesPerSample, tooLarge))
+    // The samples are measured a block at a time (the memory of one block,
+    // not of all: a skull's 11 million samples each way took 1.4 GB), so
+    // what bounds their number is the time the closest-point queries take.
+    if (plan.total > kMaxSamples)
     {
-      vtkErrorMacro("Mesh " << (dir == 0 ? "A" : "B") << " would take " << plan.total << " samples (" << tooLarge
-                            << "): ask for fewer (NumberOfSamples, SampleDensity).");
+      vtkErrorMacro("Mesh " << (dir == 0 ? "A" : "B") << " would take " << plan.total
+                            << " samples, more than the " << kMaxSamples
+                            << " one run measures (hours of closest-point queries): ask for fewer "
+                               "(NumberOfSamples, SampleDensity).");
       return 0;
     }
+    // About 20 blocks a direction, so that progress and a stop stay
+    // responsive, of a million samples (about 50 MB with their distances) at most.
+    const std::size_t blockSize = std::clamp<std::size_t>(plan.total / 20 + 1, 4096, 1u << 20);
+    const std::vector<lk::SampleBlock> blocks = lk::sampleBlocks(plan, blockSize);
     lk::SampleSet samples;
     std::vector<double> distance;
-    try
+    lk::DistanceAccumulator sums;
+    for (const lk::SampleBlock& block : blocks)
     {
-      lk::allocateSamples(plan, samples);
-      distance.assign(samples.size(), 0.0);
-    }
-    catch (const std::bad_alloc&)
-    {
-      vtkErrorMacro("Out of memory for " << plan.total << " samples of mesh " << (dir == 0 ? "A" : "B")
-                                         << ": ask for fewer (NumberOfSamples, SampleDensity).");
-      return 0;
-    }
-    vtkSMPTools::For(0, static_cast<vtkIdType>(plan.vertices.size()), 4096,
-      [&](vtkIdType b, vtkIdType e) {
-        lk::fillVertexSamples(sampled, plan, static_cast<std::size_t>(b), static_cast<std::size_t>(e), samples);
-      });
-    vtkSMPTools::For(0, static_cast<vtkIdType>(plan.edges.size()), 4096, [&](vtkIdType b, vtkIdType e) {
-      lk::fillEdgeSamples(sampled, plan, static_cast<std::size_t>(b), static_cast<std::size_t>(e), samples);
-    });
-    vtkSMPTools::For(0, static_cast<vtkIdType>(sampled.triangles.size()), 4096,
-      [&](vtkIdType b, vtkIdType e) {
-        lk::fillFaceSamples(sampled, plan, options, static_cast<std::size_t>(b),
-          static_cast<std::size_t>(e), samples);
-      });
-
-    // Batches keep progress and abort responsive; within a batch the SMP
-    // grain keeps neighbouring samples together so hints stay coherent.
-    const std::size_t n = samples.size();
-    const std::size_t batches = 20;
-    const std::size_t batch = std::max<std::size_t>(1, (n + batches - 1) / batches);
-    for (std::size_t b0 = 0; b0 < n; b0 += batch)
-    {
-      const std::size_t b1 = std::min(n, b0 + batch);
-      vtkSMPTools::For(static_cast<vtkIdType>(b0), static_cast<vtkIdType>(b1), 2048,
-        [&](vtkIdType begin, vtkIdType end) {
-          tree.distances(samples, static_cast<std::size_t>(begin), static_cast<std::size_t>(end),
-            distance.data());
+      try
+      {
+        lk::allocateSamples(block, samples);
+        distance.resize(block.count);
+      }
+      catch (const std::bad_alloc&)
+      {
+        vtkErrorMacro("Out of memory for a block of " << block.count << " samples of mesh " << (dir == 0 ? "A" : "B")
+                                                      << ": ask for fewer (NumberOfSamples, SampleDensity).");
+        return 0;
+      }
+      vtkSMPTools::For(static_cast<vtkIdType>(block.begin), static_cast<vtkIdType>(block.end), 4096,
+        [&](vtkIdType b, vtkIdType e) {
+          const auto b0 = static_cast<std::size_t>(b), e0 = static_cast<std::size_t>(e);
+          switch (block.kind)
+          {
+            case lk::SampleKind::Vertex:
+              lk::fillVertexSamples(sampled, plan, b0, e0, samples);
+              break;
+            case lk::SampleKind::Edge:
+              lk::fillEdgeSamples(sampled, plan, b0, e0, samples);
+              break;
+            case lk::SampleKind::Face:
+              lk::fillFaceSamples(sampled, plan, options, b0, e0, samples);
+              break;
+          }
         });
-      this->UpdateProgress(
-        base + (1.0 - treeShare) / directions * static_cast<double>(b1) / static_cast<double>(n));
+      // The SMP grain keeps neighbouring samples together, so that the
+      // closest-point hints stay coherent.
+      vtkSMPTools::For(0, static_cast<vtkIdType>(block.count), 2048, [&](vtkIdType begin, vtkIdType end) {
+        tree.distances(samples, static_cast<std::size_t>(begin), static_cast<std::size_t>(end), distance.data());
+      });
+      sums.add(samples, distance.data());
+      this->UpdateProgress(base +
+        (1.0 - treeShare) / directions * static_cast<double>(block.first + block.count) /
+          static_cast<double>(plan.total));
       if (lkvtk::stopRequested(this, { output }))
       {
         return 1;
       }
     }
-    stats[dir] = lk::summarizeDistances(samples, distance, this->MeanOverAllSamples);
-    this->SampleCounts[dir] = static_cast<vtkIdType>(samples.size());
+    stats[dir] = sums.result(this->MeanOverAllSamples);
+    this->SampleCounts[dir] = static_cast<vtkIdType>(stats[dir].samples());
 
     if (dir == 0)
     {

@@ -27,6 +27,9 @@
  * ten per triangle of the larger mesh), or SampleDensity samples per unit
  * area when it is positive. Edge samples are spaced 1/sqrt(density). Face
  * sampling is by similar triangles (deterministic) or Monte Carlo (seeded).
+ * The samples are measured a block of at most a million at a time, so their
+ * memory does not grow with their number; more than 10^9 samples in a
+ * direction (hours of queries) are refused.
  *
  * Output: a shallow copy of input 0 with point data "Distance" (each point of
  * A to B) and "DistanceColors" (RGB, blue small to red large, from 0 to the

@@ -295,3 +295,46 @@ TEST(MetroDistance, HausdorffOfAPartialCopyIsOneSided)
   EXPECT_NEAR(ab.mean, 1.25, 0.02); // half the area at mean distance 2.5
   EXPECT_LT(ba.max, 1e-12);
 }
+
+// Distances summed a block at a time, in the samples' order, give the same
+// figures to the last bit as one summary over all of them (the Metro filter
+// measures large meshes that way).
+TEST(MetroDistance, BlocksAddUpToTheWholeSummary)
+{
+  const lk::TriangleMesh a = lktest::icosphere(3, 10.0), b = lktest::icosphere(2, 10.2);
+  lk::SamplingOptions o;
+  o.targetSamples = 20000;
+  const lk::SamplingPlan plan = lk::planSampling(a, o);
+  const lk::SampleSet whole = lk::sampleSurface(a, o);
+  const lk::ClosestPointTree tree(b);
+  std::vector<double> d(whole.size());
+  tree.distances(whole, 0, whole.size(), d.data());
+  for (const bool overAll : { false, true })
+  {
+    const lk::DistanceStatistics expected = lk::summarizeDistances(whole, d, overAll);
+    lk::DistanceAccumulator sums;
+    for (const lk::SampleBlock& block : lk::sampleBlocks(plan, 999))
+    {
+      lk::SampleSet s;
+      lk::allocateSamples(block, s);
+      if (block.kind == lk::SampleKind::Vertex)
+        lk::fillVertexSamples(a, plan, block.begin, block.end, s);
+      else if (block.kind == lk::SampleKind::Edge)
+        lk::fillEdgeSamples(a, plan, block.begin, block.end, s);
+      else
+        lk::fillFaceSamples(a, plan, o, block.begin, block.end, s);
+      std::vector<double> bd(s.size());
+      tree.distances(s, 0, s.size(), bd.data());
+      sums.add(s, bd.data());
+    }
+    const lk::DistanceStatistics got = sums.result(overAll);
+    EXPECT_GT(got.mean, 0.05);
+    EXPECT_EQ(got.max, expected.max);
+    EXPECT_EQ(got.mean, expected.mean);
+    EXPECT_EQ(got.rms, expected.rms);
+    EXPECT_EQ(got.area, expected.area);
+    EXPECT_EQ(got.vertexSamples, expected.vertexSamples);
+    EXPECT_EQ(got.edgeSamples, expected.edgeSamples);
+    EXPECT_EQ(got.faceSamples, expected.faceSamples);
+  }
+}

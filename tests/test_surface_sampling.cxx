@@ -158,3 +158,64 @@ TEST(SurfaceSampling, RejectsImpossibleRequests)
   o.targetSamples = 10;
   EXPECT_THROW(lk::sampleSurface(flat, o), std::invalid_argument); // zero area
 }
+
+// A mesh too densely sampled to hold at once is measured a block at a time:
+// the blocks cover the plan's samples once, in order, and each fills exactly
+// the samples the whole set holds there.
+TEST(SurfaceSampling, BlocksCoverThePlanOnceAndFillAsTheWholeSet)
+{
+  const lk::TriangleMesh m = lktest::icosphere(2, 3.0);
+  for (const auto method : { lk::FaceSamplingMethod::SimilarTriangles, lk::FaceSamplingMethod::MonteCarlo })
+  {
+    lk::SamplingOptions o;
+    o.targetSamples = 5000;
+    o.method = method;
+    const lk::SamplingPlan plan = lk::planSampling(m, o);
+    const lk::SampleSet whole = lk::sampleSurface(m, o);
+    ASSERT_EQ(whole.size(), plan.total);
+    for (const std::size_t maxSamples : { std::size_t(1), std::size_t(7), std::size_t(100), plan.total + 1 })
+    {
+      const std::vector<lk::SampleBlock> blocks = lk::sampleBlocks(plan, maxSamples);
+      std::size_t next = 0;
+      std::size_t compared = 0;
+      for (const lk::SampleBlock& b : blocks)
+      {
+        EXPECT_EQ(b.first, next) << "blocks in the plan's order, none missing or overlapping";
+        EXPECT_GT(b.count, 0u);
+        // Only a single element may hold more than the bound (a face's k^2 samples).
+        EXPECT_TRUE(b.count <= maxSamples || b.end == b.begin + 1) << b.count << " in " << b.end - b.begin;
+        next = b.first + b.count;
+        lk::SampleSet s;
+        lk::allocateSamples(b, s);
+        switch (b.kind)
+        {
+          case lk::SampleKind::Vertex:
+            lk::fillVertexSamples(m, plan, b.begin, b.end, s);
+            break;
+          case lk::SampleKind::Edge:
+            lk::fillEdgeSamples(m, plan, b.begin, b.end, s);
+            break;
+          case lk::SampleKind::Face:
+            lk::fillFaceSamples(m, plan, o, b.begin, b.end, s);
+            break;
+        }
+        for (std::size_t i = 0; i < s.size(); ++i, ++compared)
+        {
+          const std::size_t j = b.first + i;
+          EXPECT_EQ(s.kinds[i], b.kind);
+          ASSERT_EQ(s.kinds[i], whole.kinds[j]);
+          ASSERT_EQ(s.points[i], whole.points[j]);
+          ASSERT_EQ(s.weights[i], whole.weights[j]);
+          ASSERT_EQ(s.faces[i], whole.faces[j]);
+        }
+      }
+      EXPECT_EQ(next, plan.total);
+      EXPECT_EQ(compared, plan.total);
+      if (maxSamples > plan.total)
+      {
+        EXPECT_EQ(blocks.size(), 3u) << "one block each of vertices, edges and faces";
+      }
+    }
+  }
+  EXPECT_THROW(lk::sampleBlocks(lk::planSampling(m, lk::SamplingOptions{ 100 }), 0), std::invalid_argument);
+}

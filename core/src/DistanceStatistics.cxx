@@ -7,50 +7,59 @@
 namespace lk
 {
 
+void DistanceAccumulator::add(const SampleSet& samples, const double* distances)
+{
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const double d = distances[i];
+    s_.max = std::max(s_.max, d);
+    sum_ += d;
+    sum2_ += d * d;
+    switch (samples.kinds[i])
+    {
+      case SampleKind::Vertex:
+        ++s_.vertexSamples;
+        break;
+      case SampleKind::Edge:
+        ++s_.edgeSamples;
+        break;
+      case SampleKind::Face:
+        ++s_.faceSamples;
+        wsum_ += samples.weights[i];
+        wd_ += samples.weights[i] * d;
+        wd2_ += samples.weights[i] * d * d;
+        break;
+    }
+  }
+}
+
+DistanceStatistics DistanceAccumulator::result(bool overAllSamples) const
+{
+  DistanceStatistics s = s_;
+  s.area = wsum_;
+  if (wsum_ > 0.0 && !overAllSamples)
+  {
+    s.mean = wd_ / wsum_;
+    s.rms = std::sqrt(wd2_ / wsum_);
+  }
+  else if (s.samples() > 0)
+  {
+    const auto n = static_cast<double>(s.samples());
+    s.mean = sum_ / n;
+    s.rms = std::sqrt(sum2_ / n);
+  }
+  return s;
+}
+
 DistanceStatistics summarizeDistances(const SampleSet& samples, const std::vector<double>& distances, bool overAllSamples)
 {
   if (distances.size() != samples.size())
   {
     throw std::invalid_argument("summarizeDistances: one distance per sample is needed");
   }
-  DistanceStatistics s;
-  double wsum = 0.0, wd = 0.0, wd2 = 0.0;
-  double sum = 0.0, sum2 = 0.0;
-  for (std::size_t i = 0; i < distances.size(); ++i)
-  {
-    const double d = distances[i];
-    s.max = std::max(s.max, d);
-    sum += d;
-    sum2 += d * d;
-    switch (samples.kinds[i])
-    {
-      case SampleKind::Vertex:
-        ++s.vertexSamples;
-        break;
-      case SampleKind::Edge:
-        ++s.edgeSamples;
-        break;
-      case SampleKind::Face:
-        ++s.faceSamples;
-        wsum += samples.weights[i];
-        wd += samples.weights[i] * d;
-        wd2 += samples.weights[i] * d * d;
-        break;
-    }
-  }
-  s.area = wsum;
-  if (wsum > 0.0 && !overAllSamples)
-  {
-    s.mean = wd / wsum;
-    s.rms = std::sqrt(wd2 / wsum);
-  }
-  else if (!distances.empty())
-  {
-    const auto n = static_cast<double>(distances.size());
-    s.mean = sum / n;
-    s.rms = std::sqrt(sum2 / n);
-  }
-  return s;
+  DistanceAccumulator sums;
+  sums.add(samples, distances.data());
+  return sums.result(overAllSamples);
 }
 
 DistanceStatistics symmetricStatistics(const DistanceStatistics& ab, const DistanceStatistics& ba)

@@ -48,8 +48,9 @@ int similarTrianglesDivisions(double area, double density)
   return std::max(1, static_cast<int>(std::lround(std::sqrt(area * density))));
 }
 
-void put(SampleSet& set, std::size_t i, const Vec3& p, double w, SampleKind kind, std::int64_t face)
+void put(SampleSet& set, std::size_t planIndex, const Vec3& p, double w, SampleKind kind, std::int64_t face)
 {
+  const std::size_t i = planIndex - set.first;
   set.points[i] = p;
   set.weights[i] = w;
   set.kinds[i] = kind;
@@ -161,10 +162,54 @@ SamplingPlan planSampling(const TriangleMesh& mesh, const SamplingOptions& optio
 
 void allocateSamples(const SamplingPlan& plan, SampleSet& set)
 {
+  set.first = 0;
   set.points.resize(plan.total);
   set.weights.resize(plan.total);
   set.kinds.resize(plan.total);
   set.faces.resize(plan.total);
+}
+
+std::vector<SampleBlock> sampleBlocks(const SamplingPlan& plan, std::size_t maxSamples)
+{
+  if (maxSamples == 0)
+  {
+    throw std::invalid_argument("sampleBlocks: a block must hold at least one sample");
+  }
+  std::vector<SampleBlock> blocks;
+  // Elements [0, n) of one kind, element k's samples [offset(k), offset(k + 1)).
+  auto cut = [&](SampleKind kind, std::size_t n, auto offset) {
+    std::size_t k = 0;
+    while (k < n)
+    {
+      while (k < n && offset(k + 1) == offset(k))
+        ++k; // no samples
+      if (k == n)
+        break;
+      SampleBlock b;
+      b.kind = kind;
+      b.begin = k;
+      b.first = offset(k);
+      ++k; // at least one element, however many samples it has
+      while (k < n && offset(k + 1) - b.first <= maxSamples)
+        ++k;
+      b.end = k;
+      b.count = offset(k) - b.first;
+      blocks.push_back(b);
+    }
+  };
+  cut(SampleKind::Vertex, plan.vertices.size(), [&](std::size_t k) { return plan.vertexBegin + k; });
+  cut(SampleKind::Edge, plan.edges.size(), [&](std::size_t k) { return plan.edgeOffset[k]; });
+  cut(SampleKind::Face, plan.faceOffset.empty() ? 0 : plan.faceOffset.size() - 1, [&](std::size_t k) { return plan.faceOffset[k]; });
+  return blocks;
+}
+
+void allocateSamples(const SampleBlock& block, SampleSet& set)
+{
+  set.first = block.first;
+  set.points.resize(block.count);
+  set.weights.resize(block.count);
+  set.kinds.resize(block.count);
+  set.faces.resize(block.count);
 }
 
 void fillVertexSamples(

@@ -29,6 +29,23 @@ struct DistanceStatistics
 DistanceStatistics summarizeDistances(
   const SampleSet& samples, const std::vector<double>& distances, bool overAllSamples = false);
 
+/// The sums behind summarizeDistances, fed a block of samples at a time (a
+/// sample set too large to hold at once, measured block by block). Blocks
+/// added in the samples' order give the same figures, to the last bit, as
+/// one call over all of them.
+class DistanceAccumulator
+{
+public:
+  /// Adds distances[i] of samples[i], one per sample of the set.
+  void add(const SampleSet& samples, const double* distances);
+  DistanceStatistics result(bool overAllSamples = false) const;
+
+private:
+  DistanceStatistics s_;
+  double wsum_ = 0.0, wd_ = 0.0, wd2_ = 0.0; ///< face samples, area-weighted
+  double sum_ = 0.0, sum2_ = 0.0;           ///< every sample
+};
+
 /// The symmetric (two-sided) figures: each statistic is the worse of the two
 /// directions, as the Hausdorff distance is the larger of the two one-sided ones.
 DistanceStatistics symmetricStatistics(const DistanceStatistics& ab, const DistanceStatistics& ba);

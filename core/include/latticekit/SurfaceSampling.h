@@ -55,6 +55,9 @@ struct SampleSet
   std::vector<double> weights; ///< area represented (face samples), 0 otherwise
   std::vector<SampleKind> kinds;
   std::vector<std::int64_t> faces; ///< triangle the sample lies on (vertex samples: -1)
+  /// The plan's index of the first sample here: 0 for a whole set, the
+  /// block's first sample for a block (allocateSamples(block, set)).
+  std::size_t first = 0;
   std::size_t count(SampleKind kind) const;
   std::size_t size() const { return points.size(); }
 };
@@ -80,7 +83,29 @@ SamplingPlan planSampling(const TriangleMesh& mesh, const SamplingOptions& optio
 /// Allocates the sample set for a plan.
 void allocateSamples(const SamplingPlan& plan, SampleSet& set);
 
-/// Fills the samples of vertices [v0, v1), edges [e0, e1) and faces [f0, f1).
+/// A run of the plan's samples small enough to hold at once: the samples of
+/// elements [begin, end) of one kind (vertices, edges or faces), which are the
+/// plan's samples [first, first + count).
+struct SampleBlock
+{
+  SampleKind kind = SampleKind::Vertex;
+  std::size_t begin = 0, end = 0;
+  std::size_t first = 0, count = 0;
+};
+
+/// The plan cut into blocks of at most maxSamples samples each, in the
+/// plan's order, so that a mesh's samples can be measured a block at a time
+/// instead of all held together (an element with more samples than that
+/// alone, a face sampled very densely, has a block of its own). Elements
+/// without samples are left out; every sample is in exactly one block.
+std::vector<SampleBlock> sampleBlocks(const SamplingPlan& plan, std::size_t maxSamples);
+
+/// Allocates `set` for one block's samples (set.first = block.first); the
+/// fill functions below then fill it from the block's element range.
+void allocateSamples(const SampleBlock& block, SampleSet& set);
+
+/// Fills the samples of vertices [v0, v1), edges [e0, e1) and faces [f0, f1)
+/// (into a set allocated for the whole plan, or for a block holding them).
 /// Disjoint ranges may be filled concurrently. Monte Carlo samples of face f
 /// depend only on (seed, f), so the result does not depend on the ranges.
 void fillVertexSamples(const TriangleMesh& mesh, const SamplingPlan& plan, std::size_t v0, std::size_t v1, SampleSet& set);
