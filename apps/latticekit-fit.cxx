@@ -48,6 +48,11 @@ void usage(std::ostream& os)
         "                         next two need --features)\n"
         "  --neighbour-weight W   weight of edges next to a feature (default 100)\n"
         "  --lock-features        feature edges are never collapsed and never move\n"
+        "  --feature-tolerance D  with --lock-features: each line keeps only the vertices\n"
+        "                         that hold it within D (mm), exactly where they were, and\n"
+        "                         its lattice edges are chords through them (a line split\n"
+        "                         into the surface has a vertex at every edge it crosses;\n"
+        "                         default 0: every feature edge kept)\n"
         "  --flat-quadrics        plain Garland-Heckbert placement (for comparison)\n"
         "  --quads                pair triangles into quads where the pair is near-rectangular\n"
         "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
@@ -92,6 +97,7 @@ int main(int argc, char* argv[])
   std::string input, output, featuresIn, surfaceOut, mapOut;
   long vertices = 0, iterations = 8, resolution = 8, insertions = -1; // -1: 1 per 100 vertices
   double ratio = 0.0, maxError = 0.0, countTolerance = 0.01, k = 1000.0, kn = 100.0, tail = 10.0;
+  double featureTolerance = 0.0;
   bool lock = false, flat = false, quads = false, refine = false, quiet = false, repair = false;
   // Options that act only with another: refused without it rather than
   // ignored.
@@ -127,6 +133,11 @@ int main(int argc, char* argv[])
     }
     else if (a == "--lock-features")
       lock = featureOptionGiven = true;
+    else if (a == "--feature-tolerance")
+    {
+      featureTolerance = args.number(a, 0.0, 1e300, "a distance of 0 or more");
+      featureOptionGiven = true;
+    }
     else if (a == "--repair")
       repair = true;
     else if (a == "--flat-quadrics")
@@ -181,7 +192,12 @@ int main(int argc, char* argv[])
   }
   if (featureOptionGiven && featuresIn.empty())
   {
-    std::cerr << "error: --feature-weight, --neighbour-weight and --lock-features need --features\n";
+    std::cerr << "error: --feature-weight, --neighbour-weight, --lock-features and --feature-tolerance need --features\n";
+    return 2;
+  }
+  if (featureTolerance > 0.0 && !lock)
+  {
+    std::cerr << "error: --feature-tolerance is for locked lines: it needs --lock-features\n";
     return 2;
   }
   lkapp::installMessageHandler(quiet);
@@ -246,6 +262,7 @@ int main(int argc, char* argv[])
   fit->SetFeatureWeight(k);
   fit->SetFeatureNeighbourWeight(kn);
   fit->SetLockFeatures(lock);
+  fit->SetFeatureTolerance(featureTolerance);
   fit->SetRoundedSurfaceQuadrics(!flat);
   fit->SetQuadPairing(quads);
   fit->SetRefinement(refine);

@@ -130,6 +130,20 @@ int vtkLKLatticeFitFilter::RequestData(
     vtkErrorMacro("Cannot fit a lattice: MaximumError must be a number (0: no error bound), not NaN.");
     return 0;
   }
+  if (!(std::isfinite(this->FeatureTolerance) && this->FeatureTolerance >= 0.0))
+  {
+    vtkErrorMacro("Cannot fit a lattice: FeatureTolerance must be a finite distance >= 0 (0: every feature edge "
+                  "kept), not "
+      << this->FeatureTolerance << ".");
+    return 0;
+  }
+  if (this->FeatureTolerance > 0.0 && !this->LockFeatures)
+  {
+    vtkErrorMacro("Cannot fit a lattice: FeatureTolerance (" << this->FeatureTolerance
+                                                              << ") is for locked lines: turn LockFeatures on, or "
+                                                                 "set it to 0.");
+    return 0;
+  }
   {
     // The refinement's own checks, before the simplification's work.
     lk::RefinementOptions check;
@@ -169,6 +183,7 @@ int vtkLKLatticeFitFilter::RequestData(
   so.featureWeight = this->FeatureWeight;
   so.featureNeighbourWeight = this->FeatureNeighbourWeight;
   so.lockFeatures = this->LockFeatures;
+  so.featureTolerance = this->FeatureTolerance;
   so.roundedSurfaceQuadrics = this->RoundedSurfaceQuadrics;
   lk::QuadPairingOptions qo;
   qo.rightAngleTolerance = this->RightAngleTolerance;
@@ -618,6 +633,7 @@ void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumErrorCountTolerance: " << this->MaximumErrorCountTolerance << "\n";
   os << indent << "FeatureWeight: " << this->FeatureWeight << "\n";
   os << indent << "FeatureNeighbourWeight: " << this->FeatureNeighbourWeight << "\n";
+  os << indent << "FeatureTolerance: " << this->FeatureTolerance << "\n";
   os << indent << "LockFeatures: " << this->LockFeatures << "\n";
   os << indent << "InterpolateFeatures: " << this->InterpolateFeatures << "\n";
   os << indent << "RoundedSurfaceQuadrics: " << this->RoundedSurfaceQuadrics << "\n";

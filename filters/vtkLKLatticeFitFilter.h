@@ -21,7 +21,8 @@
  *    by a search over the count, lk::fewestWithinErrorBound), with the error of each candidate evaluated on the rounded
  *    lattice surface (Hayashi et al., eqs. 2.6 to 2.11), feature edges weighted
  *    by FeatureWeight (k of eq. 3.14) and their neighbouring edges by
- *    FeatureNeighbourWeight, or kept exactly with LockFeatures;
+ *    FeatureNeighbourWeight, or kept exactly with LockFeatures (within
+ *    FeatureTolerance, through points of the line kept exactly, when set);
  * 2. with QuadPairing, triangles paired into quads across non-feature edges
  *    in order of their QEM cost (eqs. 3.15, 3.16);
  * 3. with Refinement, lattice vertices moved by Ceres to minimise the squared
@@ -144,6 +145,22 @@ public:
   vtkSetMacro(LockFeatures, bool);
   vtkGetMacro(LockFeatures, bool);
   vtkBooleanMacro(LockFeatures, bool);
+  ///@}
+
+  ///@{
+  /// With LockFeatures, a distance (in the mesh's units) within which a
+  /// locked line may leave out vertices: each line keeps only the vertices
+  /// that hold it that close (Douglas-Peucker, lk::chainVerticesToKeep),
+  /// exactly where they were, and its lattice edges are chords through them.
+  /// A line split into a surface (a stroke, a cut line) has a vertex at every
+  /// mesh edge it crosses, and kept whole it can take a third of the
+  /// lattice's vertices. The points a line needs depend on its points alone,
+  /// so one line in two meshes (the pieces either side of a cut) needs the
+  /// same ones; a vertex whose collapse along the line would fold the surface
+  /// is kept as well. Default 0: every feature edge survives. Refused when
+  /// negative, not finite, or positive without LockFeatures.
+  vtkSetMacro(FeatureTolerance, double);
+  vtkGetMacro(FeatureTolerance, double);
   ///@}
 
   ///@{
@@ -271,6 +288,7 @@ protected:
   double FeatureWeight = 1000.0;
   double FeatureNeighbourWeight = 100.0;
   bool LockFeatures = false;
+  double FeatureTolerance = 0.0;
   bool InterpolateFeatures = true;
   bool RoundedSurfaceQuadrics = true;
   bool QuadPairing = false;

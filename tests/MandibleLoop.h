@@ -10,6 +10,7 @@
 #include "vtkLKMedicalImageReader.h"
 
 #include <vtkIdTypeArray.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
@@ -76,5 +77,25 @@ inline vtkSmartPointer<vtkPolyData> mandibleLoop(vtkPolyData* mesh, std::vector<
   return out;
 }
 
+
+/// A pen stroke near such a loop: every third point, pushed 0.3 mm along x
+/// and 0.2 mm along z (the pen is not on the mesh's vertices), closed by its
+/// first point again.
+inline vtkSmartPointer<vtkPolyData> strokeNearLoop(vtkPolyData* loop)
+{
+  vtkNew<vtkPoints> pts;
+  for (vtkIdType i = 0; i < loop->GetNumberOfPoints(); i += 3)
+  {
+    double p[3];
+    loop->GetPoint(i, p);
+    pts->InsertNextPoint(p[0] + 0.3, p[1], p[2] + 0.2);
+  }
+  double first[3];
+  pts->GetPoint(0, first);
+  pts->InsertNextPoint(first);
+  auto stroke = vtkSmartPointer<vtkPolyData>::New();
+  stroke->SetPoints(pts);
+  return stroke;
+}
 
 } // namespace lktest

@@ -284,20 +284,8 @@ TEST(StrokeFeatureLineFilter, ScriptedClosedStrokeOnTheMandibleCutsIt)
   auto bone = lktest::tciaMandible();
   std::vector<lk::EdgeKey> edges;
   auto loop = lktest::mandibleLoop(bone, edges);
-  // A pen stroke near that loop: every third point, pushed 0.3 mm off the
-  // surface and along x (the pen is not on the mesh's vertices).
-  vtkNew<vtkPoints> pts;
-  for (vtkIdType i = 0; i < loop->GetNumberOfPoints(); i += 3)
-  {
-    double p[3];
-    loop->GetPoint(i, p);
-    pts->InsertNextPoint(p[0] + 0.3, p[1], p[2] + 0.2);
-  }
-  double first[3];
-  pts->GetPoint(0, first);
-  pts->InsertNextPoint(first);
-  vtkNew<vtkPolyData> stroke;
-  stroke->SetPoints(pts);
+  // A pen stroke near that loop (the pen is not on the mesh's vertices).
+  auto stroke = lktest::strokeNearLoop(loop);
   for (int mode : { vtkLKStrokeFeatureLineFilter::NEAREST_EDGES, vtkLKStrokeFeatureLineFilter::SNAP,
          vtkLKStrokeFeatureLineFilter::SPLIT })
   {

@@ -6,6 +6,8 @@
 #include "vtkLKClosedLineCutFilter.h"
 #include "vtkLKExtractCutPieceFilter.h"
 #include "vtkLKLatticeFitFilter.h"
+#include "vtkLKStrokeFeatureLineFilter.h"
+#include "latticekit/FeatureChains.h"
 
 #include <gtest/gtest.h>
 
@@ -24,6 +26,7 @@
 #include <vtkStringArray.h>
 #include <vtkTriangleFilter.h>
 
+#include <algorithm>
 #include <array>
 #include <set>
 #include <vector>
@@ -352,5 +355,142 @@ TEST(ExtractCutPiece, AFitKeepsTheMandiblesCutLineExactly)
         std::swap(a, b);
       EXPECT_TRUE(latticeEdges.count({ a[0], a[1], a[2], b[0], b[1], b[2] }));
     }
+  }
+}
+
+// A cut line split into the mandible (a stroke round its body) has a vertex
+// wherever it crosses a mesh edge, a few tenths of a millimetre apart. Locked
+// whole, each piece's lattice spends a vertex on every one. With a feature
+// tolerance each piece keeps the points that hold the line within it (the
+// same in both pieces), exactly where they were, the line within the
+// tolerance of the chords between them, and the vertices saved go to the
+// surface, which fits closer.
+TEST(ExtractCutPiece, AFeatureToleranceKeepsThePointsASplitCutLineNeedsInBothPieces)
+{
+  // A pen stroke round the body, near the mandible's loop (as
+  // ScriptedClosedStrokeOnTheMandibleCutsIt).
+  auto bone = lktest::tciaMandible();
+  std::vector<lk::EdgeKey> loopEdges;
+  auto loop = lktest::mandibleLoop(bone, loopEdges);
+  auto stroke = lktest::strokeNearLoop(loop);
+  vtkNew<vtkLKStrokeFeatureLineFilter> split;
+  split->SetInputData(bone);
+  split->SetStrokeData(stroke);
+  split->SetModeToSplit();
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputConnection(split->GetOutputPort());
+  cut->SetLinesConnection(split->GetOutputPort(1));
+  cut->CappingOn();
+  vtkNew<vtkLKExtractCutPieceFilter> extract;
+  extract->SetInputConnection(cut->GetOutputPort());
+  const double tolerance = 0.05;
+  std::set<std::array<double, 3>> keptInPiece[2];
+  for (int r = 0; r < 2; ++r)
+  {
+    extract->SetPiece(r);
+    extract->Update();
+    const CutLines cl = cutLinesOf(extract->GetCutLinesOutput());
+    ASSERT_EQ(cl.closed, 1);
+    ASSERT_GT(cl.edges.size(), 80u) << "a line split into the surface";
+    double mean[2] = { 0, 0 };
+    for (const double t : { 0.0, tolerance })
+    {
+      vtkNew<vtkLKLatticeFitFilter> fit;
+      fit->SetInputConnection(extract->GetOutputPort(0));
+      fit->SetFeatureLinesConnection(extract->GetOutputPort(1));
+      fit->LockFeaturesOn();
+      fit->SetFeatureTolerance(t);
+      fit->SetTargetNumberOfVertices(r == 0 ? 600 : 300);
+      lktest::ErrorRecorder errors(fit);
+      fit->Update();
+      ASSERT_EQ(errors.errors, 0) << errors.messages;
+      vtkPolyData* lattice = fit->GetOutput();
+      mean[t > 0] = lattice->GetFieldData()->GetArray("Hausdorff_Mean")->GetTuple1(0);
+      const double featureEdges = lattice->GetFieldData()->GetArray("FeatureEdges")->GetTuple1(0);
+      if (t == 0.0)
+      {
+        EXPECT_EQ(featureEdges, static_cast<double>(cl.edges.size()));
+        continue;
+      }
+      EXPECT_LT(featureEdges, 0.6 * static_cast<double>(cl.edges.size())) << "piece " << r;
+      EXPECT_GE(featureEdges, 4.0);
+      // The lattice's feature edges: chords between points of the piece.
+      std::vector<std::array<lk::Vec3, 2>> chords;
+      vtkDataArray* isFeature = lattice->GetCellData()->GetArray("FeatureEdge");
+      vtkNew<vtkIdList> ids;
+      for (vtkIdType c = 0; c < lattice->GetNumberOfCells(); ++c)
+      {
+        if (isFeature->GetTuple1(c) != 1.0)
+          continue;
+        lattice->GetCellPoints(c, ids);
+        ASSERT_EQ(ids->GetNumberOfIds(), 2);
+        std::array<lk::Vec3, 2> chord;
+        for (int k = 0; k < 2; ++k)
+        {
+          double p[3];
+          lattice->GetPoint(ids->GetId(k), p);
+          chord[static_cast<std::size_t>(k)] = lk::Vec3(p[0], p[1], p[2]);
+          keptInPiece[r].insert({ p[0], p[1], p[2] });
+        }
+        chords.push_back(chord);
+      }
+      EXPECT_EQ(static_cast<double>(chords.size()), featureEdges);
+      // Every point of the cut line lies within the tolerance of a chord.
+      vtkPolyData* piece = extract->GetOutput(0);
+      std::set<vtkIdType> linePoints;
+      for (const Edge& e : cl.edges)
+        linePoints.insert(e.begin(), e.end());
+      for (const vtkIdType id : linePoints)
+      {
+        double q[3];
+        piece->GetPoint(id, q);
+        const lk::Vec3 p(q[0], q[1], q[2]);
+        double nearest = 1e9;
+        for (const auto& [a, b] : chords)
+        {
+          const double s = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+          nearest = std::min(nearest, (p - (a + s * (b - a))).norm());
+        }
+        EXPECT_LE(nearest, tolerance + 1e-6) << "line point " << id << " of piece " << r;
+      }
+    }
+    EXPECT_LT(mean[1], mean[0]) << "piece " << r << ": the vertices saved on the line fit the surface";
+  }
+  // Both pieces keep the points the line's shape needs (chainVerticesToKeep,
+  // from the points alone): the same in both. A few more stay where the
+  // collapse along the line would fold the surface; those differ.
+  std::set<std::array<double, 3>> needed;
+  {
+    extract->SetPiece(0);
+    extract->Update();
+    vtkPolyData* piece = extract->GetOutput(0);
+    std::vector<std::pair<std::int64_t, std::int64_t>> lineEdges;
+    for (const Edge& e : cutLinesOf(extract->GetCutLinesOutput()).edges)
+      lineEdges.emplace_back(e[0], e[1]);
+    std::vector<lk::Vec3> points(static_cast<std::size_t>(piece->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      double q[3];
+      piece->GetPoint(i, q);
+      points[static_cast<std::size_t>(i)] = lk::Vec3(q[0], q[1], q[2]);
+    }
+    const auto chains = lk::featureChains(lineEdges);
+    ASSERT_EQ(chains.size(), 1u);
+    ASSERT_EQ(chains[0].front(), chains[0].back()) << "one closed loop";
+    const std::vector<char> keep = lk::chainVerticesToKeep(points, chains[0], tolerance);
+    for (std::size_t k = 0; k < keep.size(); ++k)
+      if (keep[k])
+      {
+        const lk::Vec3& p = points[static_cast<std::size_t>(chains[0][k])];
+        needed.insert({ p.x(), p.y(), p.z() });
+      }
+  }
+  EXPECT_GE(needed.size(), 20u);
+  for (int r = 0; r < 2; ++r)
+  {
+    for (const auto& p : needed)
+      EXPECT_TRUE(keptInPiece[r].count(p)) << "piece " << r << " keeps the needed point " << p[0] << " " << p[1]
+                                           << " " << p[2];
+    EXPECT_LE(keptInPiece[r].size(), needed.size() + needed.size() / 4) << "piece " << r;
   }
 }

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace
@@ -322,6 +323,23 @@ TEST(LatticeFitFilter, BadInputIsAClearError)
     fit->SetTargetNumberOfVertices(500);
     fit->SetFeatureNeighbourWeight(-2.0);
     expectError(fit, "next to a feature");
+  }
+  // A feature tolerance: a distance, and only for locked lines.
+  for (const double tolerance : { -0.1, std::nan(""), std::numeric_limits<double>::infinity() })
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetTargetNumberOfVertices(500);
+    fit->LockFeaturesOn();
+    fit->SetFeatureTolerance(tolerance);
+    expectError(fit, "FeatureTolerance must be a finite distance >= 0");
+  }
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetTargetNumberOfVertices(500);
+    fit->SetFeatureTolerance(0.05);
+    expectError(fit, "FeatureTolerance (0.05) is for locked lines: turn LockFeatures on");
   }
   {
     vtkNew<vtkLKLatticeFitFilter> fit;

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <tuple>
 
 namespace
 {
@@ -603,4 +606,89 @@ TEST(LatticeRefinement, AVertexInsertedAtTheLargestDistanceTakesTheSpike)
   EXPECT_EQ(lk::insertVerticesAtLargestDistances(untouched, sphere.points, 5, {}, none, noFixed), 5);
   EXPECT_EQ(untouched.points.size(), start.points.size() + 5);
   EXPECT_EQ(lk::latticeProblem(untouched), "");
+}
+
+// A locked line with a feature tolerance keeps the vertices that hold it
+// within the tolerance, exactly where they were; its feature edges are chords
+// through them. The same points are kept whatever the vertex ids (one line in
+// the two pieces of a cut).
+TEST(LatticeSimplification, ALockedLineWithAToleranceKeepsChordsWithinIt)
+{
+  // A torus, and its outer equator (120 vertices on a circle of radius 13)
+  // as a locked line.
+  const int nu = 120, nv = 16;
+  const lk::TriangleMesh torus = lktest::torus(nu, nv, 10.0, 3.0);
+  std::vector<lk::EdgeKey> features;
+  for (int i = 0; i < nu; ++i)
+    features.push_back(lk::edgeKey(i * nv, ((i + 1) % nu) * nv));
+  std::set<std::int64_t> featureVertices;
+  for (const auto& e : features)
+  {
+    featureVertices.insert(e.first);
+    featureVertices.insert(e.second);
+  }
+  ASSERT_EQ(featureVertices.size(), features.size()) << "one closed loop";
+  const double tolerance = 0.05;
+  lk::SimplificationOptions o;
+  o.targetVertices = 400;
+  o.lockFeatures = true;
+  o.featureTolerance = tolerance;
+  // The torus with its vertex ids reversed: the same surface and line.
+  lk::TriangleMesh renumbered = torus;
+  const auto n = static_cast<std::int64_t>(torus.points.size());
+  std::reverse(renumbered.points.begin(), renumbered.points.end());
+  for (auto& t : renumbered.triangles)
+    for (auto& v : t)
+      v = n - 1 - v;
+  std::vector<lk::EdgeKey> renumberedFeatures;
+  for (const auto& e : features)
+    renumberedFeatures.push_back(lk::edgeKey(n - 1 - e.first, n - 1 - e.second));
+
+  std::set<std::tuple<double, double, double>> keptFirst;
+  for (const bool reversed : { false, true })
+  {
+    const lk::TriangleMesh& input = reversed ? renumbered : torus;
+    const auto r = lk::simplifyLattice(input, reversed ? renumberedFeatures : features, o);
+    EXPECT_EQ(r.mesh.points.size(), 400u);
+    EXPECT_EQ(lk::cgalSurfaceMeshProblem(r.mesh), "");
+    // Fewer feature edges, still one closed loop through input feature
+    // vertices at their input positions.
+    EXPECT_LT(r.featureEdges.size(), features.size() * 2 / 3);
+    EXPECT_GE(r.featureEdges.size(), 4u);
+    std::map<std::int64_t, int> degree;
+    std::set<std::tuple<double, double, double>> kept;
+    for (const auto& e : r.featureEdges)
+      for (const std::int64_t v : { e.first, e.second })
+      {
+        ++degree[v];
+        const std::int64_t in = r.inputVertex[static_cast<std::size_t>(v)];
+        const lk::Vec3& p = r.mesh.points[static_cast<std::size_t>(v)];
+        EXPECT_EQ(p, input.points[static_cast<std::size_t>(in)]);
+        const std::int64_t original = reversed ? n - 1 - in : in;
+        EXPECT_TRUE(featureVertices.count(original)) << "a kept vertex of the line";
+        kept.insert({ p.x(), p.y(), p.z() });
+      }
+    for (const auto& [v, d] : degree)
+      EXPECT_EQ(d, 2) << v;
+    // Every input vertex of the line lies within the tolerance of a chord.
+    for (const std::int64_t v : featureVertices)
+    {
+      const lk::Vec3 p = torus.points[static_cast<std::size_t>(v)];
+      double nearest = 1e9;
+      for (const auto& e : r.featureEdges)
+      {
+        const lk::Vec3 a = r.mesh.points[static_cast<std::size_t>(e.first)];
+        const lk::Vec3 b = r.mesh.points[static_cast<std::size_t>(e.second)];
+        const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+        nearest = std::min(nearest, (p - (a + t * (b - a))).norm());
+      }
+      EXPECT_LE(nearest, tolerance + 1e-12) << v;
+    }
+    if (!reversed)
+      keptFirst = kept;
+    else
+      EXPECT_EQ(kept, keptFirst) << "the same points of the line kept whatever the ids";
+  }
+  o.featureTolerance = -1.0;
+  EXPECT_THROW(lk::simplifyLattice(torus, features, o), std::invalid_argument);
 }

@@ -1,5 +1,6 @@
 #include "latticekit/LatticeSimplification.h"
 
+#include "latticekit/FeatureChains.h"
 #include "latticekit/ManifoldRepair.h"
 #include "SurfaceMeshConversion.h"
 
@@ -103,6 +104,12 @@ struct State
   Mesh::Property_map<ED, Quadric> eq;
   Mesh::Property_map<ED, bool> feature;
   Mesh::Property_map<VD, bool> featureVertex;
+  /// Locked line vertices that featureTolerance lets go: each may collapse
+  /// along its line into a neighbour that is kept (FeatureChains.h).
+  Mesh::Property_map<VD, bool> droppable;
+  /// The input vertex whose point each vertex holds (a collapse onto a kept
+  /// point may keep the other vertex's index).
+  Mesh::Property_map<VD, std::int64_t> origin;
   std::vector<std::int64_t> parent;
   std::size_t vertices = 0;
   std::size_t collapses = 0;
@@ -113,6 +120,17 @@ struct State
 
 
   Vec3 pos(VD v) const { return toVec(mesh.point(v)); }
+
+  /// A locked feature edge that may collapse all the same: a droppable
+  /// vertex into its neighbour along the line, which is kept.
+  bool alongLine(ED e) const
+  {
+    const HD h = mesh.halfedge(e);
+    return feature[e] && droppable[mesh.source(h)] != droppable[mesh.target(h)];
+  }
+  /// Whether e may collapse at all: not a locked feature edge, or one along
+  /// its line.
+  bool collapsible(ED e) const { return !options.lockFeatures || !feature[e] || alongLine(e); }
 
   Star star(VD v0, VD v1) const
   {
@@ -249,9 +267,12 @@ bool placeAndCost(const State& s, VD v0, VD v1, Vec3& x, double& cost)
   const Vec3 p0 = s.pos(v0), p1 = s.pos(v1);
   const Vec3 mid = 0.5 * (p0 + p1);
   const Quadric total = s.total(s.star(v0, v1), mid);
-  if (s.options.lockFeatures && s.featureVertex[v0])
+  // Locked: a feature vertex stays where it is; along a line the droppable
+  // vertex goes into its kept neighbour.
+  const bool stays0 = s.featureVertex[v0] && !s.droppable[v0], stays1 = s.featureVertex[v1] && !s.droppable[v1];
+  if (s.options.lockFeatures && (stays0 || (s.featureVertex[v0] && !s.featureVertex[v1])))
     x = p0;
-  else if (s.options.lockFeatures && s.featureVertex[v1])
+  else if (s.options.lockFeatures && (stays1 || s.featureVertex[v1]))
     x = p1;
   else
     x = minimum(total, mid);
@@ -266,8 +287,11 @@ double minAngle(const Vec3& a, const Vec3& b, const Vec3& c)
   return std::min({ angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b) });
 }
 
-/// Refuses collapses that turn a triangle too far (or flip it) or create a sliver.
-bool geometricallyValid(const State& s, VD v0, VD v1, const Vec3& x)
+/// Refuses collapses that turn a triangle too far (or flip it) or create a
+/// sliver. `slivers`: a sliver is allowed (a line vertex let go along its
+/// line: the split lines that have them come with slivers beside them, and
+/// refusing would keep vertices the tolerance lets go).
+bool geometricallyValid(const State& s, VD v0, VD v1, const Vec3& x, bool slivers = false)
 {
   const double cosMax = std::cos(s.options.maxNormalChangeDegrees * kPi / 180.0);
   const double angleMin = s.options.minAngleDegrees * kPi / 180.0;
@@ -292,7 +316,7 @@ bool geometricallyValid(const State& s, VD v0, VD v1, const Vec3& x)
       newMin = std::min(newMin, minAngle(x, pa, pb));
     }
   }
-  return !(newMin < angleMin && newMin < oldMin);
+  return slivers || !(newMin < angleMin && newMin < oldMin);
 }
 
 /// Topology: CGAL's link condition, no edge joining two border vertices
@@ -315,6 +339,88 @@ struct HeapEntry
   bool operator>(const HeapEntry& o) const { return std::tie(cost, edge) > std::tie(o.cost, o.edge); }
 };
 
+/// Collapses e into x: the quadrics of its ends and of the edge merge into
+/// the kept vertex, those of the two edges of each side triangle into the one
+/// left, and so do the feature flags. `constrained`: CGAL's constrained
+/// collapse, which keeps a feature edge where two edges merge (e itself must
+/// not be a feature edge then).
+VD collapseEdge(State& state, ED e, const Vec3& x, bool constrained)
+{
+  Mesh& mesh = state.mesh;
+  const HD h = mesh.halfedge(e);
+  const VD v0 = mesh.source(h), v1 = mesh.target(h);
+  Quadric qv = state.vq[v0];
+  qv += state.vq[v1];
+  qv += state.eq[e];
+  const bool fv = state.featureVertex[v0] || state.featureVertex[v1];
+  // A droppable vertex merged with a vertex off the line stays droppable; one
+  // merged into its kept neighbour along the line is gone.
+  const bool dropped = state.alongLine(e);
+  const bool droppable = !dropped && (state.droppable[v0] || state.droppable[v1]);
+  const Vec3 p0 = state.pos(v0), p1 = state.pos(v1);
+  const std::int64_t o0 = state.origin[v0], o1 = state.origin[v1];
+  struct Side
+  {
+    bool exists = false;
+    VD apex;
+    Quadric q;
+    bool feature = false;
+  } sides[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    const HD side = k == 0 ? h : mesh.opposite(h);
+    if (mesh.is_border(side))
+      continue;
+    // side: a -> b, next: b -> apex, prev: apex -> a.
+    const HD n = mesh.next(side), p = mesh.prev(side);
+    sides[k].exists = true;
+    sides[k].apex = mesh.target(n);
+    sides[k].q = state.eq[mesh.edge(n)];
+    sides[k].q += state.eq[mesh.edge(p)];
+    sides[k].feature = state.feature[mesh.edge(n)] || state.feature[mesh.edge(p)];
+  }
+  const VD kept = constrained ? CGAL::Euler::collapse_edge(e, mesh, state.feature) : CGAL::Euler::collapse_edge(e, mesh);
+  mesh.point(kept) = Point(x.x(), x.y(), x.z());
+  state.vq[kept] = qv;
+  state.featureVertex[kept] = fv;
+  state.droppable[kept] = droppable;
+  if (x == p0)
+    state.origin[kept] = o0;
+  else if (x == p1)
+    state.origin[kept] = o1;
+  for (const Side& sd : sides)
+  {
+    if (!sd.exists)
+      continue;
+    const auto hk = CGAL::halfedge(kept, sd.apex, mesh);
+    if (hk.second)
+    {
+      state.eq[mesh.edge(hk.first)] = sd.q;
+      state.feature[mesh.edge(hk.first)] = sd.feature;
+    }
+  }
+  const VD removed = kept == v0 ? v1 : v0;
+  state.parent[static_cast<std::size_t>(removed)] = static_cast<std::int64_t>(kept);
+  --state.vertices;
+  ++state.collapses;
+  return kept;
+}
+
+/// Marks the locked line vertices that featureTolerance lets go
+/// (chainVerticesToKeep on each chain of feature edges).
+void markDroppableVertices(State& state, const TriangleMesh& input, const std::vector<EdgeKey>& featureEdges)
+{
+  for (const std::vector<std::int64_t>& chain : featureChains(featureEdges))
+  {
+    const std::vector<char> keep = chainVerticesToKeep(input.points, chain, state.options.featureTolerance);
+    // A closed chain's first vertex (repeated last) is one of its own.
+    const std::size_t first = chain.front() == chain.back() ? 0 : 1;
+    for (std::size_t k = first; k + 1 < chain.size(); ++k)
+      if (!keep[k])
+        state.droppable[VD(static_cast<Mesh::size_type>(chain[k]))] = true;
+  }
+}
+
 void checkOptions(const TriangleMesh& mesh, const SimplificationOptions& o)
 {
   auto positive = [](double w) { return std::isfinite(w) && w > 0.0; };
@@ -324,6 +430,8 @@ void checkOptions(const TriangleMesh& mesh, const SimplificationOptions& o)
     throw std::invalid_argument("the weight of edges next to a feature must be a finite number above 0");
   if (!(std::isfinite(o.boundaryWeight) && o.boundaryWeight >= 0.0))
     throw std::invalid_argument("the boundary weight must be a finite number >= 0");
+  if (!(std::isfinite(o.featureTolerance) && o.featureTolerance >= 0.0))
+    throw std::invalid_argument("the feature tolerance must be a finite distance >= 0");
   if (o.targetVertices < 4)
     throw std::invalid_argument("the target vertex count must be at least 4");
   if (o.targetVertices >= mesh.points.size())
@@ -344,7 +452,10 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
 
   State state{ mesh, options, mesh.add_property_map<VD, Quadric>("v:q").first,
     mesh.add_property_map<ED, Quadric>("e:q").first, mesh.add_property_map<ED, bool>("e:feature", false).first,
-    mesh.add_property_map<VD, bool>("v:feature", false).first, {} };
+    mesh.add_property_map<VD, bool>("v:feature", false).first, mesh.add_property_map<VD, bool>("v:droppable", false).first,
+    mesh.add_property_map<VD, std::int64_t>("v:origin", -1).first, {} };
+  for (VD v : mesh.vertices())
+    state.origin[v] = static_cast<std::int64_t>(static_cast<std::size_t>(v));
 
   for (const EdgeKey& e : featureEdges)
   {
@@ -419,6 +530,8 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
   state.vertices = input.points.size();
   state.toRemove = state.vertices - options.targetVertices;
   state.reportEvery = std::max<std::size_t>(1, state.toRemove / 200);
+  if (options.lockFeatures && options.featureTolerance > 0.0)
+    markDroppableVertices(state, input, featureEdges);
 
   // Lazy queue: a collapse marks the edges around its new vertex's ring
   // dirty (their old cost stays in the heap); a dirty edge that reaches the
@@ -431,13 +544,18 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
   std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<HeapEntry>> heap;
   auto push = [&](ED e) {
     const auto i = static_cast<std::size_t>(e);
-    if (options.lockFeatures && state.feature[e])
+    if (!state.collapsible(e))
       return;
     Vec3 x;
     double c;
     const HD h = mesh.halfedge(e);
     if (!placeAndCost(state, mesh.source(h), mesh.target(h), x, c))
       return;
+    // A vertex the line lets go goes first, while its neighbourhood is
+    // fine (its quadrics carry the feature weight k, which would otherwise
+    // keep it to the end).
+    if (state.alongLine(e))
+      c = 0.0;
     lastCost[i] = c;
     dirty[i] = 0;
     heap.push({ c, static_cast<std::uint32_t>(i), ++stamp[i] });
@@ -459,60 +577,16 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
     }
     const HD h = mesh.halfedge(e);
     const VD v0 = mesh.source(h), v1 = mesh.target(h);
-    if (options.lockFeatures && state.featureVertex[v0] && state.featureVertex[v1])
+    if (options.lockFeatures && state.featureVertex[v0] && state.featureVertex[v1] && !state.alongLine(e))
       continue;
     if (!topologicallyValid(mesh, e))
       continue;
     Vec3 x;
     double c;
-    if (!placeAndCost(state, v0, v1, x, c) || !geometricallyValid(state, v0, v1, x))
+    if (!placeAndCost(state, v0, v1, x, c) || !geometricallyValid(state, v0, v1, x, state.alongLine(e)))
       continue; // comes back when its neighbourhood changes
 
-    // Merged quadrics and flags.
-    Quadric qv = state.vq[v0];
-    qv += state.vq[v1];
-    qv += state.eq[e];
-    const bool fv = state.featureVertex[v0] || state.featureVertex[v1];
-    struct Side
-    {
-      bool exists = false;
-      VD apex;
-      Quadric q;
-      bool feature = false;
-    } sides[2];
-    for (int k = 0; k < 2; ++k)
-    {
-      const HD side = k == 0 ? h : mesh.opposite(h);
-      if (mesh.is_border(side))
-        continue;
-      // side: a -> b, next: b -> apex, prev: apex -> a.
-      const HD n = mesh.next(side), p = mesh.prev(side);
-      sides[k].exists = true;
-      sides[k].apex = mesh.target(n);
-      sides[k].q = state.eq[mesh.edge(n)];
-      sides[k].q += state.eq[mesh.edge(p)];
-      sides[k].feature = state.feature[mesh.edge(n)] || state.feature[mesh.edge(p)];
-    }
-    const VD kept = options.lockFeatures ? CGAL::Euler::collapse_edge(e, mesh, state.feature)
-                                         : CGAL::Euler::collapse_edge(e, mesh);
-    mesh.point(kept) = Point(x.x(), x.y(), x.z());
-    state.vq[kept] = qv;
-    state.featureVertex[kept] = fv;
-    for (const Side& sd : sides)
-    {
-      if (!sd.exists)
-        continue;
-      const auto hk = CGAL::halfedge(kept, sd.apex, mesh);
-      if (hk.second)
-      {
-        state.eq[mesh.edge(hk.first)] = sd.q;
-        state.feature[mesh.edge(hk.first)] = sd.feature;
-      }
-    }
-    const VD removed = kept == v0 ? v1 : v0;
-    state.parent[static_cast<std::size_t>(removed)] = static_cast<std::int64_t>(kept);
-    --state.vertices;
-    ++state.collapses;
+    const VD kept = collapseEdge(state, e, x, options.lockFeatures && !state.feature[e]);
     // Everything whose cost reads the moved vertex: the edges at its ring.
     for (HD r : CGAL::halfedges_around_target(mesh.halfedge(kept), mesh))
     {
@@ -520,7 +594,7 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
       {
         const ED ge = mesh.edge(g);
         const auto i = static_cast<std::size_t>(ge);
-        if (options.lockFeatures && state.feature[ge])
+        if (!state.collapsible(ge))
           continue;
         if (!dirty[i])
         {
@@ -545,7 +619,7 @@ SimplificationResult simplifyLattice(const TriangleMesh& input, const std::vecto
   {
     newId[static_cast<std::size_t>(v)] = static_cast<std::int64_t>(result.mesh.points.size());
     result.mesh.points.push_back(state.pos(v));
-    result.inputVertex.push_back(static_cast<std::int64_t>(static_cast<std::size_t>(v)));
+    result.inputVertex.push_back(state.origin[v]);
   }
   for (auto f : mesh.faces())
   {

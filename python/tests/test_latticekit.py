@@ -400,6 +400,14 @@ class PipelineTest(unittest.TestCase):
             self.assertGreater(edges, 20)
             self.assertEqual(lines.GetNumberOfLines(), 1)  # one closed loop
             self.assertEqual(fit.GetOutput().GetFieldData().GetArray("FeatureEdges").GetValue(0), edges)
+            # With a tolerance the line keeps only the points its shape needs.
+            fit.SetFeatureTolerance(0.005)
+            fit.Update()
+            fewer = fit.GetOutput().GetFieldData().GetArray("FeatureEdges").GetValue(0)
+            self.assertLess(fewer, 0.7 * edges)
+            self.assertGreaterEqual(fewer, 4)
+            fit.SetFeatureTolerance(0.0)
+            fit.Update()
             faces += extract.GetOutput().GetNumberOfPolys()
             # The same piece again, point for point.
             again = latticekit.vtkLKExtractCutPieceFilter()

@@ -43,6 +43,13 @@
 /// onto a feature vertex keeps that vertex where it is, an edge joining two
 /// feature vertices is never collapsed, and CGAL's constrained collapse keeps
 /// a feature edge where two edges merge, so every feature edge survives exactly.
+/// With featureTolerance > 0 as well, a locked line keeps only the vertices
+/// that hold it within that distance (FeatureChains.h): the others are first
+/// collapsed along the line into a neighbour, which stays where it is, so the
+/// feature edges left are chords through points of the line kept exactly.
+/// Those collapses go first, and may leave a sliver (split lines come with
+/// slivers beside them) but not a fold: a vertex whose collapse would fold
+/// the surface stays, and is tried again when its neighbourhood changes.
 ///
 /// The queue: a binary heap of edge costs with lazy updates. A collapse marks
 /// the edges around its new vertex's ring dirty (they keep their old cost in
@@ -85,6 +92,10 @@ struct SimplificationOptions
   double featureWeight = 1.0;          ///< k of eq. 3.14, > 0
   double featureNeighbourWeight = 1.0; ///< on edges sharing a vertex with a feature edge, > 0
   bool lockFeatures = false;           ///< feature edges are never collapsed and never move
+  /// With lockFeatures: > 0 lets a feature line drop the vertices it does not
+  /// need to stay within this distance (chords between the vertices kept);
+  /// 0 keeps every feature edge. Finite, >= 0.
+  double featureTolerance = 0.0;
   bool roundedSurfaceQuadrics = true;  ///< Hayashi's evaluation at V' and q_j
   double boundaryWeight = 1.0;         ///< weight of the boundary-preserving quadrics, >= 0
   double maxNormalChangeDegrees = 75.0;
@@ -99,7 +110,7 @@ struct SimplificationResult
   TriangleMesh mesh;                       ///< the triangle lattice
   std::vector<EdgeKey> featureEdges;       ///< surviving feature edges, output ids
   std::vector<std::int64_t> collapsedInto; ///< every input vertex: the output vertex it merged into
-  std::vector<std::int64_t> inputVertex;   ///< every output vertex: the input vertex it continues
+  std::vector<std::int64_t> inputVertex;   ///< every output vertex: the input vertex it continues (whose point it holds where a collapse kept one in place)
   /// Every output edge: its accumulated edge quadric at its curve midpoint
   /// q_e (the error the edge is responsible for), the quad pairing's order.
   std::map<EdgeKey, double> edgeCost;
