@@ -1,7 +1,8 @@
 // latticekit-demo: the main job. A mandible osteotomy planned on a CT:
 // CT -> mandible surface -> a scripted closed pen stroke around one side of
 // the mandible body (split mode) -> capped cut into two pieces -> a lattice
-// for each piece (the cut line kept exactly) -> a Metro report like the
+// for each piece (the cut line locked: its points that hold it within the
+// plan's cutLineTolerance kept exactly) -> a Metro report like the
 // paper's Table 2 (no cut / cut / cut with quads), exported pieces and
 // lattices, and PNG pictures.
 #include "common/AppSupport.h"
@@ -11,6 +12,7 @@
 #include "common/ScanPicture.h"
 #include "common/JsonFields.h"
 #include "common/DistanceColourBar.h"
+#include "latticekit/FeatureChains.h"
 
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKClosedLineCutFilter.h"
@@ -59,6 +61,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -75,18 +78,19 @@ void usage(std::ostream& os)
         "\n"
         "Runs the main job, a mandible osteotomy plan on a CT: the mandible surface, a scripted\n"
         "closed pen stroke around one side of the mandible body (split mode), the capped cut into\n"
-        "two pieces, a lattice for each piece with the cut line kept exactly, and a Metro report\n"
-        "like the paper's Table 2 (no cut / cut / cut with quads). Writes to FOLDER (default\n"
-        "latticekit-output): mandible.vtp/.stl (with the cut line split in), cut_line.vtp (its\n"
-        "MeshPointId name mandible.vtp's points), piece0/1 (.stl .vtp .obj), the lattices and\n"
+        "two pieces, a lattice for each piece with the cut line locked (the points of the line\n"
+        "that hold it within the plan's cutLineTolerance, 0.05 mm by default, kept exactly), and a\n"
+        "Metro report like the paper's Table 2 (no cut / cut / cut with quads). Writes to FOLDER\n"
+        "(default latticekit-output): mandible.vtp/.stl (with the cut line split in), cut_line.vtp\n"
+        "(its MeshPointId name mandible.vtp's points), piece0/1 (.stl .vtp .obj), the lattices and\n"
         "their surfaces, report.md and plan.png, pieces.png, error.png, cut_line_ct.png and\n"
         "cut_line_across_ct.png (the CT on the cut line's plane and across it).\n"
         "INPUT defaults to the bundled CT head and PLAN to its plan\n"
         "(sample_data/cthead/mandible_plan.json: crop box, seed, iso value, smoothing, cut plane,\n"
-        "lattice size, view; see that file). A plan without \"smoothing\" (windowed-sinc\n"
-        "iterations, 0 to 1000) and \"imageSmoothing\" (a Gaussian on the volume, 0 to 20 voxels)\n"
-        "gets latticekit-surface's defaults: none on a CT; half a voxel and 20 iterations on a\n"
-        "label map (1 and 0 give the surface made before December 2026).\n"
+        "lattice size, cut line tolerance, view; see that file). A plan without \"smoothing\"\n"
+        "(windowed-sinc iterations, 0 to 1000) and \"imageSmoothing\" (a Gaussian on the volume,\n"
+        "0 to 20 voxels) gets latticekit-surface's defaults: none on a CT; half a voxel and 20\n"
+        "iterations on a label map (1 and 0 give the surface made before December 2026).\n"
         "\n"
         "  --plan FILE      the plan (JSON)\n"
         "  --vertices N     lattice control vertices in all (default: the plan's)\n"
@@ -121,6 +125,10 @@ struct Plan
   double penOffset = 0.3;           ///< mm off the surface
   double penStep = 1.0;             ///< mm between stroke points
   long vertices = 1500;
+  /// Each piece's lattice keeps the points of its cut line that hold the
+  /// line within this distance (mm), exactly; 0: every vertex of the line
+  /// (a split line has one at each mesh edge it crosses).
+  double lineTolerance = 0.05;
   std::array<double, 3> viewFrom{ 0, 0, 1 }, viewUp{ 0, -1, 0 };
   /// The patient's head and front in the scan's coordinates, for a scan
   /// whose file gives no orientation: the CT pictures stand head up.
@@ -141,7 +149,8 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
       std::cerr << "warning: " << name << " has fields latticekit-demo does not know, ignored: " << unknown << "\n";
   };
   warnUnknown(root,
-    { "description", "iso", "smoothing", "imageSmoothing", "crop", "seed", "cut", "latticeVertices", "view", "patient" },
+    { "description", "iso", "smoothing", "imageSmoothing", "crop", "seed", "cut", "latticeVertices",
+      "cutLineTolerance", "view", "patient" },
     "the plan");
   warnUnknown(root["cut"], { "origin", "normal", "penOffset", "penStep" }, "the plan's cut");
   warnUnknown(root["view"], { "from", "up" }, "the plan's view");
@@ -155,7 +164,10 @@ bool readPlan(const Json::Value& root, Plan& plan, std::string& error)
     !jsonMember(root, "smoothing", smoothing, iterations, where, "a whole number from 0 to 1000", error) ||
     !jsonMember(root, "imageSmoothing", plan.imageSmoothing, gaussian, where,
       "a standard deviation from 0 to 20 voxels", error) ||
-    !jsonMember(root, "latticeVertices", vertices, count, where, "a whole number from 8 to 100,000,000", error))
+    !jsonMember(root, "latticeVertices", vertices, count, where, "a whole number from 8 to 100,000,000", error) ||
+    !jsonMember(root, "cutLineTolerance", plan.lineTolerance,
+      [](const Json::Value& v, double& out) { return jsonNumber(v, out) && out >= 0.0 && out <= 10.0; }, where,
+      "a distance from 0 to 10 mm", error))
     return false;
   plan.smoothing = static_cast<int>(smoothing);
   plan.vertices = static_cast<long>(vertices);
@@ -295,6 +307,49 @@ vtkIdType cutLineEdges(vtkPolyData* border)
   return count ? static_cast<vtkIdType>(count->GetTuple1(0)) : 0;
 }
 
+std::string numberText(double v)
+{
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+/// The vertices of a piece's cut lines that its lattice keeps: every one
+/// (closed lines: as many as edges), or with a tolerance those that hold each
+/// line within it, as the fit chooses them (lk::chainVerticesToKeep).
+vtkIdType keptLineVertices(vtkPolyData* border, double tolerance)
+{
+  if (!(tolerance > 0.0) || !border)
+    return cutLineEdges(border);
+  // The lines by the mesh points they name, so that a closed line is a loop.
+  vtkDataArray* meshIds = border->GetPointData()->GetArray("MeshPointId");
+  std::map<std::int64_t, std::int64_t> index; // mesh point -> its place in points
+  std::vector<lk::Vec3> points;
+  auto idOf = [&](vtkIdType p) {
+    const auto key = meshIds ? static_cast<std::int64_t>(meshIds->GetTuple1(p)) : static_cast<std::int64_t>(p);
+    const auto [it, added] = index.emplace(key, static_cast<std::int64_t>(points.size()));
+    if (added)
+    {
+      double x[3];
+      border->GetPoint(p, x);
+      points.emplace_back(x[0], x[1], x[2]);
+    }
+    return it->second;
+  };
+  std::set<std::pair<std::int64_t, std::int64_t>> edges;
+  vtkNew<vtkIdList> ids;
+  vtkCellArray* lines = border->GetLines();
+  lines->InitTraversal();
+  while (lines->GetNextCell(ids))
+    for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k)
+    {
+      const std::int64_t a = idOf(ids->GetId(k)), b = idOf(ids->GetId(k + 1));
+      if (a != b)
+        edges.insert({ std::min(a, b), std::max(a, b) });
+    }
+  return static_cast<vtkIdType>(lk::featureVerticesToKeep(points, { edges.begin(), edges.end() }, tolerance));
+}
+
 struct Row
 {
   std::string name;
@@ -309,7 +364,8 @@ struct Row
 /// rest of the vertices are shared in proportion to the faces), their
 /// surfaces appended, Metro against the meshes appended.
 Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyData>>& meshes,
-  const std::vector<vtkSmartPointer<vtkPolyData>>& borders, long vertices, bool quads, const std::string& folder,
+  const std::vector<vtkSmartPointer<vtkPolyData>>& borders, double lineTolerance, long vertices, bool quads,
+  const std::string& folder,
   const std::string& stem, bool quiet, vtkSmartPointer<vtkPolyData>& surfaceOut,
   std::vector<vtkSmartPointer<vtkPolyData>>& latticesOut)
 {
@@ -325,7 +381,7 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
   {
     faces += static_cast<double>(meshes[i]->GetNumberOfPolys());
     if (i < borders.size())
-      locked[i] = cutLineEdges(borders[i]); // closed lines: as many vertices as edges
+      locked[i] = keptLineVertices(borders[i], lineTolerance);
     allLocked += locked[i];
   }
   const vtkIdType free = std::max<vtkIdType>(0, static_cast<vtkIdType>(vertices) - allLocked);
@@ -348,6 +404,7 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
     {
       fit->SetFeatureLinesData(borders[i]);
       fit->LockFeaturesOn();
+      fit->SetFeatureTolerance(lineTolerance);
     }
     fit->SetTargetNumberOfVertices(std::max<vtkIdType>(8, shares[i]));
     fit->SetQuadPairing(quads);
@@ -687,9 +744,12 @@ int main(int argc, char* argv[])
   //    keeps its locked lines' vertices; with fewer free vertices than
   //    locked ones the pieces' lattices are fans of slivers off the line
   //    (or cannot reach their share at all), so such a plan is refused.
-  vtkIdType lockedVertices = 0;
+  vtkIdType lockedVertices = 0, lineVertices = 0;
   for (const auto& border : borders)
-    lockedVertices += cutLineEdges(border); // closed lines: as many vertices as edges
+  {
+    lockedVertices += keptLineVertices(border, plan.lineTolerance);
+    lineVertices += cutLineEdges(border); // closed lines: as many vertices as edges
+  }
   if (plan.vertices < 2 * lockedVertices)
   {
     std::cerr << "error: the plan's latticeVertices (" << plan.vertices << ") is too few for the cut: the "
@@ -702,11 +762,11 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkPolyData> surfaceWhole, surfaceCut, surfaceQuads;
   std::vector<vtkSmartPointer<vtkPolyData>> latticesWhole, latticesCut, latticesQuads;
   std::vector<Row> rows;
-  rows.push_back(fitRow("no cut", { mandible }, {}, plan.vertices, false, folder, "lattice_whole", quiet, surfaceWhole,
+  rows.push_back(fitRow("no cut", { mandible }, {}, 0.0, plan.vertices, false, folder, "lattice_whole", quiet, surfaceWhole,
     latticesWhole));
-  rows.push_back(fitRow("cut", pieces, borders, plan.vertices, false, folder, "lattice_piece", quiet, surfaceCut,
+  rows.push_back(fitRow("cut", pieces, borders, plan.lineTolerance, plan.vertices, false, folder, "lattice_piece", quiet, surfaceCut,
     latticesCut));
-  rows.push_back(fitRow("cut, quads, refined", pieces, borders, plan.vertices, true, folder, "lattice_quads_piece",
+  rows.push_back(fitRow("cut, quads, refined", pieces, borders, plan.lineTolerance, plan.vertices, true, folder, "lattice_quads_piece",
     quiet, surfaceQuads, latticesQuads));
   if (lkapp::errorCount() > 0)
     return 1;
@@ -767,8 +827,16 @@ int main(int argc, char* argv[])
          << " control vertices in all\n\n"
          << "Metro: symmetric Hausdorff distance between the lattice surfaces (one Doo-Sabin step, Gregory "
             "patches) and the dense surfaces (the mandible; the capped pieces), in % of the bounding-box "
-            "diagonal. With the cut, the cut line is locked (kept exactly as lattice edges): each piece keeps its "
-            "line's vertices and gets the rest in proportion to its faces.\n\n"
+            "diagonal. With the cut, the cut line is locked: "
+         << (plan.lineTolerance > 0.0
+                ? "each piece keeps the vertices of its cut line that hold the line within " +
+                  numberText(plan.lineTolerance) +
+                  " mm (the plan's cutLineTolerance), exactly where they are, as lattice vertices (" +
+                  std::to_string(lockedVertices) + " of the " + std::to_string(lineVertices) +
+                  " line vertices of the two pieces), and gets the rest"
+                : std::string("each piece keeps every vertex of its cut line as a lattice vertex (the plan's "
+                              "cutLineTolerance is 0) and gets the rest"))
+         << " of the vertices in proportion to its faces.\n\n"
          << "| model | control vertices | triangles | quads | display polygons | lattice bytes | max % | mean % | RMS % | time s |\n"
          << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)

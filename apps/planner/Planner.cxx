@@ -1147,7 +1147,7 @@ std::string Planner::planText()
     if (fitted.raised)
     {
       std::snprintf(line, sizeof line, " (above the session's %ld: its lines take %zu, and the rest of the bone as many)",
-        session.latticeVertices, fitted.lineVertices);
+        session.latticeVertices, fitted.neededLineVertices);
       text += line;
     }
     std::snprintf(line, sizeof line, ", %.0f triangles, %.0f quads", lkapp::fieldValue(fitted.lattice, "Triangles"),
@@ -1155,8 +1155,11 @@ std::string Planner::planText()
     text += line;
     if (fitted.featureEdges > 0)
     {
-      std::snprintf(line, sizeof line, "; its cut and stroke lines kept exactly as lattice edges (%zu edge%s)",
-        fitted.featureEdges, fitted.featureEdges == 1 ? "" : "s");
+      std::snprintf(line, sizeof line,
+        "; its cut and stroke lines kept as lattice edges (%zu edge%s) within %g mm, through %zu of their %zu "
+        "vertices, each where it was",
+        fitted.featureEdges, fitted.featureEdges == 1 ? "" : "s", kLineTolerance, fitted.keptLineVertices,
+        fitted.lineVertices);
       text += line;
     }
     if (fitted.featureEdgesRefined > 0)

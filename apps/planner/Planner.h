@@ -170,12 +170,16 @@ public:
     std::uint64_t key = 0;
     vtkSmartPointer<vtkPolyData> lattice, surface; ///< empty surface: the fit failed
     std::string errors;
-    /// The feature edges the lattice keeps exactly, and those a deformation
-    /// refined (no longer edges of the piece: not kept).
+    /// The lattice edges that keep the lines (chords through the points of
+    /// the lines kept within kLineTolerance), and the lines' edges a
+    /// deformation refined (no longer edges of the piece: not kept).
     std::size_t featureEdges = 0, featureEdgesRefined = 0;
-    /// The vertices of those lines; whether they raised the count above the
-    /// session's (to twice theirs, so the rest of the bone keeps as many).
-    std::size_t lineVertices = 0;
+    /// The vertices of those lines, how many of them hold the lines within
+    /// kLineTolerance, and how many the lattice keeps (those, and any whose
+    /// collapse along its line would have folded it); whether the needed
+    /// ones raised the count above the session's (to twice theirs, so the
+    /// rest of the bone keeps as many).
+    std::size_t lineVertices = 0, neededLineVertices = 0, keptLineVertices = 0;
     bool raised = false;
     /// The surface with its Metro distance to the piece, once asked for.
     vtkSmartPointer<vtkPolyData> metro;

@@ -7,6 +7,7 @@
 
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKLatticeSurfaceFilter.h"
+#include "latticekit/FeatureChains.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -16,6 +17,7 @@
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -105,13 +107,31 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
     if (piece != cut.pieces[p].Get())
       features = onDeformed(features, piece, cut.pieces[p]->GetNumberOfPoints(), refined);
   }
-  // Every vertex of those lines is a lattice vertex: the rest of the bone
-  // keeps at least as many (as the main job asks of its plan), or a long
-  // split line would leave it a few coarse faces.
+  // The lines keep the points that hold them within kLineTolerance, exactly,
+  // as lattice vertices (as the main job keeps its cut line): a split line
+  // has a vertex at every mesh edge it crosses, and each one kept made the
+  // lattice a fan of slivers there. The rest of the bone keeps at least as
+  // many vertices again, or a long line would leave it a few coarse faces.
   std::set<vtkIdType> onLines;
+  std::vector<std::pair<std::int64_t, std::int64_t>> lineEdges;
   for (const auto& e : features)
+  {
     onLines.insert(e.begin(), e.end());
-  const vtkIdType wanted = std::max<vtkIdType>(session.latticeVertices, 2 * static_cast<vtkIdType>(onLines.size()));
+    lineEdges.emplace_back(e[0], e[1]);
+  }
+  std::size_t needed = 0;
+  if (!lineEdges.empty())
+  {
+    std::vector<lk::Vec3> points(static_cast<std::size_t>(piece->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      piece->GetPoint(i, x);
+      points[static_cast<std::size_t>(i)] = lk::Vec3(x[0], x[1], x[2]);
+    }
+    needed = lk::featureVerticesToKeep(points, lineEdges, kLineTolerance);
+  }
+  const vtkIdType wanted = std::max<vtkIdType>(session.latticeVertices, 2 * static_cast<vtkIdType>(needed));
   const vtkIdType vertices = std::min<vtkIdType>(wanted, piece->GetNumberOfPoints() / 2);
   const std::uint64_t key = geometryKey(piece, vertices, features);
   if (lattices.size() <= p)
@@ -147,6 +167,7 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
     lines->GetPointData()->AddArray(ids);
     fit->SetFeatureLinesData(lines);
     fit->LockFeaturesOn();
+    fit->SetFeatureTolerance(kLineTolerance);
   }
   fit->QuadPairingOn();
   fit->ComputeErrorOff();
@@ -157,9 +178,21 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
   smooth->Update();
   fitted.key = key;
   fitted.errors = lkapp::errorCount() > before ? lkapp::errorsSince(before) : "";
-  fitted.featureEdges = features.size();
+  fitted.featureEdges = static_cast<std::size_t>(lkapp::fieldValue(fit->GetOutput(), "FeatureEdges"));
   fitted.featureEdgesRefined = refined;
   fitted.lineVertices = onLines.size();
+  fitted.neededLineVertices = needed;
+  {
+    // The lattice's vertices on the lines: those the lines need, and any
+    // whose collapse along its line would have folded the lattice.
+    std::set<vtkIdType> kept;
+    vtkNew<vtkIdList> ids;
+    vtkCellArray* cells = fit->GetOutput()->GetLines();
+    for (cells->InitTraversal(); cells->GetNextCell(ids);)
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        kept.insert(ids->GetId(k));
+    fitted.keptLineVertices = kept.size();
+  }
   fitted.raised = wanted > session.latticeVertices;
   fitted.lattice = vtkSmartPointer<vtkPolyData>::New();
   fitted.lattice->ShallowCopy(fit->GetOutput());

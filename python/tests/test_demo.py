@@ -60,6 +60,16 @@ class DemoTest(unittest.TestCase):
                 self.assertEqual(row[0], 1500, name)  # control vertices in all
                 self.assertTrue(0 < row[6] < row[5], name)  # 0 < mean < max
             self.assertGreater(rows["cut, quads, refined"][2], 0)  # quads were paired
+            # The pieces keep the points of the cut line that hold it within
+            # the plan's 0.05 mm, not each of its vertices (a split line has
+            # one at every mesh edge it crosses): the cut costs the lattice
+            # little (each piece kept all 252, a third of the 1,500 between
+            # them, and the cut's mean was 1.7 times the uncut one's).
+            m = re.search(r"hold the line within 0.05 mm \(the plan's cutLineTolerance\), exactly where they are, as "
+                          r"lattice vertices \(([0-9]+) of the ([0-9]+) line vertices of the two pieces\)", report)
+            self.assertIsNotNone(m, report)
+            self.assertLess(int(m.group(1)), 0.5 * int(m.group(2)))
+            self.assertLess(rows["cut"][6], 1.3 * rows["no cut"][6])
 
             # The pieces are closed, and the cut line lies on both (it is their shared border).
             def read(name):
@@ -163,8 +173,11 @@ class DemoTest(unittest.TestCase):
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
         mandible = os.path.join(SAMPLE_DATA, "mandible-tcia", "test_oncologist_0522c0017_Mandible.nrrd")
+        # Every vertex of the cut line kept (cutLineTolerance 0), as the
+        # refusal's numbers below assume.
         plan_text = ('{"iso": 0.5, "crop": [0, 70, 250, 360, -1000, -900], "seed": [40, 300, -950],'
-                     ' "cut": {"origin": [35, 300, -950], "normal": [1, 0, 0]}, "latticeVertices": %d}')
+                     ' "cut": {"origin": [35, 300, -950], "normal": [1, 0, 0]}, "cutLineTolerance": 0,'
+                     ' "latticeVertices": %d}')
         with tempfile.TemporaryDirectory() as tmp:
             plan = os.path.join(tmp, "plan.json")
             out = os.path.join(tmp, "out")
@@ -232,6 +245,7 @@ class DemoTest(unittest.TestCase):
                     # More than the surface filter takes (it clamped them to 1000 without a word).
                     ('{%s, "smoothing": 5000}' % cut, '"smoothing" must be a whole number from 0 to 1000'),
                     ('{%s, "imageSmoothing": 30}' % cut, '"imageSmoothing" must be a standard deviation from 0 to 20'),
+                    ('{%s, "cutLineTolerance": -0.1}' % cut, '"cutLineTolerance" must be a distance from 0 to 10 mm'),
                     ('{%s, "crop": [10, 0, 0, 1, 0, 1]}' % cut, "each min below its max"),
                     ('{%s, "patient": {"head": [0, 0, 1], "front": [0, 0, -2]}}' % cut,
                      "the plan's patient needs \"head\" and \"front\" as [x, y, z]: non-zero and not parallel"),
