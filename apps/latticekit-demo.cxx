@@ -307,13 +307,6 @@ vtkIdType cutLineEdges(vtkPolyData* border)
   return count ? static_cast<vtkIdType>(count->GetTuple1(0)) : 0;
 }
 
-std::string numberText(double v)
-{
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
 /// The vertices of a piece's cut lines that its lattice keeps: every one
 /// (closed lines: as many as edges), or with a tolerance those that hold each
 /// line within it, as the fit chooses them (lk::chainVerticesToKeep).
@@ -830,7 +823,7 @@ int main(int argc, char* argv[])
             "diagonal. With the cut, the cut line is locked: "
          << (plan.lineTolerance > 0.0
                 ? "each piece keeps the vertices of its cut line that hold the line within " +
-                  numberText(plan.lineTolerance) +
+                  number(plan.lineTolerance) +
                   " mm (the plan's cutLineTolerance), exactly where they are, as lattice vertices (" +
                   std::to_string(lockedVertices) + " of the " + std::to_string(lineVertices) +
                   " line vertices of the two pieces), and gets the rest"

@@ -243,19 +243,8 @@ int vtkLKMetroFilter::RequestData(
       }
       vtkSMPTools::For(static_cast<vtkIdType>(block.begin), static_cast<vtkIdType>(block.end), 4096,
         [&](vtkIdType b, vtkIdType e) {
-          const auto b0 = static_cast<std::size_t>(b), e0 = static_cast<std::size_t>(e);
-          switch (block.kind)
-          {
-            case lk::SampleKind::Vertex:
-              lk::fillVertexSamples(sampled, plan, b0, e0, samples);
-              break;
-            case lk::SampleKind::Edge:
-              lk::fillEdgeSamples(sampled, plan, b0, e0, samples);
-              break;
-            case lk::SampleKind::Face:
-              lk::fillFaceSamples(sampled, plan, options, b0, e0, samples);
-              break;
-          }
+          lk::fillBlockSamples(
+            sampled, plan, options, block, static_cast<std::size_t>(b), static_cast<std::size_t>(e), samples);
         });
       // The SMP grain keeps neighbouring samples together, so that the
       // closest-point hints stay coherent.

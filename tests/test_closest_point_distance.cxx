@@ -317,12 +317,7 @@ TEST(MetroDistance, BlocksAddUpToTheWholeSummary)
     {
       lk::SampleSet s;
       lk::allocateSamples(block, s);
-      if (block.kind == lk::SampleKind::Vertex)
-        lk::fillVertexSamples(a, plan, block.begin, block.end, s);
-      else if (block.kind == lk::SampleKind::Edge)
-        lk::fillEdgeSamples(a, plan, block.begin, block.end, s);
-      else
-        lk::fillFaceSamples(a, plan, o, block.begin, block.end, s);
+      lk::fillBlockSamples(a, plan, o, block, block.begin, block.end, s);
       std::vector<double> bd(s.size());
       tree.distances(s, 0, s.size(), bd.data());
       sums.add(s, bd.data());

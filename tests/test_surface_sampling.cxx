@@ -187,18 +187,7 @@ TEST(SurfaceSampling, BlocksCoverThePlanOnceAndFillAsTheWholeSet)
         next = b.first + b.count;
         lk::SampleSet s;
         lk::allocateSamples(b, s);
-        switch (b.kind)
-        {
-          case lk::SampleKind::Vertex:
-            lk::fillVertexSamples(m, plan, b.begin, b.end, s);
-            break;
-          case lk::SampleKind::Edge:
-            lk::fillEdgeSamples(m, plan, b.begin, b.end, s);
-            break;
-          case lk::SampleKind::Face:
-            lk::fillFaceSamples(m, plan, o, b.begin, b.end, s);
-            break;
-        }
+        lk::fillBlockSamples(m, plan, o, b, b.begin, b.end, s);
         for (std::size_t i = 0; i < s.size(); ++i, ++compared)
         {
           const std::size_t j = b.first + i;

@@ -37,12 +37,13 @@ vtkSmartPointer<vtkPolyData> ballAt(const std::array<double, 3>& centre, double 
 vtkSmartPointer<vtkCaptionActor2D> captionActor(
   const std::string& text, const std::array<double, 3>& colour, int fontSize, const std::array<double, 2>& offset);
 
-/// Where a piece's name and a measured value stand from their points when
-/// nothing is in the way (Planner::placeCaptions), in pixels.
 /// How closely a piece's lattice keeps its cut and stroke lines (mm): the
 /// points of a line that hold it this close stay exactly, as lattice
 /// vertices (vtkLKLatticeFitFilter::FeatureTolerance), as in the main job.
 constexpr double kLineTolerance = 0.05;
+
+/// Where a piece's name and a measured value stand from their points when
+/// nothing is in the way (Planner::placeCaptions), in pixels.
 constexpr std::array<double, 2> NameCaptionOffset{ 20.0, 20.0 };
 constexpr std::array<double, 2> MeasureCaptionOffset{ 15.0, -30.0 };
 

@@ -290,6 +290,23 @@ void fillFaceSamples(const TriangleMesh& mesh, const SamplingPlan& plan, const S
   }
 }
 
+void fillBlockSamples(const TriangleMesh& mesh, const SamplingPlan& plan, const SamplingOptions& options,
+  const SampleBlock& block, std::size_t e0, std::size_t e1, SampleSet& set)
+{
+  switch (block.kind)
+  {
+    case SampleKind::Vertex:
+      fillVertexSamples(mesh, plan, e0, e1, set);
+      break;
+    case SampleKind::Edge:
+      fillEdgeSamples(mesh, plan, e0, e1, set);
+      break;
+    case SampleKind::Face:
+      fillFaceSamples(mesh, plan, options, e0, e1, set);
+      break;
+  }
+}
+
 SampleSet sampleSurface(const TriangleMesh& mesh, const SamplingOptions& options)
 {
   const SamplingPlan plan = planSampling(mesh, options);

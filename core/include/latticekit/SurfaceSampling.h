@@ -113,6 +113,12 @@ void fillEdgeSamples(const TriangleMesh& mesh, const SamplingPlan& plan, std::si
 void fillFaceSamples(const TriangleMesh& mesh, const SamplingPlan& plan, const SamplingOptions& options,
   std::size_t f0, std::size_t f1, SampleSet& set);
 
+/// Fills the samples of the block's elements [e0, e1) (a part of
+/// [block.begin, block.end)), of the block's kind, into a set allocated for
+/// the block: fillVertexSamples, fillEdgeSamples or fillFaceSamples.
+void fillBlockSamples(const TriangleMesh& mesh, const SamplingPlan& plan, const SamplingOptions& options,
+  const SampleBlock& block, std::size_t e0, std::size_t e1, SampleSet& set);
+
 /// Samples the mesh serially. Vertex samples come first (one per used point,
 /// in point order), then edge samples (each undirected edge once, spacing
 /// 1/sqrt(density), end points excluded), then face samples in triangle
