@@ -79,7 +79,8 @@ void usage(std::ostream& os)
         "Runs the main job, a mandible osteotomy plan on a CT: the mandible surface, a scripted\n"
         "closed pen stroke around one side of the mandible body (split mode), the capped cut into\n"
         "two pieces, a lattice for each piece with the cut line locked (the points of the line\n"
-        "that hold it within the plan's cutLineTolerance, 0.05 mm by default, kept exactly), and a\n"
+        "that hold it within the plan's cutLineTolerance, 0.05 mm by default, kept exactly, the rim\n"
+        "a crease of the smooth surface), and a\n"
         "Metro report like the paper's Table 2 (no cut / cut / cut with quads). Writes to FOLDER\n"
         "(default latticekit-output): mandible.vtp/.stl (with the cut line split in), cut_line.vtp\n"
         "(its MeshPointId name mandible.vtp's points), piece0/1 (.stl .vtp .obj), the lattices and\n"
@@ -347,6 +348,7 @@ struct Row
 {
   std::string name;
   double vertices = 0, triangles = 0, quads = 0, polygons = 0;
+  double featureEdges = 0, creaseEdges = 0; ///< the lattices' edges on the cut lines, and the creases among them
   long long bytes = 0;
   double max = 0, mean = 0, rms = 0;
   double colourTop = 0; ///< the distance (mm) the error picture maps to red
@@ -417,6 +419,8 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
     row.triangles += lkapp::fieldValue(lattice, "Triangles");
     row.quads += lkapp::fieldValue(lattice, "Quads");
     row.polygons += lkapp::fieldValue(lattice, "DisplayPolygons");
+    row.featureEdges += lkapp::fieldValue(lattice, "FeatureEdges");
+    row.creaseEdges += lkapp::fieldValue(lattice, "CreaseEdges");
     const std::string path = folder + "/" + stem + (meshes.size() > 1 ? std::to_string(i) : "") + ".vtp";
     std::string error;
     if (!lkapp::writeMesh(lattice, path, error, lkapp::coordinateSpace(meshes[i])))
@@ -829,7 +833,15 @@ int main(int argc, char* argv[])
                   " line vertices of the two pieces), and gets the rest"
                 : std::string("each piece keeps every vertex of its cut line as a lattice vertex (the plan's "
                               "cutLineTolerance is 0) and gets the rest"))
-         << " of the vertices in proportion to its faces.\n\n"
+         << " of the vertices in proportion to its faces."
+         << (rows.size() > 1 && rows[1].featureEdges > 0
+                ? " Where the surface bends across the line by more than " +
+                  number(vtkSmartPointer<vtkLKLatticeFitFilter>::New()->GetCreaseAngle()) +
+                  " degrees on average (the rim, where the flat cap meets the bone), its lattice edges are creases "
+                  "of the smooth surface, which keeps the rim's edge: " +
+                  number(rows[1].creaseEdges) + " of the pieces' " + number(rows[1].featureEdges) + " line edges."
+                : std::string())
+         << "\n\n"
          << "| model | control vertices | triangles | quads | display polygons | lattice bytes | max % | mean % | RMS % | time s |\n"
          << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)

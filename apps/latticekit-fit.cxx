@@ -53,6 +53,9 @@ void usage(std::ostream& os)
         "                         its lattice edges are chords through them (a line split\n"
         "                         into the surface has a vertex at every edge it crosses;\n"
         "                         default 0: every feature edge kept)\n"
+        "  --crease-angle DEG     lines across which the mesh bends by more than DEG degrees\n"
+        "                         on average (a cut piece's rim, about 90) become creases of\n"
+        "                         the lattice surface (default 45; 180: none)\n"
         "  --flat-quadrics        plain Garland-Heckbert placement (for comparison)\n"
         "  --quads                pair triangles into quads where the pair is near-rectangular\n"
         "  --refine               move the lattice vertices (Ceres) to fit the surface better\n"
@@ -98,6 +101,7 @@ int main(int argc, char* argv[])
   long vertices = 0, iterations = 8, resolution = 8, insertions = -1; // -1: 1 per 100 vertices
   double ratio = 0.0, maxError = 0.0, countTolerance = 0.01, k = 1000.0, kn = 100.0, tail = 10.0;
   double featureTolerance = 0.0;
+  double creaseAngle = 45.0;
   bool lock = false, flat = false, quads = false, refine = false, quiet = false, repair = false;
   // Options that act only with another: refused without it rather than
   // ignored.
@@ -136,6 +140,11 @@ int main(int argc, char* argv[])
     else if (a == "--feature-tolerance")
     {
       featureTolerance = args.number(a, 0.0, 1e300, "a distance of 0 or more");
+      featureOptionGiven = true;
+    }
+    else if (a == "--crease-angle")
+    {
+      creaseAngle = args.number(a, 0.0, 180.0, "an angle from 0 to 180 degrees");
       featureOptionGiven = true;
     }
     else if (a == "--repair")
@@ -192,7 +201,8 @@ int main(int argc, char* argv[])
   }
   if (featureOptionGiven && featuresIn.empty())
   {
-    std::cerr << "error: --feature-weight, --neighbour-weight, --lock-features and --feature-tolerance need --features\n";
+    std::cerr << "error: --feature-weight, --neighbour-weight, --lock-features, --feature-tolerance and --crease-angle "
+                 "need --features\n";
     return 2;
   }
   if (featureTolerance > 0.0 && !lock)
@@ -263,6 +273,7 @@ int main(int argc, char* argv[])
   fit->SetFeatureNeighbourWeight(kn);
   fit->SetLockFeatures(lock);
   fit->SetFeatureTolerance(featureTolerance);
+  fit->SetCreaseAngle(creaseAngle);
   fit->SetRoundedSurfaceQuadrics(!flat);
   fit->SetQuadPairing(quads);
   fit->SetRefinement(refine);
@@ -314,9 +325,12 @@ int main(int argc, char* argv[])
       lkapp::fieldValue(repairFilter->GetOutput(), "MergedPoints"),
       lkapp::fieldValue(repairFilter->GetOutput(), "RemovedDegenerateFaces"),
       lkapp::fieldValue(repairFilter->GetOutput(), "SplitNonManifoldVertices"));
-  std::printf("lattice          %.0f control vertices; faces: %.0f triangles, %.0f quads; %.0f feature edges\n",
+  std::printf("lattice          %.0f control vertices; faces: %.0f triangles, %.0f quads; %.0f feature edges",
     lkapp::fieldValue(lattice, "ControlVertices"), lkapp::fieldValue(lattice, "Triangles"), lkapp::fieldValue(lattice, "Quads"),
     lkapp::fieldValue(lattice, "FeatureEdges"));
+  if (lkapp::fieldValue(lattice, "FeatureEdges") > 0)
+    std::printf(" (%.0f of them creases)", lkapp::fieldValue(lattice, "CreaseEdges"));
+  std::printf("\n");
   if (maxError > 0.0)
   {
     std::printf("error bound      %g %% of the bounding-box diagonal: %.0f fits measured (vertices: max %%)",

@@ -108,6 +108,7 @@ struct Row
   long long vertices;
   double nearFeature = -1.0; ///< mean distance of the feature lines' vertices, % of the diagonal
   double featureEdges = 0.0;
+  double creaseEdges = 0.0; ///< of those, creases of the surface (vtkLKLatticeFitFilter's CreaseAngle)
 };
 
 void print(const Row& r)
@@ -115,7 +116,7 @@ void print(const Row& r)
   std::printf("  %-34s %6lld %8.4f %8.4f %8.4f %9lld %9zu %7.2f", r.name.c_str(), r.vertices, r.max, r.mean, r.rms,
     r.polygons, r.bytes, r.seconds);
   if (r.nearFeature >= 0.0)
-    std::printf(" %8.4f %6.0f", r.nearFeature, r.featureEdges);
+    std::printf(" %8.4f %6.0f %7.0f", r.nearFeature, r.featureEdges, r.creaseEdges);
   std::printf("\n");
 }
 
@@ -219,7 +220,7 @@ Row latticeRow(const std::string& name, vtkPolyData* original, vtkPolyData* feat
   return { name, field(out, "Hausdorff_MaxPercent"), field(out, "Hausdorff_MeanPercent"),
     field(out, "Hausdorff_RMSPercent"), static_cast<long long>(tri * 24 + quad * 32), objBytes(out), t,
     static_cast<long long>(out->GetNumberOfPoints()), nearFeatureError(fit, measureAt ? measureAt : features),
-    field(out, "FeatureEdges") };
+    field(out, "FeatureEdges"), field(out, "CreaseEdges") };
 }
 
 /// A polyline of world points, turned into a mesh edge path (points carry MeshPointId).
@@ -296,7 +297,7 @@ void table(const std::string& title, vtkPolyData* original, vtkPolyData* feature
     static_cast<long long>(original->GetNumberOfPoints()), static_cast<long long>(original->GetNumberOfPolys()),
     static_cast<long long>(vertices));
   std::printf("  %-34s %6s %8s %8s %8s %9s %9s %7s%s\n", "model", "verts", "max %", "mean %", "RMS %", "display",
-    "OBJ bytes", "s", features ? "  near % f.edges" : "");
+    "OBJ bytes", "s", features ? "  near % f.edges creases" : "");
   double tv = 0, tc = 0;
   auto v = vtkDecimate(original, vertices, &tv);
   print(flatRow("vtkQuadricDecimation (flat)", v, original, tv));

@@ -5,6 +5,7 @@
 
 #include "latticekit/ClosestPointTree.h"
 #include "latticekit/ErrorBoundSearch.h"
+#include "latticekit/FeatureChains.h"
 #include "latticekit/LatticeRefinement.h"
 #include "latticekit/LatticeSimplification.h"
 #include "latticekit/ManifoldRepair.h"
@@ -35,6 +36,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 
@@ -48,6 +50,7 @@ struct Fit
 {
   lk::PolygonMesh lattice;
   std::vector<lk::EdgeKey> features;
+  std::vector<char> creases; ///< per feature edge: a crease of the surface (CreaseAngle)
   std::vector<std::int64_t> collapsedInto;
   std::size_t quads = 0;
   lk::RefinementReport refinement;
@@ -78,6 +81,17 @@ std::vector<double> surfaceVertexWeights(const Fit& fit, bool interpolateFeature
   std::vector<double> w(fit.lattice.points.size(), 1.0);
   for (const auto& e : fit.features)
     w[static_cast<std::size_t>(e.first)] = w[static_cast<std::size_t>(e.second)] = 0.0;
+  return w;
+}
+
+/// The rounding weights of the lattice surface's edges: 0 on the feature
+/// edges that are creases.
+std::map<lk::EdgeKey, double> surfaceEdgeWeights(const Fit& fit)
+{
+  std::map<lk::EdgeKey, double> w;
+  for (std::size_t i = 0; i < fit.features.size(); ++i)
+    if (fit.creases[i])
+      w[fit.features[i]] = 0.0;
   return w;
 }
 } // namespace
@@ -137,6 +151,12 @@ int vtkLKLatticeFitFilter::RequestData(
       << this->FeatureTolerance << ".");
     return 0;
   }
+  if (!(this->CreaseAngle >= 0.0 && this->CreaseAngle <= 180.0))
+  {
+    vtkErrorMacro("Cannot fit a lattice: CreaseAngle must be an angle from 0 to 180 degrees (180: no crease), not "
+      << this->CreaseAngle << ".");
+    return 0;
+  }
   if (this->FeatureTolerance > 0.0 && !this->LockFeatures)
   {
     vtkErrorMacro("Cannot fit a lattice: FeatureTolerance (" << this->FeatureTolerance
@@ -178,6 +198,9 @@ int vtkLKLatticeFitFilter::RequestData(
     vtkWarningMacro("The feature lines (" << lines->GetNumberOfPoints() << " points, " << lines->GetNumberOfLines()
                                           << " lines) have no edge between two different mesh points: the "
                                              "lattice is fitted without features.");
+
+  // How sharply the input bends across each feature edge, for the creases.
+  const std::vector<double> bends = lk::edgeBends(mesh, features);
 
   lk::SimplificationOptions so;
   so.featureWeight = this->FeatureWeight;
@@ -231,6 +254,8 @@ int vtkLKLatticeFitFilter::RequestData(
     if (r.aborted)
       return false;
     fit.features = r.featureEdges;
+    fit.creases =
+      lk::creaseFeatureEdges(mesh.points, features, bends, r.featureEdges, r.inputVertex, this->CreaseAngle);
     fit.collapsedInto = r.collapsedInto;
     fit.quads = 0;
     if (this->QuadPairing)
@@ -274,6 +299,7 @@ int vtkLKLatticeFitFilter::RequestData(
       for (const auto& e : fit.features)
         ro.fixed[static_cast<std::size_t>(e.first)] = ro.fixed[static_cast<std::size_t>(e.second)] = 1;
       ro.weights.vertex = surfaceVertexWeights(fit, this->InterpolateFeatures); // the surface the output describes
+      ro.weights.edge = surfaceEdgeWeights(fit);
       // With insertions: a first pass without the tail penalty, the new
       // vertices, then a second pass of half the iterations with it.
       const double firstShare = insertions > 0 ? 2.0 / 3.0 : 1.0;
@@ -365,7 +391,7 @@ int vtkLKLatticeFitFilter::RequestData(
     for (std::size_t i = 0; i < fit.features.size(); ++i)
     {
       flag->InsertNextValue(1);
-      weight->InsertNextValue(1.0);
+      weight->InsertNextValue(fit.creases[i] ? 0.0 : 1.0);
     }
     for (std::size_t i = 0; i < fit.lattice.faces.size(); ++i)
     {
@@ -536,6 +562,7 @@ int vtkLKLatticeFitFilter::RequestData(
   addFieldValue(fd, "Triangles", static_cast<double>(fit.lattice.faces.size() - fit.quads));
   addFieldValue(fd, "Quads", static_cast<double>(fit.quads));
   addFieldValue(fd, "FeatureEdges", static_cast<double>(fit.features.size()));
+  addFieldValue(fd, "CreaseEdges", static_cast<double>(std::count(fit.creases.begin(), fit.creases.end(), 1)));
   if (searching)
   {
     // The search's trials, in order: count and Hausdorff error (%).
@@ -634,6 +661,7 @@ void vtkLKLatticeFitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureWeight: " << this->FeatureWeight << "\n";
   os << indent << "FeatureNeighbourWeight: " << this->FeatureNeighbourWeight << "\n";
   os << indent << "FeatureTolerance: " << this->FeatureTolerance << "\n";
+  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "LockFeatures: " << this->LockFeatures << "\n";
   os << indent << "InterpolateFeatures: " << this->InterpolateFeatures << "\n";
   os << indent << "RoundedSurfaceQuadrics: " << this->RoundedSurfaceQuadrics << "\n";

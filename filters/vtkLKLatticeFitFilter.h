@@ -35,15 +35,16 @@
  *
  * Output 0: the lattice: triangles and quads, plus one line cell per
  * surviving feature edge; cell data "FeatureEdge" (1 on those lines, 0 on
- * faces) and "RoundingWeight" (1: smooth; set 0 on a line to make that edge a
- * crease in vtkLKLatticeSurfaceFilter, which reads the lattice as it is);
+ * faces) and "RoundingWeight" (1: smooth; 0 on the lines that CreaseAngle
+ * makes creases; set 0 on another line to make that edge a crease in
+ * vtkLKLatticeSurfaceFilter, which reads the lattice as it is);
  * with InterpolateFeatures, point data "RoundingWeight" 0 on feature
  * vertices (1 elsewhere), so the surface passes through them.
  * Field data: the achieved error of the lattice surface against the input
  * (vtkLKMetroFilter, both directions: Hausdorff_Max, Hausdorff_Mean,
  * Hausdorff_RMS, each also as ..._Percent of the bounding-box diagonal,
  * BoundingBoxDiagonal), DisplayPolygons (triangles of the tessellation at
- * ErrorResolution), ControlVertices, Triangles, Quads, FeatureEdges, with
+ * ErrorResolution), ControlVertices, Triangles, Quads, FeatureEdges, CreaseEdges, with
  * MaximumError ErrorBoundTrials (the number of fits the search measured) and
  * ErrorBoundTrialCountAndError (2 components per trial, in order: the vertex
  * count and its Hausdorff error in %), and with
@@ -161,6 +162,21 @@ public:
   /// negative, not finite, or positive without LockFeatures.
   vtkSetMacro(FeatureTolerance, double);
   vtkGetMacro(FeatureTolerance, double);
+  ///@}
+
+  ///@{
+  /// Feature lines across which the input bends by more than this angle, in
+  /// degrees (between the normals of the two triangles at each edge, as
+  /// vtkFeatureEdges' FeatureAngle; on average along each line between its
+  /// junctions, weighted by length: lk::creaseFeatureEdges), become creases
+  /// of the lattice surface: RoundingWeight 0 on their lattice edges' line
+  /// cells, and the refinement fits the creased surface. The rim of a cut
+  /// piece, where the flat cap meets the bone (about 90 degrees on the main
+  /// job's cut), keeps its edge instead of being rounded off; a stroke drawn
+  /// on smooth bone bends by a few degrees on average and stays smooth.
+  /// Default 45; 180 makes no crease. Refused outside [0, 180] or NaN.
+  vtkSetMacro(CreaseAngle, double);
+  vtkGetMacro(CreaseAngle, double);
   ///@}
 
   ///@{
@@ -289,6 +305,7 @@ protected:
   double FeatureNeighbourWeight = 100.0;
   bool LockFeatures = false;
   double FeatureTolerance = 0.0;
+  double CreaseAngle = 45.0;
   bool InterpolateFeatures = true;
   bool RoundedSurfaceQuadrics = true;
   bool QuadPairing = false;

@@ -16,6 +16,7 @@
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
+#include <vtkMath.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -493,4 +494,98 @@ TEST(ExtractCutPiece, AFeatureToleranceKeepsThePointsASplitCutLineNeedsInBothPie
                                            << " " << p[2];
     EXPECT_LE(keptInPiece[r].size(), needed.size() + needed.size() / 4) << "piece " << r;
   }
+}
+
+TEST(ExtractCutPiece, ACutPiecesRimIsACreaseOfItsLatticeAndALineOnSmoothBoneIsNot)
+{
+  auto bone = lktest::tciaMandible();
+  std::vector<lk::EdgeKey> loopEdges;
+  auto loop = lktest::mandibleLoop(bone, loopEdges);
+  // Round smooth bone: the loop along mesh edges stays smooth.
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(bone);
+    fit->SetFeatureLinesData(loop);
+    fit->LockFeaturesOn();
+    fit->SetFeatureTolerance(0.05);
+    fit->SetTargetNumberOfVertices(600);
+    fit->ComputeErrorOff();
+    lktest::ErrorRecorder errors(fit);
+    fit->Update();
+    ASSERT_EQ(errors.errors, 0) << errors.messages;
+    EXPECT_GT(fit->GetOutput()->GetFieldData()->GetArray("FeatureEdges")->GetTuple1(0), 10.0);
+    EXPECT_EQ(fit->GetOutput()->GetFieldData()->GetArray("CreaseEdges")->GetTuple1(0), 0.0)
+      << "a line on smooth bone bends by a few degrees on average";
+  }
+  // The rim of a cut piece, where the cap meets the bone.
+  vtkNew<vtkLKStrokeFeatureLineFilter> split;
+  split->SetInputData(bone);
+  split->SetStrokeData(lktest::strokeNearLoop(loop));
+  split->SetModeToSplit();
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputConnection(split->GetOutputPort());
+  cut->SetLinesConnection(split->GetOutputPort(1));
+  cut->CappingOn();
+  vtkNew<vtkLKExtractCutPieceFilter> extract;
+  extract->SetInputConnection(cut->GetOutputPort());
+  extract->SetPiece(0);
+  extract->Update();
+  vtkPolyData* piece = extract->GetOutput(0);
+  // The piece's points within 1.5 mm of its cut line.
+  std::vector<vtkIdType> nearRim;
+  {
+    const CutLines cl = cutLinesOf(extract->GetCutLinesOutput());
+    ASSERT_EQ(cl.closed, 1);
+    std::set<vtkIdType> onLine;
+    for (const Edge& e : cl.edges)
+      onLine.insert(e.begin(), e.end());
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      piece->GetPoint(i, p);
+      for (const vtkIdType j : onLine)
+      {
+        double q[3];
+        piece->GetPoint(j, q);
+        if (vtkMath::Distance2BetweenPoints(p, q) < 1.5 * 1.5)
+        {
+          nearRim.push_back(i);
+          break;
+        }
+      }
+    }
+    ASSERT_GT(nearRim.size(), 200u);
+  }
+  double rimMean[2] = { 0, 0 }, mean[2] = { 0, 0 };
+  for (const double angle : { 45.0, 180.0 })
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputConnection(extract->GetOutputPort(0));
+    fit->SetFeatureLinesConnection(extract->GetOutputPort(1));
+    fit->LockFeaturesOn();
+    fit->SetFeatureTolerance(0.05);
+    fit->SetCreaseAngle(angle);
+    fit->SetTargetNumberOfVertices(600);
+    lktest::ErrorRecorder errors(fit);
+    fit->Update();
+    ASSERT_EQ(errors.errors, 0) << errors.messages;
+    vtkPolyData* lattice = fit->GetOutput();
+    const double featureEdges = lattice->GetFieldData()->GetArray("FeatureEdges")->GetTuple1(0);
+    const double creases = lattice->GetFieldData()->GetArray("CreaseEdges")->GetTuple1(0);
+    ASSERT_GT(featureEdges, 10.0);
+    EXPECT_EQ(creases, angle < 180.0 ? featureEdges : 0.0);
+    vtkDataArray* isFeature = lattice->GetCellData()->GetArray("FeatureEdge");
+    vtkDataArray* weight = lattice->GetCellData()->GetArray("RoundingWeight");
+    for (vtkIdType c = 0; c < lattice->GetNumberOfCells(); ++c)
+      EXPECT_EQ(weight->GetTuple1(c), isFeature->GetTuple1(c) == 1.0 && angle < 180.0 ? 0.0 : 1.0) << "cell " << c;
+    const int k = angle < 180.0 ? 0 : 1;
+    vtkDataArray* distance = fit->GetVertexMapOutput()->GetPointData()->GetArray("Distance");
+    for (const vtkIdType i : nearRim)
+      rimMean[k] += distance->GetTuple1(i) / static_cast<double>(nearRim.size());
+    mean[k] = lattice->GetFieldData()->GetArray("Hausdorff_Mean")->GetTuple1(0);
+  }
+  std::cout << "near the rim: creased " << rimMean[0] << " mm, rounded " << rimMean[1] << " mm; Metro mean "
+            << mean[0] << " and " << mean[1] << "\n";
+  EXPECT_LT(rimMean[0], 0.8 * rimMean[1]) << "the crease keeps the rim's edge";
+  EXPECT_LT(mean[0], mean[1]);
 }

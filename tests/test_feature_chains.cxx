@@ -1,5 +1,6 @@
 // Feature edges as chains, and the vertices that hold a chain within a
 // tolerance (what a locked line keeps with a feature tolerance).
+#include "TestMeshes.h"
 #include "latticekit/FeatureChains.h"
 
 #include <gtest/gtest.h>
@@ -149,4 +150,67 @@ TEST(FeatureChains, BadInputIsRefused)
   EXPECT_THROW(lk::chainVerticesToKeep(points, { 0, 1, 2 }, -1.0), std::invalid_argument);
   EXPECT_THROW(lk::chainVerticesToKeep(points, { 0, 1, 2 }, std::nan("")), std::invalid_argument);
   EXPECT_THROW(lk::chainVerticesToKeep(points, { 0, 1, 3 }, 0.1), std::invalid_argument);
+}
+
+TEST(FeatureChains, EdgeBendsAreTheAnglesBetweenTheTwoTrianglesNormals)
+{
+  // The unit cube: its edges bend by 90 degrees, a face's diagonal by 0.
+  const lk::TriangleMesh cube = lktest::cube();
+  const std::vector<double> bends = lk::edgeBends(cube, { { 0, 1 }, { 3, 1 }, { 0, 3 }, { 4, 7 } });
+  ASSERT_EQ(bends.size(), 4u);
+  EXPECT_NEAR(bends[0], 90.0, 1e-9);
+  EXPECT_NEAR(bends[1], 90.0, 1e-9);
+  EXPECT_NEAR(bends[2], 0.0, 1e-9);
+  EXPECT_NEAR(bends[3], 0.0, 1e-9);
+  // Two triangles folded by phi about the y axis, and the border edges of
+  // one (a single triangle: no second normal, no bend).
+  for (const double phi : { 0.0, 30.0, 120.0, 175.0 })
+  {
+    const double r = phi * 3.14159265358979323846 / 180.0;
+    lk::TriangleMesh roof;
+    roof.points = { { 0, 0, 0 }, { 0, 1, 0 }, { 1, 0.5, 0 }, { -std::cos(r), 0.5, std::sin(r) } };
+    roof.triangles = { { 0, 1, 2 }, { 1, 0, 3 } };
+    const std::vector<double> b = lk::edgeBends(roof, { { 0, 1 }, { 1, 2 }, { 0, 3 } });
+    EXPECT_NEAR(b[0], phi, 1e-9) << phi;
+    EXPECT_EQ(b[1], 0.0);
+    EXPECT_EQ(b[2], 0.0);
+  }
+  EXPECT_THROW(lk::edgeBends(cube, { { 0, 8 } }), std::invalid_argument);
+}
+
+TEST(FeatureChains, AWholeLineIsACreaseWhereItsMeshBendsByMoreThanTheAngleOnAverage)
+{
+  // Synthetic bends on three chains of unit-length edges: a loop of four
+  // (0-1-2-3) bent by 90, 90, 90 and 30 degrees, an open line (4-5-6-7-8)
+  // bent by 90 there and 0 elsewhere, and a line of one edge (9-10) bent by 90.
+  const std::vector<lk::Vec3> points{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 5 }, { 1, 0, 5 },
+    { 2, 0, 5 }, { 3, 0, 5 }, { 4, 0, 5 }, { 0, 0, 9 }, { 1, 0, 9 } };
+  const Edges input{ { 0, 1 }, { 1, 2 }, { 2, 3 }, { 0, 3 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 8 }, { 9, 10 } };
+  const std::vector<double> bends{ 90, 90, 90, 30, 90, 0, 0, 0, 90 };
+  // The lattice keeps input vertices 0, 2, 3 of the loop (a chord 0-2 for
+  // 0-1-2), 4, 5, 8 of the line and both ends of the edge, as lattice
+  // vertices 0..7; lattice edge 0-3 joins two chains (ends on no common
+  // chain). The one-edge line is too short for a mean: never a crease.
+  const std::vector<std::int64_t> inputVertex{ 0, 2, 3, 4, 5, 8, 9, 10 };
+  const Edges lattice{ { 0, 1 }, { 1, 2 }, { 0, 2 }, { 3, 4 }, { 4, 5 }, { 0, 3 }, { 6, 7 } };
+  // The loop averages 75 degrees: every one of its lattice edges is a
+  // crease, the 30-degree one's included. The line averages 22.5: none is,
+  // not even the lattice edge 4-5 where the mesh bends by 90.
+  EXPECT_EQ(lk::creaseFeatureEdges(points, input, bends, lattice, inputVertex, 45.0),
+    (std::vector<char>{ 1, 1, 1, 0, 0, 0, 0 }));
+  EXPECT_EQ(lk::creaseFeatureEdges(points, input, bends, lattice, inputVertex, 20.0),
+    (std::vector<char>{ 1, 1, 1, 1, 1, 0, 0 }));
+  EXPECT_EQ(lk::creaseFeatureEdges(points, input, bends, lattice, inputVertex, 180.0),
+    (std::vector<char>(7, 0)));
+  // The mean is by length: the line's 90-degree edge made 9 long (point 4
+  // at x = -8) carries it to 90 * 9 / 12 = 67.5.
+  std::vector<lk::Vec3> longer = points;
+  longer[4] = lk::Vec3(-8, 0, 5);
+  EXPECT_EQ(lk::creaseFeatureEdges(longer, input, bends, lattice, inputVertex, 45.0),
+    (std::vector<char>{ 1, 1, 1, 1, 1, 0, 0 }));
+  // Bad input.
+  EXPECT_THROW(lk::creaseFeatureEdges(points, input, { 90, 90 }, lattice, inputVertex, 45.0), std::invalid_argument);
+  EXPECT_THROW(lk::creaseFeatureEdges(points, input, bends, { { 0, 8 } }, inputVertex, 45.0), std::invalid_argument);
+  EXPECT_THROW(lk::creaseFeatureEdges(points, { { 0, 11 } }, { 0.0 }, lattice, inputVertex, 45.0),
+    std::invalid_argument);
 }

@@ -1161,6 +1161,12 @@ std::string Planner::planText()
         fitted.featureEdges, fitted.featureEdges == 1 ? "" : "s", kLineTolerance, fitted.keptLineVertices,
         fitted.lineVertices);
       text += line;
+      if (fitted.creaseEdges > 0)
+      {
+        std::snprintf(line, sizeof line, "; %zu of those edges sharp, where the bone bends across the line (a cut's rim)",
+          fitted.creaseEdges);
+        text += line;
+      }
     }
     if (fitted.featureEdgesRefined > 0)
     {

@@ -174,6 +174,10 @@ public:
     /// the lines kept within kLineTolerance), and the lines' edges a
     /// deformation refined (no longer edges of the piece: not kept).
     std::size_t featureEdges = 0, featureEdgesRefined = 0;
+    /// Those lattice edges that are creases of the surface: on lines across
+    /// which the piece bends sharply (a cut's rim; vtkLKLatticeFitFilter's
+    /// CreaseAngle).
+    std::size_t creaseEdges = 0;
     /// The vertices of those lines, how many of them hold the lines within
     /// kLineTolerance, and how many the lattice keeps (those, and any whose
     /// collapse along its line would have folded it); whether the needed

@@ -180,6 +180,7 @@ Planner::FittedLattice& Planner::latticeOf(std::size_t p)
   fitted.errors = lkapp::errorCount() > before ? lkapp::errorsSince(before) : "";
   fitted.featureEdges = static_cast<std::size_t>(lkapp::fieldValue(fit->GetOutput(), "FeatureEdges"));
   fitted.featureEdgesRefined = refined;
+  fitted.creaseEdges = static_cast<std::size_t>(lkapp::fieldValue(fit->GetOutput(), "CreaseEdges"));
   fitted.lineVertices = onLines.size();
   fitted.neededLineVertices = needed;
   {

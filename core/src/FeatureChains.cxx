@@ -12,6 +12,12 @@ namespace lk
 {
 namespace
 {
+/// A chain of fewer edges is never a crease: one or two edges (a short piece
+/// between junctions) are too few for their mean to tell a sharp line from
+/// the fold of one facet; on the decimated head a one-edge piece of a line
+/// across the face bends by 63 degrees, its neighbours by 14-31 on average.
+constexpr std::size_t kFewestCreaseEdges = 3;
+
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
 {
   const Vec3 ab = b - a;
@@ -185,6 +191,113 @@ std::size_t featureVerticesToKeep(const std::vector<Vec3>& points,
         kept.insert(chain[k]);
   }
   return kept.size();
+}
+
+std::vector<double> edgeBends(
+  const TriangleMesh& mesh, const std::vector<std::pair<std::int64_t, std::int64_t>>& edges)
+{
+  const auto n = static_cast<std::int64_t>(mesh.points.size());
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> faces; // edge -> its triangles
+  for (const auto& [a, b] : edges)
+  {
+    if (a < 0 || b < 0 || a >= n || b >= n)
+      throw std::invalid_argument("edge " + std::to_string(a) + "-" + std::to_string(b) +
+        " names a point outside the mesh's 0.." + std::to_string(n - 1));
+    faces[{ std::min(a, b), std::max(a, b) }];
+  }
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::int64_t a = mesh.triangles[f][static_cast<std::size_t>(k)];
+      const std::int64_t b = mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)];
+      const auto it = faces.find({ std::min(a, b), std::max(a, b) });
+      if (it != faces.end())
+        it->second.push_back(f);
+    }
+  auto normal = [&](std::size_t f) {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3& a = mesh.points[static_cast<std::size_t>(t[0])];
+    return Vec3((mesh.points[static_cast<std::size_t>(t[1])] - a).cross(mesh.points[static_cast<std::size_t>(t[2])] - a));
+  };
+  std::vector<double> bends(edges.size(), 0.0);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+  {
+    const auto& at = faces[{ std::min(edges[e].first, edges[e].second), std::max(edges[e].first, edges[e].second) }];
+    if (at.size() != 2)
+      continue;
+    const Vec3 u = normal(at[0]), v = normal(at[1]);
+    const double lengths = u.norm() * v.norm();
+    if (!(lengths > 0.0) || !std::isfinite(lengths))
+      continue;
+    // atan2 of |u x v| and u.v: accurate near 0 and 180 degrees, where acos is not.
+    bends[e] = std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / 3.14159265358979323846;
+  }
+  return bends;
+}
+
+std::vector<char> creaseFeatureEdges(const std::vector<Vec3>& inputPoints,
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& inputEdges, const std::vector<double>& bends,
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& latticeEdges, const std::vector<std::int64_t>& inputVertex,
+  double angleDegrees)
+{
+  if (bends.size() != inputEdges.size())
+    throw std::invalid_argument("creaseFeatureEdges: " + std::to_string(bends.size()) + " bends for " +
+      std::to_string(inputEdges.size()) + " feature edges");
+  const auto points = static_cast<std::int64_t>(inputPoints.size());
+  auto key = [](std::int64_t a, std::int64_t b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  std::map<std::pair<std::int64_t, std::int64_t>, double> bendOf;
+  for (std::size_t e = 0; e < inputEdges.size(); ++e)
+  {
+    const auto [a, b] = inputEdges[e];
+    if (a < 0 || b < 0 || a >= points || b >= points)
+      throw std::invalid_argument("creaseFeatureEdges: feature edge " + std::to_string(a) + "-" + std::to_string(b) +
+        " names a point outside 0.." + std::to_string(points - 1));
+    bendOf[key(a, b)] = bends[e];
+  }
+  // Each chain's mean bend, by length, and the chains each vertex is on.
+  const std::vector<std::vector<std::int64_t>> chains = featureChains(inputEdges);
+  std::vector<char> sharp(chains.size(), 0);
+  std::map<std::int64_t, std::vector<std::size_t>> chainsOf;
+  for (std::size_t c = 0; c < chains.size(); ++c)
+  {
+    double sum = 0.0, length = 0.0, plain = 0.0;
+    for (std::size_t k = 0; k + 1 < chains[c].size(); ++k)
+    {
+      const std::int64_t a = chains[c][k], b = chains[c][k + 1];
+      const double l = (inputPoints[static_cast<std::size_t>(b)] - inputPoints[static_cast<std::size_t>(a)]).norm();
+      sum += bendOf[key(a, b)] * l;
+      length += l;
+      plain += bendOf[key(a, b)];
+    }
+    const double mean = length > 0.0 ? sum / length : plain / static_cast<double>(chains[c].size() - 1);
+    sharp[c] = chains[c].size() > kFewestCreaseEdges && mean > angleDegrees ? 1 : 0;
+    for (const std::int64_t v : chains[c])
+    {
+      auto& on = chainsOf[v];
+      if (on.empty() || on.back() != c)
+        on.push_back(c);
+    }
+  }
+  auto inputOf = [&](std::int64_t v) {
+    if (v < 0 || static_cast<std::size_t>(v) >= inputVertex.size())
+      throw std::invalid_argument("creaseFeatureEdges: lattice vertex " + std::to_string(v) +
+        " has no input vertex (" + std::to_string(inputVertex.size()) + " given)");
+    return inputVertex[static_cast<std::size_t>(v)];
+  };
+  std::vector<char> crease(latticeEdges.size(), 0);
+  for (std::size_t e = 0; e < latticeEdges.size(); ++e)
+  {
+    const auto a = chainsOf.find(inputOf(latticeEdges[e].first)), b = chainsOf.find(inputOf(latticeEdges[e].second));
+    if (a == chainsOf.end() || b == chainsOf.end())
+      continue;
+    for (const std::size_t c : a->second)
+      if (std::find(b->second.begin(), b->second.end(), c) != b->second.end())
+      {
+        crease[e] = sharp[c];
+        break;
+      }
+  }
+  return crease;
 }
 
 } // namespace lk

@@ -70,6 +70,13 @@ class DemoTest(unittest.TestCase):
             self.assertIsNotNone(m, report)
             self.assertLess(int(m.group(1)), 0.5 * int(m.group(2)))
             self.assertLess(rows["cut"][6], 1.3 * rows["no cut"][6])
+            # The rim, where each flat cap meets the bone, is a crease of the
+            # lattice surface: every line edge of the pieces' lattices.
+            m = re.search(r"its lattice edges are creases of the smooth surface, which keeps the rim's edge: "
+                          r"([0-9]+) of the pieces' ([0-9]+) line edges", report)
+            self.assertIsNotNone(m, report)
+            self.assertGreater(int(m.group(2)), 100)
+            self.assertEqual(m.group(1), m.group(2))
 
             # The pieces are closed, and the cut line lies on both (it is their shared border).
             def read(name):

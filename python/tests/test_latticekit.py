@@ -400,6 +400,13 @@ class PipelineTest(unittest.TestCase):
             self.assertGreater(edges, 20)
             self.assertEqual(lines.GetNumberOfLines(), 1)  # one closed loop
             self.assertEqual(fit.GetOutput().GetFieldData().GetArray("FeatureEdges").GetValue(0), edges)
+            # The rim, where the cap meets the sphere (at 74 and 106 degrees),
+            # is a crease of the lattice surface, unless a larger angle is asked.
+            self.assertEqual(fit.GetOutput().GetFieldData().GetArray("CreaseEdges").GetValue(0), edges)
+            fit.SetCreaseAngle(120)
+            fit.Update()
+            self.assertEqual(fit.GetOutput().GetFieldData().GetArray("CreaseEdges").GetValue(0), 0)
+            fit.SetCreaseAngle(45)
             # With a tolerance the line keeps only the points its shape needs.
             fit.SetFeatureTolerance(0.005)
             fit.Update()

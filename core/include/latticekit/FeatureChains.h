@@ -48,4 +48,29 @@ std::vector<char> chainVerticesToKeep(
 std::size_t featureVerticesToKeep(const std::vector<Vec3>& points,
   const std::vector<std::pair<std::int64_t, std::int64_t>>& edges, double tolerance);
 
+/// How sharply `mesh` bends across each of `edges`: the angle in degrees
+/// between the normals of its two triangles (0 to 180, as vtkFeatureEdges'
+/// feature angle). An edge of one triangle (a border) or of more than two,
+/// or beside a triangle of no area, gets 0: no bend to measure. Throws
+/// std::invalid_argument for an id outside the mesh's points.
+std::vector<double> edgeBends(
+  const TriangleMesh& mesh, const std::vector<std::pair<std::int64_t, std::int64_t>>& edges);
+
+/// Which lattice feature edges are creases: those whose ends hold input
+/// vertices (inputVertex[a], inputVertex[b]) of one chain of `inputEdges`
+/// across which the input bends by more than `angleDegrees` on average
+/// (`bends`, one per input edge, as edgeBends gives them; weighted by the
+/// edges' lengths). The decision is a chain's, not an edge's: a cut rim
+/// bends by 50-130 degrees from edge to edge and is a crease all round, and
+/// a stroke on a marching-cubes surface, a few degrees on average, crosses
+/// the odd edge bent by 60 degrees and more without a kink there. A chain of
+/// one or two edges is not a crease (too few for a mean), nor is a lattice
+/// edge whose ends are on no common chain. Returns one flag
+/// per lattice edge. Throws std::invalid_argument where `bends` does not
+/// match `inputEdges`, or an id is out of range.
+std::vector<char> creaseFeatureEdges(const std::vector<Vec3>& inputPoints,
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& inputEdges, const std::vector<double>& bends,
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& latticeEdges, const std::vector<std::int64_t>& inputVertex,
+  double angleDegrees);
+
 } // namespace lk
