@@ -142,7 +142,10 @@ public:
 
   ///@{
   /// Feature edges leave the collapse queue: each survives exactly, at its
-  /// input position. Default off.
+  /// input position. Default off. Where the locked lines keep more than two
+  /// thirds of the lattice's vertices (a line split into the surface, kept
+  /// whole, at a small target), a warning says so: the rest of the surface
+  /// is then fitted with a handful of vertices.
   vtkSetMacro(LockFeatures, bool);
   vtkGetMacro(LockFeatures, bool);
   vtkBooleanMacro(LockFeatures, bool);

@@ -89,6 +89,30 @@ CutLines cutLinesOf(vtkPolyData* lines)
   }
   return out;
 }
+
+/// The TCIA mandible cut along a pen stroke round the body near its loop
+/// (as ScriptedClosedStrokeOnTheMandibleCutsIt: split mode, capped), ready
+/// to extract a piece; the pipeline lives as long as the filter. `loop`, when
+/// given, receives the loop along mesh edges the stroke was drawn near.
+vtkSmartPointer<vtkLKExtractCutPieceFilter> mandibleCutAlongAStroke(vtkSmartPointer<vtkPolyData>* loop = nullptr)
+{
+  auto bone = lktest::tciaMandible();
+  std::vector<lk::EdgeKey> loopEdges;
+  auto line = lktest::mandibleLoop(bone, loopEdges);
+  if (loop)
+    *loop = line;
+  vtkNew<vtkLKStrokeFeatureLineFilter> split;
+  split->SetInputData(bone);
+  split->SetStrokeData(lktest::strokeNearLoop(line));
+  split->SetModeToSplit();
+  vtkNew<vtkLKClosedLineCutFilter> cut;
+  cut->SetInputConnection(split->GetOutputPort());
+  cut->SetLinesConnection(split->GetOutputPort(1));
+  cut->CappingOn();
+  auto extract = vtkSmartPointer<vtkLKExtractCutPieceFilter>::New();
+  extract->SetInputConnection(cut->GetOutputPort());
+  return extract;
+}
 } // namespace
 
 TEST(ExtractCutPiece, KeepsTheCutsOrderAndItsData)
@@ -368,22 +392,8 @@ TEST(ExtractCutPiece, AFitKeepsTheMandiblesCutLineExactly)
 // surface, which fits closer.
 TEST(ExtractCutPiece, AFeatureToleranceKeepsThePointsASplitCutLineNeedsInBothPieces)
 {
-  // A pen stroke round the body, near the mandible's loop (as
-  // ScriptedClosedStrokeOnTheMandibleCutsIt).
-  auto bone = lktest::tciaMandible();
-  std::vector<lk::EdgeKey> loopEdges;
-  auto loop = lktest::mandibleLoop(bone, loopEdges);
-  auto stroke = lktest::strokeNearLoop(loop);
-  vtkNew<vtkLKStrokeFeatureLineFilter> split;
-  split->SetInputData(bone);
-  split->SetStrokeData(stroke);
-  split->SetModeToSplit();
-  vtkNew<vtkLKClosedLineCutFilter> cut;
-  cut->SetInputConnection(split->GetOutputPort());
-  cut->SetLinesConnection(split->GetOutputPort(1));
-  cut->CappingOn();
-  vtkNew<vtkLKExtractCutPieceFilter> extract;
-  extract->SetInputConnection(cut->GetOutputPort());
+  // A pen stroke round the body, near the mandible's loop.
+  auto extract = mandibleCutAlongAStroke();
   const double tolerance = 0.05;
   std::set<std::array<double, 3>> keptInPiece[2];
   for (int r = 0; r < 2; ++r)
@@ -498,13 +508,12 @@ TEST(ExtractCutPiece, AFeatureToleranceKeepsThePointsASplitCutLineNeedsInBothPie
 
 TEST(ExtractCutPiece, ACutPiecesRimIsACreaseOfItsLatticeAndALineOnSmoothBoneIsNot)
 {
-  auto bone = lktest::tciaMandible();
-  std::vector<lk::EdgeKey> loopEdges;
-  auto loop = lktest::mandibleLoop(bone, loopEdges);
+  vtkSmartPointer<vtkPolyData> loop;
+  auto extract = mandibleCutAlongAStroke(&loop);
   // Round smooth bone: the loop along mesh edges stays smooth.
   {
     vtkNew<vtkLKLatticeFitFilter> fit;
-    fit->SetInputData(bone);
+    fit->SetInputData(lktest::tciaMandible());
     fit->SetFeatureLinesData(loop);
     fit->LockFeaturesOn();
     fit->SetFeatureTolerance(0.05);
@@ -518,16 +527,6 @@ TEST(ExtractCutPiece, ACutPiecesRimIsACreaseOfItsLatticeAndALineOnSmoothBoneIsNo
       << "a line on smooth bone bends by a few degrees on average";
   }
   // The rim of a cut piece, where the cap meets the bone.
-  vtkNew<vtkLKStrokeFeatureLineFilter> split;
-  split->SetInputData(bone);
-  split->SetStrokeData(lktest::strokeNearLoop(loop));
-  split->SetModeToSplit();
-  vtkNew<vtkLKClosedLineCutFilter> cut;
-  cut->SetInputConnection(split->GetOutputPort());
-  cut->SetLinesConnection(split->GetOutputPort(1));
-  cut->CappingOn();
-  vtkNew<vtkLKExtractCutPieceFilter> extract;
-  extract->SetInputConnection(cut->GetOutputPort());
   extract->SetPiece(0);
   extract->Update();
   vtkPolyData* piece = extract->GetOutput(0);
@@ -588,4 +587,32 @@ TEST(ExtractCutPiece, ACutPiecesRimIsACreaseOfItsLatticeAndALineOnSmoothBoneIsNo
             << mean[0] << " and " << mean[1] << "\n";
   EXPECT_LT(rimMean[0], 0.8 * rimMean[1]) << "the crease keeps the rim's edge";
   EXPECT_LT(mean[0], mean[1]);
+}
+
+TEST(ExtractCutPiece, LockedLinesThatTakeMostOfTheVerticesAreWarnedOf)
+{
+  // Piece 1 at 100 vertices: its cut line, kept whole, takes 137 (the fit
+  // stops at 193, with a warning of its own); with a tolerance, a few dozen.
+  auto extract = mandibleCutAlongAStroke();
+  extract->SetPiece(1);
+  for (const double tolerance : { 0.0, 0.05 })
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputConnection(extract->GetOutputPort(0));
+    fit->SetFeatureLinesConnection(extract->GetOutputPort(1));
+    fit->LockFeaturesOn();
+    fit->SetFeatureTolerance(tolerance);
+    fit->SetTargetNumberOfVertices(100);
+    fit->ComputeErrorOff();
+    lktest::ErrorRecorder errors(fit);
+    fit->Update();
+    ASSERT_EQ(errors.errors, 0) << errors.messages;
+    const bool warned = errors.warningMessages.find("The locked feature lines keep ") != std::string::npos;
+    EXPECT_EQ(warned, tolerance == 0.0) << errors.warningMessages;
+    if (tolerance == 0.0)
+      EXPECT_NE(errors.warningMessages.find("ask for more vertices (twice the lines' leaves it as many), or let each "
+                                            "line keep only the points it needs (a feature tolerance)"),
+        std::string::npos)
+        << errors.warningMessages;
+  }
 }
