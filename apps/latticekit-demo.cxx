@@ -22,6 +22,7 @@
 #include "vtkLKLatticeSurfaceFilter.h"
 #include "vtkLKMedicalImageReader.h"
 #include "vtkLKMetroFilter.h"
+#include "vtkLKPolyDataConversion.h"
 #include "vtkLKStrokeFeatureLineFilter.h"
 
 #include <vtkActor.h>
@@ -310,38 +311,16 @@ vtkIdType cutLineEdges(vtkPolyData* border)
 
 /// The vertices of a piece's cut lines that its lattice keeps: every one
 /// (closed lines: as many as edges), or with a tolerance those that hold each
-/// line within it, as the fit chooses them (lk::chainVerticesToKeep).
-vtkIdType keptLineVertices(vtkPolyData* border, double tolerance)
+/// line within it, as the fit chooses them (the fit filter's own reading of
+/// the lines, lkvtk::lineEdges, and lk::chainVerticesToKeep).
+vtkIdType keptLineVertices(vtkPolyData* border, vtkPolyData* piece, double tolerance)
 {
-  if (!(tolerance > 0.0) || !border)
-    return cutLineEdges(border);
-  // The lines by the mesh points they name, so that a closed line is a loop.
-  vtkDataArray* meshIds = border->GetPointData()->GetArray("MeshPointId");
-  std::map<std::int64_t, std::int64_t> index; // mesh point -> its place in points
-  std::vector<lk::Vec3> points;
-  auto idOf = [&](vtkIdType p) {
-    const auto key = meshIds ? static_cast<std::int64_t>(meshIds->GetTuple1(p)) : static_cast<std::int64_t>(p);
-    const auto [it, added] = index.emplace(key, static_cast<std::int64_t>(points.size()));
-    if (added)
-    {
-      double x[3];
-      border->GetPoint(p, x);
-      points.emplace_back(x[0], x[1], x[2]);
-    }
-    return it->second;
-  };
-  std::set<std::pair<std::int64_t, std::int64_t>> edges;
-  vtkNew<vtkIdList> ids;
-  vtkCellArray* lines = border->GetLines();
-  lines->InitTraversal();
-  while (lines->GetNextCell(ids))
-    for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k)
-    {
-      const std::int64_t a = idOf(ids->GetId(k)), b = idOf(ids->GetId(k + 1));
-      if (a != b)
-        edges.insert({ std::min(a, b), std::max(a, b) });
-    }
-  return static_cast<vtkIdType>(lk::featureVerticesToKeep(points, { edges.begin(), edges.end() }, tolerance));
+  std::vector<lk::EdgeKey> edges;
+  lk::TriangleMesh mesh;
+  if (!(tolerance > 0.0) || !border || !lkvtk::lineEdges(border, piece, edges).empty() ||
+    !lkvtk::toTriangleMesh(piece, mesh).empty())
+    return cutLineEdges(border); // a piece the fit refuses says why there
+  return static_cast<vtkIdType>(lk::featureVerticesToKeep(mesh.points, edges, tolerance));
 }
 
 struct Row
@@ -376,7 +355,7 @@ Row fitRow(const std::string& name, const std::vector<vtkSmartPointer<vtkPolyDat
   {
     faces += static_cast<double>(meshes[i]->GetNumberOfPolys());
     if (i < borders.size())
-      locked[i] = keptLineVertices(borders[i], lineTolerance);
+      locked[i] = keptLineVertices(borders[i], meshes[i], lineTolerance);
     allLocked += locked[i];
   }
   const vtkIdType free = std::max<vtkIdType>(0, static_cast<vtkIdType>(vertices) - allLocked);
@@ -742,10 +721,10 @@ int main(int argc, char* argv[])
   //    locked ones the pieces' lattices are fans of slivers off the line
   //    (or cannot reach their share at all), so such a plan is refused.
   vtkIdType lockedVertices = 0, lineVertices = 0;
-  for (const auto& border : borders)
+  for (std::size_t i = 0; i < borders.size(); ++i)
   {
-    lockedVertices += keptLineVertices(border, plan.lineTolerance);
-    lineVertices += cutLineEdges(border); // closed lines: as many vertices as edges
+    lockedVertices += keptLineVertices(borders[i], pieces[i], plan.lineTolerance);
+    lineVertices += cutLineEdges(borders[i]); // closed lines: as many vertices as edges
   }
   if (plan.vertices < 2 * lockedVertices)
   {

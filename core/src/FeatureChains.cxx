@@ -18,14 +18,6 @@ namespace
 /// across the face bends by 63 degrees, its neighbours by 14-31 on average.
 constexpr std::size_t kFewestCreaseEdges = 3;
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
-
 bool lexicographicallyBelow(const Vec3& a, const Vec3& b)
 {
   return std::make_tuple(a.x(), a.y(), a.z()) < std::make_tuple(b.x(), b.y(), b.z());
@@ -54,7 +46,7 @@ void keepWithin(const std::vector<Vec3>& points, const std::vector<std::int64_t>
     for (std::size_t k = i + 1; k < j; ++k)
     {
       const Vec3& p = points[static_cast<std::size_t>(chain[k])];
-      const double d = distanceToSegment(p, a, b);
+      const double d = (p - closestPointOnSegment(p, a, b)).norm();
       if (d > worst + tie ||
         (d >= worst - tie && lexicographicallyBelow(p, points[static_cast<std::size_t>(chain[at])])))
       {
