@@ -64,17 +64,23 @@ void add(Combo& to, const Combo& c, double s)
     to.emplace_back(v, s * w);
 }
 
-/// vertexWeight: the rounding weights (empty: all 1); a weight w moves V' to
-/// V + w (V'_1 - V), still affine. Edge weights are not modelled.
-Anchors buildAnchors(const PolygonMesh& m, const std::vector<double>& vertexWeight)
+/// The anchors follow the lattice surface's rules (LatticeSurface.h): a
+/// crease is an edge of weight 0 or a border edge; a vertex on two creases
+/// has V' = (p + 4 V + q) / 6 along the crease polygon, on three or more
+/// V' = V; a vertex weight w moves V' to V + w (V'_1 - V), still affine. A
+/// crease edge's midpoint is its cubic's, affine unless an end is a dart
+/// (the tangent is projected there; no anchor). Smooth edges' midpoints are
+/// (Q + R) / 2; their weights in (0, 1) are not modelled.
+Anchors buildAnchors(const PolygonMesh& m, const LatticeWeights& weights)
 {
+  using Key = std::pair<std::int64_t, std::int64_t>;
   const std::size_t nv = m.points.size();
   Anchors a;
   a.vertex.assign(nv, {});
   std::vector<double> areaSum(nv, 0.0);
   std::vector<Combo> weighted(nv);
   // Directed edge -> (face, corner index of its start).
-  std::map<std::pair<std::int64_t, std::int64_t>, std::pair<std::size_t, std::size_t>> half;
+  std::map<Key, std::pair<std::size_t, std::size_t>> half;
   for (std::size_t f = 0; f < m.faces.size(); ++f)
   {
     const auto& face = m.faces[f];
@@ -90,48 +96,78 @@ Anchors buildAnchors(const PolygonMesh& m, const std::vector<double>& vertexWeig
     }
     a.face.push_back(centre);
   }
-  // Boundary neighbours.
-  std::vector<std::vector<std::int64_t>> boundaryNext(nv), boundaryPrev(nv);
+  auto edgeWeight = [&](const Key& e) {
+    auto it = weights.edge.find(e);
+    if (it == weights.edge.end())
+      it = weights.edge.find({ e.second, e.first });
+    return it == weights.edge.end() ? 1.0 : it->second;
+  };
+  auto isCrease = [&](const Key& e) { return !half.count({ e.second, e.first }) || edgeWeight(e) == 0.0; };
+  // Each vertex's crease neighbours, every undirected crease once.
+  std::vector<std::vector<std::int64_t>> creaseNeighbours(nv);
   for (const auto& [e, fi] : half)
   {
-    if (!half.count({ e.second, e.first }))
+    const bool border = !half.count({ e.second, e.first });
+    if (isCrease(e) && (border || e.first < e.second))
     {
-      boundaryNext[static_cast<std::size_t>(e.first)].push_back(e.second);
-      boundaryPrev[static_cast<std::size_t>(e.second)].push_back(e.first);
+      creaseNeighbours[static_cast<std::size_t>(e.first)].push_back(e.second);
+      creaseNeighbours[static_cast<std::size_t>(e.second)].push_back(e.first);
     }
   }
   for (std::size_t v = 0; v < nv; ++v)
   {
-    if (boundaryNext[v].size() == 1 && boundaryPrev[v].size() == 1)
+    const auto& cn = creaseNeighbours[v];
+    const auto vi = static_cast<std::int64_t>(v);
+    if (cn.size() >= 3)
     {
-      a.vertex[v] = { { boundaryPrev[v][0], 1.0 / 6.0 }, { static_cast<std::int64_t>(v), 4.0 / 6.0 },
-        { boundaryNext[v][0], 1.0 / 6.0 } };
+      a.vertex[v] = { { vi, 1.0 } };
+      continue;
     }
+    if (cn.size() == 2)
+      a.vertex[v] = { { cn[0], 1.0 / 6.0 }, { vi, 4.0 / 6.0 }, { cn[1], 1.0 / 6.0 } };
     else if (areaSum[v] > 0.0)
     {
       for (auto& [u, w] : weighted[v])
         a.vertex[v].emplace_back(u, w / areaSum[v]);
     }
-    const double w = vertexWeight.empty() ? 1.0 : vertexWeight[v];
+    const double w = weights.vertex.empty() ? 1.0 : weights.vertex[v];
     if (w != 1.0 && !a.vertex[v].empty())
     {
       for (auto& uw : a.vertex[v])
         uw.second *= w;
-      a.vertex[v].emplace_back(static_cast<std::int64_t>(v), 1.0 - w);
+      a.vertex[v].emplace_back(vi, 1.0 - w);
     }
   }
+  // A crease curve's inner point leaves its end along the crease polygon's
+  // B-spline tangent (two creases) or the lattice edge (a corner).
+  auto creaseTangent = [&](std::int64_t from, std::int64_t to, Combo& c, double s) {
+    const auto& cn = creaseNeighbours[static_cast<std::size_t>(from)];
+    if (cn.size() == 2)
+    {
+      c.emplace_back(to, s / 6.0);
+      c.emplace_back(cn[0] == to ? cn[1] : cn[0], -s / 6.0);
+    }
+    else
+    {
+      c.emplace_back(to, s / 3.0);
+      c.emplace_back(from, -s / 3.0);
+    }
+  };
   for (const auto& [e, fi] : half)
   {
     const auto back = half.find({ e.second, e.first });
     Combo c;
-    if (back == half.end())
+    if (isCrease(e))
     {
-      // Boundary: the B-spline midpoint (p + 23 w + 23 z + r) / 48.
-      const auto w = static_cast<std::size_t>(e.first), z = static_cast<std::size_t>(e.second);
-      if (boundaryPrev[w].size() != 1 || boundaryNext[z].size() != 1)
+      // The cubic's midpoint (P0 + 3 P1 + 3 P2 + P3) / 8 with P1 = P0 + t0,
+      // P2 = P3 + t3: (V'_a + V'_b) / 2 + 3 (t0 + t3) / 8.
+      if (creaseNeighbours[static_cast<std::size_t>(e.first)].size() < 2 ||
+        creaseNeighbours[static_cast<std::size_t>(e.second)].size() < 2)
         continue;
-      c = { { boundaryPrev[w][0], 1.0 / 48 }, { e.first, 23.0 / 48 }, { e.second, 23.0 / 48 },
-        { boundaryNext[z][0], 1.0 / 48 } };
+      add(c, a.vertex[static_cast<std::size_t>(e.first)], 0.5);
+      add(c, a.vertex[static_cast<std::size_t>(e.second)], 0.5);
+      creaseTangent(e.first, e.second, c, 3.0 / 8.0);
+      creaseTangent(e.second, e.first, c, 3.0 / 8.0);
     }
     else
     {
@@ -640,7 +676,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
     double weight = 0.0;
     std::vector<FaceBlock> faceBlocks;
     {
-      const Anchors anchors = buildAnchors(lattice, options.weights.vertex);
+      const Anchors anchors = buildAnchors(lattice, options.weights);
       const std::vector<PatchModel> models = buildPatchModels(lattice, surface, anchors);
       std::vector<Combo> combos(samples.size());
       inChunks(samples.size(), options.threads, [&](std::size_t begin, std::size_t end) {
