@@ -96,13 +96,9 @@ Anchors buildAnchors(const PolygonMesh& m, const LatticeWeights& weights)
     }
     a.face.push_back(centre);
   }
-  auto edgeWeight = [&](const Key& e) {
-    auto it = weights.edge.find(e);
-    if (it == weights.edge.end())
-      it = weights.edge.find({ e.second, e.first });
-    return it == weights.edge.end() ? 1.0 : it->second;
+  auto isCrease = [&](const Key& e) {
+    return !half.count({ e.second, e.first }) || weights.edgeWeight(e.first, e.second) == 0.0;
   };
-  auto isCrease = [&](const Key& e) { return !half.count({ e.second, e.first }) || edgeWeight(e) == 0.0; };
   // Each vertex's crease neighbours, every undirected crease once.
   std::vector<std::vector<std::int64_t>> creaseNeighbours(nv);
   for (const auto& [e, fi] : half)

@@ -253,15 +253,9 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       throw std::invalid_argument(os.str());
     }
   }
-  auto edgeWeight = [&](const Key& key) {
-    auto it = weights.edge.find(key);
-    if (it == weights.edge.end())
-    {
-      it = weights.edge.find({ key.second, key.first });
-    }
-    return it == weights.edge.end() ? 1.0 : it->second;
+  auto isCrease = [&](const Key& key, std::size_t besides) {
+    return besides == 1 || weights.edgeWeight(key.first, key.second) == 0.0;
   };
-  auto isCrease = [&](const Key& key, std::size_t besides) { return besides == 1 || edgeWeight(key) == 0.0; };
   std::map<Key, bool> crease;
   std::vector<std::vector<std::int64_t>> creaseNeighbours(nv);
   std::vector<std::vector<Key>> vertexEdges(nv);
@@ -455,7 +449,7 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       // moves towards the lattice edge's third point, (2 V + X) / 3, so the
       // curve leans towards the lattice edge; the tangent plane is unchanged,
       // so G1 holds for every w > 0 (w = 0 is the crease).
-      const double w = edgeWeight(key);
+      const double w = weights.edgeWeight(key.first, key.second);
       Q = w * Q + (1.0 - w) * (2.0 * P[static_cast<std::size_t>(v)] + P[static_cast<std::size_t>(x)]) / 3.0;
       const Vec3 chord = s.roundedPoints[static_cast<std::size_t>(x)] - V;
       tangentAt[{ v, x }] = tangentInPlane((4.0 * Q - V) / 3.0 - V, normalAt(v, besides[0].first), chord, chord.norm() / 6.0,

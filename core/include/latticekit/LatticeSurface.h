@@ -103,6 +103,15 @@ struct LatticeWeights
 {
   std::vector<double> vertex;
   std::map<std::pair<std::int64_t, std::int64_t>, double> edge;
+
+  /// The weight of edge (a, b), given in either order; 1 where none is.
+  double edgeWeight(std::int64_t a, std::int64_t b) const
+  {
+    auto it = edge.find({ a, b });
+    if (it == edge.end())
+      it = edge.find({ b, a });
+    return it == edge.end() ? 1.0 : it->second;
+  }
 };
 
 /// Builds the surface. Throws std::invalid_argument with the reason (see
