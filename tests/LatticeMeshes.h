@@ -2,6 +2,7 @@
 /// \file LatticeMeshes.h
 /// Small closed and open lattices for the lattice-surface tests.
 
+#include "TestMeshes.h"
 #include "latticekit/PolygonMesh.h"
 
 #include <cmath>
@@ -274,6 +275,25 @@ inline lk::PolygonMesh crumpledStarsMidpointBasisAlongTheCurve()
     { 19, 13, 5 }, { 19, 18, 22 }, { 12, 19, 6 }, { 19, 5, 6 }
   };
   return triangleLattice(points, faces);
+}
+
+/// The icosphere of radius 1 after two subdivisions (162 vertices, 320
+/// triangles), crumpled: each vertex moved in or out by up to half the
+/// radius and across by up to 0.15, by a fixed hash of its index (no random
+/// generator, so the lattice is the same everywhere). Many of its edges fold
+/// sharply, as on decimated or refined lattices of noisy skin.
+inline lk::PolygonMesh crumpledIcosphereLattice()
+{
+  lk::PolygonMesh m = lk::asPolygonMesh(icosphere(2, 1.0));
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+  {
+    auto hash = [i](double k) {
+      const double x = std::sin(12.9898 * static_cast<double>(i) + 78.233 * k) * 43758.5453;
+      return 2.0 * (x - std::floor(x)) - 1.0;
+    };
+    m.points[i] = m.points[i] * (1.0 + 0.5 * hash(1)) + 0.15 * lk::Vec3(hash(2), hash(3), hash(4));
+  }
+  return m;
 }
 
 } // namespace lktest

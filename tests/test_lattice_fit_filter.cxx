@@ -1,3 +1,4 @@
+#include "LatticeSurfaceSides.h"
 #include "MandibleLoop.h"
 #include "TestSupport.h"
 #include "latticekit/EdgePath.h"
@@ -5,6 +6,7 @@
 #include "vtkLKBoneSurfaceFilter.h"
 #include "vtkLKLatticeFitFilter.h"
 #include "vtkLKMedicalImageReader.h"
+#include "vtkLKPolyDataConversion.h"
 #include "vtkLKQuadPairingFilter.h"
 
 #include <vtkCellArrayIterator.h>
@@ -116,6 +118,31 @@ TEST(LatticeFitFilter, MandibleLatticeWithErrorAndVertexMap)
   // The vertices' distances cannot exceed the Hausdorff distance (up to the
   // tessellation's chordal error).
   EXPECT_LT(dmax, 1.05 * field(lattice, "Hausdorff_Max") + 1e-3);
+}
+
+TEST(LatticeFitFilter, TheMandiblesFittedSurfacesDoNotFoldAlongTheirCurves)
+{
+  // The fitted lattices of both TCIA mandibles at 2,000 vertices fold
+  // sharply at a few edges. There, before session 78, the patches beside 10
+  // (first mandible) and 31 (second) of the surface's curves lay on the same
+  // side of them, with opposite normals: dark streaks in a rendering with the
+  // surface's own normals, and the surface passing through itself.
+  for (const std::string patient : { "0522c0017", "TCGA-CV-7236" })
+  {
+    vtkNew<vtkLKLatticeFitFilter> fit;
+    fit->SetInputData(lktest::tciaMandibleSurface(patient));
+    fit->SetTargetNumberOfVertices(2000);
+    fit->Update();
+    lk::PolygonMesh lattice;
+    ASSERT_EQ(lkvtk::toPolygonMesh(fit->GetOutput(), lattice), "");
+    const lk::LatticeSurface surface = lk::buildLatticeSurface(lattice);
+    const double size = fit->GetOutput()->GetLength();
+    std::size_t pairs = 0;
+    const std::size_t folded = lktest::foldedSidePairs(surface, size, &pairs);
+    std::printf("mandible %s, 2000 vertices: %zu of %zu side sample pairs folded over\n", patient.c_str(), folded, pairs);
+    EXPECT_GT(pairs, 500000u);
+    EXPECT_EQ(folded, 0u) << patient;
+  }
 }
 
 TEST(LatticeFitFilter, LockedFeaturesAreLatticeEdges)

@@ -31,11 +31,18 @@ struct Curve
   /// fitted k, h then grow without bound and the patches spike. With
   /// `conditionMid`, b's component along C'(1/2) is cut until b is at least
   /// 10 degrees from it, and b is lengthened to at least half the ends' mean
-  /// length. Either change keeps b in the plane of the mean and C'(1/2), the
+  /// length. And b is kept on the side of the curve that b0 is on: b0 =
+  /// n0 x C'(0) lies on the curve's left about the start's plane normal n0,
+  /// and b must lie on its left about `midNormal` (the mean of the ends'
+  /// plane normals). Where the ends' planes turn against each other, the
+  /// mean of b0 and b1 can cross over to the right; k(t) of both patches
+  /// then changes sign between the end and the midpoint, at different t, and
+  /// between those the two patches lie on the same side of the curve (a
+  /// fold). Each change keeps b in the plane of the mean and C'(1/2), the
   /// midpoint's tangent plane, and both faces of the edge split it alike, so
-  /// G1 holds; an edge beside a quad must not use it (the quad's patch uses
-  /// the whole curve's linear b).
-  std::pair<Curve, Curve> split(bool conditionMid) const
+  /// G1 holds; an edge beside a quad must not use them (the quad's patch
+  /// uses the whole curve's linear b).
+  std::pair<Curve, Curve> split(bool conditionMid, const Vec3& startNormal, const Vec3& midNormal) const
   {
     const Vec3 a = 0.5 * (X[0] + X[1]), b = 0.5 * (X[1] + X[2]), c = 0.5 * (X[2] + X[3]);
     const Vec3 d = 0.5 * (a + b), e = 0.5 * (b + c), m = 0.5 * (d + e);
@@ -47,7 +54,12 @@ struct Curve
       {
         const Vec3 t = tangent.normalized();
         const double along = bm.dot(t);
-        const Vec3 across = bm - along * t;
+        Vec3 across = bm - along * t;
+        if (b0.dot(startNormal.cross(X[1] - X[0])) * across.dot(midNormal.cross(t)) < 0.0)
+        {
+          across = -across;
+          bm = along * t + across;
+        }
         const double most = across.norm() / std::tan(10.0 * M_PI / 180.0);
         if (std::abs(along) > most)
         {
@@ -607,7 +619,9 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       {
         quadBeside = quadBeside || lattice.faces[g].size() == 4;
       }
-      const auto halves = sideCurve(face[i], face[(i + 1) % n], f).split(!quadBeside);
+      const Vec3& startNormal = normalAt(face[i], f);
+      const auto halves =
+        sideCurve(face[i], face[(i + 1) % n], f).split(!quadBeside, startNormal, startNormal + normalAt(face[(i + 1) % n], f));
       firstHalf[i] = halves.first;   // V_i -> M_i
       secondHalf[i] = halves.second; // M_i -> V_{i+1}
     }
@@ -630,11 +644,13 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
     {
       const Vec3& M = firstHalf[i].X[3];
       const Vec3 tangentM = firstHalf[i].X[3] - firstHalf[i].X[2];
-      // The midpoint's plane normal, turned outward like the centre's: b0 and
-      // b1 of the inner curve must lie on the same side, or k(t) passes
-      // through zero and the patches fold along the curve.
+      // The midpoint's plane normal, turned outward like the edge's ends'
+      // planes, so that both faces beside the edge agree on it (turned like
+      // each face's centre plane, the two faces of a sharply folded edge could
+      // take opposite normals, and their inner curves then left the midpoint
+      // to the same side: the patches folded along the edge).
       Vec3 nm = unit(firstHalf[i].b1.cross(tangentM), "an edge midpoint has no tangent plane");
-      if (nm.dot(nc) < 0.0)
+      if (nm.dot(normalAt(face[i], f) + normalAt(face[(i + 1) % n], f)) < 0.0)
       {
         nm = -nm;
       }
@@ -649,6 +665,20 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       const double shortest = toCentre.norm() / 6.0;
       c.X = { M, M + tangentInPlane(toCentre / 3.0, nm, toCentre, shortest),
         centre + tangentInPlane(-toCentre / 3.0, nc, -toCentre, shortest), centre };
+      // The inner curve leaves the midpoint into the face: on the edge's left
+      // about nm (the face runs counter-clockwise), at least 10 degrees from
+      // the edge, with its length kept. Where the lattice folds sharply at the
+      // edge, the centre can project behind the edge; the patches beside the
+      // inner curve and beside the edge then fold.
+      const Vec3 left = nm.cross(tangentM).normalized();
+      const Vec3 start = c.X[1] - c.X[0];
+      const double leastIn = start.norm() * std::sin(10.0 * M_PI / 180.0);
+      if (start.dot(left) < leastIn)
+      {
+        const Vec3 along = tangentM.normalized();
+        const double alongLength = std::sqrt(std::max(0.0, start.squaredNorm() - leastIn * leastIn));
+        c.X[1] = c.X[0] + leastIn * left + std::copysign(alongLength, start.dot(along)) * along;
+      }
       c.b0 = nm.cross(unit(c.X[1] - c.X[0], "an inner curve has no tangent at its midpoint end"));
       inner[i] = c;
     }

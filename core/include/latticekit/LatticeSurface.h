@@ -34,9 +34,16 @@
 ///    the edge-curve midpoints; at the midpoint: the plane of the edge's
 ///    b(1/2) and C'(1/2)), with the same floor of a sixth of the chord.
 ///    Unless a quad lies beside the edge, b(1/2) is kept at least 10 degrees
-///    from C'(1/2) and at least half as long as b0 and b1 on average, within
-///    the midpoint's tangent plane (on a crumpled lattice b(1/2) can be nearly
-///    zero or nearly along the curve; see step 6: k(t), h(t) then blow up).
+///    from C'(1/2), at least half as long as b0 and b1 on average, and on the
+///    side of the curve that b0 and b1 are on, within the midpoint's tangent
+///    plane (on a crumpled lattice b(1/2) can be nearly zero, nearly along the
+///    curve, or across it; see step 6: k(t), h(t) then blow up or change
+///    sign). The midpoint's plane normal is turned like the edge's ends'
+///    planes, so both faces agree on it, and each inner curve leaves the
+///    midpoint into its own face, at least 10 degrees from the edge; where
+///    the lattice folds sharply at an edge, the centre can lie behind it.
+///    Without these, the patches beside a sharply folded edge folded over
+///    each other along the edge or the inner curve.
 /// 6. Interior Gregory points, Chiyokura and Kimura's basis-patch method:
 ///    every curve C carries a vector function b(t) = (1-t) b0 + t b1, with b0,
 ///    b1 in the end tangent planes and perpendicular to the curve. The
