@@ -30,6 +30,8 @@ void usage(std::ostream& os)
         "SURFACE: .vtp, .vtk, .stl, .ply, .obj or .gltf.\n"
         "\n"
         "  --resolution N     segments per quad patch side (default 8)\n"
+        "  --split-creases    give each side of a sharp edge its own points and normals (crisp\n"
+        "                     shading; the surface is then open along the sharp edges)\n"
         "  --control-net OUT  write the edge curves' control polygons and the Gregory interior points\n"
         "  --lattice OUT      write the lattice itself (for example to convert it to .obj)\n"
         "  -q, --quiet        no progress bar\n"
@@ -43,7 +45,7 @@ int main(int argc, char* argv[])
   lkapp::installCrashReport("latticekit-lattice");
   std::string input, output, netOut, latticeOut;
   long resolution = 8;
-  bool quiet = false;
+  bool quiet = false, splitCreases = false;
   lkapp::Arguments args(argc, argv, usage);
   std::string a;
   while (args.next(a))
@@ -52,6 +54,8 @@ int main(int argc, char* argv[])
       output = args.value(a);
     else if (a == "--resolution")
       resolution = args.integer(a, 2, 256, "an integer from 2 to 256");
+    else if (a == "--split-creases")
+      splitCreases = true;
     else if (a == "--control-net")
       netOut = args.value(a);
     else if (a == "--lattice")
@@ -83,6 +87,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkLKLatticeSurfaceFilter> surface;
   surface->SetInputData(lattice);
   surface->SetResolution(static_cast<int>(resolution));
+  surface->SetSplitCreases(splitCreases);
   {
     lkapp::ProgressBar bar(surface, "lattice surface", !quiet);
     surface->Update();
@@ -113,9 +118,10 @@ int main(int argc, char* argv[])
   std::printf("lattice          %lld vertices; faces: %lld triangles, %lld quads, %lld other; %lld sharp-edge lines\n",
     static_cast<long long>(lattice->GetNumberOfPoints()), kinds[0], kinds[1], kinds[2],
     static_cast<long long>(lattice->GetNumberOfLines()));
-  std::printf("surface          %lld Gregory patches, %lld display polygons (resolution %ld), %.3f s\n",
+  std::printf("surface          %lld Gregory patches, %lld display polygons on %lld points%s (resolution %ld), %.3f s\n",
     static_cast<long long>(surface->GetNumberOfPatches()),
     static_cast<long long>(surface->GetOutput()->GetFieldData()->GetArray("DisplayPolygons")->GetTuple1(0)),
+    static_cast<long long>(surface->GetOutput()->GetNumberOfPoints()), splitCreases ? ", split along the sharp edges" : "",
     resolution, seconds);
   std::printf("bytes on disk    lattice %lld (%s), surface %lld (%s)\n", lkapp::fileBytes(input), input.c_str(),
     lkapp::fileBytes(output), output.c_str());

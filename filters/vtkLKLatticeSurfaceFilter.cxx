@@ -24,11 +24,95 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkLKLatticeSurfaceFilter);
+
+namespace
+{
+/// The creases between two faces (edges of weight 0, as smaller id, larger
+/// id), and the sector of each face corner at a vertex on one: corners that
+/// meet across edges that are not creases share a sector.
+struct CreaseSides
+{
+  std::set<std::pair<std::int64_t, std::int64_t>> creases;
+  std::map<std::pair<std::int64_t, std::size_t>, std::int64_t> sectorOf; // (vertex, face) -> sector (1, 2, ...)
+
+  /// 0 at a vertex on no crease (one point for all its faces).
+  std::int64_t sector(std::int64_t v, std::size_t f) const
+  {
+    const auto it = sectorOf.find({ v, f });
+    return it == sectorOf.end() ? 0 : it->second;
+  }
+};
+
+CreaseSides creaseSides(const lk::PolygonMesh& lattice, const lk::LatticeWeights& weights)
+{
+  CreaseSides out;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> edgeFaces;
+  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+  {
+    const auto& face = lattice.faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i)
+    {
+      const auto a = face[i], b = face[(i + 1) % face.size()];
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(f);
+    }
+  }
+  std::set<std::int64_t> onCrease;
+  for (const auto& [edge, besides] : edgeFaces)
+  {
+    if (besides.size() == 2 && weights.edgeWeight(edge.first, edge.second) == 0.0)
+    {
+      out.creases.insert(edge);
+      onCrease.insert(edge.first);
+      onCrease.insert(edge.second);
+    }
+  }
+  // Union-find over the corners at vertices on a crease: two faces beside an
+  // edge that is not a crease share the sector at both its ends.
+  std::map<std::pair<std::int64_t, std::size_t>, std::pair<std::int64_t, std::size_t>> parent;
+  std::function<std::pair<std::int64_t, std::size_t>(const std::pair<std::int64_t, std::size_t>&)> find =
+    [&](const std::pair<std::int64_t, std::size_t>& c) {
+      auto it = parent.find(c);
+      if (it == parent.end() || it->second == c)
+        return c;
+      return it->second = find(it->second);
+    };
+  for (const auto& [edge, besides] : edgeFaces)
+  {
+    if (besides.size() != 2 || out.creases.count(edge))
+      continue;
+    for (const std::int64_t v : { edge.first, edge.second })
+    {
+      if (onCrease.count(v))
+      {
+        const auto a = find({ v, besides[0] }), b = find({ v, besides[1] });
+        if (a != b)
+          parent[std::max(a, b)] = std::min(a, b);
+      }
+    }
+  }
+  std::map<std::pair<std::int64_t, std::size_t>, std::int64_t> number;
+  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
+  {
+    for (const std::int64_t v : lattice.faces[f])
+    {
+      if (onCrease.count(v))
+      {
+        const auto root = find({ v, f });
+        const auto it = number.emplace(root, static_cast<std::int64_t>(number.size()) + 1).first;
+        out.sectorOf[{ v, f }] = it->second;
+      }
+    }
+  }
+  return out;
+}
+} // namespace
 
 struct vtkLKLatticeSurfaceFilter::Internals
 {
@@ -50,6 +134,7 @@ void vtkLKLatticeSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "ChordalTolerance: " << this->ChordalTolerance
      << (this->ChordalTolerance > 0.0 ? "" : " (off: Resolution decides)") << "\n";
+  os << indent << "SplitCreases: " << (this->SplitCreases ? "on" : "off") << "\n";
 }
 
 vtkPolyData* vtkLKLatticeSurfaceFilter::GetControlNetOutput()
@@ -250,20 +335,29 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   // inner curve; face centre), and samples with one name become one point.
   // Quad patches take `full` steps a side, split patches `half`, which is
   // half a lattice edge, so names agree across neighbours.
+  // With SplitCreases, a sample on a crease (an edge of weight 0 between two
+  // faces) is named by the face too, and a lattice vertex on a crease by its
+  // sector (the faces around it between creases), so each side keeps its
+  // own points and normals.
   using Name = std::array<std::int64_t, 4>; // kind, a, b, step
   std::map<Name, vtkIdType> named;
   const auto& faces = lattice.faces;
-  auto vertexName = [](std::int64_t v) { return Name{ 0, v, 0, 0 }; };
-  auto edgeName = [&](std::int64_t from, std::int64_t to, int k) {
+  const CreaseSides sides = this->SplitCreases ? creaseSides(lattice, weights) : CreaseSides();
+  auto vertexName = [&](std::int64_t v, std::size_t f) { return Name{ 0, v, sides.sector(v, f), 0 }; };
+  auto edgeName = [&](std::int64_t from, std::int64_t to, int k, std::size_t f) {
     const std::int64_t a = std::min(from, to), b = std::max(from, to);
     const int K = from == a ? k : full - k;
     if (K == 0)
     {
-      return vertexName(a);
+      return vertexName(a, f);
     }
     if (K == full)
     {
-      return vertexName(b);
+      return vertexName(b, f);
+    }
+    if (sides.creases.count({ a, b }))
+    {
+      return Name{ 4, static_cast<std::int64_t>(f), a * static_cast<std::int64_t>(lattice.points.size()) + b, K };
     }
     return Name{ 1, a, b, K };
   };
@@ -271,7 +365,7 @@ int vtkLKLatticeSurfaceFilter::RequestData(
     const auto& face = faces[f];
     if (k == 0)
     {
-      return edgeName(face[c], face[(c + 1) % face.size()], half);
+      return edgeName(face[c], face[(c + 1) % face.size()], half, f);
     }
     if (k == half)
     {
@@ -303,26 +397,26 @@ int vtkLKLatticeSurfaceFilter::RequestData(
       if (!split)
       {
         if (j == 0)
-          name = edgeName(face[0], face[1], i);
+          name = edgeName(face[0], face[1], i, f);
         else if (i == m)
-          name = edgeName(face[1], face[2], j);
+          name = edgeName(face[1], face[2], j, f);
         else if (j == m)
-          name = edgeName(face[3], face[2], i);
+          name = edgeName(face[3], face[2], i, f);
         else if (i == 0)
-          name = edgeName(face[0], face[3], j);
+          name = edgeName(face[0], face[3], j, f);
         else
           return false;
         return true;
       }
       const std::int64_t v = face[c], next = face[(c + 1) % n], prev = face[(c + n - 1) % n];
       if (j == 0)
-        name = edgeName(v, next, i);
+        name = edgeName(v, next, i, f);
       else if (i == m)
         name = innerName(f, c, j);
       else if (j == m)
         name = innerName(f, (c + n - 1) % n, i);
       else if (i == 0)
-        name = edgeName(v, prev, j);
+        name = edgeName(v, prev, j, f);
       else
         return false;
       return true;

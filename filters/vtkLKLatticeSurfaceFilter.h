@@ -15,8 +15,11 @@
  * Resolution/2 grid, so neighbouring patches sample their shared curves at
  * the same parameters; each such sample is named by its curve and step and
  * becomes one point, so the output is a watertight triangle mesh, built
- * deterministically. (At a sharp crease the shared points keep the normal
- * of one side; run vtkPolyDataNormals with splitting for crisp shading.) Point data "Normals" come from the patch derivatives, not
+ * deterministically. At a crease (see below) the shared points keep the
+ * normal of one side, which shades a band along it; with SplitCreases each
+ * side keeps its own points and normals instead (crisp edges, as
+ * vtkPolyDataNormals's splitting gives, and the mesh is then open along
+ * the creases). Point data "Normals" come from the patch derivatives, not
  * from the triangles; cell data "LatticeFaceId" and "PatchId" name the
  * lattice face and the patch of each triangle. Field data "DisplayPolygons"
  * counts the triangles (the paper's display polygons), "Patches" the patches.
@@ -71,6 +74,17 @@ public:
   vtkGetMacro(ChordalTolerance, double);
   ///@}
 
+  ///@{
+  /// Split the tessellation along creases (edges of weight 0 between two
+  /// faces): each side gets its own points there, with its own normals, and
+  /// a vertex on creases one point per sector of faces between them. Off by
+  /// default: one watertight mesh, whose points on a crease carry one side's
+  /// normal.
+  vtkSetMacro(SplitCreases, bool);
+  vtkGetMacro(SplitCreases, bool);
+  vtkBooleanMacro(SplitCreases, bool);
+  ///@}
+
   /// The resolution the last update used.
   int GetEffectiveResolution() const { return this->EffectiveResolution; }
 
@@ -105,6 +119,7 @@ protected:
 
   int Resolution = 8;
   double ChordalTolerance = 0.0;
+  bool SplitCreases = false;
   int EffectiveResolution = 0;
   vtkIdType LastClosestPatch = -1;
   double LastClosestUV[2] = { 0.0, 0.0 };

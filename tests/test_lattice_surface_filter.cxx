@@ -263,6 +263,91 @@ TEST(LatticeSurfaceFilter, LineCellsMakeSharpEdges)
   EXPECT_LT(inside, 0.45);
 }
 
+TEST(LatticeSurfaceFilter, SplitCreasesGiveEachSideItsOwnPointsAndNormals)
+{
+  // The cube lattice with its 12 edges as creases is the cube. Merged, the
+  // points on its edges carry one face's normal, and the triangles of the
+  // other face beside them shade darker (a band along every edge). Split,
+  // every point carries the normal of the face it belongs to, and the mesh
+  // is open along the creases only.
+  const lk::PolygonMesh m = lktest::cubeLattice();
+  auto lattice = toVtk(m);
+  auto creaseLines = [&](bool topOnly) {
+    vtkNew<vtkCellArray> lines;
+    for (const auto& f : m.faces)
+      for (std::size_t i = 0; i < f.size(); ++i)
+      {
+        const auto a = f[i], b = f[(i + 1) % f.size()];
+        if (a < b && (!topOnly || (m.points[static_cast<std::size_t>(a)].z() > 0 && m.points[static_cast<std::size_t>(b)].z() > 0)))
+        {
+          const vtkIdType ids[2] = { a, b };
+          lines->InsertNextCell(2, ids);
+        }
+      }
+    return vtkSmartPointer<vtkCellArray>(lines);
+  };
+  auto run = [&](bool split, bool topOnly, int& boundaryEdges, int& pointsOffTheirFace) {
+    lattice->SetLines(creaseLines(topOnly));
+    vtkNew<vtkLKLatticeSurfaceFilter> filter;
+    filter->SetInputData(lattice);
+    filter->SetSplitCreases(split);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    vtkNew<vtkFeatureEdges> edges;
+    edges->SetInputData(out);
+    edges->BoundaryEdgesOn();
+    edges->NonManifoldEdgesOn();
+    edges->FeatureEdgesOff();
+    edges->ManifoldEdgesOff();
+    edges->Update();
+    boundaryEdges = static_cast<int>(edges->GetOutput()->GetNumberOfCells());
+    // Every corner of a triangle carries its own face's normal (with topOnly,
+    // of the top face's triangles only).
+    vtkDataArray* normals = out->GetPointData()->GetArray("Normals");
+    vtkDataArray* face = out->GetCellData()->GetArray("LatticeFaceId");
+    pointsOffTheirFace = 0;
+    for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+    {
+      const auto& f = m.faces[static_cast<std::size_t>(face->GetComponent(c, 0))];
+      const lk::Vec3 centre = 0.25 * (m.points[static_cast<std::size_t>(f[0])] + m.points[static_cast<std::size_t>(f[1])] +
+                                       m.points[static_cast<std::size_t>(f[2])] + m.points[static_cast<std::size_t>(f[3])]);
+      if (topOnly && centre.z() < 0.25)
+        continue;
+      vtkIdType n;
+      const vtkIdType* ids;
+      out->GetCellPoints(c, n, ids);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        double t[3];
+        normals->GetTuple(ids[k], t);
+        // Within 8 degrees (the top is not quite flat where only its edges
+        // are creases: its normals lean by up to 1e-3 there); another
+        // face's normal is 90 degrees off.
+        pointsOffTheirFace += lk::Vec3(t[0], t[1], t[2]).dot(2.0 * centre) < 0.99 ? 1 : 0;
+      }
+    }
+    return out->GetNumberOfPoints();
+  };
+  int open = 0, off = 0;
+  EXPECT_EQ(run(false, false, open, off), 6 * 7 * 7 + 12 * 7 + 8);
+  std::printf("cube, creases merged: %d open edges, %d triangle corners with another face's normal\n", open, off);
+  EXPECT_EQ(open, 0);
+  EXPECT_GT(off, 0);
+  EXPECT_EQ(run(true, false, open, off), 6 * 9 * 9);
+  std::printf("cube, creases split: %d open edges, %d triangle corners with another face's normal\n", open, off);
+  EXPECT_EQ(open, 12 * 8 * 2);
+  EXPECT_EQ(off, 0);
+  // Only the top's four edges creased: the rest stays one smooth, watertight
+  // piece; the top's corners are split into two points each (the top, and
+  // the sides, which meet across edges that are not creases).
+  EXPECT_EQ(run(false, true, open, off), 6 * 7 * 7 + 12 * 7 + 8);
+  EXPECT_EQ(open, 0);
+  EXPECT_EQ(run(true, true, open, off), 6 * 7 * 7 + 12 * 7 + 8 + 4 * 7 + 4);
+  std::printf("cube, top creases split: %d open edges, %d corners of top triangles off +z\n", open, off);
+  EXPECT_EQ(open, 4 * 8 * 2);
+  EXPECT_EQ(off, 0);
+}
+
 TEST(LatticeSurfaceFilter, ChordalToleranceAndClosestPoint)
 {
   vtkNew<vtkLKLatticeSurfaceFilter> filter;

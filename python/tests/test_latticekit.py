@@ -365,6 +365,7 @@ class PipelineTest(unittest.TestCase):
         import latticekit
         from vtkmodules.vtkCommonCore import vtkPoints
         from vtkmodules.vtkCommonDataModel import vtkPolyData
+        from vtkmodules.vtkFiltersCore import vtkFeatureEdges
         from vtkmodules.vtkFiltersSources import vtkSphereSource
 
         sphere = vtkSphereSource()
@@ -403,6 +404,21 @@ class PipelineTest(unittest.TestCase):
             # The rim, where the cap meets the sphere (at 74 and 106 degrees),
             # is a crease of the lattice surface, unless a larger angle is asked.
             self.assertEqual(fit.GetOutput().GetFieldData().GetArray("CreaseEdges").GetValue(0), edges)
+            # Its surface is one closed mesh, or, with SplitCreases, open
+            # along the rim only: each side there has its own points.
+            surface = latticekit.vtkLKLatticeSurfaceFilter()
+            surface.SetInputConnection(fit.GetOutputPort())
+            rim = vtkFeatureEdges()
+            rim.SetInputConnection(surface.GetOutputPort())
+            rim.BoundaryEdgesOn()
+            rim.NonManifoldEdgesOn()
+            rim.FeatureEdgesOff()
+            rim.ManifoldEdgesOff()
+            rim.Update()
+            self.assertEqual(rim.GetOutput().GetNumberOfLines(), 0)
+            surface.SplitCreasesOn()
+            rim.Update()
+            self.assertEqual(rim.GetOutput().GetNumberOfLines(), 2 * 8 * edges)
             fit.SetCreaseAngle(120)
             fit.Update()
             self.assertEqual(fit.GetOutput().GetFieldData().GetArray("CreaseEdges").GetValue(0), 0)
