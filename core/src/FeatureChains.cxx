@@ -222,7 +222,7 @@ std::vector<double> edgeBends(
     if (!(lengths > 0.0) || !std::isfinite(lengths))
       continue;
     // atan2 of |u x v| and u.v: accurate near 0 and 180 degrees, where acos is not.
-    bends[e] = std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / 3.14159265358979323846;
+    bends[e] = std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / kPi;
   }
   return bends;
 }

@@ -12,8 +12,6 @@ namespace lk
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-
 std::uint64_t key(std::int64_t a, std::int64_t b)
 {
   if (a > b)

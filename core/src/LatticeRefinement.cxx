@@ -22,8 +22,6 @@ namespace lk
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-
 /// An affine combination of lattice vertices.
 using Combo = std::vector<std::pair<std::int64_t, double>>;
 

@@ -28,8 +28,6 @@ using VD = Mesh::Vertex_index;
 using HD = Mesh::Halfedge_index;
 using ED = Mesh::Edge_index;
 
-constexpr double kPi = 3.14159265358979323846;
-
 Vec3 toVec(const Point& p)
 {
   return { p.x(), p.y(), p.z() };

@@ -382,7 +382,7 @@ std::vector<std::vector<std::size_t>> nestedLoopGroups(
   const std::size_t n = loops.size();
   std::vector<std::size_t> root(n);
   std::iota(root.begin(), root.end(), 0);
-  const double parallel = std::cos(10.0 * 3.14159265358979 / 180.0);
+  const double parallel = std::cos(10.0 * kPi / 180.0);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j)
     {

@@ -11,8 +11,6 @@ namespace lk
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-
 struct Candidate
 {
   double cost;

@@ -20,6 +20,9 @@ namespace lk
 using Vec3 = Eigen::Vector3d;
 using Triangle = std::array<std::int64_t, 3>;
 
+/// pi, for the cores' angles.
+inline constexpr double kPi = 3.14159265358979323846;
+
 struct TriangleMesh
 {
   std::vector<Vec3> points;
