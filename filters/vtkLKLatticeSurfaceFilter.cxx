@@ -24,7 +24,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <memory>
 #include <map>
 #include <set>
@@ -32,87 +31,6 @@
 
 vtkStandardNewMacro(vtkLKLatticeSurfaceFilter);
 
-namespace
-{
-/// The creases between two faces (edges of weight 0, as smaller id, larger
-/// id), and the sector of each face corner at a vertex on one: corners that
-/// meet across edges that are not creases share a sector.
-struct CreaseSides
-{
-  std::set<std::pair<std::int64_t, std::int64_t>> creases;
-  std::map<std::pair<std::int64_t, std::size_t>, std::int64_t> sectorOf; // (vertex, face) -> sector (1, 2, ...)
-
-  /// 0 at a vertex on no crease (one point for all its faces).
-  std::int64_t sector(std::int64_t v, std::size_t f) const
-  {
-    const auto it = sectorOf.find({ v, f });
-    return it == sectorOf.end() ? 0 : it->second;
-  }
-};
-
-CreaseSides creaseSides(const lk::PolygonMesh& lattice, const lk::LatticeWeights& weights)
-{
-  CreaseSides out;
-  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> edgeFaces;
-  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
-  {
-    const auto& face = lattice.faces[f];
-    for (std::size_t i = 0; i < face.size(); ++i)
-    {
-      const auto a = face[i], b = face[(i + 1) % face.size()];
-      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(f);
-    }
-  }
-  std::set<std::int64_t> onCrease;
-  for (const auto& [edge, besides] : edgeFaces)
-  {
-    if (besides.size() == 2 && weights.edgeWeight(edge.first, edge.second) == 0.0)
-    {
-      out.creases.insert(edge);
-      onCrease.insert(edge.first);
-      onCrease.insert(edge.second);
-    }
-  }
-  // Union-find over the corners at vertices on a crease: two faces beside an
-  // edge that is not a crease share the sector at both its ends.
-  std::map<std::pair<std::int64_t, std::size_t>, std::pair<std::int64_t, std::size_t>> parent;
-  std::function<std::pair<std::int64_t, std::size_t>(const std::pair<std::int64_t, std::size_t>&)> find =
-    [&](const std::pair<std::int64_t, std::size_t>& c) {
-      auto it = parent.find(c);
-      if (it == parent.end() || it->second == c)
-        return c;
-      return it->second = find(it->second);
-    };
-  for (const auto& [edge, besides] : edgeFaces)
-  {
-    if (besides.size() != 2 || out.creases.count(edge))
-      continue;
-    for (const std::int64_t v : { edge.first, edge.second })
-    {
-      if (onCrease.count(v))
-      {
-        const auto a = find({ v, besides[0] }), b = find({ v, besides[1] });
-        if (a != b)
-          parent[std::max(a, b)] = std::min(a, b);
-      }
-    }
-  }
-  std::map<std::pair<std::int64_t, std::size_t>, std::int64_t> number;
-  for (std::size_t f = 0; f < lattice.faces.size(); ++f)
-  {
-    for (const std::int64_t v : lattice.faces[f])
-    {
-      if (onCrease.count(v))
-      {
-        const auto root = find({ v, f });
-        const auto it = number.emplace(root, static_cast<std::int64_t>(number.size()) + 1).first;
-        out.sectorOf[{ v, f }] = it->second;
-      }
-    }
-  }
-  return out;
-}
-} // namespace
 
 struct vtkLKLatticeSurfaceFilter::Internals
 {
@@ -335,15 +253,24 @@ int vtkLKLatticeSurfaceFilter::RequestData(
   // inner curve; face centre), and samples with one name become one point.
   // Quad patches take `full` steps a side, split patches `half`, which is
   // half a lattice edge, so names agree across neighbours.
-  // With SplitCreases, a sample on a crease (an edge of weight 0 between two
-  // faces) is named by the face too, and a lattice vertex on a crease by its
-  // sector (the faces around it between creases), so each side keeps its
-  // own points and normals.
+  // With SplitCreases, a sample on a crease is named by the face too, and a
+  // lattice vertex by its sector (the faces around it between creases), so
+  // each side keeps its own points and normals.
   using Name = std::array<std::int64_t, 4>; // kind, a, b, step
   std::map<Name, vtkIdType> named;
   const auto& faces = lattice.faces;
-  const CreaseSides sides = this->SplitCreases ? creaseSides(lattice, weights) : CreaseSides();
-  auto vertexName = [&](std::int64_t v, std::size_t f) { return Name{ 0, v, sides.sector(v, f), 0 }; };
+  std::set<std::pair<std::int64_t, std::int64_t>> splitEdges;
+  for (std::size_t e = 0; this->SplitCreases && e < s.edgeCurves.size(); ++e)
+  {
+    if (s.edgeCrease[e])
+    {
+      splitEdges.insert({ s.edgeVertices[e][0], s.edgeVertices[e][1] });
+    }
+  }
+  auto vertexName = [&](std::int64_t v, std::size_t f) {
+    const auto sector = this->SplitCreases ? s.sectorOf.at({ static_cast<std::size_t>(v), f }) : 0;
+    return Name{ 0, v, static_cast<std::int64_t>(sector), 0 };
+  };
   auto edgeName = [&](std::int64_t from, std::int64_t to, int k, std::size_t f) {
     const std::int64_t a = std::min(from, to), b = std::max(from, to);
     const int K = from == a ? k : full - k;
@@ -355,7 +282,7 @@ int vtkLKLatticeSurfaceFilter::RequestData(
     {
       return vertexName(b, f);
     }
-    if (sides.creases.count({ a, b }))
+    if (splitEdges.count({ a, b }))
     {
       return Name{ 4, static_cast<std::int64_t>(f), a * static_cast<std::int64_t>(lattice.points.size()) + b, K };
     }

@@ -578,6 +578,7 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
     curves.push_back(c);
     s.edgeCurves.push_back(c.X);
     s.edgeVertices.push_back({ a, b });
+    s.edgeCrease.push_back(crease[key] ? 1 : 0);
   }
   // The curve of edge (from, to) as face f sees it, oriented from `from`.
   auto sideCurve = [&](std::int64_t from, std::int64_t to, std::size_t f) {
@@ -717,6 +718,7 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       s.patchCorner.push_back(static_cast<int>(i));
     }
   }
+  s.sectorOf = std::move(sectorOf);
   return s;
 }
 

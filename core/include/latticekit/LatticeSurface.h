@@ -102,6 +102,11 @@ struct LatticeSurface
   std::vector<Vec3> roundedPoints;       ///< V' of every lattice vertex (eq. 2.1)
   std::vector<std::array<Vec3, 4>> edgeCurves;           ///< one per lattice edge (eq. 2.2)
   std::vector<std::array<std::int64_t, 2>> edgeVertices; ///< its end vertices
+  std::vector<char> edgeCrease;                          ///< per edge curve: a crease or a border (no G1 across it)
+  /// (vertex, face) -> the face's sector at the vertex: the faces around a
+  /// vertex fall into sectors between its creases, numbered from 0 (one
+  /// sector, 0, at a vertex on no crease).
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> sectorOf;
 };
 
 /// Rounding weights: vertex weights one per lattice point (empty: all 1), edge
