@@ -611,6 +611,7 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       centre += d / static_cast<double>(n);
     }
     std::vector<Curve> inner(n), firstHalf(n), secondHalf(n);
+    std::vector<Vec3> endsNormal(n); // the sum of edge i's ends' plane normals (outward at its midpoint)
     for (std::size_t i = 0; i < n; ++i)
     {
       // The edge's own direction decides the midpoint data, so both faces agree.
@@ -621,8 +622,8 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
         quadBeside = quadBeside || lattice.faces[g].size() == 4;
       }
       const Vec3& startNormal = normalAt(face[i], f);
-      const auto halves =
-        sideCurve(face[i], face[(i + 1) % n], f).split(!quadBeside, startNormal, startNormal + normalAt(face[(i + 1) % n], f));
+      endsNormal[i] = startNormal + normalAt(face[(i + 1) % n], f);
+      const auto halves = sideCurve(face[i], face[(i + 1) % n], f).split(!quadBeside, startNormal, endsNormal[i]);
       firstHalf[i] = halves.first;   // V_i -> M_i
       secondHalf[i] = halves.second; // M_i -> V_{i+1}
     }
@@ -651,7 +652,7 @@ LatticeSurface buildLatticeSurface(const PolygonMesh& lattice, const LatticeWeig
       // take opposite normals, and their inner curves then left the midpoint
       // to the same side: the patches folded along the edge).
       Vec3 nm = unit(firstHalf[i].b1.cross(tangentM), "an edge midpoint has no tangent plane");
-      if (nm.dot(normalAt(face[i], f) + normalAt(face[(i + 1) % n], f)) < 0.0)
+      if (nm.dot(endsNormal[i]) < 0.0)
       {
         nm = -nm;
       }
