@@ -442,9 +442,22 @@ TEST(LatticeRefinement, TheReverseDirectionPullsBackAnOverhang)
   ro.original = &original;
   ro.iterations = 6;
   lk::refineLatticeFit(twoWay, original.points, ro);
-  const auto after = overhang(lk::buildLatticeSurface(twoWay));
-  std::printf("overhang beyond the original: %.4f -> %.4f (|z| %.1e)\n", before.first, after.first, after.second);
-  EXPECT_LT(after.first, 0.5 * before.first);
+  const lk::LatticeSurface pulled = lk::buildLatticeSurface(twoWay);
+  const auto after = overhang(pulled);
+  // Folded over: the surface's normal turned down somewhere in its plane.
+  std::size_t down = 0;
+  for (const auto& patch : pulled.patches)
+    for (int i = 0; i <= 10; ++i)
+      for (int j = 0; j <= 10; ++j)
+        down += patch.normal(i / 10.0, j / 10.0).z() < 0.0 ? 1 : 0;
+  std::printf("overhang beyond the original: %.4f -> %.4f (|z| %.1e), %zu normals turned down\n", before.first,
+    after.first, after.second, down);
+  // 0.50 -> 0.33, every row pulled in by a third without folding. Before
+  // the fold guard (session 79) the outer rows were pulled onto the inner
+  // ones (0.02), folding the border patches under: 515 of the 1,936 normals
+  // pointed down.
+  EXPECT_LT(after.first, 0.75 * before.first);
+  EXPECT_EQ(down, 0u);
   EXPECT_LT(after.second, 1e-9); // still the original's plane
 
   ro.reverseWeight = -1.0;
@@ -613,10 +626,10 @@ TEST(LatticeRefinement, AVertexInsertedAtTheLargestDistanceTakesTheSpike)
   // the lattice's edges, like a thin process): one new vertex, on an edge of
   // the face under the spike, then the tail penalty's pass, bring the
   // surface far closer to the spike than the tail penalty alone can with the
-  // vertices it has (at the default 8 iterations 0.023 against 0.093; with
-  // the surface's rules before session 78, 0.050 against 0.176). At 4
-  // iterations the comparison goes either way (0.61 against 0.28; 0.23
-  // against 0.49 before); at 12 both reach the spike (0.02).
+  // vertices it has, without folding it (at the default 8 iterations 0.27
+  // against 0.61). Before the fold guard (session 79) both reached further,
+  // 0.023 against 0.093, by folding the surface inside out round the spike:
+  // 1,363 and 1,213 of about 96,000 normals pointed inwards.
   const SpikeSphere spiked(2.0);
   const lk::TriangleMesh& sphere = spiked.sphere;
   const lk::PolygonMesh& start = spiked.start;
@@ -654,6 +667,16 @@ TEST(LatticeRefinement, AVertexInsertedAtTheLargestDistanceTakesTheSpike)
   const double withVertex = spikeDistance(lattice), without = spikeDistance(tailOnly);
   std::printf("spike distance with the tail penalty %.4f, with one vertex inserted %.4f\n", without, withVertex);
   EXPECT_LT(withVertex, 0.5 * without);
+  for (const lk::PolygonMesh* refined : { &tailOnly, &lattice })
+  {
+    const lk::LatticeSurface s = lk::buildLatticeSurface(*refined, refined == &lattice ? weights : lk::LatticeWeights{});
+    std::size_t inwards = 0;
+    for (const auto& patch : s.patches)
+      for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j)
+          inwards += patch.normal(i / 8.0, j / 8.0).dot(patch.evaluate(i / 8.0, j / 8.0)) < 0.0 ? 1 : 0;
+    EXPECT_EQ(inwards, 0u); // the sphere is centred at the origin
+  }
 
   // Feature (kept) edges are never split: with every edge kept, nothing is.
   std::vector<lk::EdgeKey> all;

@@ -44,6 +44,16 @@
 ///    that lowers it is kept and lambda halves (down to 1e-4), one that does
 ///    not is retried with lambda four times larger (up to four times), then
 ///    the refinement stops.
+/// A step may not fold the surface (the fold guard, beyond the paper): the
+/// linear model sees the surface through points of it, not the shape of the
+/// lattice, and a step could turn a small lattice face over between its
+/// neighbours or fold a patch into a thin fin along the original, where the
+/// surface passes through itself. Vertices whose step turns a face over
+/// (normals more than 150 degrees from a neighbour's, and further than
+/// before; creases excepted) or makes a face's patches turn more of their
+/// normals away from the face's normal at the start have their step halved,
+/// the fifth time zeroed; faces where the original is itself folded (bent by
+/// more than 120 degrees) are left free (LatticeRefinement.cxx, FoldGuard).
 /// The energy also carries a tail penalty, mu sum max(0, d - tau)^2 over both
 /// directions' points, a soft bound on the largest distance (see
 /// RefinementOptions::tailWeight); its residuals join the same blocks.
