@@ -685,14 +685,15 @@ public:
   /// After the step (`lattice` at x0 + delta, `trial` its surface): shortens
   /// the steps of the vertices of faces whose patches fold more than before
   /// it, moves them in `lattice` and rebuilds `trial`, until none does.
-  void holdBackFoldedPatches(PolygonMesh& lattice, const std::vector<Vec3>& x0, LatticeSurface& trial,
+  /// Returns the final trial's counts of turned normals, for accept().
+  std::vector<int> holdBackFoldedPatches(PolygonMesh& lattice, const std::vector<Vec3>& x0, LatticeSurface& trial,
     const LatticeWeights& weights, std::vector<std::array<double, 3>>& delta) const
   {
     std::vector<int> cuts(lattice.points.size(), 0);
     std::vector<char> again(lattice.faces.size(), 0);
     for (;;)
     {
-      const std::vector<int> now = reversedNormals(trial);
+      std::vector<int> now = reversedNormals(trial);
       bool more = false;
       for (std::size_t f = 0; f < now.size(); ++f)
       {
@@ -712,7 +713,7 @@ public:
         again[f] = 1;
       }
       if (!more)
-        return;
+        return now;
       for (std::size_t v = 0; v < lattice.points.size(); ++v)
         if (cuts[v] > 0)
           lattice.points[v] = x0[v] + Vec3(delta[v][0], delta[v][1], delta[v][2]);
@@ -720,8 +721,9 @@ public:
     }
   }
 
-  /// A step was kept: its surface is the one the next step is measured against.
-  void accept(const LatticeSurface& surface) { reversed_ = reversedNormals(surface); }
+  /// A step was kept: its surface (its counts, from holdBackFoldedPatches)
+  /// is the one the next step is measured against.
+  void accept(std::vector<int> reversed) { reversed_ = std::move(reversed); }
 
 private:
   static constexpr double kTurnedCosine = -0.8660254037844386; // cos 150 degrees
@@ -965,7 +967,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
       try
       {
         LatticeSurface trial = buildLatticeSurface(lattice, options.weights);
-        guard.holdBackFoldedPatches(lattice, x0, trial, options.weights, delta);
+        std::vector<int> trialReversed = guard.holdBackFoldedPatches(lattice, x0, trial, options.weights, delta);
         std::vector<Foot> trialFeet = footPoints(trial, samples, options.locatorResolution, options.threads, &feet);
         std::vector<ReversePoint> trialReverse;
         if (twoWay)
@@ -973,7 +975,7 @@ RefinementReport refineLatticeFit(PolygonMesh& lattice, const std::vector<Vec3>&
         const double e = objective(trialFeet, trialReverse);
         if (e < e0)
         {
-          guard.accept(trial);
+          guard.accept(std::move(trialReversed));
           surface = std::move(trial);
           feet = std::move(trialFeet);
           reverse = std::move(trialReverse);
